@@ -1,0 +1,50 @@
+# Helper functions: one target per module, project warnings, sanitizers.
+
+# hs_set_warnings(target): the project's warning set; errors when HS_WERROR is on.
+function(hs_set_warnings target)
+    target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wsign-conversion
+                                             -Wno-sign-conversion)
+    if(HS_WERROR)
+        target_compile_options(${target} PRIVATE -Werror)
+    endif()
+    if(HS_SANITIZE)
+        target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer
+                                                 -fno-sanitize-recover=undefined)
+        target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+    endif()
+endfunction()
+
+# hs_module(NAME name SOURCES ... [PUBLIC_DEPS ...] [PRIVATE_DEPS ...])
+# Creates library hs_<name> with alias hs::<name>; public headers in include/, sources in src/.
+function(hs_module)
+    cmake_parse_arguments(M "" "NAME" "SOURCES;PUBLIC_DEPS;PRIVATE_DEPS" ${ARGN})
+    add_library(hs_${M_NAME} STATIC ${M_SOURCES})
+    add_library(hs::${M_NAME} ALIAS hs_${M_NAME})
+    target_include_directories(hs_${M_NAME} PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/include
+                                            PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/src)
+    target_link_libraries(hs_${M_NAME} PUBLIC ${M_PUBLIC_DEPS} PRIVATE ${M_PRIVATE_DEPS})
+    set_target_properties(hs_${M_NAME} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+    hs_set_warnings(hs_${M_NAME})
+endfunction()
+
+# hs_executable(NAME name SOURCES ... [DEPS ...]): an executable with the project's warnings.
+function(hs_executable)
+    cmake_parse_arguments(E "" "NAME" "SOURCES;DEPS" ${ARGN})
+    add_executable(${E_NAME} ${E_SOURCES})
+    target_link_libraries(${E_NAME} PRIVATE ${E_DEPS})
+    hs_set_warnings(${E_NAME})
+endfunction()
+
+# hs_gtest(NAME name SOURCES ... DEPS ... [LABELS ...]): a GoogleTest binary registered with ctest.
+function(hs_gtest)
+    cmake_parse_arguments(T "" "NAME" "SOURCES;DEPS;LABELS" ${ARGN})
+    add_executable(${T_NAME} ${T_SOURCES})
+    target_link_libraries(${T_NAME} PRIVATE ${T_DEPS} hs_test_support GTest::gtest GTest::gtest_main)
+    hs_set_warnings(${T_NAME})
+    if(NOT T_LABELS)
+        set(T_LABELS unit)
+    endif()
+    add_test(NAME ${T_NAME} COMMAND ${T_NAME})
+    set_tests_properties(${T_NAME} PROPERTIES LABELS "${T_LABELS}" TIMEOUT 600
+        ENVIRONMENT "HS_SHARED_DATA_DIR=${HS_SHARED_DATA_DIR};HS_TEST_DATA_DIR=${PROJECT_SOURCE_DIR}/tests/data")
+endfunction()

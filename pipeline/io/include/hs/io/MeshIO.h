@@ -1,0 +1,65 @@
+#pragma once
+/// Reading and writing surface and tetrahedral meshes. Every file is untrusted input: readers validate sizes,
+/// counts, indices and coordinates, and fail with an Error naming the file and the problem; writers write to a
+/// temporary name in the same folder and rename it into place, so a failed write never leaves a half file.
+
+#include "hs/core/Result.h"
+#include "hs/core/SurfaceMesh.h"
+#include "hs/core/TetMesh.h"
+
+#include <cstdint>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace hs::io {
+
+enum class MeshFormat {
+    Obj,     ///< Wavefront OBJ (surface)
+    Stl,     ///< STL, ASCII or binary (surface; binary when written unless asked otherwise)
+    Ply,     ///< Stanford PLY, ASCII or binary (surface)
+    Off,     ///< Object File Format (surface)
+    Vtp,     ///< VTK XML PolyData (surface, with labels as cell/point data)
+    Vtu,     ///< VTK XML UnstructuredGrid (tetrahedra, with region ids and labels)
+    GmshMsh, ///< Gmsh MSH 4.1 ASCII (tetrahedra; physical tags = region ids)
+    Medit,   ///< MEDIT .mesh (tetrahedra; references = region ids)
+};
+
+/// Lower-case name ("obj", "stl", ..., "msh", "mesh").
+std::string formatName(MeshFormat format);
+/// The format for a file name's extension (case-insensitive); InvalidInput (listing the known ones) otherwise.
+Result<MeshFormat> formatFromPath(const std::string& path);
+bool isSurfaceFormat(MeshFormat format);
+bool isTetFormat(MeshFormat format);
+/// Every extension the readers accept (".obj", ...), for file dialogs and help texts.
+std::vector<std::string> supportedExtensions();
+
+/// Limits that keep a hostile file from exhausting memory. Defaults are far above any scene this project makes.
+struct ReadLimits {
+    std::int64_t maxPoints = 50'000'000;       ///< points (vertices) per file
+    std::int64_t maxCells = 200'000'000;       ///< triangles or tetrahedra per file
+    std::int64_t maxFileBytes = 8'000'000'000; ///< 8 GB
+};
+
+struct WriteOptions {
+    bool binary = true; ///< STL/PLY binary, VTP/VTU appended raw (false: ASCII everywhere the format allows)
+};
+
+/// Reads a surface in any surface format (chosen by extension). Polygons are fan-triangulated. Labels read where the
+/// format carries them (VTP cell/point arrays of integer type, PLY int properties).
+Result<SurfaceMesh> readSurface(const std::string& path, const ReadLimits& limits = {});
+/// Writes a surface; the format is chosen by extension.
+Status writeSurface(const SurfaceMesh& mesh, const std::string& path, const WriteOptions& options = {});
+
+/// Reads a tetrahedral mesh (VTU, MSH 4.1, MEDIT). Non-tetrahedral volume cells are an InvalidInput error;
+/// surface cells in MSH/MEDIT files are ignored.
+Result<TetMesh> readTetMesh(const std::string& path, const ReadLimits& limits = {});
+Status writeTetMesh(const TetMesh& mesh, const std::string& path, const WriteOptions& options = {});
+
+/// Either kind of mesh, for tools that accept both (the CLI's info/convert, the workstation's Open).
+using AnyMesh = std::variant<SurfaceMesh, TetMesh>;
+/// Reads a file of any supported format: VTU with tetrahedra gives a TetMesh, VTU with only triangles a
+/// SurfaceMesh.
+Result<AnyMesh> readMesh(const std::string& path, const ReadLimits& limits = {});
+
+} // namespace hs::io

@@ -1,0 +1,58 @@
+#include "hs/core/TetMesh.h"
+
+#include <gtest/gtest.h>
+
+namespace {
+
+/// Two tets sharing face (1,2,3): regions 1 and 2.
+hs::TetMesh twoTets() {
+    hs::TetMesh m;
+    m.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}};
+    m.tets = {{0, 1, 2, 3}, {1, 4, 2, 3}};
+    m.regions = {1, 2};
+    return m;
+}
+
+} // namespace
+
+TEST(TetMesh, VolumesOfHandComputedTets) {
+    const auto m = twoTets();
+    ASSERT_TRUE(hs::validate(m).ok());
+    EXPECT_NEAR(hs::signedVolume(m, 0), 1.0 / 6.0, 1e-15);
+    EXPECT_GT(hs::signedVolume(m, 1), 0.0);
+    EXPECT_EQ(hs::invertedTetCount(m), 0u);
+    const auto rv = hs::regionVolumes(m);
+    EXPECT_NEAR(rv.at(1), 1.0 / 6.0, 1e-15);
+    EXPECT_NEAR(hs::totalVolume(m), rv.at(1) + rv.at(2), 1e-15);
+}
+
+TEST(TetMesh, BoundaryIsClosedAndEnclosesTheVolume) {
+    const auto m = twoTets();
+    const auto surface = hs::extractBoundary(m);
+    EXPECT_EQ(surface.triangles.size(), 6u);
+    EXPECT_TRUE(hs::analyzeTopology(surface).isWatertight());
+    EXPECT_NEAR(hs::enclosedVolume(surface), hs::totalVolume(m), 1e-12);
+}
+
+TEST(TetMesh, InterfacesAreExtractedOnceBetweenRegions) {
+    const auto m = twoTets();
+    const auto surface = hs::extractBoundary(m, true);
+    ASSERT_EQ(surface.triangles.size(), 7u);
+    const auto& other = surface.faceLabels.at("otherRegion");
+    EXPECT_EQ(std::count(other.begin(), other.end(), 2), 1);
+}
+
+TEST(TetMesh, InvertedTetIsCounted) {
+    auto m = twoTets();
+    std::swap(m.tets[0][0], m.tets[0][1]);
+    EXPECT_EQ(hs::invertedTetCount(m), 1u);
+}
+
+TEST(TetMesh, ValidateRejectsOutOfRangeIndicesAndWrongRegionCount) {
+    auto m = twoTets();
+    m.tets[1][2] = 5;
+    EXPECT_FALSE(hs::validate(m).ok());
+    m = twoTets();
+    m.regions.push_back(3);
+    EXPECT_FALSE(hs::validate(m).ok());
+}

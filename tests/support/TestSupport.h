@@ -1,0 +1,27 @@
+#pragma once
+/// Paths for tests: fixtures in tests/data, public surfaces in ../shared/data, and scratch folders.
+
+#include <filesystem>
+#include <string>
+
+namespace hs::test {
+
+/// tests/data of this repository (from HS_TEST_DATA_DIR, set by ctest).
+std::filesystem::path testDataDir();
+/// The public test surfaces (from HS_SHARED_DATA_DIR); empty path when they are not present.
+std::filesystem::path sharedDataDir();
+/// A fresh, empty folder under the system temp dir, removed when the object dies.
+class TempDir {
+public:
+    explicit TempDir(const std::string& prefix = "hs-test");
+    ~TempDir();
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+    const std::filesystem::path& path() const { return m_path; }
+    std::string file(const std::string& name) const { return (m_path / name).string(); }
+
+private:
+    std::filesystem::path m_path;
+};
+
+} // namespace hs::test

@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package hysteroscene needs to build, test and run.
+# Idempotent: packages already present are skipped; `apt-get update` runs at most once per call.
+# Only Debian packages are installed; nothing else is downloaded.
+set -euo pipefail
+
+packages=(
+    # toolchain
+    build-essential cmake ninja-build pkg-config git
+    # Qt 6 (Widgets, OpenGLWidgets, Concurrent, Test, LinguistTools)
+    qt6-base-dev qt6-base-dev-tools qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
+    libqt6opengl6-dev libgl-dev libglx-dev
+    # VTK 9.1 (core modules only; the Qt view is the project's own widget)
+    libvtk9-dev
+    # geometry, meshing, numerics
+    libcgal-dev libgmp-dev libmpfr-dev libtbb-dev libtet1.5-dev libeigen3-dev
+    # images and textures
+    libopencv-dev libopenimageio-dev
+    # files and command line
+    nlohmann-json3-dev libcli11-dev libtinygltf-dev libhdf5-dev
+    # haptic devices
+    libhidapi-dev
+    # tests
+    libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth libgl1-mesa-dri
+)
+
+missing=()
+for p in "${packages[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+        missing+=("$p")
+    fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+    echo "setup: all ${#packages[@]} packages present"
+    exit 0
+fi
+
+sudo_cmd=()
+if [ "$(id -u)" -ne 0 ]; then
+    sudo_cmd=(sudo)
+fi
+echo "setup: installing ${#missing[@]} packages: ${missing[*]}"
+"${sudo_cmd[@]}" apt-get update -qq
+DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+echo "setup: done"
