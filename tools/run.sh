@@ -7,7 +7,7 @@ bash tools/setup.sh
 cmake --preset release
 cmake --build --preset release
 bin=build/release/bin
-default_surface=resources/surfaces/default-organ.vtp
+default_surface=resources/surfaces/default-organ.off
 if [ -n "${DISPLAY:-}" ] && [ -z "${HS_HEADLESS:-}" ]; then
     exec "$bin/hysteroscene" "$default_surface"
 else

@@ -46,14 +46,18 @@ struct WriteOptions {
 };
 
 /// Reads a surface in any surface format (chosen by extension). Polygons are fan-triangulated. Labels read where the
-/// format carries them (VTP cell/point arrays of integer type, PLY int properties).
+/// format carries them (VTP cell/point arrays of integer type, PLY int properties). A VTU holding only surface cells
+/// is read as a surface too. A file without triangles is an InvalidInput error. docs/file-formats.md lists what each
+/// format keeps.
 Result<SurfaceMesh> readSurface(const std::string& path, const ReadLimits& limits = {});
-/// Writes a surface; the format is chosen by extension.
+/// Writes a surface; the format is chosen by extension (".vtu" writes triangle cells). Refuses (InvalidInput) a mesh
+/// that fails hs::validate, has no triangles, or has label names outside 1-64 characters of A-Z a-z 0-9 _ - .
 Status writeSurface(const SurfaceMesh& mesh, const std::string& path, const WriteOptions& options = {});
 
 /// Reads a tetrahedral mesh (VTU, MSH 4.1, MEDIT). Non-tetrahedral volume cells are an InvalidInput error;
 /// surface cells in MSH/MEDIT files are ignored.
 Result<TetMesh> readTetMesh(const std::string& path, const ReadLimits& limits = {});
+/// Writes a tetrahedral mesh (VTU, MSH 4.1, MEDIT); refuses invalid or empty meshes like writeSurface.
 Status writeTetMesh(const TetMesh& mesh, const std::string& path, const WriteOptions& options = {});
 
 /// Either kind of mesh, for tools that accept both (the CLI's info/convert, the workstation's Open).

@@ -1,0 +1,15 @@
+#pragma once
+/// Registration of the subcommands. Each add*Command adds a subcommand to `app` and stores in `exitCode` what its
+/// callback returned, so main() can exit with it.
+
+namespace CLI {
+class App;
+}
+
+namespace hs::cli {
+
+void addInfoCommand(CLI::App& app, int& exitCode);
+void addConvertCommand(CLI::App& app, int& exitCode);
+void addValidateCommand(CLI::App& app, int& exitCode);
+
+} // namespace hs::cli

@@ -1,0 +1,40 @@
+#pragma once
+/// The readers and writers of each format, dispatched from MeshIO.cpp. Every reader gets a path and the limits and
+/// returns a mesh that has passed hs::validate; every writer gets a validated mesh and a temporary path to write.
+
+#include "hs/core/Result.h"
+#include "hs/core/SurfaceMesh.h"
+#include "hs/core/TetMesh.h"
+#include "hs/io/MeshIO.h"
+
+#include <string>
+
+namespace hs::io::detail {
+
+Result<SurfaceMesh> readObj(const std::string& path, const ReadLimits& limits);
+Status writeObj(const SurfaceMesh& mesh, const std::string& tmpPath);
+
+Result<SurfaceMesh> readOff(const std::string& path, const ReadLimits& limits);
+Status writeOff(const SurfaceMesh& mesh, const std::string& tmpPath);
+
+Result<SurfaceMesh> readPly(const std::string& path, const ReadLimits& limits);
+Status writePly(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary);
+
+Result<SurfaceMesh> readStl(const std::string& path, const ReadLimits& limits);
+Status writeStl(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary);
+
+Result<SurfaceMesh> readVtp(const std::string& path, const ReadLimits& limits);
+Status writeVtp(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary);
+
+/// A VTU with tetrahedra gives a TetMesh; one with only surface cells a SurfaceMesh.
+Result<AnyMesh> readVtu(const std::string& path, const ReadLimits& limits);
+Status writeVtu(const TetMesh& mesh, const std::string& tmpPath, bool binary);
+Status writeVtuSurface(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary);
+
+Result<TetMesh> readGmsh(const std::string& path, const ReadLimits& limits);
+Status writeGmsh(const TetMesh& mesh, const std::string& tmpPath);
+
+Result<TetMesh> readMedit(const std::string& path, const ReadLimits& limits);
+Status writeMedit(const TetMesh& mesh, const std::string& tmpPath);
+
+} // namespace hs::io::detail

@@ -1,0 +1,511 @@
+// VTK XML PolyData (.vtp) and UnstructuredGrid (.vtu) through VTK's XML readers and writers. Before VTK sees a
+// file, every count attribute of its XML part is checked against the limits and against what the file size can
+// hold, so a forged header cannot make VTK allocate gigabytes; after reading, cell offsets, point indices and
+// coordinates are checked again before anything is converted.
+
+#include "Formats.h"
+#include "Parsing.h"
+#include "VtkSupport.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkCellType.h>
+#include <vtkDataArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLPolyDataReader.h>
+#include <vtkXMLPolyDataWriter.h>
+#include <vtkXMLUnstructuredGridReader.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <vector>
+
+namespace hs::io::detail {
+namespace {
+
+/// Sum of every `name="N"` attribute in the XML part; InvalidInput when one is not a non-negative integer.
+Result<std::int64_t> sumAttribute(const std::string& path, std::string_view xml, const std::string& name) {
+    const std::string needle = " " + name + "=\"";
+    std::int64_t sum = 0;
+    for (std::size_t pos = xml.find(needle); pos != std::string_view::npos; pos = xml.find(needle, pos + 1)) {
+        const std::size_t start = pos + needle.size();
+        const std::size_t end = xml.find('"', start);
+        std::int64_t value = 0;
+        if (end == std::string_view::npos || !parseInt(xml.substr(start, end - start), value) || value < 0)
+            return fileError(ErrorCode::InvalidInput, path, "attribute " + name + " is not a non-negative integer");
+        if (value > std::numeric_limits<std::int64_t>::max() / 4 - sum)
+            return fileError(ErrorCode::LimitExceeded, path, "attribute " + name + " is absurdly large");
+        sum += value;
+    }
+    return sum;
+}
+
+Status precheckXml(const std::string& path, std::string_view text, const char* dataType, const ReadLimits& limits) {
+    const std::size_t root = text.find("<VTKFile");
+    std::size_t lead = 0;
+    while (lead < text.size() && (text[lead] == ' ' || text[lead] == '\n' || text[lead] == '\r' || text[lead] == '\t'))
+        ++lead;
+    if (root == std::string_view::npos || (text.compare(lead, 5, "<?xml") != 0 && lead != root))
+        return fileError(ErrorCode::InvalidInput, path, "not a VTK XML file (no <VTKFile> element at the start)");
+    const std::size_t rootEnd = text.find('>', root);
+    const std::string_view rootTag = text.substr(root, rootEnd == std::string_view::npos ? 0 : rootEnd - root);
+    if (rootTag.find(std::string("type=\"") + dataType + "\"") == std::string_view::npos)
+        return fileError(ErrorCode::InvalidInput, path, std::string("not a VTK ") + dataType + " file");
+
+    // Counts live in the XML part; appended binary data follows it.
+    const std::string_view xml = text.substr(0, text.find("<AppendedData"));
+    // Compressed data can expand; zlib and lz4 stay below ~1000:1, lzma below ~8000:1.
+    const bool compressed = rootTag.find("compressor=") != std::string_view::npos;
+    const std::int64_t capacity = static_cast<std::int64_t>(text.size()) * (compressed ? 8000 : 1);
+
+    const auto points = sumAttribute(path, xml, "NumberOfPoints");
+    if (!points.ok())
+        return points.failure();
+    HS_TRY(checkCount(path, 1, *points, pointLimit(limits), capacity, 3, "points (NumberOfPoints)"));
+    for (const char* cells : {"NumberOfCells", "NumberOfVerts", "NumberOfLines", "NumberOfStrips", "NumberOfPolys"}) {
+        const auto count = sumAttribute(path, xml, cells);
+        if (!count.ok())
+            return count.failure();
+        HS_TRY(checkCount(path, 1, *count, cellLimit(limits), capacity, 1, cells));
+    }
+    const auto tuples = sumAttribute(path, xml, "NumberOfTuples");
+    if (!tuples.ok())
+        return tuples.failure();
+    HS_TRY(checkCount(path, 1, *tuples, pointLimit(limits) + cellLimit(limits), capacity, 1, "tuples"));
+    // NumberOfComponents is per array: check each, not the sum.
+    const std::string needle = " NumberOfComponents=\"";
+    for (std::size_t pos = xml.find(needle); pos != std::string_view::npos; pos = xml.find(needle, pos + 1)) {
+        const std::size_t start = pos + needle.size();
+        const std::size_t end = xml.find('"', start);
+        std::int64_t value = 0;
+        if (end == std::string_view::npos || !parseInt(xml.substr(start, end - start), value) || value < 0 ||
+            value > 64)
+            return fileError(ErrorCode::InvalidInput, path, "NumberOfComponents outside 0..64");
+    }
+    return {};
+}
+
+/// The value of attribute `name` in the tag text `tag`, or empty.
+std::string_view attribute(std::string_view tag, std::string_view name) {
+    const std::string needle = " " + std::string(name) + "=\"";
+    const std::size_t at = tag.find(needle);
+    if (at == std::string_view::npos)
+        return {};
+    const std::size_t start = at + needle.size();
+    const std::size_t end = tag.find('"', start);
+    return end == std::string_view::npos ? std::string_view{} : tag.substr(start, end - start);
+}
+
+/// Bytes per value of a VTK XML integer type name, 0 for other types.
+std::size_t integerTypeSize(std::string_view type) {
+    if (type == "Int8" || type == "UInt8")
+        return 1;
+    if (type == "Int16" || type == "UInt16")
+        return 2;
+    if (type == "Int32" || type == "UInt32")
+        return 4;
+    if (type == "Int64" || type == "UInt64")
+        return 8;
+    return 0;
+}
+
+/// Little-endian integer of `size` bytes (signed types: negative values come out huge and fail the bound).
+std::uint64_t loadLittleEndian(const char* data, std::size_t size) {
+    std::uint64_t value = 0;
+    for (std::size_t k = 0; k < size; ++k)
+        value |= static_cast<std::uint64_t>(static_cast<unsigned char>(data[k])) << (8 * k);
+    return value;
+}
+
+/// VTK sizes each connectivity array by the last value of its "offsets" array, which is data, not a header
+/// attribute. Checks every offset of uncompressed ASCII and raw appended offsets arrays against what the file can
+/// hold (one byte per connectivity entry at least); compressed or base64 data is left to VTK and the limits.
+Status checkOffsetsArrays(const std::string& path, std::string_view text, std::string_view xml, std::int64_t capacity,
+                          bool compressed) {
+    const std::size_t rootStart = text.find("<VTKFile");
+    const std::string_view root = text.substr(rootStart, text.find('>', rootStart) - rootStart);
+    const std::size_t headerSize = attribute(root, "header_type") == "UInt64" ? 8 : 4;
+    const bool bigEndian = attribute(root, "byte_order") == "BigEndian";
+    const std::size_t appendedTag = text.find("<AppendedData");
+    std::size_t appendedStart = std::string_view::npos;
+    bool rawAppended = false;
+    if (appendedTag != std::string_view::npos) {
+        const std::size_t tagEnd = text.find('>', appendedTag);
+        rawAppended = attribute(text.substr(appendedTag, tagEnd - appendedTag), "encoding") == "raw";
+        const std::size_t underscore = text.find('_', tagEnd);
+        if (underscore != std::string_view::npos)
+            appendedStart = underscore + 1;
+    }
+    auto tooLarge = [&](std::uint64_t value) { return value > static_cast<std::uint64_t>(capacity); };
+    const Failure bad = fileError(ErrorCode::InvalidInput, path,
+                                  "an \"offsets\" array declares more cell corners than the file can hold");
+
+    for (std::size_t pos = xml.find("<DataArray"); pos != std::string_view::npos;
+         pos = xml.find("<DataArray", pos + 1)) {
+        const std::size_t tagEnd = xml.find('>', pos);
+        if (tagEnd == std::string_view::npos)
+            break;
+        const std::string_view tag = xml.substr(pos, tagEnd - pos);
+        if (attribute(tag, "Name") != "offsets")
+            continue;
+        const std::size_t valueSize = integerTypeSize(attribute(tag, "type"));
+        if (valueSize == 0)
+            return fileError(ErrorCode::InvalidInput, path, "an \"offsets\" array is not of an integer type");
+        const std::string_view format = attribute(tag, "format");
+        if (format == "ascii") {
+            const std::size_t end = xml.find("</DataArray>", tagEnd);
+            TokenReader values(path, xml.substr(tagEnd + 1, end == std::string_view::npos ? 0 : end - tagEnd - 1), 0);
+            std::int64_t value = 0;
+            while (!values.atEnd()) {
+                if (!values.integer(value, "offset") || value < 0 || tooLarge(static_cast<std::uint64_t>(value)))
+                    return bad;
+            }
+        } else if (format == "appended" && rawAppended && !compressed && !bigEndian &&
+                   appendedStart != std::string_view::npos) {
+            std::int64_t offset = 0;
+            if (!parseInt(attribute(tag, "offset"), offset) || offset < 0)
+                return fileError(ErrorCode::InvalidInput, path, "an appended array has no valid offset");
+            const std::size_t start = appendedStart + static_cast<std::size_t>(offset);
+            if (start > text.size() || text.size() - start < headerSize)
+                return fileError(ErrorCode::InvalidInput, path, "an appended array lies beyond the end of the file");
+            const std::uint64_t bytes = loadLittleEndian(text.data() + start, headerSize);
+            if (bytes > text.size() - start - headerSize)
+                return fileError(ErrorCode::InvalidInput, path,
+                                 "an appended array is longer than the rest of the file (truncated?)");
+            for (std::size_t k = 0; k + valueSize <= bytes; k += valueSize)
+                if (tooLarge(loadLittleEndian(text.data() + start + headerSize + k, valueSize)))
+                    return bad;
+        }
+    }
+    return {};
+}
+
+bool isIntegerArray(vtkDataArray* array) {
+    switch (array->GetDataType()) {
+    case VTK_CHAR:
+    case VTK_SIGNED_CHAR:
+    case VTK_UNSIGNED_CHAR:
+    case VTK_SHORT:
+    case VTK_UNSIGNED_SHORT:
+    case VTK_INT:
+    case VTK_UNSIGNED_INT:
+    case VTK_LONG:
+    case VTK_UNSIGNED_LONG:
+    case VTK_LONG_LONG:
+    case VTK_UNSIGNED_LONG_LONG:
+    case VTK_ID_TYPE:
+        return true;
+    default:
+        return false;
+    }
+}
+
+/// Integer single-component arrays, picked at `rows` (one entry per output element), as labels.
+Status readLabels(const std::string& path, vtkDataSetAttributes* data, const std::vector<vtkIdType>& rows,
+                  const char* what, LabelMap& out) {
+    for (int a = 0; a < data->GetNumberOfArrays(); ++a) {
+        vtkDataArray* array = data->GetArray(a);
+        if (!array || !array->GetName() || array->GetNumberOfComponents() != 1 || !isIntegerArray(array))
+            continue;
+        const std::string name = array->GetName();
+        if (name.empty() || out.count(name) != 0)
+            continue;
+        std::vector<std::int32_t> values;
+        values.reserve(rows.size());
+        for (vtkIdType row : rows) {
+            if (row >= array->GetNumberOfTuples())
+                return fileError(ErrorCode::InvalidInput, path,
+                                 std::string(what) + " array '" + name + "' has too few values");
+            const double v = array->GetComponent(row, 0);
+            if (v < std::numeric_limits<std::int32_t>::min() || v > std::numeric_limits<std::int32_t>::max())
+                return fileError(ErrorCode::InvalidInput, path,
+                                 std::string(what) + " array '" + name + "' has a value outside the 32-bit range");
+            values.push_back(static_cast<std::int32_t>(v));
+        }
+        out.emplace(name, std::move(values));
+    }
+    return {};
+}
+
+/// Offsets start at 0, never decrease and end at the connectivity size; every index names an existing point.
+Status checkCellArray(const std::string& path, vtkCellArray* cells, vtkIdType pointCount, const char* what) {
+    if (!cells)
+        return {};
+    vtkDataArray* offsets = cells->GetOffsetsArray();
+    vtkDataArray* connectivity = cells->GetConnectivityArray();
+    if (!offsets || !connectivity)
+        return fileError(ErrorCode::InvalidInput, path, std::string(what) + ": missing cell arrays");
+    const vtkIdType n = offsets->GetNumberOfTuples();
+    const vtkIdType size = connectivity->GetNumberOfTuples();
+    if (n == 0)
+        return size == 0 ? Status{} : fileError(ErrorCode::InvalidInput, path, std::string(what) + ": no offsets");
+    double previous = 0.0;
+    for (vtkIdType i = 0; i < n; ++i) {
+        const double o = offsets->GetComponent(i, 0);
+        if ((i == 0 && o != 0.0) || o < previous || o > static_cast<double>(size))
+            return fileError(ErrorCode::InvalidInput, path,
+                             std::string(what) + ": cell offsets are not increasing within the connectivity");
+        previous = o;
+    }
+    if (previous != static_cast<double>(size))
+        return fileError(ErrorCode::InvalidInput, path, std::string(what) + ": cell offsets do not cover the cells");
+    for (vtkIdType i = 0; i < size; ++i) {
+        const double id = connectivity->GetComponent(i, 0);
+        if (id < 0 || id >= static_cast<double>(pointCount))
+            return fileError(ErrorCode::InvalidInput, path,
+                             std::string(what) + ": a cell references point " +
+                                 std::to_string(static_cast<long long>(id)) + ", allowed 0.." +
+                                 std::to_string(pointCount - 1));
+    }
+    return {};
+}
+
+Result<std::vector<Vec3>> readPoints(const std::string& path, vtkPoints* points, const ReadLimits& limits) {
+    std::vector<Vec3> out;
+    if (!points)
+        return out;
+    const vtkIdType n = points->GetNumberOfPoints();
+    if (n > pointLimit(limits))
+        return fileError(ErrorCode::LimitExceeded, path, std::to_string(n) + " points");
+    out.resize(static_cast<std::size_t>(n));
+    for (vtkIdType i = 0; i < n; ++i) {
+        double x[3];
+        points->GetPoint(i, x);
+        out[static_cast<std::size_t>(i)] = {x[0], x[1], x[2]};
+        if (!isFinite(out[static_cast<std::size_t>(i)]))
+            return fileError(ErrorCode::InvalidInput, path,
+                             "point " + std::to_string(i) + " has a non-finite coordinate");
+    }
+    return out;
+}
+
+std::vector<vtkIdType> allRows(std::size_t n) {
+    std::vector<vtkIdType> rows(n);
+    for (std::size_t i = 0; i < n; ++i)
+        rows[i] = static_cast<vtkIdType>(i);
+    return rows;
+}
+
+/// Appends the triangles of one surface cell (triangle, polygon, quad, pixel, strip); `row` is repeated per triangle.
+bool appendSurfaceCell(SurfaceMesh& mesh, std::vector<vtkIdType>& rows, vtkIdType row, int type, vtkIdType npts,
+                       const vtkIdType* pts, std::int64_t maxCells) {
+    const std::size_t before = mesh.triangles.size();
+    std::vector<std::int32_t> corners(pts, pts + npts);
+    if (type == VTK_PIXEL && npts == 4)
+        std::swap(corners[2], corners[3]);
+    if (type == VTK_TRIANGLE_STRIP) {
+        for (vtkIdType k = 0; k + 2 < npts; ++k) {
+            if (static_cast<std::int64_t>(mesh.triangles.size()) >= maxCells)
+                return false;
+            const auto a = corners[static_cast<std::size_t>(k)], b = corners[static_cast<std::size_t>(k + 1)],
+                       c = corners[static_cast<std::size_t>(k + 2)];
+            mesh.triangles.push_back(k % 2 == 0 ? Triangle{a, b, c} : Triangle{b, a, c});
+        }
+    } else if (!appendFan(mesh, corners.data(), corners.size(), maxCells)) {
+        return false;
+    }
+    rows.insert(rows.end(), mesh.triangles.size() - before, row);
+    return true;
+}
+
+Result<vtkSmartPointer<vtkDataObject>> readXml(const std::string& path, const ReadLimits& limits, bool polyData) {
+    Result<std::string> bytes = readInput(path, limits);
+    if (!bytes.ok())
+        return bytes.failure();
+    HS_TRY(precheckXml(path, *bytes, polyData ? "PolyData" : "UnstructuredGrid", limits));
+    {
+        const std::string_view text = *bytes;
+        const std::size_t root = text.find("<VTKFile");
+        const bool compressed =
+            text.substr(root, text.find('>', root) - root).find("compressor=") != std::string_view::npos;
+        HS_TRY(checkOffsetsArrays(path, text, text.substr(0, text.find("<AppendedData")),
+                                  static_cast<std::int64_t>(text.size()) * (compressed ? 8000 : 1), compressed));
+    }
+    VtkMessageCapture capture;
+    vtkSmartPointer<vtkXMLReader> reader;
+    if (polyData)
+        reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    else
+        reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+    reader->ReadFromInputStringOn();
+    reader->SetInputString(*bytes);
+    try {
+        reader->Update();
+    } catch (const std::exception& e) {
+        // VTK's XML readers size some arrays by values in the data; a forged value can make an allocation fail.
+        return fileError(ErrorCode::InvalidInput, path, std::string("VTK could not read the file: ") + e.what());
+    }
+    HS_TRY(capture.check(true, path, "reading VTK XML", ErrorCode::InvalidInput));
+    vtkSmartPointer<vtkDataObject> output = reader->GetOutputDataObject(0);
+    if (!output)
+        return fileError(ErrorCode::InvalidInput, path, "VTK read no data");
+    return output;
+}
+
+} // namespace
+
+Result<SurfaceMesh> readVtp(const std::string& path, const ReadLimits& limits) {
+    auto object = readXml(path, limits, true);
+    if (!object.ok())
+        return object.failure();
+    vtkPolyData* data = vtkPolyData::SafeDownCast(*object);
+    if (!data)
+        return fileError(ErrorCode::InvalidInput, path, "not PolyData");
+
+    SurfaceMesh mesh;
+    auto points = readPoints(path, data->GetPoints(), limits);
+    if (!points.ok())
+        return points.failure();
+    mesh.points = std::move(*points);
+    const auto pointCount = static_cast<vtkIdType>(mesh.points.size());
+    HS_TRY(checkCellArray(path, data->GetVerts(), pointCount, "Verts"));
+    HS_TRY(checkCellArray(path, data->GetLines(), pointCount, "Lines"));
+    HS_TRY(checkCellArray(path, data->GetPolys(), pointCount, "Polys"));
+    HS_TRY(checkCellArray(path, data->GetStrips(), pointCount, "Strips"));
+
+    // Cell data is ordered verts, lines, polys, strips.
+    const vtkIdType firstPoly = data->GetNumberOfVerts() + data->GetNumberOfLines();
+    const vtkIdType firstStrip = firstPoly + data->GetNumberOfPolys();
+    std::vector<vtkIdType> rows;
+    vtkIdType npts = 0;
+    const vtkIdType* pts = nullptr;
+    for (vtkIdType c = 0; c < data->GetNumberOfPolys(); ++c) {
+        data->GetPolys()->GetCellAtId(c, npts, pts);
+        if (npts < 3)
+            return fileError(ErrorCode::InvalidInput, path,
+                             "polygon " + std::to_string(c) + " has " + std::to_string(npts) + " corners");
+        if (!appendSurfaceCell(mesh, rows, firstPoly + c, VTK_POLYGON, npts, pts, cellLimit(limits)))
+            return fileError(ErrorCode::LimitExceeded, path, "too many triangles");
+    }
+    for (vtkIdType c = 0; c < data->GetNumberOfStrips(); ++c) {
+        data->GetStrips()->GetCellAtId(c, npts, pts);
+        if (!appendSurfaceCell(mesh, rows, firstStrip + c, VTK_TRIANGLE_STRIP, npts, pts, cellLimit(limits)))
+            return fileError(ErrorCode::LimitExceeded, path, "too many triangles");
+    }
+    HS_TRY(readLabels(path, data->GetCellData(), rows, "cell", mesh.faceLabels));
+    HS_TRY(readLabels(path, data->GetPointData(), allRows(mesh.points.size()), "point", mesh.vertexLabels));
+    HS_TRY(finishSurface(path, mesh));
+    return mesh;
+}
+
+Result<AnyMesh> readVtu(const std::string& path, const ReadLimits& limits) {
+    auto object = readXml(path, limits, false);
+    if (!object.ok())
+        return object.failure();
+    vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(*object);
+    if (!grid)
+        return fileError(ErrorCode::InvalidInput, path, "not an UnstructuredGrid");
+    auto points = readPoints(path, grid->GetPoints(), limits);
+    if (!points.ok())
+        return points.failure();
+    const auto pointCount = static_cast<vtkIdType>(points->size());
+    const vtkIdType cellCount = grid->GetNumberOfCells();
+    if (cellCount > 0) {
+        HS_TRY(checkCellArray(path, grid->GetCells(), pointCount, "Cells"));
+        vtkUnsignedCharArray* types = grid->GetCellTypesArray();
+        if (!types || types->GetNumberOfTuples() != cellCount || grid->GetCells()->GetNumberOfCells() != cellCount)
+            return fileError(ErrorCode::InvalidInput, path, "cell types do not match the cells");
+    }
+
+    std::vector<vtkIdType> tetRows;
+    bool hasSurfaceCells = false;
+    for (vtkIdType c = 0; c < cellCount; ++c) {
+        const int type = grid->GetCellType(c);
+        if (type == VTK_TETRA) {
+            tetRows.push_back(c);
+        } else if (type == VTK_TRIANGLE || type == VTK_TRIANGLE_STRIP || type == VTK_POLYGON || type == VTK_PIXEL ||
+                   type == VTK_QUAD) {
+            hasSurfaceCells = true;
+        } else if (type > VTK_POLY_LINE) {
+            return fileError(ErrorCode::InvalidInput, path,
+                             "cell " + std::to_string(c) + " has VTK cell type " + std::to_string(type) +
+                                 "; only linear tetrahedra (and surface cells, for a surface) are read");
+        }
+    }
+    vtkIdType npts = 0;
+    const vtkIdType* pts = nullptr;
+    if (!tetRows.empty() || !hasSurfaceCells) {
+        TetMesh mesh;
+        mesh.points = std::move(*points);
+        mesh.tets.reserve(tetRows.size());
+        for (vtkIdType c : tetRows) {
+            grid->GetCellPoints(c, npts, pts);
+            if (npts != 4)
+                return fileError(ErrorCode::InvalidInput, path,
+                                 "tetrahedron " + std::to_string(c) + " has " + std::to_string(npts) + " points");
+            mesh.tets.push_back({static_cast<std::int32_t>(pts[0]), static_cast<std::int32_t>(pts[1]),
+                                 static_cast<std::int32_t>(pts[2]), static_cast<std::int32_t>(pts[3])});
+        }
+        LabelMap cellLabels;
+        HS_TRY(readLabels(path, grid->GetCellData(), tetRows, "cell", cellLabels));
+        if (auto region = cellLabels.find("region"); region != cellLabels.end()) {
+            mesh.regions = std::move(region->second);
+            cellLabels.erase(region);
+        }
+        mesh.tetLabels = std::move(cellLabels);
+        HS_TRY(readLabels(path, grid->GetPointData(), allRows(mesh.points.size()), "point", mesh.pointLabels));
+        HS_TRY(finishTetMesh(path, mesh));
+        return AnyMesh(std::move(mesh));
+    }
+
+    SurfaceMesh mesh;
+    mesh.points = std::move(*points);
+    std::vector<vtkIdType> rows;
+    for (vtkIdType c = 0; c < cellCount; ++c) {
+        const int type = grid->GetCellType(c);
+        if (type < VTK_TRIANGLE || type == VTK_TETRA)
+            continue;
+        grid->GetCellPoints(c, npts, pts);
+        if (npts < 3)
+            return fileError(ErrorCode::InvalidInput, path, "cell " + std::to_string(c) + " has too few points");
+        if (!appendSurfaceCell(mesh, rows, c, type, npts, pts, cellLimit(limits)))
+            return fileError(ErrorCode::LimitExceeded, path, "too many triangles");
+    }
+    HS_TRY(readLabels(path, grid->GetCellData(), rows, "cell", mesh.faceLabels));
+    HS_TRY(readLabels(path, grid->GetPointData(), allRows(mesh.points.size()), "point", mesh.vertexLabels));
+    HS_TRY(finishSurface(path, mesh));
+    return AnyMesh(std::move(mesh));
+}
+
+namespace {
+
+template <class Writer>
+Status writeXml(vtkDataObject* data, const std::string& tmpPath, bool binary, const char* action) {
+    VtkMessageCapture capture;
+    vtkNew<Writer> writer;
+    writer->SetInputData(data);
+    writer->SetFileName(tmpPath.c_str());
+    writer->SetCompressorTypeToNone();
+    writer->SetHeaderTypeToUInt64();
+    if (binary) {
+        writer->SetDataModeToAppended();
+        writer->EncodeAppendedDataOff();
+    } else {
+        writer->SetDataModeToAscii();
+    }
+    const int ok = writer->Write();
+    return capture.check(ok == 1, tmpPath, action);
+}
+
+} // namespace
+
+Status writeVtp(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary) {
+    return writeXml<vtkXMLPolyDataWriter>(toPolyData(mesh, true), tmpPath, binary, "writing VTP");
+}
+
+Status writeVtu(const TetMesh& mesh, const std::string& tmpPath, bool binary) {
+    return writeXml<vtkXMLUnstructuredGridWriter>(toUnstructuredGrid(mesh), tmpPath, binary, "writing VTU");
+}
+
+Status writeVtuSurface(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary) {
+    return writeXml<vtkXMLUnstructuredGridWriter>(toUnstructuredGrid(mesh), tmpPath, binary, "writing VTU");
+}
+
+} // namespace hs::io::detail

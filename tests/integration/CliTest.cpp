@@ -1,0 +1,211 @@
+// Runs hysteroscene-cli as a user would and checks exit codes and output.
+#include "TestSupport.h"
+
+#include "hs/io/MeshIO.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <sys/wait.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Run {
+    int exitCode = -1;
+    std::string out; ///< stdout and stderr together
+};
+
+std::string quote(const std::string& s) {
+    std::string q = "'";
+    for (char c : s)
+        q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+Run cli(const std::string& args) {
+    Run run;
+    const std::string command = quote(HS_CLI_PATH) + " " + args + " 2>&1";
+    std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
+    if (!pipe)
+        return run;
+    std::array<char, 4096> buffer{};
+    size_t n = 0;
+    while ((n = fread(buffer.data(), 1, buffer.size(), pipe.get())) > 0)
+        run.out.append(buffer.data(), n);
+    const int status = pclose(pipe.release());
+    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return run;
+}
+
+std::vector<fs::path> sharedMeshes(bool bad) {
+    std::vector<fs::path> files;
+    const fs::path dir = hs::test::sharedDataDir();
+    if (dir.empty())
+        return files;
+    const fs::path meshes = bad ? dir / "meshes" / "bad" : dir / "meshes";
+    for (const auto& entry : fs::directory_iterator(meshes))
+        if (entry.is_regular_file() && entry.path().extension() != ".md")
+            files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+const std::string kDefaultCase = std::string(HS_SOURCE_DIR) + "/resources/cases/default.json";
+const std::string kDefaultSurface = std::string(HS_SOURCE_DIR) + "/resources/surfaces/default-organ.off";
+
+} // namespace
+
+TEST(Cli, PrintsHelpAndVersion) {
+    auto help = cli("--help");
+    EXPECT_EQ(help.exitCode, 0);
+    EXPECT_NE(help.out.find("info"), std::string::npos);
+    EXPECT_NE(help.out.find("convert"), std::string::npos);
+    auto version = cli("--version");
+    EXPECT_EQ(version.exitCode, 0);
+    EXPECT_NE(version.out.find(HS_VERSION), std::string::npos);
+}
+
+TEST(Cli, AnswersUsageErrorsWithExitCodeTwo) {
+    EXPECT_EQ(cli("").exitCode, 2);
+    EXPECT_EQ(cli("frobnicate").exitCode, 2);
+    EXPECT_EQ(cli("info").exitCode, 2);
+    EXPECT_EQ(cli("info a b c").exitCode, 2);
+}
+
+TEST(Cli, InfoSummarisesEverySharedSurface) {
+    const auto files = sharedMeshes(false);
+    if (files.empty())
+        GTEST_SKIP() << "shared test surfaces not present";
+    for (const auto& file : files) {
+        auto run = cli("info --json " + quote(file.string()));
+        ASSERT_EQ(run.exitCode, 0) << file << "\n" << run.out;
+        const auto j = nlohmann::json::parse(run.out);
+        EXPECT_EQ(j["kind"], "surface") << file;
+        EXPECT_GT(j["vertices"].get<int>(), 100) << file;
+        EXPECT_TRUE(j["topology"]["closed"].get<bool>()) << file;
+        EXPECT_GT(j["volumeMm3"].get<double>(), 0.0) << file;
+    }
+}
+
+TEST(Cli, InfoReportsTheDefectsOfTheBadSurfaces) {
+    const auto files = sharedMeshes(true);
+    if (files.empty())
+        GTEST_SKIP() << "shared test surfaces not present";
+    for (const auto& file : files) {
+        auto run = cli("info " + quote(file.string()));
+        ASSERT_EQ(run.exitCode, 0) << file << "\n" << run.out;
+        EXPECT_NE(run.out.find("closed no"), std::string::npos) << file << "\n" << run.out;
+    }
+}
+
+TEST(Cli, ConvertsEverySharedSurfaceToEverySurfaceFormatAndBack) {
+    const auto files = sharedMeshes(false);
+    if (files.empty())
+        GTEST_SKIP() << "shared test surfaces not present";
+    hs::test::TempDir tmp;
+    for (const auto& file : files) {
+        auto original = hs::io::readSurface(file.string());
+        ASSERT_TRUE(original.ok()) << original.error().message();
+        for (const std::string ext : {".obj", ".stl", ".ply", ".off", ".vtp"}) {
+            const std::string out = tmp.file(file.stem().string() + ext);
+            auto run = cli("convert " + quote(file.string()) + " " + quote(out));
+            ASSERT_EQ(run.exitCode, 0) << file << " -> " << ext << "\n" << run.out;
+            auto back = hs::io::readSurface(out);
+            ASSERT_TRUE(back.ok()) << back.error().message();
+            EXPECT_EQ(back->triangles.size(), original->triangles.size()) << file << " -> " << ext;
+            EXPECT_NEAR(hs::enclosedVolume(*back), hs::enclosedVolume(*original),
+                        1e-4 * std::fabs(hs::enclosedVolume(*original)))
+                << file << " -> " << ext;
+        }
+    }
+}
+
+TEST(Cli, ConvertsBetweenTetrahedralFormatsKeepingRegions) {
+    hs::TetMesh m;
+    m.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}};
+    m.tets = {{0, 1, 2, 3}, {1, 4, 2, 3}};
+    m.regions = {1, 2};
+    hs::test::TempDir tmp;
+    ASSERT_TRUE(hs::io::writeTetMesh(m, tmp.file("a.vtu")).ok());
+    std::string previous = tmp.file("a.vtu");
+    for (const std::string ext : {".msh", ".mesh", ".vtu"}) {
+        const std::string out = tmp.file("b" + ext);
+        auto run = cli("convert " + quote(previous) + " " + quote(out));
+        ASSERT_EQ(run.exitCode, 0) << run.out;
+        auto back = hs::io::readTetMesh(out);
+        ASSERT_TRUE(back.ok()) << back.error().message();
+        EXPECT_EQ(back->regions, m.regions) << ext;
+        previous = out;
+    }
+    // A tetrahedral mesh written to a surface format gives its boundary.
+    auto run = cli("convert " + quote(previous) + " " + quote(tmp.file("boundary.stl")));
+    ASSERT_EQ(run.exitCode, 0) << run.out;
+    EXPECT_NE(run.out.find("boundary"), std::string::npos);
+    auto boundary = hs::io::readSurface(tmp.file("boundary.stl"));
+    ASSERT_TRUE(boundary.ok());
+    EXPECT_EQ(boundary->triangles.size(), 6u);
+}
+
+TEST(Cli, RefusesToWriteASurfaceAsTetrahedra) {
+    hs::test::TempDir tmp;
+    auto run = cli("convert " + quote(kDefaultSurface) + " " + quote(tmp.file("x.msh")));
+    EXPECT_EQ(run.exitCode, 3) << run.out;
+    EXPECT_NE(run.out.find("mesh"), std::string::npos);
+    EXPECT_FALSE(fs::exists(tmp.file("x.msh")));
+}
+
+TEST(Cli, NamesTheFileOfAnInvalidInput) {
+    hs::test::TempDir tmp;
+    {
+        std::ofstream f(tmp.file("broken.off"));
+        f << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n";
+    }
+    auto run = cli("info " + quote(tmp.file("broken.off")));
+    EXPECT_EQ(run.exitCode, 3) << run.out;
+    EXPECT_NE(run.out.find("broken.off"), std::string::npos) << run.out;
+    auto missing = cli("info " + quote(tmp.file("nothing.obj")));
+    EXPECT_EQ(missing.exitCode, 3) << missing.out;
+    auto unknown = cli("info " + quote(tmp.file("file.xyz")));
+    EXPECT_EQ(unknown.exitCode, 3) << unknown.out;
+}
+
+TEST(Cli, InfoOnTheDefaultSurfaceShowsAClosedOrgan) {
+    auto run = cli("info " + quote(kDefaultSurface));
+    ASSERT_EQ(run.exitCode, 0) << run.out;
+    EXPECT_NE(run.out.find("watertight yes"), std::string::npos) << run.out;
+}
+
+TEST(Cli, ValidatesTheDefaultCase) {
+    auto run = cli("validate " + quote(kDefaultCase));
+    EXPECT_EQ(run.exitCode, 0) << run.out;
+    EXPECT_NE(run.out.find("valid"), std::string::npos);
+    auto info = cli("info --json " + quote(kDefaultCase));
+    ASSERT_EQ(info.exitCode, 0) << info.out;
+    EXPECT_EQ(nlohmann::json::parse(info.out)["kind"], "case");
+}
+
+TEST(Cli, ValidateNamesTheFieldAndRangeOfABadCase) {
+    hs::test::TempDir tmp;
+    std::ifstream in(kDefaultCase);
+    auto j = nlohmann::json::parse(in);
+    j["patient"]["ageYears"] = 130;
+    {
+        std::ofstream out(tmp.file("old.json"));
+        out << j.dump(2);
+    }
+    auto run = cli("validate " + quote(tmp.file("old.json")));
+    EXPECT_EQ(run.exitCode, 3) << run.out;
+    EXPECT_NE(run.out.find("/patient/ageYears"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("130"), std::string::npos) << run.out;
+    auto asJson = cli("validate --json " + quote(tmp.file("old.json")));
+    EXPECT_EQ(asJson.exitCode, 3);
+    EXPECT_FALSE(nlohmann::json::parse(asJson.out)["valid"].get<bool>());
+}
