@@ -48,3 +48,20 @@ function(hs_gtest)
     set_tests_properties(${T_NAME} PROPERTIES LABELS "${T_LABELS}" TIMEOUT 600
         ENVIRONMENT "HS_SHARED_DATA_DIR=${HS_SHARED_DATA_DIR};HS_TEST_DATA_DIR=${PROJECT_SOURCE_DIR}/tests/data")
 endfunction()
+
+# hs_qtest(NAME name SOURCES ... DEPS ...): a Qt Test binary registered with ctest, label "gui".
+# These tests open windows with OpenGL: they need an X display (the test command runs ctest under xvfb-run -a;
+# the offscreen platform has no GL for VTK).
+function(hs_qtest)
+    cmake_parse_arguments(T "" "NAME" "SOURCES;DEPS" ${ARGN})
+    add_executable(${T_NAME} ${T_SOURCES})
+    set_target_properties(${T_NAME} PROPERTIES AUTOMOC ON)
+    target_include_directories(${T_NAME} PRIVATE ${PROJECT_SOURCE_DIR}/tests/widgets/support)
+    target_link_libraries(${T_NAME} PRIVATE ${T_DEPS} Qt6::Test)
+    hs_set_warnings(${T_NAME})
+    vtk_module_autoinit(TARGETS ${T_NAME} MODULES ${VTK_LIBRARIES})
+    add_test(NAME ${T_NAME} COMMAND ${T_NAME})
+    # One at a time: they share the X server, and keyboard shortcuts need their window to stay active.
+    set_tests_properties(${T_NAME} PROPERTIES LABELS gui TIMEOUT 300 RESOURCE_LOCK x_display
+        ENVIRONMENT "QT_QPA_PLATFORM=xcb;HS_SHARED_DATA_DIR=${HS_SHARED_DATA_DIR};HS_TEST_DATA_DIR=${PROJECT_SOURCE_DIR}/tests/data")
+endfunction()

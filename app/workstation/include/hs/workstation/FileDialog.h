@@ -1,0 +1,20 @@
+#pragma once
+/// File dialogs behind a seam: tests set the next answer instead of driving a native dialog.
+
+#include <QString>
+
+class QWidget;
+
+namespace hs::workstation {
+
+class FileDialog {
+public:
+    /// The file the user chose, or an empty string when they cancelled.
+    static QString getOpenFileName(QWidget* parent, const QString& caption, const QString& folder,
+                                   const QString& filter);
+
+    /// Test seam: the next getOpenFileName returns `fileName` (empty: as if cancelled) without showing a dialog.
+    static void setNextFileName(const QString& fileName);
+};
+
+} // namespace hs::workstation

@@ -1,0 +1,108 @@
+#pragma once
+/// The workstation's main window: a 3-D view of one mesh (surface or tetrahedral), File/View/Help menus, a status
+/// bar with the mesh's counts. Files load on a worker thread; the window keeps its mesh when a file fails to load.
+
+#include "hs/core/Error.h"
+#include "hs/io/MeshIO.h"
+#include "hs/widgets/view/VtkView.h"
+
+#include <QFutureWatcher>
+#include <QMainWindow>
+#include <QString>
+#include <QStringList>
+
+#include <memory>
+#include <optional>
+
+class QAction;
+class QLabel;
+class QMenu;
+
+namespace hs::widgets {
+class MeshDisplay;
+}
+
+namespace hs::workstation {
+
+/// What a background load hands back to the GUI thread: a mesh or an error. The mesh is shared, not copied, when
+/// the result is passed from the worker to the window.
+struct LoadedMesh {
+    QString path;
+    std::shared_ptr<const io::AnyMesh> mesh;
+    std::optional<Error> error;
+};
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+
+public:
+    /// How many files File > Open Recent lists.
+    static constexpr int kMaxRecentFiles = 8;
+
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    /// Starts loading `path` on a worker thread; fileLoaded or loadFailed follows on the GUI thread.
+    void openFile(const QString& path);
+    bool isLoading() const;
+    /// The file shown now; empty before the first successful load.
+    QString currentFile() const { return m_currentFile; }
+    QStringList recentFiles() const { return m_recentFiles; }
+
+    /// Renders the whole window (menus, view, status bar) to an image file; false when it cannot be written.
+    bool saveScreenshot(const QString& path);
+
+    widgets::VtkView* view() const { return m_view; }
+    const widgets::MeshDisplay& display() const { return *m_display; }
+
+signals:
+    void fileLoaded(const QString& path);
+    void loadFailed(const QString& path);
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+
+private slots:
+    void onOpen();
+    void onOpenRecent();
+    void onClearRecent();
+    void onClipToggled(bool enabled);
+    void onResetCamera();
+    void onAbout();
+    void onLoadFinished();
+    void onPicked(const hs::widgets::PickResult& result);
+
+private:
+    void createActions();
+    void createMenus();
+    void createStatusBar();
+    void readSettings();
+    void writeSettings() const;
+    void showMesh(const LoadedMesh& loaded);
+    void showLoadError(const QString& path, const Error& error);
+    void addRecentFile(const QString& path);
+    void removeRecentFile(const QString& path);
+    void rebuildRecentMenu();
+    void updateStatus();
+    QString openFilter() const;
+
+    widgets::VtkView* m_view = nullptr;
+    std::unique_ptr<widgets::MeshDisplay> m_display;
+    QFutureWatcher<LoadedMesh> m_loadWatcher;
+    QString m_currentFile;
+    QString m_lastFolder;
+    QStringList m_recentFiles;
+
+    QAction* m_openAction = nullptr;
+    QAction* m_quitAction = nullptr;
+    QAction* m_clipAction = nullptr;
+    QAction* m_resetCameraAction = nullptr;
+    QAction* m_aboutAction = nullptr;
+    QAction* m_clearRecentAction = nullptr;
+    QMenu* m_recentMenu = nullptr;
+    QLabel* m_fileLabel = nullptr;
+    QLabel* m_countsLabel = nullptr;
+    QLabel* m_pickLabel = nullptr;
+};
+
+} // namespace hs::workstation

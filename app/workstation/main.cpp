@@ -1,0 +1,85 @@
+// hysteroscene: the workstation. Opens the mesh given on the command line.
+#include "hs/widgets/view/VtkView.h"
+#include "hs/workstation/MainWindow.h"
+#include "hs/workstation/MessageBox.h"
+#include "hs/workstation/Translator.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QTextStream>
+#include <QTimer>
+
+namespace {
+
+/// The value of --lang (also --lang=xx), else HS_LANG; empty: the system locale decides.
+QString requestedLanguage(const QStringList& arguments) {
+    for (int i = 1; i < arguments.size(); ++i) {
+        if (arguments.at(i) == QStringLiteral("--lang") && i + 1 < arguments.size())
+            return arguments.at(i + 1);
+        if (arguments.at(i).startsWith(QStringLiteral("--lang=")))
+            return arguments.at(i).mid(7);
+    }
+    return qEnvironmentVariable("HS_LANG");
+}
+
+/// Lets the view finish its first frames, saves the window to `path` and ends the application.
+void screenshotAndQuit(hs::workstation::MainWindow& window, const QString& path, bool loaded) {
+    QTimer::singleShot(300, &window, [&window, path, loaded] {
+        const bool saved = window.saveScreenshot(path);
+        for (const auto& message : hs::workstation::MessageBox::takeRecorded())
+            QTextStream(stderr) << message.text << '\n' << message.details << '\n';
+        QCoreApplication::exit(saved && loaded ? 0 : 1);
+    });
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    // VTK needs an OpenGL 3.2 core context; Qt's windows share contexts, so the format is set for all of them.
+    QSurfaceFormat::setDefaultFormat(hs::widgets::VtkView::defaultFormat());
+    QApplication app(argc, argv);
+    QCoreApplication::setOrganizationName(QStringLiteral("hysteroscene"));
+    QCoreApplication::setApplicationName(QStringLiteral("hysteroscene"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(HS_VERSION));
+
+    // The language is needed before the parser's help texts are written, so it is looked up first.
+    hs::workstation::installTranslators(app, requestedLanguage(QCoreApplication::arguments()));
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        QCoreApplication::translate("main", "Scenario authoring workstation for hysteroscopy training"));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addPositionalArgument(QCoreApplication::translate("main", "file"),
+                                 QCoreApplication::translate("main", "A surface or tetrahedral mesh to open."));
+    const QCommandLineOption languageOption(
+        QStringLiteral("lang"),
+        QCoreApplication::translate("main", "User-interface language (de, fr, it, en); default: HS_LANG, else the "
+                                            "system locale."),
+        QCoreApplication::translate("main", "language"));
+    QCommandLineOption screenshotOption(
+        QStringLiteral("screenshot"),
+        QCoreApplication::translate("main", "Save the window to an image after loading, then quit."),
+        QCoreApplication::translate("main", "image"));
+    screenshotOption.setFlags(QCommandLineOption::HiddenFromHelp);
+    parser.addOption(languageOption);
+    parser.addOption(screenshotOption);
+    parser.process(app);
+
+    hs::workstation::MainWindow window;
+    window.show();
+    const QString file = parser.positionalArguments().value(0);
+    if (parser.isSet(screenshotOption)) {
+        const QString image = parser.value(screenshotOption);
+        hs::workstation::MessageBox::setRecording(true); // nobody is there to close a message box
+        QObject::connect(&window, &hs::workstation::MainWindow::fileLoaded, &window,
+                         [&window, image] { screenshotAndQuit(window, image, true); });
+        QObject::connect(&window, &hs::workstation::MainWindow::loadFailed, &window,
+                         [&window, image] { screenshotAndQuit(window, image, false); });
+        if (file.isEmpty())
+            screenshotAndQuit(window, image, true);
+    }
+    if (!file.isEmpty())
+        window.openFile(file);
+    return QApplication::exec();
+}

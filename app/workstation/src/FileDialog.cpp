@@ -1,0 +1,31 @@
+#include "hs/workstation/FileDialog.h"
+
+#include <QFileDialog>
+
+#include <optional>
+
+namespace hs::workstation {
+namespace {
+
+std::optional<QString>& nextFileName() {
+    static std::optional<QString> next;
+    return next;
+}
+
+} // namespace
+
+QString FileDialog::getOpenFileName(QWidget* parent, const QString& caption, const QString& folder,
+                                    const QString& filter) {
+    if (std::optional<QString>& next = nextFileName(); next.has_value()) {
+        const QString answer = *next;
+        next.reset();
+        return answer;
+    }
+    return QFileDialog::getOpenFileName(parent, caption, folder, filter);
+}
+
+void FileDialog::setNextFileName(const QString& fileName) {
+    nextFileName() = fileName;
+}
+
+} // namespace hs::workstation

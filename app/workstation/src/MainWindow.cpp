@@ -1,0 +1,402 @@
+#include "hs/workstation/MainWindow.h"
+
+#include "hs/widgets/view/MeshDisplay.h"
+#include "hs/workstation/FileDialog.h"
+#include "hs/workstation/MessageBox.h"
+
+#include <QAction>
+#include <QCloseEvent>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QLabel>
+#include <QLocale>
+#include <QMenu>
+#include <QMenuBar>
+#include <QSettings>
+#include <QStatusBar>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <vtkCamera.h>
+#include <vtkRenderer.h>
+
+#include <exception>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <variant>
+
+namespace hs::workstation {
+namespace {
+
+const char* const kGeometryKey = "window/geometry";
+const char* const kStateKey = "window/state";
+const char* const kRecentFilesKey = "files/recent";
+const char* const kLastFolderKey = "files/lastFolder";
+
+constexpr double kBackgroundTop[3] = {0.32, 0.34, 0.43};
+constexpr double kBackgroundBottom[3] = {0.08, 0.08, 0.12};
+/// Reset Camera looks at the mesh from the front, turned by these angles (degrees) so its depth shows.
+constexpr double kViewAzimuth = 30.0;
+constexpr double kViewElevation = 20.0;
+
+/// Runs on a worker thread: reads the file and carries a result or an error (never an exception) back.
+LoadedMesh loadMesh(const QString& path) {
+    LoadedMesh loaded;
+    loaded.path = path;
+    try {
+        Result<io::AnyMesh> result = io::readMesh(QFile::encodeName(path).toStdString());
+        if (result.ok())
+            loaded.mesh = std::make_shared<const io::AnyMesh>(std::move(result).value());
+        else
+            loaded.error = result.error();
+    } catch (const std::exception& e) {
+        // Not expected (readers return errors), but a worker must not take the application down with it.
+        loaded.error = Error{ErrorCode::Internal, e.what()};
+    }
+    return loaded;
+}
+
+QString formatCount(std::size_t count) {
+    return QLocale().toString(static_cast<qulonglong>(count));
+}
+
+QString patternsOf(const QStringList& extensions) {
+    QStringList patterns;
+    for (const QString& extension : extensions)
+        patterns.append(QLatin1Char('*') + extension);
+    return patterns.join(QLatin1Char(' '));
+}
+
+} // namespace
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+    setObjectName("mainWindow");
+    setWindowTitle(tr("Hysteroscene"));
+
+    m_view = new widgets::VtkView(this);
+    m_view->setObjectName("view");
+    m_view->renderer()->GradientBackgroundOn();
+    m_view->renderer()->SetBackground(kBackgroundBottom[0], kBackgroundBottom[1], kBackgroundBottom[2]);
+    m_view->renderer()->SetBackground2(kBackgroundTop[0], kBackgroundTop[1], kBackgroundTop[2]);
+    setCentralWidget(m_view);
+    m_display = std::make_unique<widgets::MeshDisplay>(m_view->renderer());
+
+    createActions();
+    createMenus();
+    createStatusBar();
+    readSettings();
+    rebuildRecentMenu();
+    updateStatus();
+
+    connect(&m_loadWatcher, &QFutureWatcher<LoadedMesh>::finished, this, &MainWindow::onLoadFinished);
+    connect(m_view, &widgets::VtkView::picked, this, &MainWindow::onPicked);
+}
+
+MainWindow::~MainWindow() {
+    // The worker touches nothing of the window, but it should not outlive it either.
+    m_loadWatcher.waitForFinished();
+}
+
+void MainWindow::createActions() {
+    m_openAction = new QAction(tr("&Open..."), this);
+    m_openAction->setObjectName("actionOpen");
+    m_openAction->setShortcut(QKeySequence::Open);
+    m_openAction->setStatusTip(tr("Open a surface or tetrahedral mesh"));
+    connect(m_openAction, &QAction::triggered, this, &MainWindow::onOpen);
+
+    m_quitAction = new QAction(tr("&Quit"), this);
+    m_quitAction->setObjectName("actionQuit");
+    m_quitAction->setShortcut(QKeySequence::Quit);
+    m_quitAction->setMenuRole(QAction::QuitRole);
+    connect(m_quitAction, &QAction::triggered, this, &QWidget::close);
+
+    m_clearRecentAction = new QAction(tr("&Clear Menu"), this);
+    m_clearRecentAction->setObjectName("actionClearRecent");
+    connect(m_clearRecentAction, &QAction::triggered, this, &MainWindow::onClearRecent);
+
+    m_clipAction = new QAction(tr("&Clip"), this);
+    m_clipAction->setObjectName("actionClip");
+    m_clipAction->setCheckable(true);
+    m_clipAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_K));
+    m_clipAction->setStatusTip(tr("Cut the tetrahedral mesh open and show the tetrahedra on the cut"));
+    m_clipAction->setEnabled(false);
+    connect(m_clipAction, &QAction::toggled, this, &MainWindow::onClipToggled);
+
+    m_resetCameraAction = new QAction(tr("&Reset Camera"), this);
+    m_resetCameraAction->setObjectName("actionResetCamera");
+    m_resetCameraAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+    connect(m_resetCameraAction, &QAction::triggered, this, &MainWindow::onResetCamera);
+
+    m_aboutAction = new QAction(tr("&About Hysteroscene"), this);
+    m_aboutAction->setObjectName("actionAbout");
+    m_aboutAction->setMenuRole(QAction::AboutRole);
+    connect(m_aboutAction, &QAction::triggered, this, &MainWindow::onAbout);
+}
+
+void MainWindow::createMenus() {
+    QMenu* fileMenu = menuBar()->addMenu(tr("&File"));
+    fileMenu->setObjectName("menuFile");
+    fileMenu->addAction(m_openAction);
+    m_recentMenu = fileMenu->addMenu(tr("Open &Recent"));
+    m_recentMenu->setObjectName("menuRecent");
+    fileMenu->addSeparator();
+    fileMenu->addAction(m_quitAction);
+
+    QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
+    viewMenu->setObjectName("menuView");
+    viewMenu->addAction(m_clipAction);
+    viewMenu->addAction(m_resetCameraAction);
+
+    QMenu* helpMenu = menuBar()->addMenu(tr("&Help"));
+    helpMenu->setObjectName("menuHelp");
+    helpMenu->addAction(m_aboutAction);
+}
+
+void MainWindow::createStatusBar() {
+    m_pickLabel = new QLabel(this);
+    m_pickLabel->setObjectName("pickLabel");
+    m_countsLabel = new QLabel(this);
+    m_countsLabel->setObjectName("countsLabel");
+    m_fileLabel = new QLabel(this);
+    m_fileLabel->setObjectName("fileLabel");
+    m_fileLabel->setContentsMargins(12, 0, 4, 0);
+    statusBar()->addWidget(m_pickLabel, 1);
+    statusBar()->addPermanentWidget(m_countsLabel);
+    statusBar()->addPermanentWidget(m_fileLabel);
+}
+
+// --- Settings -----------------------------------------------------------------------------------------------------
+
+void MainWindow::readSettings() {
+    const QSettings settings;
+    if (!restoreGeometry(settings.value(kGeometryKey).toByteArray()))
+        resize(1100, 760);
+    restoreState(settings.value(kStateKey).toByteArray());
+    m_recentFiles = settings.value(kRecentFilesKey).toStringList();
+    while (m_recentFiles.size() > kMaxRecentFiles)
+        m_recentFiles.removeLast();
+    m_lastFolder = settings.value(kLastFolderKey, QDir::homePath()).toString();
+}
+
+void MainWindow::writeSettings() const {
+    QSettings settings;
+    settings.setValue(kGeometryKey, saveGeometry());
+    settings.setValue(kStateKey, saveState());
+    settings.setValue(kRecentFilesKey, m_recentFiles);
+    settings.setValue(kLastFolderKey, m_lastFolder);
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    writeSettings();
+    event->accept();
+}
+
+bool MainWindow::saveScreenshot(const QString& path) {
+    m_view->requestRender();
+    return grab().save(path);
+}
+
+// --- Opening files ------------------------------------------------------------------------------------------------
+
+QString MainWindow::openFilter() const {
+    QStringList all;
+    QStringList surfaces;
+    QStringList volumes;
+    for (const std::string& extension : io::supportedExtensions()) {
+        const QString qExtension = QString::fromStdString(extension);
+        all.append(qExtension);
+        const Result<io::MeshFormat> format = io::formatFromPath("mesh" + extension);
+        if (format.ok() && io::isTetFormat(*format))
+            volumes.append(qExtension);
+        else
+            surfaces.append(qExtension);
+    }
+    return QStringList{tr("All meshes (%1)").arg(patternsOf(all)), tr("Surface meshes (%1)").arg(patternsOf(surfaces)),
+                       tr("Tetrahedral meshes (%1)").arg(patternsOf(volumes)), tr("All files (*)")}
+        .join(QStringLiteral(";;"));
+}
+
+void MainWindow::onOpen() {
+    const QString path = FileDialog::getOpenFileName(this, tr("Open Mesh"), m_lastFolder, openFilter());
+    if (path.isEmpty())
+        return; // cancelled
+    m_lastFolder = QFileInfo(path).absolutePath();
+    QSettings().setValue(kLastFolderKey, m_lastFolder);
+    openFile(path);
+}
+
+void MainWindow::openFile(const QString& path) {
+    const QString absolutePath = QFileInfo(path).absoluteFilePath();
+    statusBar()->showMessage(tr("Opening %1...").arg(QDir::toNativeSeparators(absolutePath)));
+    // A newer request replaces the one being watched; the older result is dropped.
+    m_loadWatcher.setFuture(QtConcurrent::run(loadMesh, absolutePath));
+}
+
+bool MainWindow::isLoading() const {
+    return m_loadWatcher.isRunning();
+}
+
+void MainWindow::onLoadFinished() {
+    statusBar()->clearMessage();
+    const LoadedMesh loaded = m_loadWatcher.result();
+    if (loaded.error) {
+        showLoadError(loaded.path, *loaded.error);
+        emit loadFailed(loaded.path);
+        return;
+    }
+    showMesh(loaded);
+    emit fileLoaded(loaded.path);
+}
+
+void MainWindow::showMesh(const LoadedMesh& loaded) {
+    std::visit(
+        [this](const auto& mesh) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(mesh)>, SurfaceMesh>)
+                m_display->showSurface(mesh);
+            else
+                m_display->showTetMesh(mesh);
+        },
+        *loaded.mesh);
+    m_clipAction->setEnabled(m_display->isTetMesh());
+    onResetCamera();
+    m_currentFile = loaded.path;
+    setWindowTitle(tr("%1 - Hysteroscene").arg(QFileInfo(loaded.path).fileName()));
+    m_pickLabel->clear();
+    addRecentFile(loaded.path);
+    updateStatus();
+}
+
+void MainWindow::showLoadError(const QString& path, const Error& error) {
+    const QString name = QDir::toNativeSeparators(path);
+    QString text;
+    switch (error.code) {
+    case ErrorCode::NotFound:
+        text = tr("The file %1 does not exist.").arg(name);
+        removeRecentFile(path);
+        break;
+    case ErrorCode::IoError:
+        text = tr("The file %1 could not be read.").arg(name);
+        break;
+    case ErrorCode::Unsupported:
+        text = tr("The file %1 is in a format or version this program does not read.").arg(name);
+        break;
+    case ErrorCode::LimitExceeded:
+        text = tr("The file %1 is larger than this program accepts.").arg(name);
+        break;
+    case ErrorCode::InvalidInput:
+        text = tr("The file %1 is not a valid mesh.").arg(name);
+        break;
+    default:
+        text = tr("The file %1 could not be opened.").arg(name);
+        break;
+    }
+    MessageBox::critical(this, tr("Open Mesh"), text, QString::fromStdString(error.message()));
+}
+
+// --- Recent files -------------------------------------------------------------------------------------------------
+
+void MainWindow::addRecentFile(const QString& path) {
+    m_recentFiles.removeAll(path);
+    m_recentFiles.prepend(path);
+    while (m_recentFiles.size() > kMaxRecentFiles)
+        m_recentFiles.removeLast();
+    QSettings().setValue(kRecentFilesKey, m_recentFiles);
+    rebuildRecentMenu();
+}
+
+void MainWindow::removeRecentFile(const QString& path) {
+    if (m_recentFiles.removeAll(path) == 0)
+        return;
+    QSettings().setValue(kRecentFilesKey, m_recentFiles);
+    rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu() {
+    m_recentMenu->clear();
+    for (int i = 0; i < m_recentFiles.size(); ++i) {
+        const QString& path = m_recentFiles.at(i);
+        QAction* action = m_recentMenu->addAction(QStringLiteral("&%1 %2").arg(i + 1).arg(QFileInfo(path).fileName()));
+        action->setObjectName(QStringLiteral("recentFile%1").arg(i));
+        action->setData(path);
+        action->setToolTip(QDir::toNativeSeparators(path));
+        connect(action, &QAction::triggered, this, &MainWindow::onOpenRecent);
+    }
+    m_recentMenu->addSeparator();
+    m_recentMenu->addAction(m_clearRecentAction);
+    m_clearRecentAction->setEnabled(!m_recentFiles.isEmpty());
+}
+
+void MainWindow::onOpenRecent() {
+    if (const auto* action = qobject_cast<QAction*>(sender()))
+        openFile(action->data().toString());
+}
+
+void MainWindow::onClearRecent() {
+    m_recentFiles.clear();
+    QSettings().setValue(kRecentFilesKey, m_recentFiles);
+    rebuildRecentMenu();
+}
+
+// --- View ---------------------------------------------------------------------------------------------------------
+
+void MainWindow::onClipToggled(bool enabled) {
+    m_display->setClipEnabled(enabled);
+    m_view->requestRender();
+    updateStatus();
+}
+
+void MainWindow::onResetCamera() {
+    vtkCamera* camera = m_view->renderer()->GetActiveCamera();
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    camera->SetPosition(0.0, 0.0, 1.0);
+    camera->SetViewUp(0.0, 1.0, 0.0);
+    camera->Azimuth(kViewAzimuth);
+    camera->Elevation(kViewElevation);
+    camera->OrthogonalizeViewUp();
+    m_view->resetCamera();
+}
+
+void MainWindow::onPicked(const widgets::PickResult& result) {
+    if (!result.hit) {
+        m_pickLabel->setText(tr("Nothing picked"));
+        return;
+    }
+    const QLocale locale;
+    m_pickLabel->setText(tr("Picked (%1, %2, %3) mm")
+                             .arg(locale.toString(double(result.point.x()), 'f', 2),
+                                  locale.toString(double(result.point.y()), 'f', 2),
+                                  locale.toString(double(result.point.z()), 'f', 2)));
+}
+
+void MainWindow::updateStatus() {
+    if (m_display->isEmpty()) {
+        m_countsLabel->setText(tr("No mesh"));
+        m_fileLabel->clear();
+        return;
+    }
+    const widgets::MeshCounts& counts = m_display->counts();
+    QString text;
+    if (m_display->isTetMesh()) {
+        text = tr("Vertices: %1   Tetrahedra: %2   Regions: %3")
+                   .arg(formatCount(counts.vertices), formatCount(counts.tets), formatCount(counts.regions));
+        if (m_display->clipEnabled())
+            text += QStringLiteral("   ") + tr("Shown: %1").arg(formatCount(m_display->visibleCellCount()));
+    } else {
+        text = tr("Vertices: %1   Triangles: %2   Regions: %3")
+                   .arg(formatCount(counts.vertices), formatCount(counts.triangles), formatCount(counts.regions));
+    }
+    m_countsLabel->setText(text);
+    m_fileLabel->setText(QFileInfo(m_currentFile).fileName());
+    m_fileLabel->setToolTip(QDir::toNativeSeparators(m_currentFile));
+}
+
+void MainWindow::onAbout() {
+    MessageBox::about(this, tr("About Hysteroscene"),
+                      tr("<h3>Hysteroscene %1</h3>"
+                         "<p>A scenario authoring workstation for hysteroscopy training simulators.</p>"
+                         "<p>Licensed under the GNU General Public License, version 3 or later.</p>")
+                          .arg(QStringLiteral(HS_VERSION)));
+}
+
+} // namespace hs::workstation

@@ -1,0 +1,297 @@
+// Qt Test for the workstation's main window, driven like a user through its seams (file dialog, message boxes).
+// Needs a display (xvfb-run -a).
+#include "GuiTestMeshes.h"
+#include "hs/io/MeshIO.h"
+#include "hs/widgets/view/MeshDisplay.h"
+#include "hs/widgets/view/VtkView.h"
+#include "hs/workstation/FileDialog.h"
+#include "hs/workstation/MainWindow.h"
+#include "hs/workstation/MessageBox.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QFile>
+#include <QLabel>
+#include <QLocale>
+#include <QMenu>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <memory>
+
+using hs::workstation::FileDialog;
+using hs::workstation::MainWindow;
+using hs::workstation::MessageBox;
+
+namespace {
+
+constexpr int kLoadTimeoutMs = 20000;
+constexpr double kSphereRadius = 10.0;
+
+QString count(std::size_t n) {
+    return QLocale().toString(static_cast<qulonglong>(n));
+}
+
+} // namespace
+
+class TestMainWindow : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void init();
+    void cleanup();
+
+    void opensFileChosenInFileDialog();
+    void cancelledDialogKeepsWindowAsItWas();
+    void statusBarCountsMatchFile_data();
+    void statusBarCountsMatchFile();
+    void clipToggleShowsCutTetrahedra();
+    void clipShortcutTogglesClip();
+    void clickOnViewPicksSurfacePoint();
+    void recentFilesPersistInSettings();
+    void badFileShowsErrorAndKeepsMesh();
+    void missingRecentFileIsForgotten();
+    void aboutGoesThroughMessageBox();
+    void closingSavesWindowGeometry();
+
+private:
+    template <class T>
+    T* find(const QString& name) const {
+        return m_window->findChild<T*>(name);
+    }
+    QString fixture(const QString& name) const { return m_dir.filePath(name); }
+    bool openThroughDialog(const QString& path);
+    QImage viewImage() const { return m_window->view()->grabImage(); }
+
+    QTemporaryDir m_dir;
+    QTemporaryDir m_settingsDir;
+    hs::SurfaceMesh m_sphere;
+    hs::TetMesh m_cube;
+    std::unique_ptr<MainWindow> m_window;
+};
+
+void TestMainWindow::initTestCase() {
+    QVERIFY(m_dir.isValid() && m_settingsDir.isValid());
+    // Settings go to a scratch folder, never to the user's configuration.
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settingsDir.path());
+    QCoreApplication::setOrganizationName("hysteroscene-test");
+    QCoreApplication::setApplicationName("test_workstation");
+    MessageBox::setRecording(true);
+
+    m_sphere = hs::test::makeSphere(kSphereRadius);
+    m_sphere.faceLabels.clear(); // OFF carries no labels
+    QVERIFY(hs::io::writeSurface(m_sphere, fixture("sphere.off").toStdString()).ok());
+    m_cube = hs::test::makeTetCube(5);
+    QVERIFY(hs::io::writeTetMesh(m_cube, fixture("cube.vtu").toStdString()).ok());
+    QFile bad(fixture("bad.off"));
+    QVERIFY(bad.open(QIODevice::WriteOnly));
+    bad.write("OFF\n4 2 0\n0 0 0\n1 0 0\n0 1\n"); // truncated in the middle of the points
+    bad.close();
+}
+
+void TestMainWindow::init() {
+    QSettings().clear();
+    MessageBox::takeRecorded();
+    m_window = std::make_unique<MainWindow>();
+    m_window->resize(800, 600);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    QTRY_VERIFY(m_window->view()->renderCount() > 0);
+}
+
+void TestMainWindow::cleanup() {
+    m_window.reset();
+    QCOMPARE(MessageBox::takeRecorded().size(), 0); // no test leaves an unexpected message behind
+}
+
+bool TestMainWindow::openThroughDialog(const QString& path) {
+    QSignalSpy loaded(m_window.get(), &MainWindow::fileLoaded);
+    FileDialog::setNextFileName(path);
+    find<QAction>("actionOpen")->trigger();
+    return loaded.wait(kLoadTimeoutMs);
+}
+
+void TestMainWindow::opensFileChosenInFileDialog() {
+    const QImage empty = viewImage();
+    QVERIFY(openThroughDialog(fixture("sphere.off")));
+    QCOMPARE(m_window->currentFile(), fixture("sphere.off"));
+    QCOMPARE(find<QLabel>("fileLabel")->text(), QStringLiteral("sphere.off"));
+    const QImage shown = viewImage();
+    const int changed = hs::test::pixelsDifferentBetween(empty, shown);
+    QVERIFY2(changed > shown.width() * shown.height() / 20, qPrintable(QString::number(changed)));
+    QVERIFY(m_window->windowTitle().contains("sphere.off"));
+}
+
+void TestMainWindow::cancelledDialogKeepsWindowAsItWas() {
+    QVERIFY(openThroughDialog(fixture("sphere.off")));
+    QSignalSpy loaded(m_window.get(), &MainWindow::fileLoaded);
+    FileDialog::setNextFileName(QString());
+    find<QAction>("actionOpen")->trigger();
+    QVERIFY(!m_window->isLoading());
+    QCOMPARE(loaded.count(), 0);
+    QCOMPARE(m_window->currentFile(), fixture("sphere.off"));
+}
+
+void TestMainWindow::statusBarCountsMatchFile_data() {
+    QTest::addColumn<QString>("file");
+    QTest::addColumn<QString>("expected"); // the counts, as the status bar should read them
+    QTest::newRow("surface") << "sphere.off"
+                             << QStringLiteral("Vertices: %1   Triangles: %2   Regions: 1")
+                                    .arg(count(m_sphere.vertexCount()), count(m_sphere.faceCount()));
+    QTest::newRow("tetrahedra") << "cube.vtu"
+                                << QStringLiteral("Vertices: %1   Tetrahedra: %2   Regions: 2")
+                                       .arg(count(m_cube.vertexCount()), count(m_cube.tetCount()));
+}
+
+void TestMainWindow::statusBarCountsMatchFile() {
+    QFETCH(QString, file);
+    QFETCH(QString, expected);
+    QVERIFY(openThroughDialog(fixture(file)));
+    QCOMPARE(find<QLabel>("countsLabel")->text(), expected);
+    QCOMPARE(find<QLabel>("fileLabel")->text(), file);
+}
+
+void TestMainWindow::clipToggleShowsCutTetrahedra() {
+    QVERIFY(openThroughDialog(fixture("cube.vtu")));
+    auto* clip = find<QAction>("actionClip");
+    QVERIFY(clip->isEnabled());
+    QVERIFY(!clip->isChecked());
+    const QImage whole = viewImage();
+    QCOMPARE(m_window->display().visibleCellCount(), m_cube.tetCount());
+
+    clip->trigger();
+    QVERIFY(clip->isChecked());
+    const std::size_t shown = m_window->display().visibleCellCount();
+    QVERIFY2(shown > 0 && shown < m_cube.tetCount(), qPrintable(QString::number(shown)));
+    QVERIFY(find<QLabel>("countsLabel")->text().endsWith(QStringLiteral("Shown: %1").arg(count(shown))));
+    const QImage cut = viewImage();
+    const int changed = hs::test::pixelsDifferentBetween(whole, cut);
+    QVERIFY2(changed > 1000, qPrintable(QString::number(changed)));
+
+    clip->trigger();
+    QCOMPARE(m_window->display().visibleCellCount(), m_cube.tetCount());
+    QVERIFY(hs::test::pixelsDifferentBetween(whole, viewImage()) < 50);
+}
+
+void TestMainWindow::clipShortcutTogglesClip() {
+    QVERIFY(openThroughDialog(fixture("cube.vtu")));
+    auto* clip = find<QAction>("actionClip");
+    m_window->activateWindow();
+    QTRY_VERIFY(m_window->isActiveWindow());
+    QTest::keyClick(m_window.get(), Qt::Key_K, Qt::ControlModifier);
+    QVERIFY(clip->isChecked());
+    QTest::keyClick(m_window->view(), Qt::Key_K, Qt::ControlModifier);
+    QVERIFY(!clip->isChecked());
+}
+
+void TestMainWindow::clickOnViewPicksSurfacePoint() {
+    QVERIFY(openThroughDialog(fixture("sphere.off")));
+    hs::widgets::VtkView* view = find<hs::widgets::VtkView>("view");
+    QVERIFY(view);
+    QSignalSpy picked(view, &hs::widgets::VtkView::picked);
+    QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, view->rect().center() + QPoint(20, -15));
+    QCOMPARE(picked.count(), 1);
+    const auto result = picked.takeFirst().at(0).value<hs::widgets::PickResult>();
+    QVERIFY(result.hit);
+    QVERIFY(std::abs(double(result.point.length()) - kSphereRadius) < 0.05 * kSphereRadius);
+    const QString text = find<QLabel>("pickLabel")->text();
+    QVERIFY2(text.startsWith("Picked (") && text.endsWith(") mm"), qPrintable(text));
+
+    QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, QPoint(3, 3));
+    QCOMPARE(find<QLabel>("pickLabel")->text(), QStringLiteral("Nothing picked"));
+}
+
+void TestMainWindow::recentFilesPersistInSettings() {
+    QVERIFY(openThroughDialog(fixture("sphere.off")));
+    QVERIFY(openThroughDialog(fixture("cube.vtu")));
+    QVERIFY(openThroughDialog(fixture("sphere.off"))); // moves to the top, not listed twice
+    const QStringList expected{fixture("sphere.off"), fixture("cube.vtu")};
+    QCOMPARE(m_window->recentFiles(), expected);
+
+    // A new window (a new session) reads the list back from the settings.
+    m_window = std::make_unique<MainWindow>();
+    QCOMPARE(m_window->recentFiles(), expected);
+    QCOMPARE(QSettings().value("files/recent").toStringList(), expected);
+    auto* menu = find<QMenu>("menuRecent");
+    QVERIFY(menu);
+    auto* second = menu->findChild<QAction*>("recentFile1");
+    QVERIFY(second);
+    QCOMPARE(second->data().toString(), fixture("cube.vtu"));
+    QCOMPARE(QSettings().value("files/lastFolder").toString(), m_dir.path());
+
+    QSignalSpy loaded(m_window.get(), &MainWindow::fileLoaded);
+    second->trigger();
+    QVERIFY(loaded.wait(kLoadTimeoutMs));
+    QCOMPARE(m_window->currentFile(), fixture("cube.vtu"));
+    QCOMPARE(m_window->recentFiles().first(), fixture("cube.vtu"));
+
+    find<QAction>("actionClearRecent")->trigger();
+    QVERIFY(m_window->recentFiles().isEmpty());
+    QVERIFY(QSettings().value("files/recent").toStringList().isEmpty());
+}
+
+void TestMainWindow::badFileShowsErrorAndKeepsMesh() {
+    QVERIFY(openThroughDialog(fixture("sphere.off")));
+    const QString counts = find<QLabel>("countsLabel")->text();
+    const QImage before = viewImage();
+
+    QSignalSpy failed(m_window.get(), &MainWindow::loadFailed);
+    FileDialog::setNextFileName(fixture("bad.off"));
+    find<QAction>("actionOpen")->trigger();
+    QVERIFY(failed.wait(kLoadTimeoutMs));
+
+    const QList<MessageBox::Message> messages = MessageBox::takeRecorded();
+    QCOMPARE(messages.size(), 1);
+    QCOMPARE(messages.first().icon, MessageBox::Icon::Critical);
+    QCOMPARE(messages.first().title, QStringLiteral("Open Mesh"));
+    QVERIFY2(messages.first().text.contains("bad.off"), qPrintable(messages.first().text));
+    QVERIFY(!messages.first().details.isEmpty());
+
+    QCOMPARE(m_window->currentFile(), fixture("sphere.off"));
+    QCOMPARE(find<QLabel>("countsLabel")->text(), counts);
+    QVERIFY(hs::test::pixelsDifferentBetween(before, viewImage()) < 50);
+    QVERIFY(!m_window->recentFiles().contains(fixture("bad.off")));
+}
+
+void TestMainWindow::missingRecentFileIsForgotten() {
+    const QString gone = fixture("gone.off");
+    QVERIFY(QFile::copy(fixture("sphere.off"), gone));
+    QVERIFY(openThroughDialog(gone));
+    QVERIFY(QFile::remove(gone));
+    QSignalSpy failed(m_window.get(), &MainWindow::loadFailed);
+    find<QMenu>("menuRecent")->findChild<QAction*>("recentFile0")->trigger();
+    QVERIFY(failed.wait(kLoadTimeoutMs));
+    const QList<MessageBox::Message> messages = MessageBox::takeRecorded();
+    QCOMPARE(messages.size(), 1);
+    QVERIFY(messages.first().text.contains("does not exist"));
+    QVERIFY(!m_window->recentFiles().contains(gone));
+}
+
+void TestMainWindow::aboutGoesThroughMessageBox() {
+    find<QAction>("actionAbout")->trigger();
+    const QList<MessageBox::Message> messages = MessageBox::takeRecorded();
+    QCOMPARE(messages.size(), 1);
+    QVERIFY(messages.first().text.contains(QStringLiteral(HS_VERSION)));
+}
+
+void TestMainWindow::closingSavesWindowGeometry() {
+    m_window->resize(700, 500);
+    find<QAction>("actionQuit")->trigger();
+    QVERIFY(!m_window->isVisible());
+    QVERIFY(!QSettings().value("window/geometry").toByteArray().isEmpty());
+    m_window = std::make_unique<MainWindow>();
+    QCOMPARE(m_window->size(), QSize(700, 500));
+}
+
+int main(int argc, char** argv) {
+    QSurfaceFormat::setDefaultFormat(hs::widgets::VtkView::defaultFormat());
+    QApplication app(argc, argv);
+    TestMainWindow test;
+    return QTest::qExec(&test, argc, argv);
+}
+
+#include "TestMainWindow.moc"

@@ -1,0 +1,74 @@
+// Qt Test for the embedded translations and the translator's English fallback.
+#include "hs/translations/Translations.h"
+#include "hs/workstation/Translator.h"
+
+#include <QCoreApplication>
+#include <QLocale>
+#include <QTest>
+#include <QTranslator>
+
+class TestTranslations : public QObject {
+    Q_OBJECT
+
+private slots:
+    void cleanup();
+    void everyLanguageIsEmbedded();
+    void loadsRequestedLanguage_data();
+    void loadsRequestedLanguage();
+    void unknownLanguageFallsBackToEnglish();
+
+private:
+    static QString fileMenuTitle() { return QCoreApplication::translate("hs::workstation::MainWindow", "&File"); }
+    void removeTranslators();
+};
+
+void TestTranslations::removeTranslators() {
+    const auto translators = QCoreApplication::instance()->findChildren<QTranslator*>();
+    for (QTranslator* translator : translators) {
+        QCoreApplication::removeTranslator(translator);
+        delete translator;
+    }
+}
+
+void TestTranslations::cleanup() {
+    removeTranslators();
+    QLocale::setDefault(QLocale::c());
+}
+
+void TestTranslations::everyLanguageIsEmbedded() {
+    const QStringList languages = hs::translations::availableLanguages();
+    QCOMPARE(languages, (QStringList{"de", "fr", "it"}));
+}
+
+void TestTranslations::loadsRequestedLanguage_data() {
+    QTest::addColumn<QString>("language");
+    QTest::addColumn<QString>("fileMenu");
+    QTest::newRow("German") << "de"
+                            << "&Datei";
+    QTest::newRow("French") << "fr"
+                            << "&Fichier";
+    QTest::newRow("Italian") << "it"
+                             << "&File";
+    QTest::newRow("Swiss German") << "de_CH"
+                                  << "&Datei";
+    QTest::newRow("English") << "en"
+                             << "&File";
+}
+
+void TestTranslations::loadsRequestedLanguage() {
+    QFETCH(QString, language);
+    QFETCH(QString, fileMenu);
+    const QString loaded = hs::workstation::installTranslators(*QCoreApplication::instance(), language);
+    QCOMPARE(loaded, language.left(2));
+    QCOMPARE(fileMenuTitle(), fileMenu);
+    const QString title = QCoreApplication::translate("hs::workstation::MainWindow", "Open Mesh");
+    QCOMPARE(title == QStringLiteral("Open Mesh"), language == QStringLiteral("en"));
+}
+
+void TestTranslations::unknownLanguageFallsBackToEnglish() {
+    QCOMPARE(hs::workstation::installTranslators(*QCoreApplication::instance(), "tlh"), QStringLiteral("en"));
+    QCOMPARE(fileMenuTitle(), QStringLiteral("&File"));
+}
+
+QTEST_GUILESS_MAIN(TestTranslations)
+#include "TestTranslations.moc"

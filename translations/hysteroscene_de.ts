@@ -1,0 +1,174 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="de">
+<context>
+    <name>hs::workstation::MainWindow</name>
+    <message>
+        <source>Hysteroscene</source>
+        <translation>Hysteroscene</translation>
+    </message>
+    <message>
+        <source>&amp;Open...</source>
+        <translation>Ö&amp;ffnen...</translation>
+    </message>
+    <message>
+        <source>Open a surface or tetrahedral mesh</source>
+        <translation>Eine Oberfläche oder ein Tetraedernetz öffnen</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Menu</source>
+        <translation>Menü &amp;leeren</translation>
+    </message>
+    <message>
+        <source>&amp;Clip</source>
+        <translation>&amp;Schnitt</translation>
+    </message>
+    <message>
+        <source>Cut the tetrahedral mesh open and show the tetrahedra on the cut</source>
+        <translation>Das Tetraedernetz aufschneiden und die Tetraeder an der Schnittfläche zeigen</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Camera</source>
+        <translation>Kamera &amp;zurücksetzen</translation>
+    </message>
+    <message>
+        <source>&amp;About Hysteroscene</source>
+        <translation>Ü&amp;ber Hysteroscene</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <source>All meshes (%1)</source>
+        <translation>Alle Netze (%1)</translation>
+    </message>
+    <message>
+        <source>Surface meshes (%1)</source>
+        <translation>Oberflächennetze (%1)</translation>
+    </message>
+    <message>
+        <source>Tetrahedral meshes (%1)</source>
+        <translation>Tetraedernetze (%1)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Open Mesh</source>
+        <translation>Netz öffnen</translation>
+    </message>
+    <message>
+        <source>Opening %1...</source>
+        <translation>%1 wird geöffnet...</translation>
+    </message>
+    <message>
+        <source>%1 - Hysteroscene</source>
+        <translation>%1 - Hysteroscene</translation>
+    </message>
+    <message>
+        <source>The file %1 does not exist.</source>
+        <translation>Die Datei %1 existiert nicht.</translation>
+    </message>
+    <message>
+        <source>The file %1 could not be read.</source>
+        <translation>Die Datei %1 konnte nicht gelesen werden.</translation>
+    </message>
+    <message>
+        <source>The file %1 is in a format or version this program does not read.</source>
+        <translation>Die Datei %1 liegt in einem Format oder einer Version vor, die dieses Programm nicht lesen kann.</translation>
+    </message>
+    <message>
+        <source>The file %1 is larger than this program accepts.</source>
+        <translation>Die Datei %1 ist größer, als dieses Programm zulässt.</translation>
+    </message>
+    <message>
+        <source>The file %1 is not a valid mesh.</source>
+        <translation>Die Datei %1 ist kein gültiges Netz.</translation>
+    </message>
+    <message>
+        <source>The file %1 could not be opened.</source>
+        <translation>Die Datei %1 konnte nicht geöffnet werden.</translation>
+    </message>
+    <message>
+        <source>Nothing picked</source>
+        <translation>Nichts ausgewählt</translation>
+    </message>
+    <message>
+        <source>Picked (%1, %2, %3) mm</source>
+        <translation>Gewählter Punkt (%1; %2; %3) mm</translation>
+    </message>
+    <message>
+        <source>No mesh</source>
+        <translation>Kein Netz</translation>
+    </message>
+    <message>
+        <source>Vertices: %1   Tetrahedra: %2   Regions: %3</source>
+        <translation>Eckpunkte: %1   Tetraeder: %2   Regionen: %3</translation>
+    </message>
+    <message>
+        <source>Shown: %1</source>
+        <translation>Angezeigt: %1</translation>
+    </message>
+    <message>
+        <source>Vertices: %1   Triangles: %2   Regions: %3</source>
+        <translation>Eckpunkte: %1   Dreiecke: %2   Regionen: %3</translation>
+    </message>
+    <message>
+        <source>About Hysteroscene</source>
+        <translation>Über Hysteroscene</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Hysteroscene %1&lt;/h3&gt;&lt;p&gt;A scenario authoring workstation for hysteroscopy training simulators.&lt;/p&gt;&lt;p&gt;Licensed under the GNU General Public License, version 3 or later.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Hysteroscene %1&lt;/h3&gt;&lt;p&gt;Eine Arbeitsstation zum Erstellen von Szenarien für Hysteroskopie-Trainingssimulatoren.&lt;/p&gt;&lt;p&gt;Lizenziert unter der GNU General Public License, Version 3 oder später.&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Scenario authoring workstation for hysteroscopy training</source>
+        <translation>Arbeitsstation zum Erstellen von Szenarien für das Hysteroskopie-Training</translation>
+    </message>
+    <message>
+        <source>file</source>
+        <translation>Datei</translation>
+    </message>
+    <message>
+        <source>A surface or tetrahedral mesh to open.</source>
+        <translation>Eine zu öffnende Oberfläche oder ein Tetraedernetz.</translation>
+    </message>
+    <message>
+        <source>User-interface language (de, fr, it, en); default: HS_LANG, else the system locale.</source>
+        <translation>Sprache der Benutzeroberfläche (de, fr, it, en); Vorgabe: HS_LANG, sonst die Systemeinstellung.</translation>
+    </message>
+    <message>
+        <source>language</source>
+        <translation>Sprache</translation>
+    </message>
+    <message>
+        <source>Save the window to an image after loading, then quit.</source>
+        <translation>Das Fenster nach dem Laden als Bild speichern und beenden.</translation>
+    </message>
+    <message>
+        <source>image</source>
+        <translation>Bild</translation>
+    </message>
+</context>
+</TS>

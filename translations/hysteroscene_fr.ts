@@ -1,0 +1,174 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="fr">
+<context>
+    <name>hs::workstation::MainWindow</name>
+    <message>
+        <source>Hysteroscene</source>
+        <translation>Hysteroscene</translation>
+    </message>
+    <message>
+        <source>&amp;Open...</source>
+        <translation>&amp;Ouvrir...</translation>
+    </message>
+    <message>
+        <source>Open a surface or tetrahedral mesh</source>
+        <translation>Ouvrir une surface ou un maillage tétraédrique</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Quitter</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Menu</source>
+        <translation>&amp;Effacer le menu</translation>
+    </message>
+    <message>
+        <source>&amp;Clip</source>
+        <translation>&amp;Coupe</translation>
+    </message>
+    <message>
+        <source>Cut the tetrahedral mesh open and show the tetrahedra on the cut</source>
+        <translation>Ouvrir le maillage tétraédrique par une coupe et montrer les tétraèdres sur la coupe</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Camera</source>
+        <translation>&amp;Réinitialiser la caméra</translation>
+    </message>
+    <message>
+        <source>&amp;About Hysteroscene</source>
+        <translation>À &amp;propos de Hysteroscene</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Fichier</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>Fichiers &amp;récents</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Affichage</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>A&amp;ide</translation>
+    </message>
+    <message>
+        <source>All meshes (%1)</source>
+        <translation>Tous les maillages (%1)</translation>
+    </message>
+    <message>
+        <source>Surface meshes (%1)</source>
+        <translation>Maillages surfaciques (%1)</translation>
+    </message>
+    <message>
+        <source>Tetrahedral meshes (%1)</source>
+        <translation>Maillages tétraédriques (%1)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <source>Open Mesh</source>
+        <translation>Ouvrir un maillage</translation>
+    </message>
+    <message>
+        <source>Opening %1...</source>
+        <translation>Ouverture de %1...</translation>
+    </message>
+    <message>
+        <source>%1 - Hysteroscene</source>
+        <translation>%1 - Hysteroscene</translation>
+    </message>
+    <message>
+        <source>The file %1 does not exist.</source>
+        <translation>Le fichier %1 n&apos;existe pas.</translation>
+    </message>
+    <message>
+        <source>The file %1 could not be read.</source>
+        <translation>Le fichier %1 n&apos;a pas pu être lu.</translation>
+    </message>
+    <message>
+        <source>The file %1 is in a format or version this program does not read.</source>
+        <translation>Le fichier %1 est dans un format ou une version que ce programme ne lit pas.</translation>
+    </message>
+    <message>
+        <source>The file %1 is larger than this program accepts.</source>
+        <translation>Le fichier %1 dépasse la taille acceptée par ce programme.</translation>
+    </message>
+    <message>
+        <source>The file %1 is not a valid mesh.</source>
+        <translation>Le fichier %1 n&apos;est pas un maillage valide.</translation>
+    </message>
+    <message>
+        <source>The file %1 could not be opened.</source>
+        <translation>Le fichier %1 n&apos;a pas pu être ouvert.</translation>
+    </message>
+    <message>
+        <source>Nothing picked</source>
+        <translation>Aucun point sélectionné</translation>
+    </message>
+    <message>
+        <source>Picked (%1, %2, %3) mm</source>
+        <translation>Point sélectionné (%1 ; %2 ; %3) mm</translation>
+    </message>
+    <message>
+        <source>No mesh</source>
+        <translation>Aucun maillage</translation>
+    </message>
+    <message>
+        <source>Vertices: %1   Tetrahedra: %2   Regions: %3</source>
+        <translation>Sommets : %1   Tétraèdres : %2   Régions : %3</translation>
+    </message>
+    <message>
+        <source>Shown: %1</source>
+        <translation>Affichés : %1</translation>
+    </message>
+    <message>
+        <source>Vertices: %1   Triangles: %2   Regions: %3</source>
+        <translation>Sommets : %1   Triangles : %2   Régions : %3</translation>
+    </message>
+    <message>
+        <source>About Hysteroscene</source>
+        <translation>À propos de Hysteroscene</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Hysteroscene %1&lt;/h3&gt;&lt;p&gt;A scenario authoring workstation for hysteroscopy training simulators.&lt;/p&gt;&lt;p&gt;Licensed under the GNU General Public License, version 3 or later.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Hysteroscene %1&lt;/h3&gt;&lt;p&gt;Un poste de création de scénarios pour les simulateurs de formation à l&apos;hystéroscopie.&lt;/p&gt;&lt;p&gt;Distribué sous la licence publique générale GNU (GPL), version 3 ou ultérieure.&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Scenario authoring workstation for hysteroscopy training</source>
+        <translation>Poste de création de scénarios pour la formation à l&apos;hystéroscopie</translation>
+    </message>
+    <message>
+        <source>file</source>
+        <translation>fichier</translation>
+    </message>
+    <message>
+        <source>A surface or tetrahedral mesh to open.</source>
+        <translation>Une surface ou un maillage tétraédrique à ouvrir.</translation>
+    </message>
+    <message>
+        <source>User-interface language (de, fr, it, en); default: HS_LANG, else the system locale.</source>
+        <translation>Langue de l&apos;interface (de, fr, it, en) ; par défaut : HS_LANG, sinon la langue du système.</translation>
+    </message>
+    <message>
+        <source>language</source>
+        <translation>langue</translation>
+    </message>
+    <message>
+        <source>Save the window to an image after loading, then quit.</source>
+        <translation>Enregistrer la fenêtre dans une image après le chargement, puis quitter.</translation>
+    </message>
+    <message>
+        <source>image</source>
+        <translation>image</translation>
+    </message>
+</context>
+</TS>

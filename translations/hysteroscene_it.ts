@@ -1,0 +1,174 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="it">
+<context>
+    <name>hs::workstation::MainWindow</name>
+    <message>
+        <source>Hysteroscene</source>
+        <translation>Hysteroscene</translation>
+    </message>
+    <message>
+        <source>&amp;Open...</source>
+        <translation>&amp;Apri...</translation>
+    </message>
+    <message>
+        <source>Open a surface or tetrahedral mesh</source>
+        <translation>Apri una superficie o una mesh tetraedrica</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Esci</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Menu</source>
+        <translation>&amp;Svuota menu</translation>
+    </message>
+    <message>
+        <source>&amp;Clip</source>
+        <translation>Se&amp;zione</translation>
+    </message>
+    <message>
+        <source>Cut the tetrahedral mesh open and show the tetrahedra on the cut</source>
+        <translation>Taglia la mesh tetraedrica e mostra i tetraedri sul taglio</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Camera</source>
+        <translation>&amp;Reimposta la telecamera</translation>
+    </message>
+    <message>
+        <source>&amp;About Hysteroscene</source>
+        <translation>&amp;Informazioni su Hysteroscene</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;File</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>File &amp;recenti</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Visualizza</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Aiuto</translation>
+    </message>
+    <message>
+        <source>All meshes (%1)</source>
+        <translation>Tutte le mesh (%1)</translation>
+    </message>
+    <message>
+        <source>Surface meshes (%1)</source>
+        <translation>Mesh di superficie (%1)</translation>
+    </message>
+    <message>
+        <source>Tetrahedral meshes (%1)</source>
+        <translation>Mesh tetraedriche (%1)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Tutti i file (*)</translation>
+    </message>
+    <message>
+        <source>Open Mesh</source>
+        <translation>Apri mesh</translation>
+    </message>
+    <message>
+        <source>Opening %1...</source>
+        <translation>Apertura di %1...</translation>
+    </message>
+    <message>
+        <source>%1 - Hysteroscene</source>
+        <translation>%1 - Hysteroscene</translation>
+    </message>
+    <message>
+        <source>The file %1 does not exist.</source>
+        <translation>Il file %1 non esiste.</translation>
+    </message>
+    <message>
+        <source>The file %1 could not be read.</source>
+        <translation>Impossibile leggere il file %1.</translation>
+    </message>
+    <message>
+        <source>The file %1 is in a format or version this program does not read.</source>
+        <translation>Il file %1 è in un formato o in una versione che questo programma non legge.</translation>
+    </message>
+    <message>
+        <source>The file %1 is larger than this program accepts.</source>
+        <translation>Il file %1 supera le dimensioni accettate da questo programma.</translation>
+    </message>
+    <message>
+        <source>The file %1 is not a valid mesh.</source>
+        <translation>Il file %1 non è una mesh valida.</translation>
+    </message>
+    <message>
+        <source>The file %1 could not be opened.</source>
+        <translation>Impossibile aprire il file %1.</translation>
+    </message>
+    <message>
+        <source>Nothing picked</source>
+        <translation>Nessun punto selezionato</translation>
+    </message>
+    <message>
+        <source>Picked (%1, %2, %3) mm</source>
+        <translation>Punto selezionato (%1; %2; %3) mm</translation>
+    </message>
+    <message>
+        <source>No mesh</source>
+        <translation>Nessuna mesh</translation>
+    </message>
+    <message>
+        <source>Vertices: %1   Tetrahedra: %2   Regions: %3</source>
+        <translation>Vertici: %1   Tetraedri: %2   Regioni: %3</translation>
+    </message>
+    <message>
+        <source>Shown: %1</source>
+        <translation>Visualizzati: %1</translation>
+    </message>
+    <message>
+        <source>Vertices: %1   Triangles: %2   Regions: %3</source>
+        <translation>Vertici: %1   Triangoli: %2   Regioni: %3</translation>
+    </message>
+    <message>
+        <source>About Hysteroscene</source>
+        <translation>Informazioni su Hysteroscene</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Hysteroscene %1&lt;/h3&gt;&lt;p&gt;A scenario authoring workstation for hysteroscopy training simulators.&lt;/p&gt;&lt;p&gt;Licensed under the GNU General Public License, version 3 or later.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Hysteroscene %1&lt;/h3&gt;&lt;p&gt;Una postazione per la creazione di scenari per simulatori di addestramento all&apos;isteroscopia.&lt;/p&gt;&lt;p&gt;Distribuito con la licenza GNU General Public License, versione 3 o successiva.&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Scenario authoring workstation for hysteroscopy training</source>
+        <translation>Postazione per la creazione di scenari per l&apos;addestramento all&apos;isteroscopia</translation>
+    </message>
+    <message>
+        <source>file</source>
+        <translation>file</translation>
+    </message>
+    <message>
+        <source>A surface or tetrahedral mesh to open.</source>
+        <translation>Una superficie o una mesh tetraedrica da aprire.</translation>
+    </message>
+    <message>
+        <source>User-interface language (de, fr, it, en); default: HS_LANG, else the system locale.</source>
+        <translation>Lingua dell&apos;interfaccia (de, fr, it, en); predefinita: HS_LANG, altrimenti la lingua del sistema.</translation>
+    </message>
+    <message>
+        <source>language</source>
+        <translation>lingua</translation>
+    </message>
+    <message>
+        <source>Save the window to an image after loading, then quit.</source>
+        <translation>Salva la finestra come immagine dopo il caricamento, poi esci.</translation>
+    </message>
+    <message>
+        <source>image</source>
+        <translation>immagine</translation>
+    </message>
+</context>
+</TS>
