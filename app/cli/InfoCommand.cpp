@@ -73,9 +73,8 @@ void addInfoCommand(CLI::App& app, int& exitCode) {
     sub->add_option("FILE", options->path, "mesh file (.obj .stl .ply .off .vtp .vtu .msh .mesh) or case .json")
         ->required();
     sub->add_flag("--json", options->common.json, "print JSON for scripts");
-    sub->callback([options, &exitCode] {
-        exitCode = isCasePath(options->path) ? runCaseInfo(*options) : runMeshInfo(*options);
-    });
+    sub->callback(
+        [options, &exitCode] { exitCode = isCasePath(options->path) ? runCaseInfo(*options) : runMeshInfo(*options); });
 }
 
 } // namespace hs::cli

@@ -77,8 +77,7 @@ void printText(std::ostream& out, const MeshSummary& s) {
         << '\n';
     out << "defects     boundary edges " << t.boundaryEdges << ", non-manifold edges " << t.nonManifoldEdges
         << ", non-manifold vertices " << t.nonManifoldVertices << ", inconsistent edges " << t.inconsistentEdges
-        << ", degenerate faces " << t.degenerateFaces << ", unreferenced vertices " << t.unreferencedVertices
-        << '\n';
+        << ", degenerate faces " << t.degenerateFaces << ", unreferenced vertices " << t.unreferencedVertices << '\n';
     if (s.isTet) {
         out << "inverted    " << s.invertedTets << " tetrahedra\n";
         for (const auto& [region, volume] : s.regionVolumesMm3)

@@ -25,7 +25,7 @@ struct MeshSummary {
     std::size_t cells = 0; ///< triangles or tetrahedra
     Bounds box;
     double surfaceAreaMm2 = 0.0;
-    double volumeMm3 = 0.0; ///< enclosed (surface) or sum of tets (tet mesh)
+    double volumeMm3 = 0.0;   ///< enclosed (surface) or sum of tets (tet mesh)
     SurfaceTopology topology; ///< of the surface, or of the tet mesh's boundary
     std::size_t invertedTets = 0;
     std::map<std::int32_t, double> regionVolumesMm3; ///< tet meshes
