@@ -1,0 +1,426 @@
+// HDF5 file of the shape model, in statismo's layout (version 0.9, as Scalismo writes and reads it):
+//   /version/majorVersion, /version/minorVersion          int
+//   /model/mean [3n], /model/pcaBasis [3n][k] (orthonormal), /model/pcaVariance [k], /model/noiseVariance [1]  float
+//   /representer (attributes name, datasetType = POLYGON_MESH), /representer/points [3][n] float,
+//   /representer/cells [3][m] int
+//   /modelinfo/build-time                                  string
+// and ours under /hysteroscene: conditioning (regression, residual covariance, feature names, patient ranges),
+// template layout and face labels, pose prior, metadata.
+#include "hs/anatomy/ShapeModel.h"
+
+#include "ShapeModelData.h"
+
+#include <hdf5.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+namespace hs::anatomy {
+
+namespace {
+
+constexpr int kFormatVersion = 1;
+constexpr hsize_t kMaxValues = 200'000'000; ///< refuse datasets above this many values (hostile files)
+
+/// Silences HDF5's error printing for the lifetime of the object (we report errors ourselves).
+class QuietErrors {
+public:
+    QuietErrors() {
+        H5Eget_auto2(H5E_DEFAULT, &m_func, &m_data);
+        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    }
+    ~QuietErrors() { H5Eset_auto2(H5E_DEFAULT, m_func, m_data); }
+    QuietErrors(const QuietErrors&) = delete;
+    QuietErrors& operator=(const QuietErrors&) = delete;
+
+private:
+    H5E_auto2_t m_func = nullptr;
+    void* m_data = nullptr;
+};
+
+/// Closes an HDF5 handle with the right function.
+class Handle {
+public:
+    Handle(hid_t id, herr_t (*close)(hid_t)) : m_id(id), m_close(close) {}
+    ~Handle() {
+        if (m_id >= 0)
+            m_close(m_id);
+    }
+    Handle(const Handle&) = delete;
+    Handle& operator=(const Handle&) = delete;
+    hid_t get() const { return m_id; }
+    bool valid() const { return m_id >= 0; }
+
+private:
+    hid_t m_id;
+    herr_t (*m_close)(hid_t);
+};
+
+struct Writer {
+    hid_t file;
+    bool ok = true;
+
+    void dataset(const std::string& path, hid_t type, const std::vector<hsize_t>& dims, const void* values) {
+        Handle lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
+        H5Pset_create_intermediate_group(lcpl.get(), 1);
+        Handle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
+        Handle set(H5Dcreate2(file, path.c_str(), type, space.get(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
+        ok = ok && set.valid() && H5Dwrite(set.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values) >= 0;
+    }
+    void scalarInt(const std::string& path, int value) {
+        Handle lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
+        H5Pset_create_intermediate_group(lcpl.get(), 1);
+        Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+        Handle set(H5Dcreate2(file, path.c_str(), H5T_NATIVE_INT, space.get(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT),
+                   H5Dclose);
+        ok = ok && set.valid() && H5Dwrite(set.get(), H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, &value) >= 0;
+    }
+    void string(const std::string& path, const std::string& value) {
+        Handle lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
+        H5Pset_create_intermediate_group(lcpl.get(), 1);
+        Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+        H5Tset_size(type.get(), std::max<std::size_t>(1, value.size()));
+        Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+        Handle set(H5Dcreate2(file, path.c_str(), type.get(), space.get(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT),
+                   H5Dclose);
+        ok = ok && set.valid() && H5Dwrite(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, value.c_str()) >= 0;
+    }
+    void group(const std::string& path) {
+        Handle g(H5Gcreate2(file, path.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+        ok = ok && g.valid();
+    }
+    void attribute(const std::string& object, const std::string& name, const std::string& value) {
+        Handle obj(H5Oopen(file, object.c_str(), H5P_DEFAULT), H5Oclose);
+        Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+        H5Tset_size(type.get(), std::max<std::size_t>(1, value.size()));
+        Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+        Handle attr(H5Acreate2(obj.get(), name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+        ok = ok && attr.valid() && H5Awrite(attr.get(), type.get(), value.c_str()) >= 0;
+    }
+};
+
+using RowMajorF = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+using RowMajorD = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+std::string join(const std::vector<std::string>& items) {
+    std::string out;
+    for (const auto& s : items)
+        out += (out.empty() ? "" : "\n") + s;
+    return out;
+}
+
+void writeModel(Writer& w, const ShapeModel::Data& d) {
+    const auto n = static_cast<hsize_t>(d.reference.points.size());
+    const auto m = static_cast<hsize_t>(d.reference.triangles.size());
+    const auto k = static_cast<hsize_t>(d.variance.size());
+    w.scalarInt("/version/majorVersion", 0);
+    w.scalarInt("/version/minorVersion", 9);
+    const Eigen::VectorXf mean = d.mean.cast<float>();
+    w.dataset("/model/mean", H5T_NATIVE_FLOAT, {3 * n}, mean.data());
+    const RowMajorF basis = d.basis.cast<float>();
+    w.dataset("/model/pcaBasis", H5T_NATIVE_FLOAT, {3 * n, k}, basis.data());
+    const Eigen::VectorXf variance = d.variance.cast<float>();
+    w.dataset("/model/pcaVariance", H5T_NATIVE_FLOAT, {k}, variance.data());
+    const float noise = static_cast<float>(d.noiseVariance);
+    w.dataset("/model/noiseVariance", H5T_NATIVE_FLOAT, {1}, &noise);
+
+    RowMajorF points(3, static_cast<Eigen::Index>(n));
+    for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(n); ++i)
+        for (int c = 0; c < 3; ++c)
+            points(c, i) = static_cast<float>(d.mean(3 * i + c));
+    std::vector<std::int32_t> cells(3 * m);
+    for (std::size_t f = 0; f < m; ++f)
+        for (std::size_t c = 0; c < 3; ++c)
+            cells[c * m + f] = d.reference.triangles[f][c];
+    w.dataset("/representer/points", H5T_NATIVE_FLOAT, {3, n}, points.data());
+    w.dataset("/representer/cells", H5T_NATIVE_INT32, {3, m}, cells.data());
+    w.attribute("/representer", "name", "hysteroscene::anatomy uterus template");
+    w.attribute("/representer", "datasetType", "POLYGON_MESH");
+    w.string("/modelinfo/build-time", "not recorded (the build is deterministic; see /hysteroscene)");
+}
+
+void writeOurs(Writer& w, const ShapeModel::Data& d) {
+    w.group("/hysteroscene");
+    w.attribute("/hysteroscene", "formatVersion", std::to_string(kFormatVersion));
+    w.attribute("/hysteroscene", "description", d.description);
+    w.attribute("/hysteroscene", "cohortSeed", std::to_string(d.cohortSeed));
+    w.attribute("/hysteroscene", "trainingSize", std::to_string(d.trainingSize));
+    w.scalarInt("/hysteroscene/trainingSize", d.trainingSize);
+    const double totals[2] = {d.totalVariance, d.noiseVariance};
+    w.dataset("/hysteroscene/variance", H5T_NATIVE_DOUBLE, {2}, totals);
+    if (d.conditioned) {
+        const RowMajorD reg = d.regression;
+        w.dataset("/hysteroscene/conditioning/regression", H5T_NATIVE_DOUBLE,
+                  {static_cast<hsize_t>(reg.rows()), static_cast<hsize_t>(reg.cols())}, reg.data());
+        const RowMajorD cov = d.residualCovariance;
+        w.dataset("/hysteroscene/conditioning/residualCovariance", H5T_NATIVE_DOUBLE,
+                  {static_cast<hsize_t>(cov.rows()), static_cast<hsize_t>(cov.cols())}, cov.data());
+        w.attribute("/hysteroscene/conditioning", "featureNames", join(conditioningFeatureNames()));
+        std::vector<double> ranges;
+        std::vector<std::string> names;
+        for (const auto& r : supportedPatientRanges()) {
+            ranges.push_back(r.min);
+            ranges.push_back(r.max);
+            names.push_back(r.name + " [" + r.unit + "]");
+        }
+        w.dataset("/hysteroscene/conditioning/patientRanges", H5T_NATIVE_DOUBLE, {ranges.size() / 2, 2}, ranges.data());
+        w.attribute("/hysteroscene/conditioning/patientRanges", "names", join(names));
+    }
+    const auto& p = d.pose;
+    const double pose[5] = {p.retroversionProbability, p.antevertedMeanDeg, p.antevertedSdDeg, p.retrovertedMeanDeg,
+                            p.retrovertedSdDeg};
+    w.dataset("/hysteroscene/pose", H5T_NATIVE_DOUBLE, {5}, pose);
+    w.attribute("/hysteroscene/pose", "fields",
+                "retroversionProbability antevertedMeanDeg antevertedSdDeg retrovertedMeanDeg retrovertedSdDeg");
+    if (d.layout) {
+        const auto& l = *d.layout;
+        const std::int32_t layout[6] = {l.around, l.outerRings, l.osRings, l.canalRings, l.cavityRings, l.capRings};
+        w.dataset("/hysteroscene/template/layout", H5T_NATIVE_INT32, {6}, layout);
+        w.attribute("/hysteroscene/template/layout", "fields",
+                    "around outerRings osRings canalRings cavityRings capRings");
+    }
+    for (const auto& [name, values] : d.reference.faceLabels)
+        if (!values.empty())
+            w.dataset("/hysteroscene/template/faceLabels/" + name, H5T_NATIVE_INT32, {values.size()}, values.data());
+}
+
+struct Reader {
+    hid_t file;
+    std::string path;
+
+    bool exists(const std::string& object) const {
+        std::string prefix;
+        std::stringstream parts(object);
+        std::string part;
+        while (std::getline(parts, part, '/')) {
+            if (part.empty())
+                continue;
+            prefix += "/" + part;
+            if (H5Lexists(file, prefix.c_str(), H5P_DEFAULT) <= 0)
+                return false;
+        }
+        return true;
+    }
+
+    template <class T>
+    Result<std::vector<T>> read(const std::string& object, hid_t type, std::vector<hsize_t>& dims) const {
+        if (!exists(object))
+            return fail(ErrorCode::InvalidInput, path + ": missing dataset " + object);
+        Handle set(H5Dopen2(file, object.c_str(), H5P_DEFAULT), H5Dclose);
+        Handle space(H5Dget_space(set.get()), H5Sclose);
+        const int rank = H5Sget_simple_extent_ndims(space.get());
+        if (!set.valid() || rank < 0 || rank > 2)
+            return fail(ErrorCode::InvalidInput, path + ": dataset " + object + " is not a vector or matrix");
+        dims.assign(static_cast<std::size_t>(rank), 0);
+        H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
+        hsize_t total = 1;
+        for (const auto d : dims)
+            total *= d;
+        if (total > kMaxValues)
+            return fail(ErrorCode::LimitExceeded, path + ": dataset " + object + " is too large");
+        std::vector<T> values(static_cast<std::size_t>(total));
+        if (H5Dread(set.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
+            return fail(ErrorCode::InvalidInput, path + ": cannot read dataset " + object);
+        return values;
+    }
+};
+
+Status expectDims(const std::string& path, const std::string& object, const std::vector<hsize_t>& dims,
+                  const std::vector<hsize_t>& expected) {
+    if (dims == expected)
+        return {};
+    std::ostringstream out;
+    out << path << ": dataset " << object << " has shape [";
+    for (std::size_t i = 0; i < dims.size(); ++i)
+        out << (i ? "," : "") << dims[i];
+    out << "], expected [";
+    for (std::size_t i = 0; i < expected.size(); ++i)
+        out << (i ? "," : "") << expected[i];
+    out << "]";
+    return fail(ErrorCode::InvalidInput, out.str());
+}
+
+template <class T>
+Status allFinite(const std::string& path, const std::string& object, const std::vector<T>& v) {
+    for (const auto x : v)
+        if (!std::isfinite(static_cast<double>(x)))
+            return fail(ErrorCode::InvalidInput, path + ": dataset " + object + " holds a non-finite value");
+    return {};
+}
+
+Result<std::shared_ptr<ShapeModel::Data>> readModel(const Reader& r) {
+    auto d = std::make_shared<ShapeModel::Data>();
+    std::vector<hsize_t> dims;
+    auto points = r.read<float>("/representer/points", H5T_NATIVE_FLOAT, dims);
+    if (!points)
+        return points.failure();
+    if (dims.size() != 2 || dims[0] != 3 || dims[1] < 3)
+        return fail(ErrorCode::InvalidInput, r.path + ": /representer/points must be [3][n]");
+    const hsize_t n = dims[1];
+    auto cells = r.read<std::int32_t>("/representer/cells", H5T_NATIVE_INT32, dims);
+    if (!cells)
+        return cells.failure();
+    if (dims.size() != 2 || dims[0] != 3)
+        return fail(ErrorCode::InvalidInput, r.path + ": /representer/cells must be [3][m] (triangles)");
+    const hsize_t m = dims[1];
+    auto mean = r.read<float>("/model/mean", H5T_NATIVE_FLOAT, dims);
+    if (!mean)
+        return mean.failure();
+    HS_TRY(expectDims(r.path, "/model/mean", dims, {3 * n}));
+    auto basis = r.read<float>("/model/pcaBasis", H5T_NATIVE_FLOAT, dims);
+    if (!basis)
+        return basis.failure();
+    if (dims.size() != 2 || dims[0] != 3 * n)
+        return fail(ErrorCode::InvalidInput, r.path + ": /model/pcaBasis must be [3n][k]");
+    const hsize_t k = dims[1];
+    auto variance = r.read<float>("/model/pcaVariance", H5T_NATIVE_FLOAT, dims);
+    if (!variance)
+        return variance.failure();
+    HS_TRY(expectDims(r.path, "/model/pcaVariance", dims, {k}));
+    auto noise = r.read<float>("/model/noiseVariance", H5T_NATIVE_FLOAT, dims);
+    if (!noise)
+        return noise.failure();
+    HS_TRY(allFinite(r.path, "/representer/points", *points));
+    HS_TRY(allFinite(r.path, "/model/mean", *mean));
+    HS_TRY(allFinite(r.path, "/model/pcaBasis", *basis));
+    HS_TRY(allFinite(r.path, "/model/pcaVariance", *variance));
+    for (const float v : *variance)
+        if (v < 0.0f)
+            return fail(ErrorCode::InvalidInput, r.path + ": /model/pcaVariance holds a negative variance");
+
+    d->reference.points.resize(static_cast<std::size_t>(n));
+    for (std::size_t i = 0; i < n; ++i)
+        d->reference.points[i] = {(*mean)[3 * i], (*mean)[3 * i + 1], (*mean)[3 * i + 2]};
+    d->reference.triangles.resize(static_cast<std::size_t>(m));
+    for (std::size_t f = 0; f < m; ++f)
+        for (std::size_t c = 0; c < 3; ++c)
+            d->reference.triangles[f][c] = (*cells)[c * m + f];
+    HS_TRY(validate(d->reference));
+    d->mean = Eigen::Map<const Eigen::VectorXf>(mean->data(), static_cast<Eigen::Index>(3 * n)).cast<double>();
+    d->basis =
+        Eigen::Map<const RowMajorF>(basis->data(), static_cast<Eigen::Index>(3 * n), static_cast<Eigen::Index>(k))
+            .cast<double>();
+    d->variance = Eigen::Map<const Eigen::VectorXf>(variance->data(), static_cast<Eigen::Index>(k)).cast<double>();
+    d->noiseVariance = noise->empty() ? 0.0 : static_cast<double>(noise->front());
+    d->totalVariance = d->variance.sum();
+    return d;
+}
+
+Status readOurs(const Reader& r, ShapeModel::Data& d) {
+    if (!r.exists("/hysteroscene"))
+        return {};
+    std::vector<hsize_t> dims;
+    const auto k = static_cast<hsize_t>(d.variance.size());
+    if (r.exists("/hysteroscene/trainingSize")) {
+        auto n = r.read<std::int32_t>("/hysteroscene/trainingSize", H5T_NATIVE_INT32, dims);
+        if (!n || n->size() != 1)
+            return fail(ErrorCode::InvalidInput, r.path + ": /hysteroscene/trainingSize must be one integer");
+        d.trainingSize = n->front();
+    }
+    if (r.exists("/hysteroscene/variance")) {
+        auto v = r.read<double>("/hysteroscene/variance", H5T_NATIVE_DOUBLE, dims);
+        if (!v)
+            return v.failure();
+        HS_TRY(expectDims(r.path, "/hysteroscene/variance", dims, {2}));
+        d.totalVariance = (*v)[0];
+        d.noiseVariance = (*v)[1];
+    }
+    if (r.exists("/hysteroscene/conditioning")) {
+        const auto p = static_cast<hsize_t>(conditioningFeatureNames().size());
+        auto reg = r.read<double>("/hysteroscene/conditioning/regression", H5T_NATIVE_DOUBLE, dims);
+        if (!reg)
+            return reg.failure();
+        HS_TRY(expectDims(r.path, "/hysteroscene/conditioning/regression", dims, {p, k}));
+        auto cov = r.read<double>("/hysteroscene/conditioning/residualCovariance", H5T_NATIVE_DOUBLE, dims);
+        if (!cov)
+            return cov.failure();
+        HS_TRY(expectDims(r.path, "/hysteroscene/conditioning/residualCovariance", dims, {k, k}));
+        HS_TRY(allFinite(r.path, "/hysteroscene/conditioning/regression", *reg));
+        HS_TRY(allFinite(r.path, "/hysteroscene/conditioning/residualCovariance", *cov));
+        const auto pi = static_cast<Eigen::Index>(p), ki = static_cast<Eigen::Index>(k);
+        d.regression = Eigen::Map<const RowMajorD>(reg->data(), pi, ki);
+        d.residualCovariance = Eigen::Map<const RowMajorD>(cov->data(), ki, ki);
+        d.residualFactor = detail::choleskyFactor(d.residualCovariance);
+        d.conditioned = true;
+    }
+    if (r.exists("/hysteroscene/pose")) {
+        auto pose = r.read<double>("/hysteroscene/pose", H5T_NATIVE_DOUBLE, dims);
+        if (!pose)
+            return pose.failure();
+        HS_TRY(expectDims(r.path, "/hysteroscene/pose", dims, {5}));
+        const auto& v = *pose;
+        d.pose = PosePrior{v[0], v[1], v[2], v[3], v[4]};
+    }
+    if (r.exists("/hysteroscene/template/layout")) {
+        auto l = r.read<std::int32_t>("/hysteroscene/template/layout", H5T_NATIVE_INT32, dims);
+        if (!l)
+            return l.failure();
+        HS_TRY(expectDims(r.path, "/hysteroscene/template/layout", dims, {6}));
+        const auto& v = *l;
+        TemplateLayout layout{v[0], v[1], v[2], v[3], v[4], v[5]};
+        if (layout.around < 4 || layout.around > 100000 ||
+            layout.vertexCount() != static_cast<int>(d.reference.points.size()) ||
+            layout.faceCount() != static_cast<int>(d.reference.triangles.size()))
+            return fail(ErrorCode::InvalidInput, r.path + ": /hysteroscene/template/layout does not match the mesh");
+        d.layout = layout;
+    }
+    const std::string tissue = std::string("/hysteroscene/template/faceLabels/") + kTissueLabel;
+    if (r.exists(tissue)) {
+        auto labels = r.read<std::int32_t>(tissue, H5T_NATIVE_INT32, dims);
+        if (!labels)
+            return labels.failure();
+        HS_TRY(expectDims(r.path, tissue, dims, {static_cast<hsize_t>(d.reference.triangles.size())}));
+        d.reference.faceLabels[kTissueLabel] = std::move(labels).value();
+    }
+    return {};
+}
+
+} // namespace
+
+Status saveShapeModel(const ShapeModel& model, const std::string& path) {
+    if (model.empty())
+        return fail(ErrorCode::InvalidInput, "cannot save an empty shape model");
+    const QuietErrors quiet;
+    const std::string temporary = path + ".part";
+    {
+        Handle file(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+        if (!file.valid())
+            return fail(ErrorCode::IoError, "cannot create " + temporary);
+        Writer w{file.get()};
+        writeModel(w, model.data());
+        writeOurs(w, model.data());
+        if (!w.ok) {
+            std::remove(temporary.c_str());
+            return fail(ErrorCode::IoError, "writing " + temporary + " failed");
+        }
+    }
+    std::error_code ec;
+    std::filesystem::rename(temporary, path, ec);
+    if (ec) {
+        std::remove(temporary.c_str());
+        return fail(ErrorCode::IoError, "cannot rename " + temporary + " to " + path + ": " + ec.message());
+    }
+    return {};
+}
+
+Result<ShapeModel> loadShapeModel(const std::string& path) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        return fail(ErrorCode::NotFound, "shape model file " + path + " does not exist");
+    const QuietErrors quiet;
+    if (H5Fis_hdf5(path.c_str()) <= 0)
+        return fail(ErrorCode::InvalidInput, path + " is not an HDF5 file");
+    Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+    if (!file.valid())
+        return fail(ErrorCode::IoError, "cannot open " + path);
+    const Reader reader{file.get(), path};
+    auto data = readModel(reader);
+    if (!data)
+        return data.failure();
+    HS_TRY(readOurs(reader, **data));
+    return ShapeModel(std::shared_ptr<const ShapeModel::Data>(std::move(data).value()));
+}
+
+} // namespace hs::anatomy

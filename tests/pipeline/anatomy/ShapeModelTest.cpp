@@ -1,0 +1,182 @@
+#include "hs/anatomy/ShapeModel.h"
+#include "hs/anatomy/Cohort.h"
+#include "hs/anatomy/ModelEvaluation.h"
+#include "hs/anatomy/OrganChecks.h"
+
+#include "TestSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+using namespace hs::anatomy;
+
+namespace {
+
+const ShapeModel& defaultModel() {
+    static const ShapeModel model = [] {
+        auto loaded = loadShapeModel(HS_ANATOMY_DEFAULT_MODEL);
+        EXPECT_TRUE(loaded.ok()) << loaded.error().message();
+        return loaded.ok() ? std::move(loaded).value() : ShapeModel{};
+    }();
+    return model;
+}
+
+CohortResult smallCohort(std::uint64_t seed = 11, int size = 60) {
+    CohortParams params;
+    params.size = size;
+    params.seed = seed;
+    auto cohort = generateCohort(params);
+    EXPECT_TRUE(cohort.ok());
+    return std::move(cohort).value();
+}
+
+} // namespace
+
+TEST(Cohort, IsReproducibleFromItsSeed) {
+    const auto a = smallCohort(5, 20), b = smallCohort(5, 20), c = smallCohort(6, 20);
+    EXPECT_EQ(a.training.shapes, b.training.shapes);
+    EXPECT_NE(a.training.shapes, c.training.shapes);
+}
+
+TEST(Cohort, MembersAreSupportedPatients) {
+    const auto cohort = smallCohort(3, 300);
+    ASSERT_EQ(cohort.members.size(), 300u);
+    for (const auto& m : cohort.members)
+        EXPECT_TRUE(validatePatient(m.patient).ok());
+}
+
+TEST(ShapeModel, BuildsFromACohortAndRoundTripsThroughHdf5) {
+    const auto cohort = smallCohort();
+    auto built = buildShapeModel(cohort.training);
+    ASSERT_TRUE(built.ok()) << built.error().message();
+    const ShapeModel& model = built->model;
+    EXPECT_GT(model.modeCount(), 2);
+    hs::test::TempDir dir("hs-anatomy");
+    ASSERT_TRUE(saveShapeModel(model, dir.file("model.h5")).ok());
+    const auto loaded = loadShapeModel(dir.file("model.h5"));
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message();
+    EXPECT_EQ(loaded->modeCount(), model.modeCount());
+    ASSERT_TRUE(loaded->layout().has_value());
+    const PatientParams patient;
+    const auto a = model.sample(patient, 42), b = loaded->sample(patient, 42);
+    ASSERT_TRUE(a.ok() && b.ok());
+    EXPECT_EQ(a->points, b->points); // the build rounds to the file's single precision
+    EXPECT_EQ(a->faceLabels, b->faceLabels);
+}
+
+TEST(ShapeModel, RejectsAFileThatIsNotAModel) {
+    hs::test::TempDir dir("hs-anatomy");
+    std::ofstream(dir.file("bad.h5")) << "not hdf5";
+    EXPECT_EQ(loadShapeModel(dir.file("bad.h5")).error().code, hs::ErrorCode::InvalidInput);
+    EXPECT_EQ(loadShapeModel(dir.file("missing.h5")).error().code, hs::ErrorCode::NotFound);
+}
+
+TEST(ShapeModel, RejectsShapesOutOfCorrespondence) {
+    auto cohort = smallCohort(4, 20);
+    cohort.training.shapes[3].pop_back();
+    const auto built = buildShapeModel(cohort.training);
+    ASSERT_FALSE(built.ok());
+    EXPECT_NE(built.error().detail.find("correspondence"), std::string::npos);
+}
+
+TEST(ShapeModel, SamplingIsDeterministicInTheSeed) {
+    const auto& model = defaultModel();
+    const PatientParams patient;
+    const auto a = model.sample(patient, 7), b = model.sample(patient, 7), c = model.sample(patient, 8);
+    ASSERT_TRUE(a.ok() && b.ok() && c.ok());
+    EXPECT_EQ(a->points, b->points);
+    EXPECT_NE(a->points, c->points);
+}
+
+TEST(ShapeModel, RefusesUnsupportedPatientsInsteadOfExtrapolating) {
+    const auto& model = defaultModel();
+    PatientParams p;
+    p.ageYears = 5.0;
+    const auto organ = model.sample(p, 1);
+    ASSERT_FALSE(organ.ok());
+    EXPECT_NE(organ.error().detail.find("ageYears"), std::string::npos);
+    p = PatientParams{};
+    p.parity = -1;
+    EXPECT_FALSE(model.mean(p).ok());
+}
+
+TEST(ShapeModel, MeanOrganGrowsWithParityAndShrinksAfterMenopause) {
+    const auto& model = defaultModel();
+    const auto& layout = *model.layout();
+    auto dims = [&](const PatientParams& p) { return *measureUterus(*model.mean(p), layout); };
+    PatientParams nulli;
+    nulli.ageYears = 35.0;
+    PatientParams multi = nulli;
+    multi.parity = multi.gravidity = 3;
+    EXPECT_GT(dims(multi).lengthMm, dims(nulli).lengthMm + 1.0);
+    EXPECT_GT(dims(multi).cavityWidthMm, dims(nulli).cavityWidthMm + 2.0);
+    // Menopause: AP falls about 22 % from 2 years before to 2 years after.
+    PatientParams before = nulli, after = nulli;
+    before.ageYears = 49.0;
+    after.ageYears = 53.0;
+    after.menopausal = true;
+    const double ratio = dims(after).apDepthMm / dims(before).apDepthMm;
+    EXPECT_NEAR(ratio, 0.78, 0.06);
+    PatientParams old = after;
+    old.ageYears = 80.0;
+    EXPECT_LT(dims(old).lengthMm, 0.7 * dims(before).lengthMm);
+}
+
+TEST(ShapeModel, SamplesOverTheSupportedRangeAreValidSolids) {
+    const auto& model = defaultModel();
+    hs::Rng rng(2024);
+    for (int i = 0; i < 30; ++i) {
+        const PatientParams p = sampleSupportedPatient(rng);
+        const auto organ = model.sample(p, static_cast<std::uint64_t>(i));
+        ASSERT_TRUE(organ.ok());
+        const auto check = checkOrgan(*organ, *model.layout());
+        ASSERT_TRUE(check.ok());
+        EXPECT_TRUE(check->topology.isWatertight()) << "sample " << i;
+        EXPECT_EQ(check->genus, 0) << "sample " << i;
+        EXPECT_FALSE(check->selfIntersecting) << "sample " << i;
+        EXPECT_TRUE(check->cavityInside) << "sample " << i;
+        EXPECT_GE(check->minWallMm, 5.0) << "sample " << i << " age " << p.ageYears;
+    }
+}
+
+TEST(ShapeModel, MeanOrgansAtTheCornersOfTheRangeAreValidSolids) {
+    const auto& model = defaultModel();
+    for (const double age : {18.0, 40.0, 60.0, 85.0})
+        for (const int parity : {0, 6}) {
+            PatientParams p;
+            p.ageYears = age;
+            p.menopausal = age > 50.0;
+            p.parity = parity;
+            p.gravidity = parity == 0 ? 0 : 10;
+            for (const double height : {140.0, 195.0}) {
+                p.heightCm = height;
+                const auto organ = model.mean(p);
+                ASSERT_TRUE(organ.ok());
+                const auto check = checkOrgan(*organ, *model.layout());
+                EXPECT_TRUE(check->valid()) << age << " " << parity << " " << height << " wall " << check->minWallMm;
+            }
+        }
+}
+
+TEST(ModelEvaluation, ReportsCompactnessGeneralisationSpecificityAndConditioning) {
+    const auto cohort = smallCohort(12, 60);
+    const auto built = buildShapeModel(cohort.training);
+    ASSERT_TRUE(built.ok());
+    ModelEvaluationParams params;
+    params.specificitySamples = 20;
+    params.generalizationFolds = 10;
+    params.conditioningPatients = 20;
+    const auto ev = evaluateShapeModel(built->model, cohort.training, params);
+    ASSERT_TRUE(ev.ok()) << ev.error().message();
+    ASSERT_FALSE(ev->cumulativeExplained.empty());
+    EXPECT_GE(ev->cumulativeExplained.back(), 0.99);
+    EXPECT_TRUE(std::is_sorted(ev->modeVariance.rbegin(), ev->modeVariance.rend()));
+    EXPECT_GT(ev->generalizationMm, 0.0);
+    EXPECT_LT(ev->generalizationMm, 2.0);
+    EXPECT_GT(ev->specificityMm, 0.0);
+    EXPECT_LT(ev->specificityMm, 6.0);
+    ASSERT_EQ(ev->conditioning.size(), 7u);
+    for (const auto& c : ev->conditioning)
+        EXPECT_LT(c.meanAbsMm, 4.0) << c.dimension;
+}
