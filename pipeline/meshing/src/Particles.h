@@ -1,0 +1,83 @@
+#pragma once
+// Particle seeding and relaxation of the particle mesher (Sierra et al. 2004, sec. 2.2).
+
+#include "hs/core/Progress.h"
+#include "hs/core/RegionModel.h"
+#include "hs/core/Result.h"
+#include "hs/meshing/MeshTypes.h"
+#include "hs/meshing/VoxelSpace.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace hs::meshing::detail {
+
+enum class ParticleKind : std::uint8_t {
+    Inner = 0,   ///< moves freely inside the inner voxels of its region
+    Surface = 1, ///< moves tangentially on its surface, re-projected after each step
+    Feature = 2, ///< on a feature edge (sharp dihedral angle): fixed
+    Corner = 3,  ///< on a corner (end or junction of feature edges): fixed
+};
+
+struct Particles {
+    std::vector<Vec3> position;
+    std::vector<ParticleKind> kind;
+    std::vector<std::int32_t> surface;  ///< input surface index, -1 for inner particles
+    std::vector<std::int32_t> triangle; ///< surface particles: the triangle they lie on
+    std::vector<std::int32_t> region;   ///< inner particles: region id
+
+    std::size_t size() const { return position.size(); }
+    void add(const Vec3& p, ParticleKind k, std::int32_t s, std::int32_t t, std::int32_t r) {
+        position.push_back(p);
+        kind.push_back(k);
+        surface.push_back(s);
+        triangle.push_back(t);
+        region.push_back(r);
+    }
+};
+
+/// Per-surface adjacency used for projection walks and feature detection.
+struct SurfaceAdjacency {
+    std::vector<std::uint32_t> fanStart; ///< CSR: vertex -> incident triangles
+    std::vector<std::int32_t> fan;
+    std::vector<Vec3> faceNormals;
+};
+SurfaceAdjacency buildAdjacency(const SurfaceMesh& mesh);
+
+/// Projects p onto the surface, starting from triangle `start` and walking over vertex fans while the closest
+/// point improves. Returns the triangle and writes the projected point.
+std::int32_t projectByWalk(const SurfaceMesh& mesh, const SurfaceAdjacency& adj, std::int32_t start, const Vec3& p,
+                           Vec3& projected);
+
+struct SeedingInput {
+    const RegionModel* body = nullptr;
+    const VoxelSpace* voxels = nullptr;
+    const std::vector<SurfaceAdjacency>* adjacency = nullptr;
+    double edge = 1.0; ///< target edge length, mm
+    const MeshParams* params = nullptr;
+};
+
+/// Feature and corner particles, surface particles per surface voxel (projected to the closest associated
+/// triangle), inner particles per inner voxel; candidates too close to an earlier accepted particle of higher
+/// priority are dropped (corners, features, surfaces, inner), in a fixed order: deterministic.
+Result<Particles> seedParticles(const SeedingInput& in, Progress& progress);
+
+/// The interaction profile: dimensionless force f(d) and energy phi(d), d = distance / rest distance.
+double interactionForce(double d);
+double interactionEnergy(double d);
+/// Distance (in rest distances) beyond which particles do not interact.
+constexpr double kInteractionCutoff = 1.5;
+
+struct RelaxationStats {
+    int iterations = 0;
+    std::vector<double> energy; ///< before each iteration
+    double lastMaxMove = 0.0;   ///< mm
+};
+
+/// Jacobi relaxation: every particle's new position is computed from the old positions only, so the result does
+/// not depend on the thread count.
+Result<RelaxationStats> relaxParticles(Particles& particles, const RegionModel& body, const VoxelSpace& voxels,
+                                       const std::vector<SurfaceAdjacency>& adjacency, double restDistance,
+                                       int iterations, int threads, Progress& progress);
+
+} // namespace hs::meshing::detail

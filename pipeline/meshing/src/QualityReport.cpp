@@ -1,0 +1,223 @@
+#include "hs/meshing/QualityReport.h"
+
+#include "Parallel.h"
+#include "TriangleGrid.h"
+#include "hs/meshing/Geometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <memory>
+
+namespace hs::meshing {
+namespace {
+
+constexpr std::size_t kChunk = 8192;
+
+struct ShapeSums {
+    double radiusRatioSum = 0.0, edgeRatioSum = 0.0;
+    double minRadiusRatio = 1.0, minDihedral = 180.0, maxDihedral = 0.0, maxEdgeRatio = 0.0;
+    std::array<std::size_t, 10> rrHist{};
+    std::array<std::size_t, 9> dihHist{};
+    std::size_t slivers = 0, inverted = 0, degenerate = 0;
+};
+
+double meanEdgeLength(const TetMesh& mesh) {
+    double sum = 0.0;
+    std::size_t count = 0;
+    const std::size_t step = std::max<std::size_t>(1, mesh.tets.size() / 1000);
+    for (std::size_t t = 0; t < mesh.tets.size(); t += step) {
+        const Tet& tet = mesh.tets[t];
+        for (int i = 0; i < 4; ++i)
+            for (int j = i + 1; j < 4; ++j) {
+                sum += distance(mesh.points[static_cast<std::size_t>(tet[static_cast<std::size_t>(i)])],
+                                mesh.points[static_cast<std::size_t>(tet[static_cast<std::size_t>(j)])]);
+                ++count;
+            }
+    }
+    return count ? sum / double(count) : 0.0;
+}
+
+void measureShapes(const TetMesh& mesh, int threads, QualityReport& report) {
+    const double l = meanEdgeLength(mesh);
+    const double degenerateVolume = 1e-12 * l * l * l;
+    std::vector<ShapeSums> partial(detail::chunkCount(mesh.tets.size(), kChunk));
+    detail::parallelChunks(mesh.tets.size(), kChunk, threads, [&](std::size_t c, std::size_t begin, std::size_t end) {
+        ShapeSums& s = partial[c];
+        for (std::size_t t = begin; t < end; ++t) {
+            const Tet& tet = mesh.tets[t];
+            const TetShape shape =
+                tetShape(mesh.points[static_cast<std::size_t>(tet[0])], mesh.points[static_cast<std::size_t>(tet[1])],
+                         mesh.points[static_cast<std::size_t>(tet[2])], mesh.points[static_cast<std::size_t>(tet[3])]);
+            s.radiusRatioSum += shape.radiusRatio;
+            s.edgeRatioSum += std::isfinite(shape.edgeRatio) ? shape.edgeRatio : 0.0;
+            s.minRadiusRatio = std::min(s.minRadiusRatio, shape.radiusRatio);
+            s.minDihedral = std::min(s.minDihedral, shape.minDihedral);
+            s.maxDihedral = std::max(s.maxDihedral, shape.maxDihedral);
+            s.maxEdgeRatio = std::max(s.maxEdgeRatio, shape.edgeRatio);
+            ++s.rrHist[static_cast<std::size_t>(std::clamp(int(shape.radiusRatio * 10.0), 0, 9))];
+            ++s.dihHist[static_cast<std::size_t>(std::clamp(int(shape.minDihedral / 10.0), 0, 8))];
+            if (shape.minDihedral < kSliverDihedralDeg)
+                ++s.slivers;
+            if (std::fabs(shape.volume) <= degenerateVolume)
+                ++s.degenerate;
+            else if (shape.volume < 0.0)
+                ++s.inverted;
+        }
+    });
+    ShapeSums total;
+    for (const ShapeSums& s : partial) {
+        total.radiusRatioSum += s.radiusRatioSum;
+        total.edgeRatioSum += s.edgeRatioSum;
+        total.minRadiusRatio = std::min(total.minRadiusRatio, s.minRadiusRatio);
+        total.minDihedral = std::min(total.minDihedral, s.minDihedral);
+        total.maxDihedral = std::max(total.maxDihedral, s.maxDihedral);
+        total.maxEdgeRatio = std::max(total.maxEdgeRatio, s.maxEdgeRatio);
+        for (std::size_t i = 0; i < total.rrHist.size(); ++i)
+            total.rrHist[i] += s.rrHist[i];
+        for (std::size_t i = 0; i < total.dihHist.size(); ++i)
+            total.dihHist[i] += s.dihHist[i];
+        total.slivers += s.slivers;
+        total.inverted += s.inverted;
+        total.degenerate += s.degenerate;
+    }
+    const double n = std::max<double>(1.0, double(mesh.tets.size()));
+    report.meanRadiusRatio = mesh.tets.empty() ? 0.0 : total.radiusRatioSum / n;
+    report.meanEdgeRatio = mesh.tets.empty() ? 0.0 : total.edgeRatioSum / n;
+    report.minRadiusRatio = mesh.tets.empty() ? 0.0 : total.minRadiusRatio;
+    report.minDihedralDeg = mesh.tets.empty() ? 0.0 : total.minDihedral;
+    report.maxDihedralDeg = total.maxDihedral;
+    report.maxEdgeRatio = total.maxEdgeRatio;
+    report.radiusRatioHistogram = total.rrHist;
+    report.minDihedralHistogram = total.dihHist;
+    report.sliverCount = total.slivers;
+    report.invertedCount = total.inverted;
+    report.degenerateCount = total.degenerate;
+}
+
+/// Sample points of a surface: its vertices and its face centroids.
+std::vector<Vec3> samplePoints(const SurfaceMesh& mesh) {
+    std::vector<Vec3> samples = mesh.points;
+    samples.reserve(mesh.points.size() + mesh.triangles.size());
+    for (const Triangle& t : mesh.triangles)
+        samples.push_back((mesh.points[static_cast<std::size_t>(t[0])] + mesh.points[static_cast<std::size_t>(t[1])] +
+                           mesh.points[static_cast<std::size_t>(t[2])]) /
+                          3.0);
+    return samples;
+}
+
+/// Largest distance from `samples` to the nearest of `targets`.
+double oneSidedDistance(const std::vector<Vec3>& samples, const std::vector<const detail::TriangleGrid*>& targets,
+                        int threads) {
+    std::vector<double> partial(detail::chunkCount(samples.size(), kChunk), 0.0);
+    detail::parallelChunks(samples.size(), kChunk, threads, [&](std::size_t c, std::size_t begin, std::size_t end) {
+        double worst = 0.0;
+        for (std::size_t i = begin; i < end; ++i) {
+            double best = 1e300;
+            for (const auto* grid : targets)
+                best = std::min(best, grid->closest(samples[i]).closest.distance2);
+            worst = std::max(worst, best);
+        }
+        partial[c] = worst;
+    });
+    double worst = 0.0;
+    for (double w : partial)
+        worst = std::max(worst, w);
+    return std::sqrt(worst);
+}
+
+void measureFidelity(const TetMesh& mesh, const RegionModel& reference, int threads, QualityReport& report) {
+    report.hasReference = true;
+    Bounds box;
+    for (const auto& rs : reference.surfaces)
+        for (const Vec3& p : rs.surface.points)
+            box.add(p);
+    report.boundingBoxDiagonal = box.diagonal();
+
+    // Hausdorff distance between the mesh's boundary and interfaces and the input surfaces (void surfaces are
+    // boundaries too), both ways, sampled at vertices and face centroids.
+    const SurfaceMesh boundary = extractBoundary(mesh, true);
+    std::vector<std::unique_ptr<detail::TriangleGrid>> inputGrids;
+    std::vector<const detail::TriangleGrid*> inputTargets;
+    for (const auto& rs : reference.surfaces) {
+        if (rs.surface.triangles.empty())
+            continue;
+        inputGrids.push_back(std::make_unique<detail::TriangleGrid>(rs.surface));
+        inputTargets.push_back(inputGrids.back().get());
+    }
+    double hausdorff = 0.0;
+    if (!boundary.triangles.empty() && !inputTargets.empty()) {
+        hausdorff = oneSidedDistance(samplePoints(boundary), inputTargets, threads);
+        const detail::TriangleGrid boundaryGrid(boundary);
+        for (const auto& rs : reference.surfaces)
+            hausdorff = std::max(hausdorff, oneSidedDistance(samplePoints(rs.surface), {&boundaryGrid}, threads));
+    } else if (!inputTargets.empty()) {
+        hausdorff = report.boundingBoxDiagonal;
+    }
+    report.hausdorffDistance = hausdorff;
+    report.hausdorffRelative = report.boundingBoxDiagonal > 0.0 ? hausdorff / report.boundingBoxDiagonal : 0.0;
+
+    // Volumes per region.
+    std::map<std::int32_t, RegionVolume> byId;
+    for (const RegionVolume& rv : inputRegionVolumes(reference))
+        byId[rv.regionId] = rv;
+    for (const auto& [id, volume] : regionVolumes(mesh)) {
+        byId[id].regionId = id;
+        byId[id].meshVolume = volume;
+    }
+    report.volumeError = 0.0;
+    for (auto& [id, rv] : byId) {
+        rv.relativeError = rv.inputVolume > 0.0 ? std::fabs(rv.meshVolume - rv.inputVolume) / rv.inputVolume : 1.0;
+        report.volumeError = std::max(report.volumeError, rv.relativeError);
+        report.regions.push_back(rv);
+    }
+}
+
+} // namespace
+
+std::vector<RegionVolume> inputRegionVolumes(const RegionModel& model) {
+    const std::size_t n = model.surfaces.size();
+    std::vector<double> volume(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+        volume[i] = std::fabs(enclosedVolume(model.surfaces[i].surface));
+    // Each surface's region loses the volume of the surfaces directly nested in it (its children).
+    std::vector<double> own = volume;
+    for (std::size_t j = 1; j < n; ++j) {
+        const SurfaceMesh& sj = model.surfaces[j].surface;
+        if (sj.triangles.empty())
+            continue;
+        const Vec3 probe = sj.points[static_cast<std::size_t>(sj.triangles[0][0])];
+        for (std::size_t k = j; k-- > 0;) {
+            const SurfaceMesh& sk = model.surfaces[k].surface;
+            if (std::fabs(windingNumber(sk, probe)) > 0.5) {
+                own[k] -= volume[j];
+                break;
+            }
+        }
+    }
+    std::map<std::int32_t, double> byId;
+    for (std::size_t i = 0; i < n; ++i)
+        if (model.surfaces[i].regionId != RegionModel::kVoidRegion)
+            byId[model.surfaces[i].regionId] += own[i];
+    std::vector<RegionVolume> out;
+    for (const auto& [id, v] : byId) {
+        RegionVolume rv;
+        rv.regionId = id;
+        rv.inputVolume = v;
+        out.push_back(rv);
+    }
+    return out;
+}
+
+QualityReport measureQuality(const TetMesh& mesh, const RegionModel* reference, int threads) {
+    QualityReport report;
+    report.vertexCount = mesh.points.size();
+    report.tetCount = mesh.tets.size();
+    threads = detail::resolveThreads(threads);
+    measureShapes(mesh, threads, report);
+    if (reference)
+        measureFidelity(mesh, *reference, threads, report);
+    return report;
+}
+
+} // namespace hs::meshing

@@ -1,0 +1,45 @@
+#pragma once
+// A uniform grid over the triangles of one surface, for closest-point queries (projection, inside tests, Hausdorff).
+
+#include "hs/core/SurfaceMesh.h"
+#include "hs/meshing/Geometry.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace hs::meshing::detail {
+
+struct SurfaceHit {
+    std::int32_t triangle = -1;
+    ClosestPoint closest;
+};
+
+class TriangleGrid {
+public:
+    /// cellSize <= 0 picks about 4 triangles per occupied cell.
+    TriangleGrid(const SurfaceMesh& mesh, double cellSize = 0.0);
+
+    /// The closest triangle to p (exact: rings are searched until no cell can hold a closer point).
+    SurfaceHit closest(const Vec3& p) const;
+    /// Signed distance-side test with angle-weighted pseudo-normals (Baerentzen & Aanaes 2005): true when p lies
+    /// inside the outward-oriented closed surface.
+    bool inside(const Vec3& p) const;
+    /// Sign test of p against an already known closest point on `triangle`.
+    bool insideFromHit(const Vec3& p, const SurfaceHit& hit) const;
+
+    const SurfaceMesh& mesh() const { return *m_mesh; }
+
+private:
+    const SurfaceMesh* m_mesh;
+    Vec3 m_origin;
+    double m_cell = 1.0;
+    std::int64_t m_dims[3] = {1, 1, 1};
+    std::vector<std::uint32_t> m_start; // CSR: cell -> range in m_items
+    std::vector<std::int32_t> m_items;
+    // Pseudo-normals.
+    std::vector<Vec3> m_faceNormals;
+    std::vector<Vec3> m_vertexNormals;              // angle-weighted
+    std::vector<std::array<Vec3, 3>> m_edgeNormals; // per face edge (ab, bc, ca): sum of the two face normals
+};
+
+} // namespace hs::meshing::detail
