@@ -1,0 +1,107 @@
+#pragma once
+/// Baking the appearance of the final surface into texture maps: the texture stage of the pipeline.
+///
+/// The surface (the boundary of the tetrahedral mesh, with its labels) gets a UV atlas; each appearance class gets a
+/// tileable base texture synthesized from its exemplar; vessels are grown on the surface. Every texel is then shaded
+/// from its 3-D position: the base textures by triplanar projection (so both sides of a chart seam sample the same
+/// point and seams stay invisible), the vessels by distance to their segments, classes blended by smoothed per-vertex
+/// weights where they meet. Height (mucosa bumps + vessel relief) becomes a tangent-space normal map.
+///
+/// Labels read (face labels; a surface without them is all endometrium):
+///  - `appearanceLabel` (default "region"): values listed in myomaValues / polypValues are myoma / polyp, everything
+///    else endometrium.
+///  - `contactLabel` (default "contact"): a non-zero value marks a face at a pathology contact; its appearance is
+///    blended half-and-half with the endometrium before smoothing.
+
+#include "hs/core/Image.h"
+#include "hs/core/Progress.h"
+#include "hs/core/Result.h"
+#include "hs/core/SurfaceMesh.h"
+#include "hs/core/Timings.h"
+#include "hs/texture/Atlas.h"
+#include "hs/texture/Exemplars.h"
+#include "hs/texture/Vessels.h"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace hs::texture {
+
+struct AppearanceLabels {
+    std::string appearanceLabel = "region"; ///< face label that says which tissue a face belongs to
+    std::vector<std::int32_t> myomaValues;  ///< values of appearanceLabel that are myoma
+    std::vector<std::int32_t> polypValues;  ///< values of appearanceLabel that are polyp
+    std::string contactLabel = "contact";   ///< face label marking contact faces (non-zero)
+};
+
+struct BakeParams {
+    int size = 2048;           ///< texture side, texels (64..8192)
+    int padding = 0;           ///< gutter texels; <= 0: size / 256, at least 2
+    int baseTextureSize = 512; ///< side of each synthesized, tileable base texture (64..4096)
+    double tileMm = 20.0;      ///< mm of surface covered by one base-texture tile
+    std::array<std::string, kAppearanceCount> exemplarFiles; ///< per class; empty: the procedural default
+    AppearanceLabels labels;
+    double blendMm = 2.5; ///< approximate width of the blend between classes, mm
+    bool vessels = true;
+    VesselParams vesselParams;   ///< its seed is replaced by one derived from `seed`
+    double bumpMm = 0.06;        ///< height of the mucosa bumps from the base texture's luminance, mm
+    double normalStrength = 1.0; ///< scale of the slopes in the normal map
+    std::uint64_t seed = 1;      ///< same seed, same maps
+    int threads = 0;             ///< 0: all cores; the maps do not depend on it
+};
+
+struct BakeStats {
+    AtlasStats atlas;
+    std::int64_t coveredTexels = 0;      ///< texels inside some triangle (before the gutter fill)
+    std::int64_t facesWithoutTexels = 0; ///< faces that own no texel (tiny faces; still covered by a neighbour's)
+    double chartSeamRatio = 0.0; ///< mean squared albedo step across chart seams / inside charts (about 1: invisible)
+    std::array<std::int64_t, kAppearanceCount> facesPerClass{};
+    std::int64_t vesselSegments = 0;
+};
+
+struct BakeResult {
+    Atlas atlas;
+    VesselNetwork vessels;
+    ImageU8 albedo;    ///< RGB, sRGB
+    ImageU8 normal;    ///< RGB, tangent space (x along +u, y along +v, z out), OpenGL convention
+    ImageU8 roughness; ///< 1 channel, 0 smooth .. 255 rough
+    ImageU8 coverage;  ///< 1 channel: 255 texel centre inside a triangle, 128 texel touched by one, 0 gutter
+    std::array<ImageU8, kAppearanceCount> baseTextures; ///< the synthesized tiles
+    std::vector<Appearance> faceAppearance;
+    BakeStats stats;
+    StageTimings timings; ///< atlas, synthesis, vessels, rasterize, shade, normals, gutter
+    std::vector<std::string> warnings;
+};
+
+/// Which class each face is, from the labels (see above).
+std::vector<Appearance> classifyFaces(const SurfaceMesh& surface, const AppearanceLabels& labels);
+
+/// Bakes the maps of `surface`. Fails with InvalidInput for an invalid or empty surface or an unreadable exemplar
+/// (naming the file), LimitExceeded for sizes out of range (naming the parameter), Cancelled on request.
+[[nodiscard]] Result<BakeResult> bakeAppearance(const SurfaceMesh& surface, const BakeParams& params,
+                                                Progress& progress = Progress::none());
+
+/// Writes albedo.png, normal.png, roughness.png, surface.vtp (points split along chart seams, point data "uv" as
+/// texture coordinates, the face labels and "chart" as cell data) and surface.obj + surface.mtl into `dir`
+/// (created if missing), every file atomically.
+Status writeBakeOutputs(const SurfaceMesh& surface, const BakeResult& result, const std::string& dir);
+
+/// The surface split along chart seams, one point per UV vertex, with the UVs; labels carried over (vertex labels
+/// through each UV vertex's source vertex). Face label "chart" added.
+struct TexturedSurface {
+    SurfaceMesh mesh;
+    std::vector<std::array<float, 2>> uv; ///< per point
+    std::vector<Vec3> normals;            ///< per point, of the unsplit surface, so shading stays smooth across seams
+};
+TexturedSurface makeTexturedSurface(const SurfaceMesh& surface, const Atlas& atlas);
+
+/// VTK XML PolyData (ASCII) with the UVs as the active texture coordinates ("uv"), the normals as active normals
+/// ("normals") and integer labels as cell and point data; hs::io's writer carries no texture coordinates, so this
+/// module writes its own.
+Status writeTexturedVtp(const TexturedSurface& surface, const std::string& path);
+/// Wavefront OBJ with vt and a material library line `mtllib <mtlName>` / `usemtl organ`.
+Status writeTexturedObj(const TexturedSurface& surface, const std::string& path, const std::string& mtlName);
+
+} // namespace hs::texture
