@@ -16,13 +16,21 @@ packages=(
     libcgal-dev libgmp-dev libmpfr-dev libtbb-dev libtet1.5-dev libeigen3-dev
     # images and textures
     libopencv-dev libopenimageio-dev
-    # files and command line
-    nlohmann-json3-dev libcli11-dev libtinygltf-dev libhdf5-dev
+    # files and command line (zlib and minizip: PNG maps and zipped scene packages)
+    nlohmann-json3-dev libcli11-dev libtinygltf-dev libhdf5-dev zlib1g-dev libminizip-dev
     # haptic devices
     libhidapi-dev
-    # tests
-    libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth libgl1-mesa-dri
+    # tests: outside tools that read the scene package (meshio; Node.js for the Khronos glTF validator, which
+    # tools/test.sh installs from npm) and Gmsh, the speed anchor of the meshing benchmark.
+    # Not python3-paraview: on Debian 12 it conflicts with libvtk9-dev.
+    libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth libgl1-mesa-dri python3-meshio gmsh
 )
+
+# Node.js and npm come from Debian only where no other installation provides them (Debian's npm conflicts with
+# Node.js builds that bundle their own npm).
+if ! command -v npm >/dev/null 2>&1; then
+    packages+=(nodejs npm)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,181 @@
+#pragma once
+/// Scene: the coherent scene a simulator loads (Sierra et al. 2004, sec. 5): the tetrahedral body with per-tet
+/// region and material ids, the textured visual surface, a material per region, named labels, clinical
+/// descriptors, the mesh quality report, the case it was made from and the versions of the tools that made it.
+///
+/// The model holds data only: it does not depend on the stages that fill it (their results are converted into
+/// these plain structs), so the package writer and reader, the simulator and the GUI share one small type.
+/// docs/scene-format.md describes every field as it appears on disk.
+
+#include "hs/core/Image.h"
+#include "hs/core/Result.h"
+#include "hs/core/SurfaceMesh.h"
+#include "hs/core/TetMesh.h"
+#include "hs/scene/CaseSpec.h"
+#include "hs/scene/Hydrometra.h"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hs::scene {
+
+/// Names of the per-tet arrays the scene keeps in TetMesh::tetLabels.
+constexpr const char* kMaterialLabel = "material";             ///< index into Scene::materials
+constexpr const char* kYoungsModulusLabel = "youngsModulusPa"; ///< per-tet E in Pa (heterogeneous scenes only)
+
+/// One tissue region of the body: the tets whose TetMesh::regions entry is `id`.
+struct SceneRegion {
+    std::int32_t id = 0;
+    std::string name; ///< "myometrium", "endometrium", or the pathology id ("myoma-1")
+    Tissue tissue = Tissue::Myometrium;
+    std::string pathologyId; ///< the case's pathology id for pathology regions; empty otherwise
+};
+
+/// The mechanical parameters of one region (UTERUS.md, tissue mechanics).
+struct SceneMaterial {
+    std::int32_t id = 0; ///< index in Scene::materials; the value of the "material" tet array
+    std::int32_t regionId = 0;
+    std::string name; ///< the region's name
+    Tissue tissue = Tissue::Myometrium;
+    TissueMaterial material;     ///< kPa, dimensionless, kg/m^3: the region's mean
+    Range youngsModulusRangeKpa; ///< the tissue's allowed range; heterogeneous values stay inside it
+    double heterogeneity = 0.0;  ///< coefficient of variation of E per tet (0: homogeneous)
+};
+
+/// What a label marks.
+enum class LabelKind {
+    Contact,       ///< "contact": where a pathology touches the organ
+    Ostium,        ///< "ostium": a tubal ostium
+    CervicalCanal, ///< "cervical-canal"
+    PathologyBase, ///< "pathology-base": the base (attachment) of a pathology
+    Other,         ///< "other"
+};
+/// Which elements a label's indices refer to.
+enum class LabelElement {
+    SurfaceFace, ///< "surface-face": triangles of Scene::surface.mesh
+    Tet,         ///< "tet": tetrahedra of Scene::tets
+};
+std::string_view toString(LabelKind kind);
+std::string_view toString(LabelElement element);
+bool fromString(std::string_view key, LabelKind& out);
+bool fromString(std::string_view key, LabelElement& out);
+
+/// A named set of faces or tets ("contact:myoma-1", "ostium-left", "cervical-canal", "base:polyp-1").
+struct SceneLabel {
+    std::string name; ///< unique in the scene; [A-Za-z0-9][A-Za-z0-9_:.-]*, <= 64 chars
+    LabelKind kind = LabelKind::Other;
+    LabelElement element = LabelElement::SurfaceFace;
+    std::string pathologyId;           ///< for contact and pathology-base labels; empty otherwise
+    std::vector<std::int32_t> indices; ///< ascending, unique, in range of the element array
+};
+
+/// The visual surface: triangles in mm, a UV per vertex, and the baked maps (all share the UV atlas).
+struct VisualSurface {
+    SurfaceMesh mesh;                      ///< with its face and vertex labels
+    std::vector<std::array<float, 2>> uvs; ///< one per mesh point, in [0, 1]; origin at the image's top left
+    ImageU8 albedo;                        ///< RGB, sRGB-encoded base colour
+    ImageU8 normal;                        ///< RGB, tangent-space normal map (OpenGL convention, +Y up)
+    ImageU8 roughness;                     ///< 1 channel, linear perceptual roughness 0..255
+};
+
+/// Lasmar (STEPW) score components (UTERUS.md, "Lasmar"); each -1 when not computed.
+struct LasmarScore {
+    int size = -1;
+    int topography = -1;
+    int extension = -1;
+    int penetration = -1;
+    int wall = -1;
+    bool complete() const { return size >= 0 && topography >= 0 && extension >= 0 && penetration >= 0 && wall >= 0; }
+    int total() const { return complete() ? size + topography + extension + penetration + wall : -1; }
+};
+
+struct PathologyDescriptor {
+    std::string id;
+    PathologyKind kind = PathologyKind::Myoma;
+    std::int32_t regionId = -1;        ///< its region in the tet mesh (-1: not meshed as a region)
+    double sizeMm = 0.0;               ///< mm, largest diameter as grown
+    double volumeMl = 0.0;             ///< mL, as meshed
+    std::optional<FigoType> figo;      ///< myomas
+    std::optional<LasmarScore> lasmar; ///< myomas
+    std::string location;              ///< a UterineLocation key ("fundal", ...) or empty
+};
+
+/// Organ dimensions as measured on the generated instance (mm, mL); 0 when not measured.
+struct OrganDimensions {
+    double lengthMm = 0.0;
+    double widthMm = 0.0;
+    double apMm = 0.0;
+    double cavityLengthMm = 0.0;
+    double cavityWidthMm = 0.0;
+    double uterineVolumeMl = 0.0; ///< mL; the clinical estimate L x W x AP x 0.523 (UTERUS.md)
+};
+
+struct ClinicalDescriptors {
+    OrganDimensions organ;
+    std::vector<PathologyDescriptor> pathologies;
+};
+
+/// The mesh quality report, as data (the meshing stage's report converted; see docs/scene-format.md).
+struct MeshQuality {
+    std::size_t vertexCount = 0;
+    std::size_t tetCount = 0;
+    double meanRadiusRatio = 0.0;
+    double minRadiusRatio = 0.0;
+    double minDihedralDeg = 0.0;
+    double maxDihedralDeg = 0.0;
+    double meanEdgeRatio = 0.0;
+    double maxEdgeRatio = 0.0;
+    std::vector<std::size_t> radiusRatioHistogram; ///< buckets of 0.1 from 0 to 1
+    std::vector<std::size_t> minDihedralHistogram; ///< buckets of 10 degrees from 0 to 90
+    std::size_t sliverCount = 0;
+    std::size_t invertedCount = 0;
+    std::size_t degenerateCount = 0;
+    bool hasReference = false;
+    double hausdorffDistanceMm = 0.0;
+    double hausdorffRelative = 0.0;
+    double volumeError = 0.0; ///< largest relative per-region volume error
+};
+
+struct Scene {
+    TetMesh tets; ///< mm; regions = SceneRegion ids; tetLabels["material"] = material ids
+    VisualSurface surface;
+    std::vector<SceneRegion> regions; ///< ascending id
+    std::vector<SceneMaterial> materials;
+    std::vector<SceneLabel> labels;
+    ClinicalDescriptors clinical;
+    MeshQuality quality;
+    Hydrometra hydrometra;
+    CaseSpec caseSpec;                               ///< the full case the scene was generated from
+    std::map<std::string, std::string> toolVersions; ///< "hysteroscene" -> HS_VERSION, "vtk" -> ..., sorted
+    std::vector<std::string> warnings;               ///< from the stages, for report.json
+};
+
+/// Options of the material assignment; the mean of each material is the case's effective material.
+struct MaterialOptions {
+    /// Coefficient of variation of Young's modulus per tet (0: homogeneous; <= 0.5). Myomas are heterogeneous
+    /// (UTERUS.md); the draw is log-normal with this spread, clamped to the tissue's range.
+    double heterogeneity = 0.0;
+    std::uint64_t seed = 1; ///< same seed, same per-tet values
+};
+
+/// Gives each region its material (effectiveMaterial of its tissue with the case's overrides), writes the
+/// "material" tet array and, with heterogeneity > 0, the per-tet "youngsModulusPa" array. InvalidInput when a tet's
+/// region has no SceneRegion, an override lies outside the tissue's range, or the options are out of range.
+[[nodiscard]] Result<std::vector<SceneMaterial>> assignMaterials(TetMesh& tets, const std::vector<SceneRegion>& regions,
+                                                                 const SceneParams& params,
+                                                                 const MaterialOptions& options = {});
+
+/// The default tool versions: "hysteroscene" (this build) and the versions of the libraries the scene module uses.
+std::map<std::string, std::string> defaultToolVersions();
+
+/// Consistency of a scene before it is written: valid meshes, regions cover the tet regions, materials and their
+/// tet array, labels in range and sorted, UVs one per point in [0, 1], maps of matching size. InvalidInput naming
+/// the first offence.
+[[nodiscard]] Status checkScene(const Scene& scene);
+
+} // namespace hs::scene

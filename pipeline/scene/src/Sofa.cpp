@@ -1,0 +1,106 @@
+// The SOFA scene and the OBJ its visual model loads.
+
+#include "Sofa.h"
+
+#include "Format.h"
+
+#include "hs/core/Units.h"
+
+#include <iomanip>
+#include <locale>
+#include <map>
+#include <sstream>
+
+namespace hs::scene::detail {
+
+namespace {
+
+constexpr double kKgPerM3ToKgPerMm3 = 1e-9;
+
+std::string number(double v) {
+    return formatNumber(v); // shortest text that reads back to v: "0.47", not "0.46999999999999997"
+}
+
+/// Volume-weighted mean density of the body, kg/m^3: SOFA's MeshMatrixMass takes one density per mass component,
+/// and all tissues share 1050 kg/m^3 by default (UTERUS.md), so one mass for the body loses nothing by default.
+double meanDensity(const Scene& scene) {
+    std::map<std::int32_t, double> densityOfRegion;
+    for (const auto& m : scene.materials)
+        densityOfRegion[m.regionId] = m.material.densityKgPerM3;
+    double mass = 0.0, volume = 0.0;
+    for (const auto& [region, v] : regionVolumes(scene.tets)) {
+        mass += densityOfRegion[region] * v;
+        volume += v;
+    }
+    return volume > 0.0 ? mass / volume : 1050.0;
+}
+
+} // namespace
+
+std::string sofaScene(const Scene& scene, bool hasAlbedo) {
+    std::ostringstream s;
+    s.imbue(std::locale::classic());
+    s << "<?xml version=\"1.0\"?>\n"
+      << "<!-- hysteroscene scene package: units mm, kg, s (stress in kPa). Stock SOFA components only. -->\n"
+      << "<Node name=\"root\" dt=\"0.01\" gravity=\"0 0 -9810\">\n"
+      << "    <RequiredPlugin pluginName=\"Sofa.Component.IO.Mesh Sofa.Component.StateContainer "
+         "Sofa.Component.Topology.Container.Dynamic Sofa.Component.SolidMechanics.FEM.Elastic Sofa.Component.Mass "
+         "Sofa.Component.ODESolver.Backward Sofa.Component.LinearSolver.Iterative Sofa.Component.Mapping.Linear "
+         "Sofa.GL.Component.Rendering3D\"/>\n"
+      << "    <DefaultAnimationLoop/>\n"
+      << "    <Node name=\"tissue\">\n"
+      << "        <EulerImplicitSolver name=\"odeSolver\" rayleighStiffness=\"0.1\" rayleighMass=\"0.1\"/>\n"
+      << "        <CGLinearSolver name=\"linearSolver\" iterations=\"100\" tolerance=\"1e-9\" threshold=\"1e-9\"/>\n"
+      << "        <MeshGmshLoader name=\"loader\" filename=\"mesh.msh\"/>\n"
+      << "        <MechanicalObject name=\"dofs\" template=\"Vec3d\" src=\"@loader\"/>\n"
+      << "        <TetrahedronSetTopologyContainer name=\"topology\" src=\"@loader\"/>\n"
+      << "        <MeshMatrixMass name=\"mass\" massDensity=\"" << number(meanDensity(scene) * kKgPerM3ToKgPerMm3)
+      << "\" topology=\"@topology\"/>\n";
+    std::map<std::int32_t, std::vector<std::size_t>> tetsOfRegion;
+    for (std::size_t t = 0; t < scene.tets.tetCount(); ++t)
+        tetsOfRegion[scene.tets.regionOf(t)].push_back(t);
+    for (const auto& m : scene.materials) {
+        s << "        <!-- " << m.name << " (" << toString(m.tissue) << "), region " << m.regionId << " -->\n"
+          << "        <Node name=\"region" << m.regionId << "\">\n"
+          << "            <TetrahedronSetTopologyContainer name=\"topology\" tetrahedra=\"";
+        bool first = true;
+        for (const std::size_t t : tetsOfRegion[m.regionId])
+            for (const std::int32_t v : scene.tets.tets[t]) {
+                s << (first ? "" : " ") << v;
+                first = false;
+            }
+        s << "\"/>\n"
+          << "            <TetrahedronFEMForceField name=\"fem\" topology=\"@topology\" method=\"large\" "
+             "youngModulus=\""
+          << number(m.material.youngsModulusKpa) << "\" poissonRatio=\"" << number(m.material.poissonRatio) << "\"/>\n"
+          << "        </Node>\n";
+    }
+    s << "        <Node name=\"visual\">\n"
+      << "            <OglModel name=\"surface\" filename=\"surface.obj\"";
+    if (hasAlbedo)
+        s << " texturename=\"maps/albedo.png\"";
+    s << "/>\n"
+      << "            <BarycentricMapping name=\"mapping\" input=\"@../dofs\" output=\"@surface\"/>\n"
+      << "        </Node>\n"
+      << "    </Node>\n"
+      << "</Node>\n";
+    return s.str();
+}
+
+std::string visualObj(const Scene& scene) {
+    const auto& mesh = scene.surface.mesh;
+    std::ostringstream s;
+    s.imbue(std::locale::classic());
+    s << "# hysteroscene visual surface, mm\n" << std::setprecision(17);
+    for (const Vec3& p : mesh.points)
+        s << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
+    s << std::setprecision(9);
+    for (const auto& uv : scene.surface.uvs)
+        s << "vt " << uv[0] << ' ' << 1.0f - uv[1] << '\n';
+    for (const auto& t : mesh.triangles)
+        s << "f " << t[0] + 1 << '/' << t[0] + 1 << ' ' << t[1] + 1 << '/' << t[1] + 1 << ' ' << t[2] + 1 << '/'
+          << t[2] + 1 << '\n';
+    return s.str();
+}
+
+} // namespace hs::scene::detail

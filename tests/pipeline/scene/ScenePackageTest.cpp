@@ -1,0 +1,257 @@
+// The scene package: deterministic files, round trips, refusal of tampered packages, atomic replacement.
+
+#include "hs/scene/ScenePackage.h"
+#include "SyntheticScene.h"
+#include "TestSupport.h"
+#include "hs/scene/Sha256.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+using namespace hs;
+using namespace hs::scene;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string readText(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void writeText(const fs::path& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out << text;
+}
+
+/// Rewrites manifest.json through `edit`.
+template <class F>
+void editManifest(const fs::path& folder, F edit) {
+    auto j = nlohmann::json::parse(readText(folder / "manifest.json"));
+    edit(j);
+    writeText(folder / "manifest.json", j.dump(2));
+}
+
+/// Expects the package to be refused with `code` and a message naming each of `words`.
+void expectRefused(const fs::path& folder, ErrorCode code, std::initializer_list<const char*> words) {
+    const auto verified = verifyScenePackage(folder.string());
+    ASSERT_FALSE(verified.ok()) << "accepted a tampered package";
+    EXPECT_EQ(verified.error().code, code) << verified.error().message();
+    for (const char* word : words)
+        EXPECT_NE(verified.error().detail.find(word), std::string::npos)
+            << "'" << word << "' missing in: " << verified.error().detail;
+    EXPECT_FALSE(readScenePackage(folder.string()).ok());
+}
+
+class ScenePackage : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto written = writeScenePackage(test::syntheticScene(), m_dir.file("scene"));
+        ASSERT_TRUE(written.ok()) << written.error().message();
+        m_manifest = written->manifest;
+    }
+    fs::path package() const { return m_dir.path() / "scene"; }
+
+    test::TempDir m_dir{"hs-scene-package"};
+    PackageManifest m_manifest;
+};
+
+} // namespace
+
+TEST_F(ScenePackage, HoldsEveryDocumentedFileAndAManifestOfThem) {
+    std::vector<std::string> paths;
+    for (const auto& f : m_manifest.files)
+        paths.push_back(f.path);
+    const std::vector<std::string> expected{
+        "case.json",   "labels.json", "maps/albedo.png", "maps/normal.png", "maps/roughness.png",
+        "mesh.msh",    "report.json", "scene.json",      "scene.scn",       "surface.glb",
+        "surface.obj", "surface.vtp", "tets.vtu"};
+    EXPECT_EQ(paths, expected);
+    for (const auto& f : m_manifest.files) {
+        EXPECT_EQ(static_cast<std::int64_t>(fs::file_size(package() / f.path)), f.bytes) << f.path;
+        EXPECT_EQ(sha256Hex(readText(package() / f.path)), f.sha256) << f.path;
+    }
+    EXPECT_EQ(m_manifest.schemaVersion, kPackageSchemaVersion);
+    EXPECT_EQ(m_manifest.toolVersion, HS_VERSION);
+    EXPECT_TRUE(verifyScenePackage(package().string()).ok());
+}
+
+TEST_F(ScenePackage, IsByteIdenticalWhenTheSameSceneIsWrittenAgain) {
+    test::SyntheticSceneOptions options;
+    options.heterogeneity = 0.2;
+    const Scene scene = test::syntheticScene(options);
+    const auto a = writeScenePackage(scene, m_dir.file("a"));
+    const auto b = writeScenePackage(scene, m_dir.file("b"));
+    const auto again = writeScenePackage(test::syntheticScene(options), m_dir.file("a")); // replaces a
+    ASSERT_TRUE(a.ok() && b.ok() && again.ok());
+    ASSERT_EQ(a->manifest.files.size(), b->manifest.files.size());
+    for (std::size_t i = 0; i < a->manifest.files.size(); ++i) {
+        EXPECT_EQ(a->manifest.files[i].sha256, b->manifest.files[i].sha256) << a->manifest.files[i].path;
+        EXPECT_EQ(a->manifest.files[i].sha256, again->manifest.files[i].sha256) << a->manifest.files[i].path;
+    }
+    EXPECT_EQ(readText(m_dir.path() / "a" / "manifest.json"), readText(m_dir.path() / "b" / "manifest.json"));
+}
+
+TEST_F(ScenePackage, ReadsBackTheSceneItWasWrittenFrom) {
+    const Scene original = test::syntheticScene();
+    const auto read = readScenePackage(package().string());
+    ASSERT_TRUE(read.ok()) << read.error().message();
+    EXPECT_EQ(read->tets.tetCount(), original.tets.tetCount());
+    EXPECT_EQ(read->tets.regions, original.tets.regions);
+    EXPECT_EQ(read->tets.tetLabels.at(kMaterialLabel), original.tets.tetLabels.at(kMaterialLabel));
+    EXPECT_EQ(read->surface.mesh.triangles, original.surface.mesh.triangles);
+    EXPECT_EQ(read->surface.uvs, original.surface.uvs);
+    EXPECT_EQ(read->surface.albedo.data(), original.surface.albedo.data());
+    EXPECT_EQ(read->surface.roughness.data(), original.surface.roughness.data());
+    ASSERT_EQ(read->materials.size(), 2u);
+    EXPECT_EQ(read->materials[1].material.youngsModulusKpa, 65.0);
+    EXPECT_EQ(read->materials[1].tissue, Tissue::Myoma);
+    ASSERT_EQ(read->labels.size(), original.labels.size());
+    EXPECT_EQ(read->labels[0].indices, original.labels[0].indices);
+    EXPECT_EQ(read->caseSpec, original.caseSpec);
+    EXPECT_EQ(read->hydrometra.cavityVolumeMl, original.hydrometra.cavityVolumeMl);
+    ASSERT_EQ(read->clinical.pathologies.size(), 1u);
+    EXPECT_EQ(read->clinical.pathologies[0].lasmar->total(), 6);
+    EXPECT_EQ(read->clinical.pathologies[0].figo->toString(), "2");
+    EXPECT_EQ(read->toolVersions, original.toolVersions);
+    EXPECT_EQ(read->quality.tetCount, original.tets.tetCount());
+}
+
+TEST_F(ScenePackage, WritesASofaSceneWithOneForceFieldPerRegion) {
+    const std::string scn = readText(package() / "scene.scn");
+    EXPECT_NE(scn.find("<MeshGmshLoader name=\"loader\" filename=\"mesh.msh\"/>"), std::string::npos);
+    EXPECT_NE(scn.find("youngModulus=\"30\" poissonRatio=\"0.47\""), std::string::npos);
+    EXPECT_NE(scn.find("youngModulus=\"65\" poissonRatio=\"0.47\""), std::string::npos);
+    EXPECT_NE(scn.find("texturename=\"maps/albedo.png\""), std::string::npos);
+    const std::string glb = readText(package() / "surface.glb");
+    ASSERT_GE(glb.size(), 12u);
+    EXPECT_EQ(glb.substr(0, 4), "glTF");
+}
+
+TEST_F(ScenePackage, RefusesAChangedByteWithAChecksumError) {
+    std::string text = readText(package() / "report.json");
+    text[text.size() / 2] = text[text.size() / 2] == 'x' ? 'y' : 'x';
+    writeText(package() / "report.json", text);
+    expectRefused(package(), ErrorCode::InvalidInput, {"report.json", "checksum"});
+}
+
+TEST_F(ScenePackage, RefusesAPathThatLeavesTheFolder) {
+    writeText(m_dir.path() / "outside.json", "{}");
+    editManifest(package(), [](auto& j) {
+        j["files"].push_back({{"path", "../outside.json"}, {"bytes", 2}, {"sha256", sha256Hex("{}")}});
+    });
+    expectRefused(package(), ErrorCode::InvalidInput, {"../outside.json", "escapes"});
+}
+
+TEST_F(ScenePackage, RefusesAnAbsolutePath) {
+    editManifest(package(), [](auto& j) { j["files"][0]["path"] = "/etc/passwd"; });
+    expectRefused(package(), ErrorCode::InvalidInput, {"/etc/passwd", "absolute"});
+}
+
+TEST_F(ScenePackage, RefusesASymbolicLinkInPlaceOfAFile) {
+    fs::copy_file(package() / "maps" / "albedo.png", m_dir.path() / "albedo.png");
+    fs::remove(package() / "maps" / "albedo.png");
+    fs::create_symlink(m_dir.path() / "albedo.png", package() / "maps" / "albedo.png");
+    expectRefused(package(), ErrorCode::InvalidInput, {"maps/albedo.png", "symbolic link"});
+}
+
+TEST_F(ScenePackage, RefusesASymbolicLinkedFolderOnTheWay) {
+    fs::rename(package() / "maps", m_dir.path() / "maps");
+    fs::create_directory_symlink(m_dir.path() / "maps", package() / "maps");
+    expectRefused(package(), ErrorCode::InvalidInput, {"maps", "symbolic link"});
+}
+
+TEST_F(ScenePackage, RefusesAFileLargerThanDeclared) {
+    std::ofstream(package() / "tets.vtu", std::ios::binary | std::ios::app) << std::string(4096, '\0');
+    expectRefused(package(), ErrorCode::InvalidInput, {"tets.vtu", "larger than"});
+}
+
+TEST_F(ScenePackage, RefusesAFileLargerThanTheReadersLimit) {
+    PackageReadLimits limits;
+    limits.maxFileBytes = 1000;
+    const auto verified = verifyScenePackage(package().string(), limits);
+    ASSERT_FALSE(verified.ok());
+    EXPECT_EQ(verified.error().code, ErrorCode::LimitExceeded);
+    EXPECT_NE(verified.error().detail.find("above the limit"), std::string::npos);
+}
+
+TEST_F(ScenePackage, RefusesAnUnknownSchemaVersion) {
+    editManifest(package(), [](auto& j) { j["schemaVersion"] = 99; });
+    expectRefused(package(), ErrorCode::Unsupported, {"manifest.json", "schema version 99"});
+}
+
+TEST_F(ScenePackage, RefusesAMissingFileNamingIt) {
+    fs::remove(package() / "scene.scn");
+    expectRefused(package(), ErrorCode::NotFound, {"scene.scn", "missing"});
+}
+
+TEST_F(ScenePackage, RefusesAManifestThatOmitsARequiredFile) {
+    editManifest(package(), [](auto& j) {
+        auto& files = j["files"];
+        for (std::size_t i = 0; i < files.size(); ++i)
+            if (files[i]["path"] == "tets.vtu")
+                files.erase(i);
+    });
+    expectRefused(package(), ErrorCode::InvalidInput, {"tets.vtu", "does not list"});
+}
+
+TEST_F(ScenePackage, RefusesAGarbledManifest) {
+    for (const char* garbage : {"{{{not json", "[]", "{\"format\": \"hysteroscene-scene\"}", "", "\x89PNG"}) {
+        writeText(package() / "manifest.json", garbage);
+        expectRefused(package(), ErrorCode::InvalidInput, {"manifest.json"});
+    }
+    fs::remove(package() / "manifest.json");
+    expectRefused(package(), ErrorCode::NotFound, {"manifest.json"});
+}
+
+TEST_F(ScenePackage, RefusesABadManifestEntry) {
+    editManifest(package(), [](auto& j) { j["files"][1]["sha256"] = "XYZ"; });
+    expectRefused(package(), ErrorCode::InvalidInput, {"sha256"});
+    editManifest(package(), [](auto& j) { j["files"][1] = j["files"][0]; });
+    expectRefused(package(), ErrorCode::InvalidInput, {"listed twice"});
+}
+
+TEST_F(ScenePackage, NeverReplacesAFolderThatIsNotAPackage) {
+    fs::create_directory(m_dir.path() / "documents");
+    writeText(m_dir.path() / "documents" / "thesis.txt", "precious");
+    const auto written = writeScenePackage(test::syntheticScene(), m_dir.file("documents"));
+    ASSERT_FALSE(written.ok());
+    EXPECT_EQ(written.error().code, ErrorCode::InvalidInput);
+    EXPECT_EQ(readText(m_dir.path() / "documents" / "thesis.txt"), "precious");
+}
+
+TEST_F(ScenePackage, RecoveryRestoresAPackageMovedAsideByAnInterruptedReplace) {
+    // The state a crash between "rename old aside" and "rename new into place" leaves behind.
+    fs::rename(package(), m_dir.path() / ".scene.hs-old");
+    fs::create_directory(m_dir.path() / ".scene.hs-tmp-999999999-0");
+    EXPECT_EQ(verifyScenePackage(package().string()).error().code, ErrorCode::NotFound);
+    ASSERT_TRUE(recoverScenePackage(package().string()).ok());
+    EXPECT_TRUE(verifyScenePackage(package().string()).ok());
+    EXPECT_FALSE(fs::exists(m_dir.path() / ".scene.hs-old"));
+    EXPECT_FALSE(fs::exists(m_dir.path() / ".scene.hs-tmp-999999999-0"));
+}
+
+TEST_F(ScenePackage, TemporaryFoldersAreNeverTakenForPackages) {
+    fs::copy(package(), m_dir.path() / ".scene.hs-tmp-12345-0", fs::copy_options::recursive);
+    fs::copy(package(), m_dir.path() / ".scene.hs-old", fs::copy_options::recursive);
+    for (const char* name : {".scene.hs-tmp-12345-0", ".scene.hs-old"}) {
+        const auto verified = verifyScenePackage((m_dir.path() / name).string());
+        ASSERT_FALSE(verified.ok()) << name;
+        EXPECT_NE(verified.error().detail.find("temporary folder"), std::string::npos);
+        EXPECT_TRUE(isPackageTempName(name));
+    }
+    EXPECT_FALSE(isPackageTempName("scene"));
+    EXPECT_FALSE(writeScenePackage(test::syntheticScene(), m_dir.file(".x.hs-old")).ok());
+}
+
+TEST_F(ScenePackage, ZipsDeterministically) {
+    ASSERT_TRUE(zipScenePackage(package().string(), m_dir.file("a.zip")).ok());
+    ASSERT_TRUE(zipScenePackage(package().string(), m_dir.file("b.zip")).ok());
+    const std::string a = readText(m_dir.path() / "a.zip");
+    EXPECT_EQ(a.substr(0, 2), "PK");
+    EXPECT_EQ(a, readText(m_dir.path() / "b.zip"));
+}
