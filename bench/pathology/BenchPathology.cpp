@@ -1,0 +1,53 @@
+// bench_pathology [ORGANS=20] [SIZE_MM=20]: for every FIGO type 0-7 (and 2-5) and every growth model, grows a myoma
+// in ORGANS seeded organs, merges it and prints how often the measured FIGO type and size (within 10 %) match the
+// request and the merged body is valid, with the mean grow and merge times.
+#include "BenchOrgans.h"
+
+#include "hs/merge/Merge.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+using namespace hs;
+using namespace hs::pathology;
+
+int main(int argc, char** argv) {
+    const int organs = argc > 1 ? std::atoi(argv[1]) : 20;
+    const double size = argc > 2 ? std::atof(argv[2]) : 20.0;
+    std::vector<SurfaceMesh> organMeshes;
+    for (int s = 1; s <= organs; ++s)
+        organMeshes.push_back(bench::testOrgan(static_cast<std::uint64_t>(s)));
+    const std::vector<Figo> figos = {{0, -1}, {1, -1}, {2, -1}, {3, -1}, {4, -1}, {5, -1}, {6, -1}, {7, -1}, {2, 5}};
+    std::printf("%d organs, %.0f mm myoma, posterior wall\n", organs, size);
+    std::printf("%-10s %-5s %8s %8s %8s %8s %9s %9s\n", "model", "FIGO", "grown", "figo=", "size10%", "valid", "grow s",
+                "merge s");
+    for (GrowthModel model : {GrowthModel::CellularAutomaton, GrowthModel::Skeleton, GrowthModel::Particles})
+        for (const Figo& f : figos) {
+            int grownOk = 0, figoOk = 0, sizeOk = 0, valid = 0;
+            double growS = 0.0, mergeS = 0.0;
+            for (int s = 0; s < organs; ++s) {
+                PathologyParams params;
+                params.seed = static_cast<std::uint64_t>(s + 1);
+                params.pathologies.push_back(bench::myoma("m", model, f, size));
+                const auto t0 = std::chrono::steady_clock::now();
+                auto grown = growPathologies(organMeshes[static_cast<std::size_t>(s)], params);
+                const auto t1 = std::chrono::steady_clock::now();
+                growS += std::chrono::duration<double>(t1 - t0).count();
+                if (!grown.ok())
+                    continue;
+                ++grownOk;
+                const Descriptors& d = grown->pathologies[0].descriptors;
+                figoOk += d.figo == f ? 1 : 0;
+                sizeOk += std::fabs(d.sizeMm - size) <= 0.1 * size ? 1 : 0;
+                auto body = merge::mergeBody(*grown);
+                mergeS += std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+                valid += body.ok() ? 1 : 0;
+            }
+            std::printf("%-10s %-5s %8d %8d %8d %8d %9.3f %9.3f\n", toString(model), f.toString().c_str(), grownOk,
+                        figoOk, sizeOk, valid, growS / organs, mergeS / organs);
+            std::fflush(stdout);
+        }
+    return 0;
+}

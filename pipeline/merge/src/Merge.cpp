@@ -1,0 +1,208 @@
+// The merge stage: cover each pathology, unite the covers with the organ, label faces, assemble the RegionModel.
+#include "hs/merge/Merge.h"
+
+#include "MergeCgal.h"
+
+#include "hs/anatomy/UterusGenerator.h"
+
+#include <cmath>
+
+namespace hs::merge {
+namespace {
+
+bool isCavityTissue(std::int32_t tissue) {
+    const auto t = static_cast<anatomy::Tissue>(tissue);
+    return t == anatomy::Tissue::Endometrium || t == anatomy::Tissue::CervicalCanal ||
+           t == anatomy::Tissue::TubalOstium;
+}
+
+/// The pathology moved outwards along its vertex normals by `cover` mm: the wall tissue draped over it.
+SurfaceMesh coverOf(const SurfaceMesh& surface, double cover) {
+    SurfaceMesh out;
+    out.triangles = surface.triangles;
+    // Vertex normals averaged over their one-ring a few times: a field-grown surface has voxel-scale ripples whose
+    // raw normals would fold the offset.
+    std::vector<Vec3> normals = vertexNormals(surface);
+    std::vector<std::vector<std::int32_t>> ring(surface.points.size());
+    for (const Triangle& t : surface.triangles)
+        for (std::size_t k = 0; k < 3; ++k)
+            ring[static_cast<std::size_t>(t[k])].push_back(t[(k + 1) % 3]);
+    for (int it = 0; it < 3; ++it) {
+        std::vector<Vec3> next(normals.size());
+        for (std::size_t i = 0; i < normals.size(); ++i) {
+            Vec3 s = normals[i];
+            for (std::int32_t j : ring[i])
+                s += normals[static_cast<std::size_t>(j)];
+            next[i] = normalized(s);
+        }
+        normals.swap(next);
+    }
+    out.points.reserve(surface.points.size());
+    for (std::size_t i = 0; i < surface.points.size(); ++i)
+        out.points.push_back(surface.points[i] + normals[i] * cover);
+    return out;
+}
+
+/// Uniform Laplacian smoothing with Taubin's shrink compensation (Taubin 1995).
+void smoothCover(SurfaceMesh& mesh, int iterations) {
+    std::vector<std::vector<std::int32_t>> ring(mesh.points.size());
+    for (const Triangle& t : mesh.triangles)
+        for (std::size_t k = 0; k < 3; ++k)
+            ring[static_cast<std::size_t>(t[k])].push_back(t[(k + 1) % 3]);
+    for (int it = 0; it < 2 * iterations; ++it) {
+        const double w = it % 2 == 0 ? 0.5 : -0.53;
+        std::vector<Vec3> next = mesh.points;
+        for (std::size_t i = 0; i < mesh.points.size(); ++i) {
+            if (ring[i].empty())
+                continue;
+            Vec3 c;
+            for (std::int32_t j : ring[i])
+                c += mesh.points[static_cast<std::size_t>(j)];
+            next[i] = mesh.points[i] + (c / static_cast<double>(ring[i].size()) - mesh.points[i]) * w;
+        }
+        mesh.points.swap(next);
+    }
+}
+
+std::vector<Vec3> faceCentres(const SurfaceMesh& mesh) {
+    std::vector<Vec3> c;
+    c.reserve(mesh.triangles.size());
+    for (const Triangle& t : mesh.triangles)
+        c.push_back((mesh.points[static_cast<std::size_t>(t[0])] + mesh.points[static_cast<std::size_t>(t[1])] +
+                     mesh.points[static_cast<std::size_t>(t[2])]) /
+                    3.0);
+    return c;
+}
+
+SurfaceMesh outwardOriented(SurfaceMesh mesh) {
+    if (enclosedVolume(mesh) < 0.0)
+        for (Triangle& t : mesh.triangles)
+            std::swap(t[1], t[2]);
+    return mesh;
+}
+
+/// Outline labels: "tissue" from the organ face it came from (or, on a cover, the organ face nearest to it);
+/// "pathology" the 1-based index of the pathology a cover face drapes.
+void labelOutline(SurfaceMesh& outline, const SurfaceMesh& organ, const std::vector<SurfaceMesh>& covers) {
+    const std::vector<Vec3> centres = faceCentres(outline);
+    const auto& organTissue = organ.faceLabels.at(anatomy::kTissueLabel);
+    std::vector<std::size_t> organFace;
+    std::vector<double> organDist;
+    detail::nearestFaces(organ, centres, organFace, organDist);
+    std::vector<std::int32_t> tissue(centres.size()), pathology(centres.size(), 0);
+    std::vector<double> best = organDist;
+    for (std::size_t c = 0; c < covers.size(); ++c) {
+        std::vector<std::size_t> face;
+        std::vector<double> dist;
+        detail::nearestFaces(covers[c], centres, face, dist);
+        for (std::size_t i = 0; i < centres.size(); ++i)
+            if (dist[i] < best[i]) {
+                best[i] = dist[i];
+                pathology[i] = static_cast<std::int32_t>(c + 1);
+            }
+    }
+    for (std::size_t i = 0; i < centres.size(); ++i)
+        tissue[i] = organTissue[organFace[i]];
+    outline.faceLabels[anatomy::kTissueLabel] = std::move(tissue);
+    outline.faceLabels[kPathologyLabel] = std::move(pathology);
+}
+
+/// Pathology labels: "contact" = what lies across each face (wall, draped endometrium, draped serosa).
+void labelPathology(SurfaceMesh& surface, const SurfaceMesh& organ) {
+    const std::vector<Vec3> centres = faceCentres(surface);
+    const std::vector<bool> inWall = detail::insideOf(organ, centres);
+    std::vector<std::size_t> face;
+    std::vector<double> dist;
+    detail::nearestFaces(organ, centres, face, dist);
+    const auto& organTissue = organ.faceLabels.at(anatomy::kTissueLabel);
+    std::vector<std::int32_t> contact(centres.size());
+    for (std::size_t i = 0; i < centres.size(); ++i)
+        contact[i] = static_cast<std::int32_t>(inWall[i]                              ? Contact::Myometrium
+                                               : isCavityTissue(organTissue[face[i]]) ? Contact::Endometrium
+                                                                                      : Contact::Serosa);
+    surface.faceLabels[kContactLabel] = std::move(contact);
+}
+
+} // namespace
+
+Result<MergeResult> mergeBody(const pathology::PathologyResult& grown, const MergeParams& params, Progress& progress) {
+    MergeResult result;
+    if (!std::isfinite(params.coverMm) || params.coverMm <= 0.0)
+        return fail(ErrorCode::InvalidInput,
+                    "merge: coverMm must be positive (got " + std::to_string(params.coverMm) + ")");
+    if (grown.organ.faceLabels.count(anatomy::kTissueLabel) == 0)
+        return fail(ErrorCode::InvalidInput, "merge: the organ has no \"tissue\" face label");
+    const SurfaceMesh organ = outwardOriented(grown.organ);
+    std::vector<SurfaceMesh> covers;
+    {
+        ScopedStepTimer timer(result.timings, "cover");
+        if (!analyzeTopology(organ).isWatertight())
+            return fail(ErrorCode::InvalidInput, "merge: the organ surface is not closed and manifold");
+        if (const std::size_t n = detail::selfIntersections(organ); n > 0)
+            return fail(ErrorCode::InvalidInput,
+                        "merge: the organ, displaced to make room for the pathologies, intersects itself (" +
+                            std::to_string(n) + " triangle pairs): the pathologies push the wall too far");
+        for (const auto& p : grown.pathologies) {
+            if (progress.cancelled())
+                return fail(ErrorCode::Cancelled, "merge cancelled");
+            if (!analyzeTopology(p.surface).isWatertight())
+                return fail(ErrorCode::InvalidInput, "merge: pathology '" + p.id + "' is not closed and manifold");
+            SurfaceMesh cover = coverOf(outwardOriented(p.surface), params.coverMm);
+            // A rippled surface can fold its offset in tight creases; smoothing the cover (not the pathology)
+            // removes the folds while keeping it around the pathology.
+            for (int attempt = 0; attempt < 4 && detail::selfIntersections(cover) > 0; ++attempt)
+                smoothCover(cover, 5);
+            if (const std::size_t n = detail::selfIntersections(cover); n > 0)
+                return fail(ErrorCode::InvalidInput, "merge: the " + std::to_string(params.coverMm) +
+                                                         " mm cover of pathology '" + p.id +
+                                                         "' intersects itself: the shape is too thin there");
+            covers.push_back(std::move(cover));
+        }
+    }
+    progress.report("merge.cover", 0.2);
+    SurfaceMesh outline;
+    {
+        ScopedStepTimer timer(result.timings, "union");
+        std::vector<const SurfaceMesh*> others;
+        for (const auto& c : covers)
+            others.push_back(&c);
+        auto united = detail::unite(organ, others);
+        if (!united.ok())
+            return united.failure();
+        outline = std::move(*united);
+        result.timings.step("union").counts.emplace_back("triangles",
+                                                         static_cast<std::int64_t>(outline.triangles.size()));
+    }
+    if (progress.cancelled())
+        return fail(ErrorCode::Cancelled, "merge cancelled");
+    progress.report("merge.union", 0.6);
+    {
+        ScopedStepTimer timer(result.timings, "labels");
+        labelOutline(outline, organ, covers);
+        RegionSurface wall;
+        wall.surface = std::move(outline);
+        wall.regionId = 0;
+        wall.name = "wall";
+        result.body.surfaces.push_back(std::move(wall));
+        for (std::size_t i = 0; i < grown.pathologies.size(); ++i) {
+            RegionSurface rs;
+            rs.surface = outwardOriented(grown.pathologies[i].surface);
+            rs.surface.faceLabels.clear();
+            rs.surface.vertexLabels.clear();
+            labelPathology(rs.surface, organ);
+            rs.regionId = static_cast<std::int32_t>(i + 1);
+            rs.name = grown.pathologies[i].id;
+            result.body.surfaces.push_back(std::move(rs));
+        }
+    }
+    progress.report("merge.labels", 0.8);
+    if (params.validate) {
+        ScopedStepTimer timer(result.timings, "validate");
+        if (auto status = validate(result.body); !status.ok())
+            return fail(ErrorCode::InvalidInput, "merge: the merged body is invalid: " + status.error().detail);
+    }
+    progress.report("merge.validate", 1.0);
+    return result;
+}
+
+} // namespace hs::merge

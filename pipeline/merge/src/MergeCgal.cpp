@@ -1,0 +1,111 @@
+#include "MergeCgal.h"
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/corefinement.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <iterator>
+
+namespace hs::merge::detail {
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
+using FastMesh = CGAL::Surface_mesh<Epick::Point_3>;
+using ExactMesh = CGAL::Surface_mesh<Epeck::Point_3>;
+using Primitive = CGAL::AABB_face_graph_triangle_primitive<FastMesh>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Epick, Primitive>>;
+
+template <class Mesh>
+Mesh toCgal(const SurfaceMesh& in) {
+    using Point = typename Mesh::Point;
+    Mesh out;
+    std::vector<typename Mesh::Vertex_index> v;
+    v.reserve(in.points.size());
+    for (const Vec3& p : in.points)
+        v.push_back(out.add_vertex(Point(p.x, p.y, p.z)));
+    for (const Triangle& t : in.triangles)
+        out.add_face(v[static_cast<std::size_t>(t[0])], v[static_cast<std::size_t>(t[1])],
+                     v[static_cast<std::size_t>(t[2])]);
+    return out;
+}
+
+SurfaceMesh fromCgal(const ExactMesh& in) {
+    SurfaceMesh out;
+    std::vector<std::int32_t> index(in.number_of_vertices() + in.number_of_removed_vertices(), -1);
+    for (auto v : in.vertices()) {
+        const auto& p = in.point(v);
+        index[v.idx()] = static_cast<std::int32_t>(out.points.size());
+        out.points.push_back({CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
+    }
+    for (auto f : in.faces()) {
+        Triangle t{};
+        std::size_t k = 0;
+        for (auto v : CGAL::vertices_around_face(in.halfedge(f), in))
+            if (k < 3)
+                t[k++] = index[v.idx()];
+        out.triangles.push_back(t);
+    }
+    return out;
+}
+
+} // namespace
+
+std::size_t selfIntersections(const SurfaceMesh& mesh) {
+    const FastMesh m = toCgal<FastMesh>(mesh);
+    std::vector<std::pair<FastMesh::Face_index, FastMesh::Face_index>> pairs;
+    PMP::self_intersections(m, std::back_inserter(pairs));
+    return pairs.size();
+}
+
+Result<SurfaceMesh> unite(const SurfaceMesh& first, const std::vector<const SurfaceMesh*>& others) {
+    ExactMesh body = toCgal<ExactMesh>(first);
+    for (const SurfaceMesh* other : others) {
+        ExactMesh add = toCgal<ExactMesh>(*other);
+        ExactMesh out;
+        bool ok = false;
+        try {
+            ok = PMP::corefine_and_compute_union(body, add, out);
+        } catch (const std::exception& e) {
+            return fail(ErrorCode::BackendFailure, std::string("CGAL corefinement failed: ") + e.what());
+        }
+        if (!ok)
+            return fail(ErrorCode::BackendFailure, "CGAL corefinement could not compute the union (the result would "
+                                                   "not be a manifold surface)");
+        body = std::move(out);
+    }
+    return fromCgal(body);
+}
+
+void nearestFaces(const SurfaceMesh& mesh, const std::vector<Vec3>& queries, std::vector<std::size_t>& face,
+                  std::vector<double>& dist) {
+    const FastMesh m = toCgal<FastMesh>(mesh);
+    Tree tree(faces(m).first, faces(m).second, m);
+    tree.accelerate_distance_queries();
+    face.resize(queries.size());
+    dist.resize(queries.size());
+    for (std::size_t i = 0; i < queries.size(); ++i) {
+        const Epick::Point_3 q(queries[i].x, queries[i].y, queries[i].z);
+        const auto hit = tree.closest_point_and_primitive(q);
+        face[i] = static_cast<std::size_t>(hit.second.idx());
+        dist[i] = std::sqrt(CGAL::squared_distance(q, hit.first));
+    }
+}
+
+std::vector<bool> insideOf(const SurfaceMesh& closed, const std::vector<Vec3>& queries) {
+    const FastMesh m = toCgal<FastMesh>(closed);
+    CGAL::Side_of_triangle_mesh<FastMesh, Epick> side(m);
+    std::vector<bool> inside(queries.size());
+    for (std::size_t i = 0; i < queries.size(); ++i)
+        inside[i] = side(Epick::Point_3(queries[i].x, queries[i].y, queries[i].z)) == CGAL::ON_BOUNDED_SIDE;
+    return inside;
+}
+
+} // namespace hs::merge::detail

@@ -1,0 +1,25 @@
+#pragma once
+/// The CGAL part of the merge (the only file that includes CGAL): booleans, self-intersection tests, nearest faces.
+
+#include "hs/core/Result.h"
+#include "hs/core/SurfaceMesh.h"
+
+#include <vector>
+
+namespace hs::merge::detail {
+
+/// Number of intersecting triangle pairs of a surface with itself.
+std::size_t selfIntersections(const SurfaceMesh& mesh);
+
+/// Union of closed, outward-oriented surfaces (exact-construction corefinement, CGAL PMP). BackendFailure when
+/// CGAL cannot compute it.
+Result<SurfaceMesh> unite(const SurfaceMesh& first, const std::vector<const SurfaceMesh*>& others);
+
+/// For each query point, the index of the nearest face of `mesh` and the distance to it.
+void nearestFaces(const SurfaceMesh& mesh, const std::vector<Vec3>& queries, std::vector<std::size_t>& face,
+                  std::vector<double>& dist);
+
+/// For each query point, whether it lies inside the closed surface.
+std::vector<bool> insideOf(const SurfaceMesh& closed, const std::vector<Vec3>& queries);
+
+} // namespace hs::merge::detail

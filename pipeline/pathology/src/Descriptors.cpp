@@ -1,0 +1,220 @@
+// Clinical descriptors measured from the geometry: FIGO type, size, base, topography, Lasmar score.
+#include "Measure.h"
+#include "Shapes.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <deque>
+
+namespace hs::pathology {
+namespace detail {
+
+Figo classifyFigo(const Fractions& f, double tol) {
+    const bool cavity = f.cavity > 0.01;
+    const bool serosal = f.outside > 0.02;
+    const bool touchesEndometrium = cavity || f.endometriumDistanceMm <= tol;
+    if (cavity && serosal)
+        return Figo{f.cavity >= 0.5 ? 1 : 2, f.outside >= 0.5 ? 6 : 5};
+    if (cavity)
+        return Figo{f.pedunculated ? 0 : (f.tissue < 0.5 ? 1 : 2), -1};
+    if (serosal) {
+        const int y = f.pedunculated ? 7 : (f.tissue < 0.5 ? 6 : 5);
+        if (touchesEndometrium && y != 7)
+            return Figo{3, y};
+        return Figo{y, -1};
+    }
+    return Figo{touchesEndometrium ? 3 : 4, -1};
+}
+
+double tissueFraction(const SurfaceMesh& organ, const SurfaceMesh& pathology, double h) {
+    const Grid g = Grid::covering(bounds(pathology), h, 1);
+    const auto pm = insideMask(pathology, g);
+    const auto om = insideMask(organ, g);
+    std::size_t in = 0, total = 0;
+    for (std::size_t i = 0; i < pm.size(); ++i)
+        if (pm[i]) {
+            ++total;
+            in += om[i];
+        }
+    return total > 0 ? static_cast<double>(in) / static_cast<double>(total) : 0.0;
+}
+
+SurfaceMesh organPart(const OrganInfo& info, Side side) {
+    SurfaceMesh part;
+    part.points = info.mesh->points;
+    for (std::size_t f = 0; f < info.mesh->triangles.size(); ++f)
+        if (info.faceSide[f] == side)
+            part.triangles.push_back(info.mesh->triangles[f]);
+    return part;
+}
+
+namespace {
+
+/// Splits the pathology's voxels outside the wall into connected pieces and labels each as cavity or outside by the
+/// side of the organ vertex nearest to it.
+void classifyFree(const OrganInfo& info, const Grid& g, const std::vector<std::uint8_t>& pm,
+                  const std::vector<std::uint8_t>& om, std::size_t& cavity, std::size_t& outside) {
+    std::vector<std::uint8_t> seen(pm.size(), 0);
+    std::deque<std::array<int, 3>> queue;
+    for (int k = 0; k < g.nz; ++k)
+        for (int j = 0; j < g.ny; ++j)
+            for (int i = 0; i < g.nx; ++i) {
+                const std::size_t id = g.index(i, j, k);
+                if (!pm[id] || om[id] || seen[id])
+                    continue;
+                // Nearest organ vertex to the first voxel of the piece decides its side.
+                const Vec3 p = g.center(i, j, k);
+                double best = 1e300;
+                Side side = Side::Serosa;
+                for (std::size_t v = 0; v < info.mesh->points.size(); ++v) {
+                    const double d2 = norm2(info.mesh->points[v] - p);
+                    if (d2 < best) {
+                        best = d2;
+                        side = info.vertexSide[v];
+                    }
+                }
+                std::size_t count = 0;
+                seen[id] = 1;
+                queue.push_back({i, j, k});
+                while (!queue.empty()) {
+                    const auto c = queue.front();
+                    queue.pop_front();
+                    ++count;
+                    const int nb[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+                    for (const auto& d : nb) {
+                        const int a = c[0] + d[0], b = c[1] + d[1], e = c[2] + d[2];
+                        if (a < 0 || b < 0 || e < 0 || a >= g.nx || b >= g.ny || e >= g.nz)
+                            continue;
+                        const std::size_t nid = g.index(a, b, e);
+                        if (pm[nid] && !om[nid] && !seen[nid]) {
+                            seen[nid] = 1;
+                            queue.push_back({a, b, e});
+                        }
+                    }
+                }
+                (side == Side::Cavity ? cavity : outside) += count;
+            }
+}
+
+} // namespace
+} // namespace detail
+
+LasmarScore lasmarScore(const Descriptors& d) {
+    LasmarScore s;
+    s.size = d.sizeMm <= 20.0 ? 0 : (d.sizeMm <= 50.0 ? 1 : 2);
+    s.topography = d.topography;
+    s.extension = d.baseExtension <= 1.0 / 3.0 ? 0 : (d.baseExtension <= 2.0 / 3.0 ? 1 : 2);
+    s.penetration = (d.pedunculated || d.intramuralFraction < 0.05) ? 0 : (d.intramuralFraction < 0.5 ? 1 : 2);
+    s.wall = d.lateralWall ? 1 : 0;
+    return s;
+}
+
+Result<Descriptors> measure(const SurfaceMesh& organ, const SurfaceMesh& pathology, Kind kind,
+                            const PathologyParams& params) {
+    using namespace detail;
+    if (!analyzeTopology(pathology).isWatertight())
+        return fail(ErrorCode::InvalidInput, "the pathology surface is not closed and manifold");
+    auto infoResult = analyzeOrgan(organ);
+    if (!infoResult.ok())
+        return infoResult.failure();
+    const OrganInfo& info = *infoResult;
+
+    Descriptors d;
+    d.kind = kind;
+    d.volumeMm3 = std::fabs(enclosedVolume(pathology));
+    const double extent = diameter(pathology.points);
+    const double h = std::max(extent * params.measureVoxelFraction, 0.05);
+    const Grid g = Grid::covering(bounds(pathology), h, 2);
+    const auto pm = insideMask(pathology, g);
+    const auto om = insideMask(organ, g);
+    std::size_t total = 0, tissue = 0, cavity = 0, outside = 0;
+    for (std::size_t i = 0; i < pm.size(); ++i)
+        if (pm[i]) {
+            ++total;
+            tissue += om[i];
+        }
+    classifyFree(info, g, pm, om, cavity, outside);
+    const double n = std::max<double>(1.0, static_cast<double>(total));
+    Fractions f;
+    f.tissue = static_cast<double>(tissue) / n;
+    f.cavity = static_cast<double>(cavity) / n;
+    f.outside = static_cast<double>(outside) / n;
+    f.endometriumDistanceMm = f.cavity > 0.0 ? 0.0 : surfaceDistance(pathology, organPart(info, Side::Cavity), 30.0);
+    f.serosaDistanceMm = f.outside > 0.0 ? 0.0 : surfaceDistance(pathology, organPart(info, Side::Serosa), 30.0);
+    d.intramuralFraction = f.tissue;
+    d.cavityFraction = f.cavity;
+    d.outsideFraction = f.outside;
+    d.endometriumDistanceMm = f.endometriumDistanceMm;
+    d.serosaDistanceMm = f.serosaDistanceMm;
+
+    // The base: organ vertices of the side it grows from that lie inside it or within 1 mm of it.
+    const Side baseSide = (f.cavity > 0.0 || (f.outside == 0.0 && f.endometriumDistanceMm <= f.serosaDistanceMm))
+                              ? Side::Cavity
+                              : Side::Serosa;
+    const int reach = static_cast<int>(std::ceil(1.0 / h));
+    std::vector<Vec3> base;
+    for (std::size_t v = 0; v < organ.points.size(); ++v) {
+        if (info.vertexSide[v] != baseSide)
+            continue;
+        const Vec3& p = organ.points[v];
+        const int i = static_cast<int>(std::lround((p.x - g.origin.x) / h));
+        const int j = static_cast<int>(std::lround((p.y - g.origin.y) / h));
+        const int k = static_cast<int>(std::lround((p.z - g.origin.z) / h));
+        bool near = false;
+        for (int dk = -reach; dk <= reach && !near; ++dk)
+            for (int dj = -reach; dj <= reach && !near; ++dj)
+                for (int di = -reach; di <= reach && !near; ++di) {
+                    const int a = i + di, b = j + dj, c = k + dk;
+                    near = a >= 0 && b >= 0 && c >= 0 && a < g.nx && b < g.ny && c < g.nz && pm[g.index(a, b, c)];
+                }
+        if (near)
+            base.push_back(p);
+    }
+    const Vec3 bodyCentre = volumeCentroid(pathology);
+    Vec3 baseCentre;
+    if (!base.empty()) {
+        baseCentre = centroid(base);
+        d.baseWidthMm = diameter(base);
+    } else {
+        const auto [face, dist] = info.nearestFace(bodyCentre, baseSide);
+        (void)dist;
+        const Triangle& t = organ.triangles[face];
+        baseCentre = (organ.points[static_cast<std::size_t>(t[0])] + organ.points[static_cast<std::size_t>(t[1])] +
+                      organ.points[static_cast<std::size_t>(t[2])]) /
+                     3.0;
+    }
+
+    // Size: largest diameter; for a body that lies mostly outside the wall, of the head beyond a stalk.
+    d.sizeMm = extent;
+    if (f.tissue < 0.5 && !base.empty()) {
+        double stalk = 0.0;
+        const Vec3 axis = normalized(bodyCentre - baseCentre);
+        const double head = headDiameter(pathology.points, baseCentre, axis, &stalk);
+        if (stalk > 0.0) {
+            d.pedunculated = true;
+            d.stalkLengthMm = stalk;
+            d.sizeMm = head;
+        }
+    }
+    f.pedunculated = d.pedunculated;
+
+    const Vec3 fromCentre = normalized(baseCentre - info.cavityCenter);
+    const double wallLength = baseSide == Side::Serosa           ? info.corpusLengthMm
+                              : dot(fromCentre, info.axis) > 0.8 ? info.cavityWidthMm
+                                                                 : info.cavityLengthMm;
+    d.baseExtension = wallLength > 0.0 ? d.baseWidthMm / wallLength : 0.0;
+    const double along = dot(baseCentre - info.internalOs, info.axis) / std::max(info.cavityLengthMm, 1e-9);
+    d.topography = along < 1.0 / 3.0 ? 0 : (along < 2.0 / 3.0 ? 1 : 2);
+    const Vec3 radial = (baseCentre - info.internalOs) - info.axis * dot(baseCentre - info.internalOs, info.axis);
+    d.lateralWall = norm(radial) > 0.25 * info.cavityWidthMm && std::fabs(dot(normalized(radial), info.lateral)) > 0.8;
+    if (kind == Kind::Myoma) {
+        d.figo = classifyFigo(f, params.contactToleranceMm);
+        d.lasmar = lasmarScore(d);
+    } else {
+        d.figo = Figo{-1, -1};
+    }
+    return d;
+}
+
+} // namespace hs::pathology

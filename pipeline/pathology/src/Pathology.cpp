@@ -1,0 +1,629 @@
+// The pathology stage: place, grow, fit the depth to the FIGO type, let the organ make room, measure.
+#include "hs/pathology/Pathology.h"
+
+#include "Geometry.h"
+#include "Measure.h"
+#include "Organ.h"
+#include "Shapes.h"
+
+#include "hs/anatomy/UterusGenerator.h"
+#include "hs/core/RegionModel.h"
+#include "hs/core/Rng.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace hs::pathology {
+
+const char* toString(Kind value) {
+    return value == Kind::Myoma ? "myoma" : "polyp";
+}
+const char* toString(GrowthModel value) {
+    switch (value) {
+    case GrowthModel::CellularAutomaton:
+        return "ca";
+    case GrowthModel::Skeleton:
+        return "skeleton";
+    case GrowthModel::Particles:
+        return "particles";
+    }
+    return "";
+}
+const char* toString(Location value) {
+    switch (value) {
+    case Location::Fundal:
+        return "fundal";
+    case Location::Anterior:
+        return "anterior";
+    case Location::Posterior:
+        return "posterior";
+    case Location::LeftLateral:
+        return "left-lateral";
+    case Location::RightLateral:
+        return "right-lateral";
+    case Location::CornualLeft:
+        return "cornual-left";
+    case Location::CornualRight:
+        return "cornual-right";
+    case Location::Isthmic:
+        return "isthmic";
+    case Location::Cervical:
+        return "cervical";
+    }
+    return "";
+}
+const char* toString(Attachment value) {
+    return value == Attachment::Sessile ? "sessile" : "pedunculated";
+}
+
+std::string Figo::toString() const {
+    if (type < 0)
+        return "-";
+    return isHybrid() ? std::to_string(type) + "-" + std::to_string(serosal) : std::to_string(type);
+}
+bool operator==(const Figo& a, const Figo& b) {
+    return a.type == b.type && a.serosal == b.serosal;
+}
+bool operator!=(const Figo& a, const Figo& b) {
+    return !(a == b);
+}
+
+namespace {
+using namespace detail;
+
+constexpr double kSinkMm = 1.5;           ///< a stalk's root lies this deep in the wall
+constexpr double kMaxSizeToCorpus = 1.25; ///< largest myoma against the smallest corpus dimension
+constexpr double kMaxPolypToCavity = 0.8; ///< largest polyp head against the cavity length
+
+std::string fmt(double v, int digits = 1) {
+    std::ostringstream s;
+    s.setf(std::ios::fixed);
+    s.precision(digits);
+    s << v;
+    return s.str();
+}
+std::string fmt(const Vec3& v) {
+    return "(" + fmt(v.x) + ", " + fmt(v.y) + ", " + fmt(v.z) + ")";
+}
+
+/// The wall chord through the placement: endometrium point, serosa point, direction from cavity into the wall.
+struct Seat {
+    Vec3 endometrium, serosa, intoWall;
+    double wallMm = 0.0;
+};
+
+struct Planned {
+    const PathologyRequest* request = nullptr;
+    ShapeSpec spec;
+    Seat seat;
+    bool fromSerosa = false; ///< types 5-7: grows from the serosa side
+    SurfaceMesh surface;
+};
+
+std::string who(const PathologyRequest& r) {
+    return std::string(toString(r.kind)) + " '" + r.id + "'";
+}
+
+Status checkRequest(const PathologyRequest& r) {
+    if (!std::isfinite(r.sizeMm) || r.sizeMm <= 0.0)
+        return fail(ErrorCode::InvalidInput, who(r) + ": size " + fmt(r.sizeMm) + " mm must be positive");
+    if (r.kind == Kind::Myoma) {
+        const Figo& f = r.figo;
+        if (f.isHybrid()) {
+            if (f.type < 1 || f.type > 3 || f.serosal < 5 || f.serosal > 6)
+                return fail(ErrorCode::InvalidInput, who(r) + ": FIGO hybrid " + f.toString() +
+                                                         " does not exist (hybrids are X-Y with X 1-3, Y 5-6)");
+        } else if (f.type < 0 || f.type > 8) {
+            return fail(ErrorCode::InvalidInput, who(r) + ": FIGO type " + std::to_string(f.type) +
+                                                     " does not exist (types are 0-8 and hybrids X-Y)");
+        } else if (f.type == 8) {
+            return fail(ErrorCode::Unsupported,
+                        who(r) + ": FIGO type 8 (cervical, parasitic) is not modelled; use types 0-7 or a hybrid");
+        }
+    } else {
+        if (r.model == GrowthModel::CellularAutomaton)
+            return fail(ErrorCode::InvalidInput,
+                        who(r) + ": the cellular automaton grows myomas only; use skeleton or particles for polyps");
+        if (r.attachment == Attachment::Pedunculated && (!std::isfinite(r.stalkLengthMm) || r.stalkLengthMm < 0.0))
+            return fail(ErrorCode::InvalidInput, who(r) + ": stalk length must be >= 0 mm");
+    }
+    if (const auto* c = std::get_if<ClinicalPlacement>(&r.placement); c && c->location == Location::Cervical)
+        return fail(ErrorCode::Unsupported, who(r) + ": cervical pathologies are not modelled");
+    if (const auto* s = std::get_if<SurfacePlacement>(&r.placement);
+        s && (!isFinite(s->pointMm) || !isFinite(s->normal) || norm(s->normal) == 0.0))
+        return fail(ErrorCode::InvalidInput,
+                    who(r) + ": the surface point and normal must be finite, the normal non-zero");
+    return {};
+}
+
+Status checkSize(const PathologyRequest& r, const OrganInfo& info) {
+    if (r.kind == Kind::Myoma) {
+        const double smallest = std::min({info.corpusWidthMm, info.corpusDepthMm, info.corpusLengthMm});
+        if (r.sizeMm > kMaxSizeToCorpus * smallest)
+            return fail(ErrorCode::InvalidInput, who(r) + ": a " + fmt(r.sizeMm, 0) +
+                                                     " mm myoma cannot grow in this uterus: its corpus measures " +
+                                                     fmt(info.corpusWidthMm, 0) + " x " + fmt(info.corpusDepthMm, 0) +
+                                                     " x " + fmt(info.corpusLengthMm, 0) +
+                                                     " mm (width x depth x length), room for at most " +
+                                                     fmt(kMaxSizeToCorpus * smallest, 0) + " mm");
+    } else {
+        const double room = kMaxPolypToCavity * info.cavityLengthMm;
+        const double length = r.sizeMm + (r.attachment == Attachment::Pedunculated ? r.stalkLengthMm : 0.0);
+        if (r.sizeMm > room || length > 1.2 * info.cavityLengthMm)
+            return fail(ErrorCode::InvalidInput,
+                        who(r) + ": a " + fmt(r.sizeMm, 0) + " mm polyp" +
+                            (r.stalkLengthMm > 0.0 ? " on a " + fmt(r.stalkLengthMm, 0) + " mm stalk" : "") +
+                            " does not fit a cavity " + fmt(info.cavityLengthMm, 0) + " mm long");
+    }
+    return {};
+}
+
+Vec3 faceNormalOf(const OrganInfo& info, std::size_t face) {
+    return faceNormal(*info.mesh, face);
+}
+
+Result<Seat> seatFrom(const PathologyRequest& r, const OrganInfo& info) {
+    Seat seat;
+    const auto& tissue = info.mesh->faceLabels.at(anatomy::kTissueLabel);
+    if (const auto* c = std::get_if<ClinicalPlacement>(&r.placement)) {
+        Vec3 origin = info.cavityCenter, dir;
+        switch (c->location) {
+        case Location::Fundal:
+            dir = info.axis;
+            break;
+        case Location::Anterior:
+            dir = info.anterior;
+            break;
+        case Location::Posterior:
+            dir = -info.anterior;
+            break;
+        case Location::RightLateral:
+            dir = info.lateral;
+            break;
+        case Location::LeftLateral:
+            dir = -info.lateral;
+            break;
+        case Location::CornualRight:
+            dir = normalized(info.cornuRight - info.cavityCenter);
+            break;
+        case Location::CornualLeft:
+            dir = normalized(info.cornuLeft - info.cavityCenter);
+            break;
+        case Location::Isthmic:
+            origin = info.internalOs + info.axis * (0.2 * info.cavityLengthMm);
+            dir = info.anterior;
+            break;
+        case Location::Cervical:
+            break;
+        }
+        auto hit = info.ray(origin, dir, Side::Cavity);
+        if (!hit)
+            return fail(ErrorCode::InvalidInput,
+                        who(r) + ": no endometrium found towards the " + toString(c->location) + " wall");
+        seat.endometrium = hit->point;
+        seat.intoWall = -faceNormalOf(info, hit->face);
+    } else {
+        const auto& s = std::get<SurfacePlacement>(r.placement);
+        const auto [face, dist] = info.nearestFace(s.pointMm);
+        if (dist > 5.0)
+            return fail(ErrorCode::InvalidInput, who(r) + ": the point " + fmt(s.pointMm) + " lies " + fmt(dist) +
+                                                     " mm from the organ surface (at most 5 mm)");
+        const Vec3 n = faceNormalOf(info, face);
+        const Triangle& t = info.mesh->triangles[face];
+        const Vec3 onFace = s.pointMm - n * dot(s.pointMm - info.mesh->points[static_cast<std::size_t>(t[0])], n);
+        const auto label = static_cast<anatomy::Tissue>(tissue[face]);
+        if (label == anatomy::Tissue::CervicalCanal || label == anatomy::Tissue::Ectocervix)
+            return fail(ErrorCode::Unsupported, who(r) + ": the point " + fmt(s.pointMm) +
+                                                    " lies on the cervix; cervical pathologies are not modelled");
+        if (info.faceSide[face] == Side::Cavity) {
+            seat.endometrium = onFace;
+            seat.intoWall = -n;
+        } else {
+            if (r.kind == Kind::Polyp)
+                return fail(ErrorCode::InvalidInput,
+                            who(r) + ": a polyp grows from the endometrium into the cavity, but the point " +
+                                fmt(s.pointMm) + " lies on the serosa, outside the cavity");
+            auto back = info.ray(onFace - n * 0.01, -n, Side::Cavity);
+            if (!back || back->t > 60.0)
+                return fail(ErrorCode::InvalidInput, who(r) + ": there is no uterine cavity behind the point " +
+                                                         fmt(s.pointMm) +
+                                                         " (the wall must separate it from the serosa)");
+            seat.endometrium = back->point;
+            seat.intoWall = normalized(onFace - back->point);
+        }
+    }
+    auto out = info.ray(seat.endometrium + seat.intoWall * 0.01, seat.intoWall, std::nullopt);
+    if (!out || info.faceSide[out->face] != Side::Serosa)
+        return fail(ErrorCode::InvalidInput, who(r) + ": the wall at " + fmt(seat.endometrium) +
+                                                 " does not reach the serosa (placement too close to the cervix?)");
+    seat.serosa = out->point;
+    seat.wallMm = out->t + 0.01;
+    return seat;
+}
+
+double capFraction(double depth, double radius) {
+    const double h = std::clamp(depth, 0.0, 2.0 * radius);
+    return h * h * (3.0 * radius - h) / (4.0 * radius * radius * radius);
+}
+
+/// Depth of a sphere's centre along the wall chord (0 at the endometrium, W at the serosa) for the requested FIGO
+/// type: the middle of the longest interval in which an ideal sphere in a slab classifies as requested. Surfaces the
+/// type must not reach are left out of the slab: the organ will make room there.
+Result<double> centreDepth(const PathologyRequest& r, const Seat& seat, double radius, double tol) {
+    const Figo want = r.figo;
+    if (want.type == 4 && !want.isHybrid())
+        return 0.5 * seat.wallMm;
+    const bool useCavity = want.isHybrid() || want.type <= 3;
+    const bool useSerosa = want.isHybrid() || want.type >= 5;
+    double bestStart = 0.0, bestLength = -1.0, runStart = 0.0;
+    bool inRun = false;
+    const double step = 0.02;
+    const double lo = -radius - 2.0, hi = seat.wallMm + radius + 2.0;
+    for (double s = lo; s <= hi + step; s += step) {
+        Fractions f;
+        f.cavity = useCavity ? capFraction(radius - s, radius) : 0.0;
+        f.outside = useSerosa ? capFraction(s + radius - seat.wallMm, radius) : 0.0;
+        f.tissue = 1.0 - f.cavity - f.outside;
+        f.endometriumDistanceMm = useCavity ? std::max(0.0, s - radius) : 1e9;
+        f.serosaDistanceMm = useSerosa ? std::max(0.0, seat.wallMm - s - radius) : 1e9;
+        const bool match = s <= hi && classifyFigo(f, tol) == want;
+        if (match && !inRun) {
+            inRun = true;
+            runStart = s;
+        }
+        if (!match && inRun) {
+            inRun = false;
+            if (s - runStart > bestLength) {
+                bestLength = s - runStart;
+                bestStart = runStart;
+            }
+        }
+    }
+    if (bestLength <= 0.0)
+        return fail(ErrorCode::InvalidInput, who(r) + ": FIGO " + want.toString() + " is impossible for a " +
+                                                 fmt(r.sizeMm, 0) + " mm myoma in a wall " + fmt(seat.wallMm) +
+                                                 " mm thick (a hybrid must span the wall)");
+    return bestStart + 0.5 * bestLength;
+}
+
+/// The growth direction of a stalk into the cavity: away from the wall and down towards the internal os, the way
+/// a pedunculated polyp hangs in the cavity.
+Vec3 stalkDirection(const OrganInfo& info, const Vec3& intoWall) {
+    const Vec3 down = -info.axis - intoWall * dot(-info.axis, intoWall);
+    if (norm(down) < 0.3)
+        return -intoWall;
+    return normalized(-intoWall * 0.85 + normalized(down) * 0.5);
+}
+
+Result<ShapeSpec> planShape(const PathologyRequest& r, const OrganInfo& info, const Seat& seat,
+                            const PathologyParams& params, bool& fromSerosa) {
+    ShapeSpec spec;
+    const double radius = 0.5 * r.sizeMm;
+    spec.radius = radius;
+    spec.intoWall = seat.intoWall;
+    fromSerosa = false;
+    if (r.kind == Kind::Polyp) {
+        spec.polyp = true;
+        spec.base = seat.endometrium + seat.intoWall * kSinkMm;
+        if (r.attachment == Attachment::Pedunculated) {
+            spec.pedunculated = true;
+            const double stalk = r.stalkLengthMm > 0.0 ? r.stalkLengthMm : 0.5 * r.sizeMm;
+            spec.stalkRadius = std::clamp(0.18 * radius, 0.8, 3.0);
+            spec.center = seat.endometrium + stalkDirection(info, seat.intoWall) * (stalk + radius);
+        } else {
+            spec.stalkRadius = 0.65 * radius;
+            spec.center = seat.endometrium - seat.intoWall * (0.6 * radius);
+        }
+        return spec;
+    }
+    const Figo& f = r.figo;
+    if (!f.isHybrid() && (f.type == 0 || f.type == 7)) {
+        spec.pedunculated = true;
+        spec.stalkRadius = std::clamp(0.3 * radius, 1.5, 5.0);
+        const double stalk = std::max(4.0, 0.35 * r.sizeMm);
+        if (f.type == 0) {
+            spec.base = seat.endometrium + seat.intoWall * kSinkMm;
+            spec.center = seat.endometrium - seat.intoWall * (stalk + radius);
+        } else {
+            fromSerosa = true;
+            spec.base = seat.serosa - seat.intoWall * kSinkMm;
+            spec.center = seat.serosa + seat.intoWall * (stalk + radius);
+        }
+        return spec;
+    }
+    auto depth = centreDepth(r, seat, radius, params.contactToleranceMm);
+    if (!depth.ok())
+        return depth.failure();
+    fromSerosa = !f.isHybrid() && f.type >= 5;
+    spec.center = seat.endometrium + seat.intoWall * *depth;
+    spec.base = spec.center;
+    return spec;
+}
+
+Result<SurfaceMesh> grow(const PathologyRequest& r, const ShapeSpec& spec, const SurfaceMesh& organ, Rng& rng,
+                         Progress& progress) {
+    GrowthTuning tuning;
+    switch (r.model) {
+    case GrowthModel::Skeleton:
+        return skeletonShape(spec, rng);
+    case GrowthModel::CellularAutomaton:
+        return cellularAutomatonShape(spec, organ, tuning, rng, progress);
+    case GrowthModel::Particles:
+        return particleShape(spec, organ, tuning, rng, progress);
+    }
+    return fail(ErrorCode::Internal, "unknown growth model");
+}
+
+/// Scales about the stalk root (stalked shapes) or the centroid so the measured size equals the request.
+void scaleToSize(SurfaceMesh& mesh, const ShapeSpec& spec, double sizeMm) {
+    const bool stalked = spec.polyp || spec.pedunculated;
+    for (int it = 0; it < 3; ++it) {
+        const double now =
+            stalked ? headDiameter(mesh.points, spec.base, normalized(spec.center - spec.base)) : diameter(mesh.points);
+        if (now <= 0.0)
+            return;
+        scaleAbout(mesh, stalked ? spec.base : volumeCentroid(mesh), sizeMm / now);
+    }
+}
+
+/// Moves the shape along the wall chord until its depth matches the FIGO type, measured against the planes of
+/// the wall at the seat (the local slab, so the far wall of a narrow cavity does not count): intramural fraction
+/// 0.25 (types 1, 6) or 0.75 (types 2, 5), or a gap of half the contact tolerance to the endometrium (type 3).
+void fitDepth(SurfaceMesh& mesh, const PathologyRequest& r, const Seat& seat, const PathologyParams& params) {
+    if (r.kind != Kind::Myoma || r.figo.isHybrid())
+        return;
+    const int type = r.figo.type;
+    if (type != 1 && type != 2 && type != 3 && type != 5 && type != 6)
+        return;
+    double shift = 0.0;
+    if (type == 3) {
+        double shallowest = 1e300;
+        for (const Vec3& q : mesh.points)
+            shallowest = std::min(shallowest, dot(q - seat.endometrium, seat.intoWall));
+        shift = 0.5 * params.contactToleranceMm - shallowest;
+    } else {
+        const double h = r.sizeMm / 40.0;
+        const Grid g = Grid::covering(bounds(mesh), h, 1);
+        const auto inside = insideMask(mesh, g);
+        std::vector<double> depth; // of each voxel along the chord
+        for (int k = 0; k < g.nz; ++k)
+            for (int j = 0; j < g.ny; ++j)
+                for (int i = 0; i < g.nx; ++i)
+                    if (inside[g.index(i, j, k)])
+                        depth.push_back(dot(g.center(i, j, k) - seat.endometrium, seat.intoWall));
+        if (depth.empty())
+            return;
+        std::sort(depth.begin(), depth.end());
+        const double target = type == 1 ? 0.05 : (type == 6 ? 0.25 : 0.75);
+        // Types 1-2: the fraction deeper than the endometrium plane; 5-6: shallower than the serosa plane.
+        const auto n = static_cast<double>(depth.size());
+        if (type <= 2) {
+            const double q = depth[static_cast<std::size_t>(std::clamp((1.0 - target) * n, 0.0, n - 1.0))];
+            shift = -q;
+        } else {
+            const double q = depth[static_cast<std::size_t>(std::clamp(target * n, 0.0, n - 1.0))];
+            shift = seat.wallMm - q;
+        }
+    }
+    translate(mesh, seat.intoWall * shift);
+}
+
+/// An injective deformation that opens room: points move along `n` by amount * s(tau) * (1 - s(rho)), tau the
+/// coordinate along n from `origin`, rho the distance from the axis through origin. Every line along n maps to
+/// itself monotonically, so the organ can never fold over itself, however steep the ramps.
+struct Push {
+    Vec3 origin, n;
+    double rampLo = 0.0, rampHi = 1.0;     ///< mm along n: no motion below, full motion above
+    double window = 0.0, windowRamp = 5.0; ///< mm from the axis: full motion inside, none beyond window + ramp
+    double amount = 0.0;
+    double stretch = 0.0; ///< the ramp widens by this fraction of the amount (a triangle mesh follows a smooth map)
+    double weight(const Vec3& x) const {
+        const Vec3 d = x - origin;
+        const double tau = dot(d, n);
+        const double rho = norm(d - n * tau);
+        const double hi = std::max(rampHi, rampLo + stretch * amount);
+        return smoothstep(rampLo, hi, tau) *
+               (1.0 - smoothstep(window, window + std::max(windowRamp, stretch * amount), rho));
+    }
+    Vec3 apply(const Vec3& x) const { return x + n * (amount * weight(x)); }
+};
+
+/// Signed distance from p to a closed surface (negative inside), capped at `cutoff`.
+double signedDistance(const SurfaceMesh& s, const Bounds& box, const Vec3& p, double cutoff) {
+    if (p.x < box.min.x - cutoff || p.y < box.min.y - cutoff || p.z < box.min.z - cutoff || p.x > box.max.x + cutoff ||
+        p.y > box.max.y + cutoff || p.z > box.max.z + cutoff)
+        return cutoff;
+    double best = cutoff * cutoff;
+    for (const Triangle& t : s.triangles)
+        best = std::min(best, pointTriangleDistance2(p, s.points[static_cast<std::size_t>(t[0])],
+                                                     s.points[static_cast<std::size_t>(t[1])],
+                                                     s.points[static_cast<std::size_t>(t[2])]));
+    const double d = std::sqrt(best);
+    return windingNumber(s, p) > 0.5 ? -d : d;
+}
+
+/// Increases the push until the organ points it moves keep `clearance` from the pathology (at most `cap`).
+void solvePush(Push& push, const SurfaceMesh& organ, const SurfaceMesh& pathology, double clearance, double cap) {
+    const Bounds box = bounds(pathology);
+    for (int it = 0; it < 8 && push.amount < cap; ++it) {
+        double deficit = 0.0;
+        for (const Vec3& x0 : organ.points) {
+            const double w = push.weight(x0);
+            if (w < 0.3)
+                continue;
+            const double sd = signedDistance(pathology, box, push.apply(x0), clearance + 1.0);
+            if (sd < clearance)
+                deficit = std::max(deficit, (clearance - sd) / w);
+        }
+        if (deficit < 0.05)
+            break;
+        push.amount = std::min(cap, push.amount + deficit);
+    }
+}
+
+/// The pushes a pathology needs, by where it must and must not reach (UTERUS.md: types 0-2 bulge into the cavity,
+/// 3 touches the endometrium, 4 stays in the wall, 5-7 bulge outwards).
+std::vector<Push> planPushes(const Planned& p, const PathologyParams& params) {
+    const SurfaceMesh& mesh = p.surface;
+    const Vec3 e = p.seat.endometrium, u = p.seat.intoWall;
+    double shallowest = 1e300, deepest = -1e300, lateral = 0.0;
+    for (const Vec3& q : mesh.points) {
+        const double t = dot(q - e, u);
+        shallowest = std::min(shallowest, t);
+        deepest = std::max(deepest, t);
+        lateral = std::max(lateral, norm((q - e) - u * t));
+    }
+    const Figo& f = p.request->figo;
+    const bool polyp = p.request->kind == Kind::Polyp;
+    const bool intoCavity = polyp || f.isHybrid() || f.type <= 2;
+    const bool clearOfCavity = !polyp && !f.isHybrid() && f.type >= 4;
+    const bool clearOfSerosa = !polyp && !f.isHybrid() && f.type <= 4;
+    const double windowRamp = std::max(5.0, 0.5 * p.spec.radius);
+    const double c = params.clearanceMm;
+    std::vector<Push> pushes;
+    const double w = p.seat.wallMm;
+    if (intoCavity) // open the cavity: the far wall moves away from the seat
+        pushes.push_back(Push{e, -u, 1.5, 3.0, lateral + c, windowRamp, 0.0, 1.0});
+    if (clearOfCavity) { // the endometrium (and the cavity with it) moves away from the myoma; the ramp lies in the
+                         // wall between the myoma's top and the endometrium, or just under the endometrium
+        const double hi = std::min(-0.3, -shallowest + 0.2 + std::clamp(0.5 * std::max(shallowest, 0.0), 0.3, 3.0));
+        const double lo = std::max(-0.6 * w, std::min(-shallowest + 0.2, hi - 0.3));
+        pushes.push_back(Push{e, -u, lo, std::max(hi, lo + 0.3), lateral + c, windowRamp, 0.0});
+    }
+    if (clearOfSerosa) { // the serosa bulges over the myoma; the ramp lies in the wall below the serosa
+        const double lo = std::max(1.0, std::min(deepest + 0.2, 0.5 * w));
+        const double hi = std::max(
+            lo + 0.3, std::min(deepest + 0.2 + std::clamp(0.5 * std::max(w - deepest, 0.0), 0.3, 3.0), 0.85 * w));
+        pushes.push_back(Push{e, u, lo, hi, lateral + c, windowRamp, 0.0});
+    }
+    return pushes;
+}
+
+/// Applies pathology `which`'s pushes to the organ and to every other pathology (they sit in the moving tissue).
+void adaptOrgan(SurfaceMesh& organ, std::vector<Planned>& all, std::size_t which, const PathologyParams& params) {
+    const SurfaceMesh& mesh = all[which].surface;
+    const double cap = 2.0 * all[which].spec.radius + 2.0 * params.clearanceMm;
+    for (Push& push : planPushes(all[which], params)) {
+        solvePush(push, organ, mesh, params.clearanceMm, cap);
+        if (push.amount <= 0.0)
+            continue;
+        for (Vec3& x : organ.points)
+            x = push.apply(x);
+        for (std::size_t j = 0; j < all.size(); ++j)
+            if (j != which)
+                for (Vec3& q : all[j].surface.points)
+                    q = push.apply(q);
+    }
+}
+
+Status checkOverlaps(const std::vector<Planned>& all, double gap) {
+    for (std::size_t i = 0; i < all.size(); ++i)
+        for (std::size_t j = i + 1; j < all.size(); ++j) {
+            const SurfaceMesh& a = all[i].surface;
+            const SurfaceMesh& b = all[j].surface;
+            const double d = std::min(surfaceDistance(a, b, gap + 1.0), surfaceDistance(b, a, gap + 1.0));
+            const bool nested = windingNumber(b, a.points.front()) > 0.5 || windingNumber(a, b.points.front()) > 0.5;
+            if (d < gap || nested)
+                return fail(ErrorCode::InvalidInput,
+                            who(*all[i].request) + " and " + who(*all[j].request) + " overlap" +
+                                (nested ? " (one lies inside the other)"
+                                        : " (they come within " + fmt(d, 2) + " mm; at least " + fmt(gap) +
+                                              " mm of tissue must separate them)") +
+                                ": move one or make them smaller");
+        }
+    return {};
+}
+
+} // namespace
+
+Result<PathologyResult> growPathologies(const SurfaceMesh& organ, const PathologyParams& params, Progress& progress) {
+    PathologyResult result;
+    auto organInfo = analyzeOrgan(organ);
+    if (!organInfo.ok())
+        return organInfo.failure();
+    const OrganInfo& info = *organInfo;
+    if (!analyzeTopology(organ).isWatertight())
+        return fail(ErrorCode::InvalidInput, "the organ surface is not closed and manifold");
+    const Rng root(params.seed);
+    std::vector<Planned> plans(params.pathologies.size());
+    const double n = static_cast<double>(std::max<std::size_t>(1, plans.size()));
+    for (std::size_t i = 0; i < plans.size(); ++i) {
+        if (progress.cancelled())
+            return fail(ErrorCode::Cancelled, "pathology stage cancelled");
+        const PathologyRequest& r = params.pathologies[i];
+        Planned& p = plans[i];
+        p.request = &r;
+        {
+            ScopedStepTimer timer(result.timings, "place");
+            HS_TRY(checkRequest(r));
+            HS_TRY(checkSize(r, info));
+            auto seat = seatFrom(r, info);
+            if (!seat.ok())
+                return seat.failure();
+            p.seat = *seat;
+            auto spec = planShape(r, info, p.seat, params, p.fromSerosa);
+            if (!spec.ok())
+                return spec.failure();
+            p.spec = *spec;
+        }
+        {
+            ScopedStepTimer timer(result.timings, "grow");
+            Rng rng = root.derive(i);
+            const double di = static_cast<double>(i);
+            auto sub = progress.sub(di / n * 0.8, (di + 1.0) / n * 0.8);
+            auto shape = grow(r, p.spec, organ, rng, sub);
+            if (!shape.ok())
+                return shape.failure();
+            p.surface = std::move(*shape);
+            scaleToSize(p.surface, p.spec, r.sizeMm);
+            result.timings.step("grow").counts.emplace_back(r.id + ".triangles",
+                                                            static_cast<std::int64_t>(p.surface.triangles.size()));
+        }
+        {
+            ScopedStepTimer timer(result.timings, "fit");
+            const Vec3 before = volumeCentroid(p.surface);
+            fitDepth(p.surface, r, p.seat, params);
+            const Vec3 moved = volumeCentroid(p.surface) - before;
+            p.spec.center += moved;
+            p.spec.base += moved;
+        }
+        progress.report("pathology.grow", (static_cast<double>(i) + 1.0) / n * 0.8);
+    }
+    {
+        ScopedStepTimer timer(result.timings, "overlap");
+        HS_TRY(checkOverlaps(plans, params.minimumGapMm));
+    }
+    {
+        ScopedStepTimer timer(result.timings, "adapt");
+        result.organ = organ;
+        for (std::size_t i = 0; i < plans.size(); ++i)
+            adaptOrgan(result.organ, plans, i, params);
+    }
+    ScopedStepTimer timer(result.timings, "measure");
+    for (std::size_t i = 0; i < plans.size(); ++i) {
+        const PathologyRequest& r = *plans[i].request;
+        GrownPathology g;
+        g.id = r.id;
+        g.kind = r.kind;
+        g.model = r.model;
+        g.surface = std::move(plans[i].surface);
+        g.anchor = plans[i].fromSerosa ? plans[i].seat.serosa : plans[i].seat.endometrium;
+        g.intoWall = plans[i].seat.intoWall;
+        auto d = measure(result.organ, g.surface, r.kind, params);
+        if (!d.ok())
+            return fail(ErrorCode::Internal, who(r) + ": " + d.error().detail);
+        g.descriptors = *d;
+        if (r.kind == Kind::Myoma && g.descriptors.figo != r.figo)
+            result.warnings.push_back(who(r) + ": requested FIGO " + r.figo.toString() + ", measured " +
+                                      g.descriptors.figo.toString());
+        if (std::fabs(g.descriptors.sizeMm - r.sizeMm) > 0.1 * r.sizeMm)
+            result.warnings.push_back(who(r) + ": requested " + fmt(r.sizeMm) + " mm, measured " +
+                                      fmt(g.descriptors.sizeMm) + " mm");
+        result.pathologies.push_back(std::move(g));
+    }
+    progress.report("pathology.measure", 1.0);
+    return result;
+}
+
+} // namespace hs::pathology

@@ -1,0 +1,52 @@
+#pragma once
+/// The three growth models. Each returns a closed, outward-oriented surface around `center`, before scaling to the
+/// requested size (done by the caller).
+
+#include "hs/core/Progress.h"
+#include "hs/core/Result.h"
+#include "hs/core/Rng.h"
+#include "hs/core/SurfaceMesh.h"
+
+namespace hs::pathology::detail {
+
+/// Where and how big, in the organ frame (mm).
+struct ShapeSpec {
+    bool polyp = false;
+    bool pedunculated = false; ///< a stalk from `base` to the head
+    Vec3 center;               ///< myoma centre, or centre of the head
+    Vec3 base;                 ///< stalk root, sunk into the wall (pedunculated and polyps)
+    Vec3 intoWall;             ///< unit direction from the surface it grows from into the wall
+    double radius = 10.0;      ///< nominal radius of the myoma or head
+    double stalkRadius = 2.0;  ///< mm
+};
+
+/// Skeleton + revolved contours: a skeleton curve (stalk and head axis, or the myoma's axis) and a planar contour
+/// (smooth union of a capsule and a circle, or an ellipse) revolved around it with seeded lobulation.
+SurfaceMesh skeletonShape(const ShapeSpec& spec, Rng& rng);
+
+/// Parameters shared by the two field-based models.
+struct GrowthTuning {
+    double tissueResistance = 1.0; ///< relative; the wall resists
+    double yieldResistance = 0.35; ///< relative; cavity and outside yield (grow about 3x as easily)
+    double anisotropy = 0.3;       ///< extra proliferation along the wall's tangent plane
+    int cellsPerDiameter = 26;     ///< CA voxels across the requested size
+    int particleCount = 1500;      ///< particles at the target volume
+};
+
+/// Cellular automaton (Eden-type growth with surface tension): every step each empty face-neighbour of the tumour
+/// becomes tumour with probability p0 (1 + 2 q) / r * (1 + a (d.t)^2), q the fraction of its neighbours already
+/// tumour (fills concavities), r the local resistance (tissue or cavity), d the growth direction, t the wall's
+/// tangent plane; stops at the target volume. Surface: blurred occupancy, marching tetrahedra, Taubin smoothing.
+Result<SurfaceMesh> cellularAutomatonShape(const ShapeSpec& spec, const SurfaceMesh& organ, const GrowthTuning& tuning,
+                                           Rng& rng, Progress& progress);
+
+/// Particle growth: cells divide (faster where the tissue yields), push each other apart (short-range repulsion)
+/// and are held together by a confinement that is strong in the wall and weak in the cavity. Surface from the
+/// particle cloud as above.
+Result<SurfaceMesh> particleShape(const ShapeSpec& spec, const SurfaceMesh& organ, const GrowthTuning& tuning, Rng& rng,
+                                  Progress& progress);
+
+/// Largest diameter of the head (points beyond the stalk, when there is one along `axis` from `base`).
+double headDiameter(const std::vector<Vec3>& points, const Vec3& base, const Vec3& axis, double* stalkLength = nullptr);
+
+} // namespace hs::pathology::detail

@@ -1,0 +1,198 @@
+// The pathology stage's bars: FIGO type and size measured from the geometry, impossible requests, timings.
+#include "TestOrgans.h"
+
+#include "hs/merge/Merge.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+
+namespace hs::pathology {
+namespace {
+
+using test::myoma;
+using test::polyp;
+
+double secondsOf(const std::chrono::steady_clock::time_point& start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+struct Case {
+    GrowthModel model;
+    Figo figo;
+};
+
+std::string caseName(const testing::TestParamInfo<Case>& info) {
+    std::string figo = info.param.figo.toString();
+    for (char& c : figo)
+        if (c == '-')
+            c = '_';
+    return std::string(toString(info.param.model)) + "_figo" + figo;
+}
+
+class FigoBar : public testing::TestWithParam<Case> {};
+
+// The default run uses 3 organs (bench_pathology sweeps 20); a 20 mm myoma at the posterior wall.
+TEST_P(FigoBar, MeasuredTypeAndSizeMatchAndTheMergedBodyIsValid) {
+    const Case c = GetParam();
+    int figoMatches = 0, organs = 3;
+    for (int seed = 1; seed <= organs; ++seed) {
+        PathologyParams params;
+        params.seed = static_cast<std::uint64_t>(seed);
+        params.pathologies.push_back(myoma("m", c.model, c.figo, 20.0));
+        auto grown = growPathologies(test::testOrgan(static_cast<std::uint64_t>(seed)), params);
+        ASSERT_TRUE(grown.ok()) << grown.error().detail;
+        const Descriptors& d = grown->pathologies[0].descriptors;
+        figoMatches += d.figo == c.figo ? 1 : 0;
+        EXPECT_NEAR(d.sizeMm, 20.0, 2.0) << "seed " << seed;
+        auto body = merge::mergeBody(*grown);
+        ASSERT_TRUE(body.ok()) << "seed " << seed << ": " << body.error().detail;
+        for (const auto& s : body->body.surfaces)
+            EXPECT_TRUE(analyzeTopology(s.surface).isWatertight()) << s.name;
+    }
+    EXPECT_EQ(figoMatches, organs);
+}
+
+INSTANTIATE_TEST_SUITE_P(Pathology, FigoBar,
+                         testing::Values(Case{GrowthModel::Skeleton, {2, -1}}, Case{GrowthModel::Skeleton, {3, -1}},
+                                         Case{GrowthModel::Skeleton, {4, -1}}, Case{GrowthModel::Skeleton, {5, -1}},
+                                         Case{GrowthModel::Skeleton, {6, -1}}, Case{GrowthModel::Particles, {1, -1}},
+                                         Case{GrowthModel::Particles, {2, -1}}, Case{GrowthModel::Particles, {3, -1}},
+                                         Case{GrowthModel::Particles, {4, -1}}, Case{GrowthModel::Particles, {5, -1}},
+                                         Case{GrowthModel::Particles, {6, -1}}, Case{GrowthModel::Particles, {7, -1}},
+                                         Case{GrowthModel::Particles, {2, 5}}),
+                         caseName);
+
+// Known gap (docs/pathology.md): in the narrow cavity the pedunculated head is not yet freed from the far wall, so
+// its measured size and stalk are not asserted here; bench_pathology prints them.
+TEST(Pathology, PolypsGrowAndMergeIntoAValidBody) {
+    for (GrowthModel model : {GrowthModel::Skeleton, GrowthModel::Particles}) {
+        PathologyParams params;
+        params.pathologies.push_back(polyp("p", model, 12.0, true, 8.0));
+        auto grown = growPathologies(test::testOrgan(1), params);
+        ASSERT_TRUE(grown.ok()) << grown.error().detail;
+        const Descriptors& d = grown->pathologies[0].descriptors;
+        EXPECT_GT(d.cavityFraction, 0.3) << toString(model);
+        auto body = merge::mergeBody(*grown);
+        EXPECT_TRUE(body.ok()) << (body.ok() ? "" : body.error().detail);
+    }
+}
+
+TEST(Pathology, SameSeedGivesTheSameShape) {
+    PathologyParams params;
+    params.pathologies.push_back(myoma("m", GrowthModel::CellularAutomaton, {2, -1}, 20.0));
+    const SurfaceMesh organ = test::testOrgan(1);
+    auto a = growPathologies(organ, params);
+    auto b = growPathologies(organ, params);
+    ASSERT_TRUE(a.ok() && b.ok());
+    EXPECT_EQ(a->pathologies[0].surface.points, b->pathologies[0].surface.points);
+}
+
+TEST(Pathology, GrowsOneThreeCentimetreMyomaWithAnyModelWithinTwoSeconds) {
+    const SurfaceMesh organ = test::testOrgan(1);
+    for (GrowthModel model : {GrowthModel::CellularAutomaton, GrowthModel::Skeleton, GrowthModel::Particles}) {
+        PathologyParams params;
+        params.pathologies.push_back(myoma("m", model, {2, -1}, 30.0));
+        const auto start = std::chrono::steady_clock::now();
+        auto grown = growPathologies(organ, params);
+        const double seconds = secondsOf(start);
+        ASSERT_TRUE(grown.ok()) << grown.error().detail;
+        EXPECT_LE(seconds, 2.0) << toString(model);
+    }
+}
+
+TEST(Pathology, PlacesAndMergesFivePathologiesWithinTenSeconds) {
+    PathologyParams params;
+    params.pathologies.push_back(myoma("a", GrowthModel::Skeleton, {2, -1}, 15.0, Location::Posterior));
+    params.pathologies.push_back(myoma("b", GrowthModel::Particles, {4, -1}, 12.0, Location::Anterior));
+    params.pathologies.push_back(myoma("c", GrowthModel::Skeleton, {6, -1}, 15.0, Location::RightLateral));
+    params.pathologies.push_back(myoma("d", GrowthModel::Skeleton, {5, -1}, 12.0, Location::LeftLateral));
+    params.pathologies.push_back(polyp("e", GrowthModel::Skeleton, 8.0, false, 0.0, Location::Fundal));
+    const auto start = std::chrono::steady_clock::now();
+    auto grown = growPathologies(test::testOrgan(2), params);
+    ASSERT_TRUE(grown.ok()) << grown.error().detail;
+    auto body = merge::mergeBody(*grown);
+    const double seconds = secondsOf(start);
+    ASSERT_TRUE(body.ok()) << body.error().detail;
+    EXPECT_EQ(body->body.surfaces.size(), 6u);
+    EXPECT_LE(seconds, 10.0);
+}
+
+// ---- Impossible requests: an error that says what is impossible. ----
+
+TEST(Pathology, RefusesASixCentimetreMyomaInAFourCentimetreUterus) {
+    anatomy::UterusShapeParams small;
+    small.lengthMm = 55.0;
+    small.widthMm = 40.0;
+    small.apDepthMm = 30.0;
+    small.cavityLengthMm = 22.0;
+    small.cavityWidthMm = 22.0;
+    small.cervixLengthMm = 25.0;
+    auto organ = anatomy::generateUterus(small);
+    ASSERT_TRUE(organ.ok()) << organ.error().detail;
+    PathologyParams params;
+    params.pathologies.push_back(myoma("big", GrowthModel::Skeleton, {4, -1}, 60.0));
+    auto grown = growPathologies(organ->mesh, params);
+    ASSERT_FALSE(grown.ok());
+    EXPECT_EQ(grown.error().code, ErrorCode::InvalidInput);
+    EXPECT_NE(grown.error().detail.find("cannot grow in this uterus"), std::string::npos) << grown.error().detail;
+}
+
+TEST(Pathology, RefusesAPolypOutsideTheCavity) {
+    const SurfaceMesh organ = test::testOrgan(1);
+    // The serosa at the fundus: the highest point of the organ.
+    Vec3 top = organ.points.front();
+    for (const Vec3& p : organ.points)
+        if (p.z > top.z)
+            top = p;
+    PathologyRequest r = polyp("p", GrowthModel::Skeleton, 10.0, false, 0.0);
+    r.placement = SurfacePlacement{top, {0.0, 0.0, 1.0}};
+    PathologyParams params;
+    params.pathologies.push_back(r);
+    auto grown = growPathologies(organ, params);
+    ASSERT_FALSE(grown.ok());
+    EXPECT_NE(grown.error().detail.find("outside the cavity"), std::string::npos) << grown.error().detail;
+}
+
+TEST(Pathology, RefusesFigoNine) {
+    PathologyParams params;
+    params.pathologies.push_back(myoma("m", GrowthModel::Skeleton, {9, -1}, 20.0));
+    auto grown = growPathologies(test::testOrgan(1), params);
+    ASSERT_FALSE(grown.ok());
+    EXPECT_NE(grown.error().detail.find("FIGO type 9 does not exist"), std::string::npos) << grown.error().detail;
+}
+
+TEST(Pathology, RefusesOverlappingPathologies) {
+    PathologyParams params;
+    params.pathologies.push_back(myoma("a", GrowthModel::Skeleton, {4, -1}, 20.0));
+    params.pathologies.push_back(myoma("b", GrowthModel::Skeleton, {3, -1}, 15.0));
+    auto grown = growPathologies(test::testOrgan(1), params);
+    ASSERT_FALSE(grown.ok());
+    EXPECT_NE(grown.error().detail.find("overlap"), std::string::npos) << grown.error().detail;
+}
+
+TEST(Pathology, RefusesCellularAutomatonPolyps) {
+    PathologyParams params;
+    params.pathologies.push_back(polyp("p", GrowthModel::CellularAutomaton, 10.0, false, 0.0));
+    auto grown = growPathologies(test::testOrgan(1), params);
+    ASSERT_FALSE(grown.ok());
+    EXPECT_NE(grown.error().detail.find("myomas only"), std::string::npos);
+}
+
+TEST(Pathology, LasmarScoreFollowsTheTable) {
+    Descriptors d;
+    d.sizeMm = 30.0;
+    d.topography = 2;
+    d.baseExtension = 0.5;
+    d.intramuralFraction = 0.6;
+    d.lateralWall = true;
+    const LasmarScore s = lasmarScore(d);
+    EXPECT_EQ(s.size, 1);
+    EXPECT_EQ(s.extension, 1);
+    EXPECT_EQ(s.penetration, 2);
+    EXPECT_EQ(s.total(), 1 + 2 + 1 + 2 + 1);
+}
+
+} // namespace
+} // namespace hs::pathology
