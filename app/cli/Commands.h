@@ -11,5 +11,11 @@ namespace hs::cli {
 void addInfoCommand(CLI::App& app, int& exitCode);
 void addConvertCommand(CLI::App& app, int& exitCode);
 void addValidateCommand(CLI::App& app, int& exitCode);
+void addTextureCommand(CLI::App& app, int& exitCode);
+void addOrganCommand(CLI::App& app, int& exitCode);
+void addModelCommand(CLI::App& app, int& exitCode);
+void addMeshCommand(CLI::App& app, int& exitCode);
+void addQualityCommand(CLI::App& app, int& exitCode);
+void addPathologyCommand(CLI::App& app, int& exitCode);
 
 } // namespace hs::cli

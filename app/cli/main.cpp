@@ -17,6 +17,12 @@ int main(int argc, char** argv) {
     hs::cli::addInfoCommand(app, exitCode);
     hs::cli::addConvertCommand(app, exitCode);
     hs::cli::addValidateCommand(app, exitCode);
+    hs::cli::addTextureCommand(app, exitCode);
+    hs::cli::addOrganCommand(app, exitCode);
+    hs::cli::addModelCommand(app, exitCode);
+    hs::cli::addMeshCommand(app, exitCode);
+    hs::cli::addQualityCommand(app, exitCode);
+    hs::cli::addPathologyCommand(app, exitCode);
 
     try {
         app.parse(argc, argv);

@@ -196,17 +196,18 @@ Result<std::vector<double>> ShapeModel::conditionalCoefficients(const PatientPar
     return std::vector<double>(c.data(), c.data() + c.size());
 }
 
-Result<SurfaceMesh> ShapeModel::mean(const PatientParams& patient) const {
+Result<SurfaceMesh> ShapeModel::mean(const PatientParams& patient, std::optional<double> versionDeg) const {
     auto c = conditionalCoefficients(patient);
     if (!c)
         return c.failure();
     auto mesh = instance(*c);
     if (!mesh)
         return mesh.failure();
-    return pose(std::move(mesh).value(), m_data->pose.antevertedMeanDeg);
+    return pose(std::move(mesh).value(), versionDeg.value_or(m_data->pose.antevertedMeanDeg));
 }
 
-Result<SurfaceMesh> ShapeModel::sample(const PatientParams& patient, std::uint64_t seed) const {
+Result<SurfaceMesh> ShapeModel::sample(const PatientParams& patient, std::uint64_t seed,
+                                       std::optional<double> versionDeg) const {
     auto c = conditionalCoefficients(patient);
     if (!c)
         return c.failure();
@@ -228,7 +229,7 @@ Result<SurfaceMesh> ShapeModel::sample(const PatientParams& patient, std::uint64
     double version = rng.bernoulli(pp.retroversionProbability) ? rng.normal(pp.retrovertedMeanDeg, pp.retrovertedSdDeg)
                                                                : rng.normal(pp.antevertedMeanDeg, pp.antevertedSdDeg);
     version = std::clamp(version, -80.0, 80.0);
-    return pose(std::move(shape), version);
+    return pose(std::move(shape), versionDeg.value_or(version));
 }
 
 SurfaceMesh ShapeModel::sampleUnconditional(std::uint64_t seed) const {

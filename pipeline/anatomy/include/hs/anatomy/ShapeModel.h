@@ -70,13 +70,16 @@ public:
 
     /// Expected coefficients for a patient; InvalidInput for parameters outside the supported ranges.
     Result<std::vector<double>> conditionalCoefficients(const PatientParams& patient) const;
-    /// The expected organ for a patient, in the anatomical frame with the most common (anteverted) version.
-    Result<SurfaceMesh> mean(const PatientParams& patient) const;
+    /// The expected organ for a patient, in the anatomical frame with the most common (anteverted) version, or with
+    /// `versionDeg` (degrees, + anteverted, - retroverted) when given.
+    Result<SurfaceMesh> mean(const PatientParams& patient, std::optional<double> versionDeg = std::nullopt) const;
     /// A plausible organ for a patient: conditional shape (each residual coefficient truncated at 2.5 SD) and a version
     /// drawn from the pose prior. Draws whose wall is below 5.25 mm or that self-intersect are rejected and redrawn
     /// (at most 16 draws, then the conditional mean), so the result is the conditional Gaussian restricted to valid
-    /// organs. Deterministic in `seed`.
-    Result<SurfaceMesh> sample(const PatientParams& patient, std::uint64_t seed) const;
+    /// organs. Deterministic in `seed`. A given `versionDeg` replaces the drawn version (the draw still happens, so
+    /// the shape for a seed does not depend on it).
+    Result<SurfaceMesh> sample(const PatientParams& patient, std::uint64_t seed,
+                               std::optional<double> versionDeg = std::nullopt) const;
     /// A sample of the unconditional model (model frame, no pose), for specificity.
     SurfaceMesh sampleUnconditional(std::uint64_t seed) const;
     /// Re-expresses a model-frame instance in the anatomical frame of UterusGenerator.h (external os at the origin,

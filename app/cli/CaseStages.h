@@ -1,0 +1,40 @@
+#pragma once
+/// From a case file to the inputs of each pipeline stage (shared by the subcommands that run stages).
+
+#include "hs/anatomy/ShapeModel.h"
+#include "hs/core/Result.h"
+#include "hs/scene/CaseSpec.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace hs::cli {
+
+/// The case's patient block as the shape model's parameters (same fields, same units).
+anatomy::PatientParams patientOf(const scene::CaseSpec& spec);
+
+/// The shape model file a case asks for: its anatomy.modelPath (relative paths are taken from the case file's
+/// folder), else the bundled default model.
+std::string modelPathFor(const scene::CaseSpec& spec, const std::string& caseFile);
+
+struct OrganRequest {
+    anatomy::PatientParams patient;
+    std::uint64_t seed = 1;
+    bool mean = false;                ///< the expected organ for the patient instead of a seeded sample
+    std::optional<double> versionDeg; ///< degrees; unset: drawn (sample) or the most common (mean)
+};
+
+struct OrganInstance {
+    SurfaceMesh mesh; ///< face label "tissue"
+    anatomy::UterusDimensions dimensions;
+};
+
+/// Loads the model and makes the organ. Anatomy fields the model cannot honour yet (measured dimensions, flexion)
+/// are refused by organRequestFor with an error naming the field.
+Result<OrganInstance> makeOrgan(const anatomy::ShapeModel& model, const OrganRequest& request);
+
+/// The organ request of a case; Unsupported for anatomy overrides the model does not condition on.
+Result<OrganRequest> organRequestFor(const scene::CaseSpec& spec, const std::string& caseFile);
+
+} // namespace hs::cli
