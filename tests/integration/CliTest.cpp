@@ -209,3 +209,68 @@ TEST(Cli, ValidateNamesTheFieldAndRangeOfABadCase) {
     EXPECT_EQ(asJson.exitCode, 3);
     EXPECT_FALSE(nlohmann::json::parse(asJson.out)["valid"].get<bool>());
 }
+
+TEST(Cli, OrganFromTheDefaultCaseWritesALabelledUterusAndItsDimensions) {
+    hs::test::TempDir tmp;
+    auto run = cli("organ --json --case " + quote(kDefaultCase) + " -o " + quote(tmp.file("organ.vtp")));
+    ASSERT_EQ(run.exitCode, 0) << run.out;
+    const auto j = nlohmann::json::parse(run.out);
+    const double length = j["dimensions"]["lengthMm"].get<double>();
+    EXPECT_GT(length, 40.0);
+    EXPECT_LT(length, 100.0);
+    auto organ = hs::io::readSurface(tmp.file("organ.vtp"));
+    ASSERT_TRUE(organ.ok()) << organ.error().message();
+    EXPECT_TRUE(hs::analyzeTopology(*organ).isWatertight());
+    EXPECT_EQ(organ->faceLabels.count("tissue"), 1u);
+    // Same case, same seed: the same organ.
+    auto again = cli("organ --case " + quote(kDefaultCase) + " -o " + quote(tmp.file("again.vtp")));
+    ASSERT_EQ(again.exitCode, 0) << again.out;
+    auto second = hs::io::readSurface(tmp.file("again.vtp"));
+    ASSERT_TRUE(second.ok());
+    EXPECT_EQ(second->points, organ->points);
+}
+
+TEST(Cli, OrganRefusesPatientsOutsideTheSupportedRange) {
+    hs::test::TempDir tmp;
+    auto run = cli("organ --age 130 -o " + quote(tmp.file("x.vtp")));
+    EXPECT_EQ(run.exitCode, 3) << run.out;
+    EXPECT_NE(run.out.find("ageYears"), std::string::npos) << run.out;
+    EXPECT_FALSE(fs::exists(tmp.file("x.vtp")));
+    auto both = cli("organ --case " + quote(kDefaultCase) + " --age 40 -o " + quote(tmp.file("y.vtp")));
+    EXPECT_EQ(both.exitCode, 3) << both.out;
+}
+
+TEST(Cli, OrganGrowsWithParityForTheMeanOrgan) {
+    hs::test::TempDir tmp;
+    auto nulli = cli("organ --json --mean --age 35 --parity 0 -o " + quote(tmp.file("a.vtp")));
+    auto multi = cli("organ --json --mean --age 35 --parity 3 -o " + quote(tmp.file("b.vtp")));
+    ASSERT_EQ(nulli.exitCode, 0) << nulli.out;
+    ASSERT_EQ(multi.exitCode, 0) << multi.out;
+    EXPECT_GT(nlohmann::json::parse(multi.out)["dimensions"]["lengthMm"].get<double>(),
+              nlohmann::json::parse(nulli.out)["dimensions"]["lengthMm"].get<double>());
+}
+
+TEST(Cli, ModelInfoSampleBuildAndEvaluate) {
+    hs::test::TempDir tmp;
+    const std::string bundled = std::string(HS_SOURCE_DIR) + "/resources/models/uterus-default.h5";
+    auto info = cli("model info --json " + quote(bundled));
+    ASSERT_EQ(info.exitCode, 0) << info.out;
+    EXPECT_GT(nlohmann::json::parse(info.out)["modes"].get<int>(), 0);
+
+    auto mode = cli("model sample " + quote(bundled) + " --mode 1 --sd 2 -o " + quote(tmp.file("m.vtp")));
+    ASSERT_EQ(mode.exitCode, 0) << mode.out;
+    EXPECT_TRUE(fs::exists(tmp.file("m.vtp")));
+    EXPECT_EQ(cli("model sample " + quote(bundled) + " --mode 999 --sd 2 -o " + quote(tmp.file("n.vtp"))).exitCode, 3);
+
+    auto build = cli("model build --cohort-size 24 --cohort-seed 3 -o " + quote(tmp.file("small.h5")));
+    ASSERT_EQ(build.exitCode, 0) << build.out;
+    auto evaluate = cli("model evaluate --json " + quote(tmp.file("small.h5")) +
+                        " --cohort-size 24 --cohort-seed 3 --folds 4 --samples 10");
+    ASSERT_EQ(evaluate.exitCode, 0) << evaluate.out;
+    const auto ev = nlohmann::json::parse(evaluate.out);
+    EXPECT_GT(ev["generalization"]["meanMm"].get<double>(), 0.0);
+    EXPECT_GT(ev["specificity"]["meanMm"].get<double>(), 0.0);
+
+    EXPECT_EQ(cli("model info " + quote(kDefaultCase)).exitCode, 3);
+    EXPECT_EQ(cli("model build --meshes " + quote(tmp.path().string()) + " -o " + quote(tmp.file("x.h5"))).exitCode, 3);
+}
