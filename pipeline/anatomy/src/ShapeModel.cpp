@@ -109,8 +109,8 @@ constexpr double kSampleWallMm = 5.25; ///< mm; 5 mm required plus a margin for 
 bool isPlausible(const SurfaceMesh& shape, const ShapeModel::Data& d) {
     if (!d.layout)
         return true;
-    const auto wall = minimumWallThickness(shape, *d.layout);
-    return wall && *wall >= kSampleWallMm && !hasSelfIntersections(shape);
+    const auto thick = wallAtLeast(shape, *d.layout, kSampleWallMm);
+    return thick && *thick && !hasSelfIntersections(shape);
 }
 
 Status checkTraining(const TrainingSet& t) {

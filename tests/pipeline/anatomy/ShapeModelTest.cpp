@@ -180,3 +180,21 @@ TEST(ModelEvaluation, ReportsCompactnessGeneralisationSpecificityAndConditioning
     for (const auto& c : ev->conditioning)
         EXPECT_LT(c.meanAbsMm, 4.0) << c.dimension;
 }
+
+TEST(OrganChecks, FastWallTestAgreesWithTheMeasuredMinimumWall) {
+    auto model = loadShapeModel(HS_ANATOMY_DEFAULT_MODEL);
+    ASSERT_TRUE(model.ok()) << model.error().message();
+    hs::Rng rng(17);
+    for (int i = 0; i < 20; ++i) {
+        auto organ = model->sample(sampleSupportedPatient(rng), static_cast<std::uint64_t>(i));
+        ASSERT_TRUE(organ.ok());
+        auto wall = minimumWallThickness(*organ, *model->layout());
+        ASSERT_TRUE(wall.ok());
+        for (const double threshold : {*wall - 0.05, *wall + 0.05, 5.25}) {
+            auto atLeast = wallAtLeast(*organ, *model->layout(), threshold);
+            ASSERT_TRUE(atLeast.ok());
+            EXPECT_EQ(*atLeast, *wall >= threshold)
+                << "sample " << i << ", wall " << *wall << ", threshold " << threshold;
+        }
+    }
+}

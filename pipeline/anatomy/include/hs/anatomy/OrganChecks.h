@@ -27,6 +27,11 @@ struct OrganCheck {
 /// ectocervix, where canal and serosa meet by construction.
 [[nodiscard]] Result<double> minimumWallThickness(const SurfaceMesh& mesh, const TemplateLayout& layout);
 
+/// Whether the wall is at least `minMm` thick everywhere (same measure as minimumWallThickness, but it stops at the
+/// first vertex closer than `minMm` and only looks at serosa triangles in a grid of `minMm` cells: the fast form
+/// for the sampler's acceptance test). InvalidInput for a mesh that is not an instance of `layout`.
+[[nodiscard]] Result<bool> wallAtLeast(const SurfaceMesh& mesh, const TemplateLayout& layout, double minMm);
+
 /// Runs every check on an instance of `layout`. Fails only on a mesh that is not an instance of the layout.
 [[nodiscard]] Result<OrganCheck> checkOrgan(const SurfaceMesh& mesh, const TemplateLayout& layout);
 

@@ -1,6 +1,7 @@
 #pragma once
 /// Geometric primitives of the mesher: exact triangle-box overlap and closest points on triangles.
 
+#include "hs/core/TriangleGeometry.h"
 #include "hs/core/Vec3.h"
 
 #include <array>
@@ -11,17 +12,10 @@ namespace hs::meshing {
 /// separating-axis test of Akenine-Möller ("Fast 3D triangle-box overlap testing", JGT 2001), 13 axes.
 bool triangleBoxOverlap(const Vec3& boxCenter, const Vec3& boxHalfSize, const Vec3& a, const Vec3& b, const Vec3& c);
 
-/// Which part of a triangle a closest point lies on (needed to pick the right pseudo-normal for inside tests).
-enum class TriangleFeature { Face, EdgeAB, EdgeBC, EdgeCA, VertexA, VertexB, VertexC };
-
-struct ClosestPoint {
-    Vec3 point;           ///< closest point on the triangle, mm
-    double distance2 = 0; ///< squared distance to the query point, mm^2
-    TriangleFeature feature = TriangleFeature::Face;
-};
-
-/// Closest point of triangle (a, b, c) to p (Ericson, "Real-Time Collision Detection", 5.1.5), with its feature.
-ClosestPoint closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
+// Closest points on triangles live in core (hs/core/TriangleGeometry.h), shared with the anatomy checks.
+using hs::ClosestPoint;
+using hs::closestPointOnTriangle;
+using hs::TriangleFeature;
 
 /// Quality measures of one tetrahedron. Angles in degrees.
 struct TetShape {
