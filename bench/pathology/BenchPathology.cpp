@@ -1,7 +1,7 @@
 // bench_pathology [ORGANS=20] [SIZE_MM=20]: for every FIGO type 0-7 (and 2-5) and every growth model, grows a myoma
 // in ORGANS seeded organs, merges it and prints how often the measured FIGO type and size (within 10 %) match the
 // request and the merged body is valid, with the mean grow and merge times.
-#include "BenchOrgans.h"
+#include "SampleOrgans.h"
 
 #include "hs/merge/Merge.h"
 
@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
     const double size = argc > 2 ? std::atof(argv[2]) : 20.0;
     std::vector<SurfaceMesh> organMeshes;
     for (int s = 1; s <= organs; ++s)
-        organMeshes.push_back(bench::testOrgan(static_cast<std::uint64_t>(s)));
+        organMeshes.push_back(test::testOrgan(static_cast<std::uint64_t>(s)));
     const std::vector<Figo> figos = {{0, -1}, {1, -1}, {2, -1}, {3, -1}, {4, -1}, {5, -1}, {6, -1}, {7, -1}, {2, 5}};
     std::printf("%d organs, %.0f mm myoma, posterior wall\n", organs, size);
     std::printf("%-10s %-5s %8s %8s %8s %8s %9s %9s\n", "model", "FIGO", "grown", "figo=", "size10%", "valid", "grow s",
@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
             for (int s = 0; s < organs; ++s) {
                 PathologyParams params;
                 params.seed = static_cast<std::uint64_t>(s + 1);
-                params.pathologies.push_back(bench::myoma("m", model, f, size));
+                params.pathologies.push_back(test::myoma("m", model, f, size));
                 const auto t0 = std::chrono::steady_clock::now();
                 auto grown = growPathologies(organMeshes[static_cast<std::size_t>(s)], params);
                 const auto t1 = std::chrono::steady_clock::now();

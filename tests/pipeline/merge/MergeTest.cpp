@@ -1,5 +1,5 @@
 // The merge stage: one valid RegionModel with contact labels.
-#include "../pathology/TestOrgans.h"
+#include "SampleOrgans.h"
 
 #include "hs/merge/Merge.h"
 

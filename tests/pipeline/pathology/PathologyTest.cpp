@@ -1,5 +1,5 @@
 // The pathology stage's bars: FIGO type and size measured from the geometry, impossible requests, timings.
-#include "TestOrgans.h"
+#include "SampleOrgans.h"
 
 #include "hs/merge/Merge.h"
 

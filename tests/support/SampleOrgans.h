@@ -1,6 +1,6 @@
 #pragma once
-/// Seeded organs for the pathology and merge tests: samples of the bundled statistical shape model for a default
-/// patient (the generator's default uterus when the model file is missing).
+/// Seeded organs for the pathology and merge tests and the pathology benchmark: samples of the bundled statistical
+/// shape model for a default patient (the generator's default uterus when the model file is missing).
 
 #include "hs/anatomy/PatientParams.h"
 #include "hs/anatomy/ShapeModel.h"
