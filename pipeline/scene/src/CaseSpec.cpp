@@ -343,26 +343,25 @@ TissueMaterial effectiveMaterial(const SceneParams& scene, Tissue tissue) {
 
 CaseSpec defaultCase() {
     CaseSpec spec;
-    spec.title = "Default: 35-year-old primipara, FIGO 2 posterior myoma, pedunculated fundal polyp";
+    spec.title = "Default: 35-year-old primipara, FIGO 2 left lateral myoma, sessile right cornual polyp";
     spec.seed = 1;
 
     PathologySpec myoma;
     myoma.id = "myoma-1";
     myoma.kind = PathologyKind::Myoma;
-    myoma.growthModel = GrowthModel::CellularAutomaton;
-    myoma.sizeMm = 25.0; // Lasmar size class 2-5 cm (line 67); resectable type (line 66)
+    myoma.growthModel = GrowthModel::Skeleton;
+    myoma.sizeMm = 20.0; // Lasmar size class <= 2 cm (line 67); resectable type (line 66)
     myoma.figo = FigoType{2, -1};
-    myoma.placement = ClinicalPlacement{UterineLocation::Posterior};
+    myoma.placement = ClinicalPlacement{UterineLocation::LeftLateral}; // lateral wall: +1 in the Lasmar score
     spec.pathologies.push_back(myoma);
 
     PathologySpec polyp;
     polyp.id = "polyp-1";
     polyp.kind = PathologyKind::Polyp;
     polyp.growthModel = GrowthModel::Skeleton; // a stalk is a skeleton with revolved contours (line 12)
-    polyp.sizeMm = 12.0;                       // within the usual 5-30 mm (line 71)
-    polyp.attachment = PolypAttachment::Pedunculated;
-    polyp.stalkLengthMm = 8.0;
-    polyp.placement = ClinicalPlacement{UterineLocation::Fundal}; // fundal is common (line 71)
+    polyp.sizeMm = 10.0;                       // within the usual 5-30 mm (line 71)
+    polyp.attachment = PolypAttachment::Sessile;
+    polyp.placement = ClinicalPlacement{UterineLocation::CornualRight}; // cornual is common (line 71)
     spec.pathologies.push_back(polyp);
     return spec;
 }

@@ -78,19 +78,19 @@ TEST(CaseSpec, BundledDefaultFileIsExactlyTheSerializedDefaultCase) {
     EXPECT_EQ(readText(HS_DEFAULT_CASE_FILE), toJson(defaultCase()));
 }
 
-TEST(CaseSpec, DefaultCaseHoldsOneFigo2MyomaAndOnePedunculatedFundalPolyp) {
+TEST(CaseSpec, DefaultCaseHoldsOneFigo2MyomaAndOneSessileCornualPolyp) {
     const CaseSpec spec = defaultCase();
     EXPECT_EQ(spec.seed, 1u);
     ASSERT_EQ(spec.pathologies.size(), 2u);
     const PathologySpec& myoma = spec.pathologies[0];
     EXPECT_EQ(myoma.kind, PathologyKind::Myoma);
     EXPECT_EQ(myoma.figo, (FigoType{2, -1}));
-    EXPECT_DOUBLE_EQ(myoma.sizeMm, 25.0);
+    EXPECT_DOUBLE_EQ(myoma.sizeMm, 20.0);
     const PathologySpec& polyp = spec.pathologies[1];
     EXPECT_EQ(polyp.kind, PathologyKind::Polyp);
-    EXPECT_EQ(polyp.attachment, PolypAttachment::Pedunculated);
-    EXPECT_EQ(std::get<ClinicalPlacement>(polyp.placement).location, UterineLocation::Fundal);
-    EXPECT_DOUBLE_EQ(polyp.sizeMm, 12.0);
+    EXPECT_EQ(polyp.attachment, PolypAttachment::Sessile);
+    EXPECT_EQ(std::get<ClinicalPlacement>(polyp.placement).location, UterineLocation::CornualRight);
+    EXPECT_DOUBLE_EQ(polyp.sizeMm, 10.0);
 }
 
 TEST(CaseSpec, RoundTripGivesAnEqualSpecAndByteIdenticalJson) {
@@ -255,11 +255,10 @@ TEST(CaseSpec, DescribeSummarisesPatientPathologiesAndStages) {
     EXPECT_NE(all.find("seed        1\n"), std::string::npos) << all;
     EXPECT_NE(all.find("35 years, gravida 1 para 1, 165 cm, 65 kg (BMI 23.9), premenopausal"), std::string::npos)
         << all;
-    EXPECT_NE(all.find("myoma-1: myoma FIGO 2 (submucosal, >= 50 % intramural), 25 mm, posterior, growth ca"),
+    EXPECT_NE(all.find("myoma-1: myoma FIGO 2 (submucosal, >= 50 % intramural), 20 mm, left-lateral, growth skeleton"),
               std::string::npos)
         << all;
-    EXPECT_NE(all.find("polyp-1: polyp pedunculated (stalk 8 mm), 12 mm, fundal, growth skeleton"), std::string::npos)
-        << all;
+    EXPECT_NE(all.find("polyp-1: polyp sessile, 10 mm, cornual-right, growth skeleton"), std::string::npos) << all;
     EXPECT_NE(all.find("hydrometra 8 kPa (60 mmHg)"), std::string::npos) << all;
 }
 
