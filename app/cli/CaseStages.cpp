@@ -2,9 +2,50 @@
 
 #include "hs/core/Resources.h"
 
+#include "hs/core/Rng.h"
+
 #include <filesystem>
 
 namespace hs::cli {
+namespace {
+
+pathology::Location locationOf(scene::UterineLocation l) {
+    switch (l) {
+    case scene::UterineLocation::Fundal:
+        return pathology::Location::Fundal;
+    case scene::UterineLocation::Anterior:
+        return pathology::Location::Anterior;
+    case scene::UterineLocation::Posterior:
+        return pathology::Location::Posterior;
+    case scene::UterineLocation::LeftLateral:
+        return pathology::Location::LeftLateral;
+    case scene::UterineLocation::RightLateral:
+        return pathology::Location::RightLateral;
+    case scene::UterineLocation::CornualLeft:
+        return pathology::Location::CornualLeft;
+    case scene::UterineLocation::CornualRight:
+        return pathology::Location::CornualRight;
+    case scene::UterineLocation::Isthmic:
+        return pathology::Location::Isthmic;
+    case scene::UterineLocation::Cervical:
+        return pathology::Location::Cervical;
+    }
+    return pathology::Location::Fundal;
+}
+
+pathology::GrowthModel modelOf(scene::GrowthModel m) {
+    switch (m) {
+    case scene::GrowthModel::CellularAutomaton:
+        return pathology::GrowthModel::CellularAutomaton;
+    case scene::GrowthModel::Skeleton:
+        return pathology::GrowthModel::Skeleton;
+    case scene::GrowthModel::Particles:
+        return pathology::GrowthModel::Particles;
+    }
+    return pathology::GrowthModel::Skeleton;
+}
+
+} // namespace
 
 anatomy::PatientParams patientOf(const scene::CaseSpec& spec) {
     anatomy::PatientParams p;
@@ -65,6 +106,34 @@ Result<OrganInstance> makeOrgan(const anatomy::ShapeModel& model, const OrganReq
     if (!dims)
         return dims.failure();
     return OrganInstance{std::move(mesh).value(), *dims};
+}
+
+/// The case's pathologies as the stage's requests (the case is already validated).
+pathology::PathologyParams pathologyParamsFor(const scene::CaseSpec& spec,
+                                              const std::optional<scene::GrowthModel>& override) {
+    pathology::PathologyParams params;
+    params.seed = Rng::deriveSeed(spec.seed, 5); // the pathology stage's stream of the case seed
+    for (const auto& p : spec.pathologies) {
+        pathology::PathologyRequest r;
+        r.id = p.id;
+        r.kind = p.kind == scene::PathologyKind::Myoma ? pathology::Kind::Myoma : pathology::Kind::Polyp;
+        r.model = modelOf(override ? *override : p.growthModel);
+        r.sizeMm = p.sizeMm;
+        if (p.figo)
+            r.figo = pathology::Figo{p.figo->type, p.figo->serosal};
+        if (p.attachment)
+            r.attachment = *p.attachment == scene::PolypAttachment::Sessile ? pathology::Attachment::Sessile
+                                                                            : pathology::Attachment::Pedunculated;
+        r.stalkLengthMm = p.stalkLengthMm.value_or(0.0);
+        if (const auto* c = std::get_if<scene::ClinicalPlacement>(&p.placement))
+            r.placement = pathology::ClinicalPlacement{locationOf(c->location)};
+        else {
+            const auto& s = std::get<scene::SurfacePlacement>(p.placement);
+            r.placement = pathology::SurfacePlacement{s.pointMm, s.normal};
+        }
+        params.pathologies.push_back(r);
+    }
+    return params;
 }
 
 } // namespace hs::cli

@@ -3,6 +3,7 @@
 
 #include "hs/anatomy/ShapeModel.h"
 #include "hs/core/Result.h"
+#include "hs/pathology/Pathology.h"
 #include "hs/scene/CaseSpec.h"
 
 #include <cstdint>
@@ -36,5 +37,10 @@ Result<OrganInstance> makeOrgan(const anatomy::ShapeModel& model, const OrganReq
 
 /// The organ request of a case; Unsupported for anatomy overrides the model does not condition on.
 Result<OrganRequest> organRequestFor(const scene::CaseSpec& spec, const std::string& caseFile);
+
+/// The case's pathologies as the pathology stage's requests (the case is already validated); `override` replaces
+/// every pathology's growth model. The stage's seed is derived from the case seed.
+pathology::PathologyParams pathologyParamsFor(const scene::CaseSpec& spec,
+                                              const std::optional<scene::GrowthModel>& override = std::nullopt);
 
 } // namespace hs::cli

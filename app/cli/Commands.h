@@ -14,6 +14,7 @@ void addValidateCommand(CLI::App& app, int& exitCode);
 void addTextureCommand(CLI::App& app, int& exitCode);
 void addOrganCommand(CLI::App& app, int& exitCode);
 void addModelCommand(CLI::App& app, int& exitCode);
+void addGenerateCommand(CLI::App& app, int& exitCode);
 void addMeshCommand(CLI::App& app, int& exitCode);
 void addQualityCommand(CLI::App& app, int& exitCode);
 void addPathologyCommand(CLI::App& app, int& exitCode);

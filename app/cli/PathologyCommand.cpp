@@ -28,69 +28,6 @@ struct PathologyOptions {
     CommonOptions common;
 };
 
-pathology::Location locationOf(scene::UterineLocation l) {
-    switch (l) {
-    case scene::UterineLocation::Fundal:
-        return pathology::Location::Fundal;
-    case scene::UterineLocation::Anterior:
-        return pathology::Location::Anterior;
-    case scene::UterineLocation::Posterior:
-        return pathology::Location::Posterior;
-    case scene::UterineLocation::LeftLateral:
-        return pathology::Location::LeftLateral;
-    case scene::UterineLocation::RightLateral:
-        return pathology::Location::RightLateral;
-    case scene::UterineLocation::CornualLeft:
-        return pathology::Location::CornualLeft;
-    case scene::UterineLocation::CornualRight:
-        return pathology::Location::CornualRight;
-    case scene::UterineLocation::Isthmic:
-        return pathology::Location::Isthmic;
-    case scene::UterineLocation::Cervical:
-        return pathology::Location::Cervical;
-    }
-    return pathology::Location::Fundal;
-}
-
-pathology::GrowthModel modelOf(scene::GrowthModel m) {
-    switch (m) {
-    case scene::GrowthModel::CellularAutomaton:
-        return pathology::GrowthModel::CellularAutomaton;
-    case scene::GrowthModel::Skeleton:
-        return pathology::GrowthModel::Skeleton;
-    case scene::GrowthModel::Particles:
-        return pathology::GrowthModel::Particles;
-    }
-    return pathology::GrowthModel::Skeleton;
-}
-
-/// The case's pathologies as the stage's requests (the case is already validated).
-pathology::PathologyParams paramsOf(const scene::CaseSpec& spec, const std::optional<scene::GrowthModel>& override) {
-    pathology::PathologyParams params;
-    params.seed = Rng::deriveSeed(spec.seed, 5); // the pathology stage's stream of the case seed
-    for (const auto& p : spec.pathologies) {
-        pathology::PathologyRequest r;
-        r.id = p.id;
-        r.kind = p.kind == scene::PathologyKind::Myoma ? pathology::Kind::Myoma : pathology::Kind::Polyp;
-        r.model = modelOf(override ? *override : p.growthModel);
-        r.sizeMm = p.sizeMm;
-        if (p.figo)
-            r.figo = pathology::Figo{p.figo->type, p.figo->serosal};
-        if (p.attachment)
-            r.attachment = *p.attachment == scene::PolypAttachment::Sessile ? pathology::Attachment::Sessile
-                                                                            : pathology::Attachment::Pedunculated;
-        r.stalkLengthMm = p.stalkLengthMm.value_or(0.0);
-        if (const auto* c = std::get_if<scene::ClinicalPlacement>(&p.placement))
-            r.placement = pathology::ClinicalPlacement{locationOf(c->location)};
-        else {
-            const auto& s = std::get<scene::SurfacePlacement>(p.placement);
-            r.placement = pathology::SurfacePlacement{s.pointMm, s.normal};
-        }
-        params.pathologies.push_back(r);
-    }
-    return params;
-}
-
 nlohmann::ordered_json descriptorJson(const pathology::GrownPathology& g) {
     const auto& d = g.descriptors;
     nlohmann::ordered_json j;
@@ -138,7 +75,7 @@ int run(const PathologyOptions& o) {
     auto organ = makeOrgan(*model, *request);
     if (!organ.ok())
         return reportError("pathology", organ.error());
-    auto grown = pathology::growPathologies(organ->mesh, paramsOf(*spec, override));
+    auto grown = pathology::growPathologies(organ->mesh, pathologyParamsFor(*spec, override));
     if (!grown.ok())
         return reportError("pathology", Error{grown.error().code, o.casePath + ": " + grown.error().detail});
     auto merged = merge::mergeBody(*grown);

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
     hs::cli::addTextureCommand(app, exitCode);
     hs::cli::addOrganCommand(app, exitCode);
     hs::cli::addModelCommand(app, exitCode);
+    hs::cli::addGenerateCommand(app, exitCode);
     hs::cli::addMeshCommand(app, exitCode);
     hs::cli::addQualityCommand(app, exitCode);
     hs::cli::addPathologyCommand(app, exitCode);

@@ -4,6 +4,7 @@
 #include "hs/workstation/MessageBox.h"
 #include "hs/workstation/Translator.h"
 
+#include <QAction>
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QTextStream>
@@ -62,8 +63,12 @@ int main(int argc, char** argv) {
         QCoreApplication::translate("main", "Save the window to an image after loading, then quit."),
         QCoreApplication::translate("main", "image"));
     screenshotOption.setFlags(QCommandLineOption::HiddenFromHelp);
+    QCommandLineOption clipOption(QStringLiteral("clip"),
+                                  QCoreApplication::translate("main", "Open a tetrahedral mesh cut open."));
+    clipOption.setFlags(QCommandLineOption::HiddenFromHelp);
     parser.addOption(languageOption);
     parser.addOption(screenshotOption);
+    parser.addOption(clipOption);
     parser.process(app);
 
     hs::workstation::MainWindow window;
@@ -79,6 +84,11 @@ int main(int argc, char** argv) {
         if (file.isEmpty())
             screenshotAndQuit(window, image, true);
     }
+    if (parser.isSet(clipOption))
+        QObject::connect(&window, &hs::workstation::MainWindow::fileLoaded, &window, [&window] {
+            if (auto* clip = window.findChild<QAction*>(QStringLiteral("actionClip")); clip && clip->isEnabled())
+                clip->setChecked(true);
+        });
     if (!file.isEmpty())
         window.openFile(file);
     return QApplication::exec();

@@ -274,3 +274,89 @@ TEST(Cli, ModelInfoSampleBuildAndEvaluate) {
     EXPECT_EQ(cli("model info " + quote(kDefaultCase)).exitCode, 3);
     EXPECT_EQ(cli("model build --meshes " + quote(tmp.path().string()) + " -o " + quote(tmp.file("x.h5"))).exitCode, 3);
 }
+
+namespace {
+
+/// The default case made lighter (fewer vertices, smaller maps), for the tests that generate several scenes.
+std::string writeSmallCase(const hs::test::TempDir& tmp, bool withPolyp = true) {
+    std::ifstream in(kDefaultCase);
+    auto j = nlohmann::json::parse(in);
+    j["meshing"]["targetVertices"] = 6000;
+    j["texture"]["sizePx"] = 256;
+    if (!withPolyp)
+        j["pathologies"].erase(1);
+    const std::string path = tmp.file(withPolyp ? "small.json" : "small-myoma.json");
+    std::ofstream(path) << j.dump(2);
+    return path;
+}
+
+std::string readText(const std::string& path) {
+    std::ifstream in(path);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+} // namespace
+
+TEST(Cli, GenerateWritesAValidPackageForTheDefaultCase) {
+    hs::test::TempDir tmp;
+    const std::string scene = tmp.file("scene");
+    auto run = cli("generate --json " + quote(kDefaultCase) + " -o " + quote(scene));
+    ASSERT_EQ(run.exitCode, 0) << run.out;
+    const auto j = nlohmann::json::parse(run.out);
+    const auto& v = j["variants"][0];
+    EXPECT_TRUE(v["ok"].get<bool>());
+    EXPECT_GT(v["tetrahedra"].get<int>(), 50000);
+    EXPECT_EQ(v["pathologies"].size(), 2u);
+    EXPECT_EQ(v["pathologies"][0]["figo"], "2");
+    EXPECT_EQ(v["quality"]["inverted"].get<int>(), 0);
+    std::vector<std::string> stages;
+    for (const auto& t : v["timings"])
+        stages.push_back(t["stage"].get<std::string>());
+    EXPECT_EQ(stages,
+              (std::vector<std::string>{"organ", "pathology", "merge", "meshing", "texture", "scene", "package"}));
+    auto validate = cli("validate " + quote(scene));
+    EXPECT_EQ(validate.exitCode, 0) << validate.out;
+    auto tets = hs::io::readTetMesh(scene + "/tets.vtu");
+    ASSERT_TRUE(tets.ok()) << tets.error().message();
+    const auto volumes = hs::regionVolumes(*tets);
+    EXPECT_EQ(volumes.size(), 3u); // myometrium, myoma, polyp
+    EXPECT_EQ(volumes.begin()->first, 1);
+}
+
+TEST(Cli, GenerateGivesTheSamePackageOnRepeatedRunsAndAnyThreadCount) {
+    hs::test::TempDir tmp;
+    const std::string small = writeSmallCase(tmp);
+    ASSERT_EQ(cli("generate " + quote(small) + " -o " + quote(tmp.file("a")) + " --threads 2").exitCode, 0);
+    ASSERT_EQ(cli("generate " + quote(small) + " -o " + quote(tmp.file("b")) + " --threads 1").exitCode, 0);
+    ASSERT_EQ(cli("generate " + quote(small) + " -o " + quote(tmp.file("a")) + " --threads 2").exitCode, 0);
+    const std::string a = readText(tmp.file("a/manifest.json"));
+    EXPECT_FALSE(a.empty());
+    EXPECT_EQ(a, readText(tmp.file("b/manifest.json")));
+}
+
+TEST(Cli, GenerateWritesVariantsWithDerivedSeeds) {
+    hs::test::TempDir tmp;
+    const std::string small = writeSmallCase(tmp, false);
+    auto run = cli("generate --json " + quote(small) + " -o " + quote(tmp.file("batch")) + " --variants 2 --jobs 2");
+    ASSERT_EQ(run.exitCode, 0) << run.out;
+    const auto j = nlohmann::json::parse(run.out);
+    ASSERT_EQ(j["variants"].size(), 2u);
+    EXPECT_NE(j["variants"][0]["seed"], j["variants"][1]["seed"]);
+    const std::string first = readText(tmp.file("batch/variant-000/manifest.json"));
+    const std::string second = readText(tmp.file("batch/variant-001/manifest.json"));
+    EXPECT_FALSE(first.empty());
+    EXPECT_NE(first, second);
+    EXPECT_EQ(cli("validate " + quote(tmp.file("batch/variant-001"))).exitCode, 0);
+}
+
+TEST(Cli, GenerateRefusesAnInvalidCaseAndWritesNothing) {
+    hs::test::TempDir tmp;
+    std::ifstream in(kDefaultCase);
+    auto j = nlohmann::json::parse(in);
+    j["pathologies"][0]["figo"] = 9;
+    std::ofstream(tmp.file("bad.json")) << j.dump(2);
+    auto run = cli("generate " + quote(tmp.file("bad.json")) + " -o " + quote(tmp.file("scene")));
+    EXPECT_EQ(run.exitCode, 3) << run.out;
+    EXPECT_NE(run.out.find("/pathologies/0/figo"), std::string::npos) << run.out;
+    EXPECT_FALSE(fs::exists(tmp.file("scene")));
+}

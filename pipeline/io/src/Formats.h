@@ -7,7 +7,9 @@
 #include "hs/core/TetMesh.h"
 #include "hs/io/MeshIO.h"
 
+#include <array>
 #include <string>
+#include <vector>
 
 namespace hs::io::detail {
 
@@ -24,7 +26,8 @@ Result<SurfaceMesh> readStl(const std::string& path, const ReadLimits& limits);
 Status writeStl(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary);
 
 Result<SurfaceMesh> readVtp(const std::string& path, const ReadLimits& limits);
-Status writeVtp(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary);
+Status writeVtp(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary,
+                const std::vector<std::array<float, 2>>* textureCoordinates = nullptr);
 
 /// A VTU with tetrahedra gives a TetMesh; one with only surface cells a SurfaceMesh.
 Result<AnyMesh> readVtu(const std::string& path, const ReadLimits& limits);

@@ -134,6 +134,10 @@ Status writeSurface(const SurfaceMesh& mesh, const std::string& path, const Writ
         return fail(ErrorCode::InvalidInput, path + ": " + formatName(*format) +
                                                  " stores tetrahedral meshes; a surface cannot be written to it");
     HS_TRY(detail::checkWritable(mesh, path));
+    if (options.textureCoordinates && options.textureCoordinates->size() != mesh.points.size())
+        return fail(ErrorCode::InvalidInput, path + ": " + std::to_string(options.textureCoordinates->size()) +
+                                                 " texture coordinates for " + std::to_string(mesh.points.size()) +
+                                                 " points");
     const MeshFormat f = *format;
     return writeAtomically(path, [&](const std::string& tmpPath) -> Status {
         switch (f) {
@@ -146,7 +150,7 @@ Status writeSurface(const SurfaceMesh& mesh, const std::string& path, const Writ
         case MeshFormat::Off:
             return detail::writeOff(mesh, tmpPath);
         case MeshFormat::Vtp:
-            return detail::writeVtp(mesh, tmpPath, options.binary);
+            return detail::writeVtp(mesh, tmpPath, options.binary, options.textureCoordinates);
         case MeshFormat::Vtu:
             return detail::writeVtuSurface(mesh, tmpPath, options.binary);
         case MeshFormat::GmshMsh:

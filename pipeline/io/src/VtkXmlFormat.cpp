@@ -11,6 +11,7 @@
 #include <vtkCellData.h>
 #include <vtkCellType.h>
 #include <vtkDataArray.h>
+#include <vtkFloatArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -496,8 +497,19 @@ Status writeXml(vtkDataObject* data, const std::string& tmpPath, bool binary, co
 
 } // namespace
 
-Status writeVtp(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary) {
-    return writeXml<vtkXMLPolyDataWriter>(toPolyData(mesh, true), tmpPath, binary, "writing VTP");
+Status writeVtp(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary,
+                const std::vector<std::array<float, 2>>* textureCoordinates) {
+    auto poly = toPolyData(mesh, true);
+    if (textureCoordinates) {
+        vtkNew<vtkFloatArray> uv;
+        uv->SetName("uv");
+        uv->SetNumberOfComponents(2);
+        uv->SetNumberOfTuples(static_cast<vtkIdType>(textureCoordinates->size()));
+        for (std::size_t i = 0; i < textureCoordinates->size(); ++i)
+            uv->SetTypedTuple(static_cast<vtkIdType>(i), (*textureCoordinates)[i].data());
+        poly->GetPointData()->SetTCoords(uv);
+    }
+    return writeXml<vtkXMLPolyDataWriter>(poly, tmpPath, binary, "writing VTP");
 }
 
 Status writeVtu(const TetMesh& mesh, const std::string& tmpPath, bool binary) {

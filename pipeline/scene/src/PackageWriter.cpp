@@ -117,8 +117,11 @@ Result<std::vector<PendingFile>> planFiles(const Scene& scene, const PackageWrit
     bytesFile(std::string(detail::kReportFile), detail::reportJson(scene));
     files.push_back({std::string(detail::kTetsFile),
                      [&scene](const fs::path& p) { return io::writeTetMesh(scene.tets, p.string()); }});
-    files.push_back({std::string(detail::kSurfaceVtpFile),
-                     [&scene](const fs::path& p) { return io::writeSurface(scene.surface.mesh, p.string()); }});
+    files.push_back({std::string(detail::kSurfaceVtpFile), [&scene](const fs::path& p) {
+                         io::WriteOptions vtp;
+                         vtp.textureCoordinates = scene.surface.uvs.empty() ? nullptr : &scene.surface.uvs;
+                         return io::writeSurface(scene.surface.mesh, p.string(), vtp);
+                     }});
     if (options.gmsh)
         files.push_back({std::string(detail::kGmshFile),
                          [&scene](const fs::path& p) { return io::writeTetMesh(scene.tets, p.string()); }});

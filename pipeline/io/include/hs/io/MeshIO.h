@@ -7,6 +7,7 @@
 #include "hs/core/SurfaceMesh.h"
 #include "hs/core/TetMesh.h"
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <variant>
@@ -43,6 +44,9 @@ struct ReadLimits {
 
 struct WriteOptions {
     bool binary = true; ///< STL/PLY binary, VTP/VTU appended raw (false: ASCII everywhere the format allows)
+    /// VTP only: one (u, v) per point, written as the active texture coordinates "uv" (the other formats ignore it).
+    /// A count other than the point count is an InvalidInput error.
+    const std::vector<std::array<float, 2>>* textureCoordinates = nullptr;
 };
 
 /// Reads a surface in any surface format (chosen by extension). Polygons are fan-triangulated. Labels read where the
