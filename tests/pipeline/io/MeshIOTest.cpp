@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <thread>
 #include <vector>
@@ -225,3 +228,23 @@ TEST(MeshIO, KeepsVtkErrorsOfConcurrentReadsApart) {
 
 } // namespace
 } // namespace hs::io
+
+TEST(MeshIO, WritesTextureCoordinatesIntoVtpAndRefusesAWrongCount) {
+    hs::SurfaceMesh m;
+    m.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    m.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    hs::test::TempDir tmp;
+    std::vector<std::array<float, 2>> uv{{0.f, 0.f}, {1.f, 0.f}, {0.f, 1.f}, {0.5f, 0.5f}};
+    hs::io::WriteOptions options;
+    options.textureCoordinates = &uv;
+    ASSERT_TRUE(hs::io::writeSurface(m, tmp.file("uv.vtp"), options).ok());
+    auto back = hs::io::readSurface(tmp.file("uv.vtp"));
+    ASSERT_TRUE(back.ok()) << back.error().message();
+    EXPECT_EQ(back->triangles, m.triangles);
+    std::ifstream in(tmp.file("uv.vtp"));
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("Name=\"uv\""), std::string::npos);
+    uv.pop_back();
+    EXPECT_FALSE(hs::io::writeSurface(m, tmp.file("bad.vtp"), options).ok());
+    EXPECT_FALSE(std::filesystem::exists(tmp.file("bad.vtp")));
+}
