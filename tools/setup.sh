@@ -23,7 +23,7 @@ packages=(
     # tests: outside tools that read the scene package (meshio; Node.js for the Khronos glTF validator, which
     # tools/test.sh installs from npm) and Gmsh, the speed anchor of the meshing benchmark.
     # Not python3-paraview: on Debian 12 it conflicts with libvtk9-dev.
-    libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth libgl1-mesa-dri python3-meshio gmsh
+    libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth libgl1-mesa-dri python3-meshio python3-vtk9 gmsh
 )
 
 # Node.js and npm come from Debian only where no other installation provides them (Debian's npm conflicts with

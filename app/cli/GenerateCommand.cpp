@@ -16,11 +16,14 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -138,6 +141,35 @@ std::vector<std::int32_t> facesWith(const SurfaceMesh& mesh, const std::string& 
         if (it->second[f] == value)
             faces.push_back(static_cast<std::int32_t>(f));
     return faces;
+}
+
+/// Tets of region `region` that share a face with a tet of region `other`, ascending: where a pathology sits on the
+/// myometrium (a polyp's base, a myoma's intramural interface).
+std::vector<std::int32_t> tetsTouching(const TetMesh& mesh, std::int32_t region, std::int32_t other) {
+    std::map<std::array<std::int32_t, 3>, std::int32_t> otherFaces; // sorted face -> 1
+    constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+    auto faceOf = [&mesh](std::size_t t, const int* f) {
+        std::array<std::int32_t, 3> key{mesh.tets[t][static_cast<std::size_t>(f[0])],
+                                        mesh.tets[t][static_cast<std::size_t>(f[1])],
+                                        mesh.tets[t][static_cast<std::size_t>(f[2])]};
+        std::sort(key.begin(), key.end());
+        return key;
+    };
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+        if (mesh.regionOf(t) == other)
+            for (const auto& f : kFaces)
+                otherFaces.emplace(faceOf(t, f), 1);
+    std::vector<std::int32_t> out;
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+        if (mesh.regionOf(t) != region)
+            continue;
+        for (const auto& f : kFaces)
+            if (otherFaces.count(faceOf(t, f))) {
+                out.push_back(static_cast<std::int32_t>(t));
+                break;
+            }
+    }
+    return out;
 }
 
 std::string locationKey(const scene::PathologySpec& p) {
@@ -265,6 +297,12 @@ Status generateVariant(const scene::CaseSpec& spec, const std::string& caseFile,
             if (!faces.empty())
                 s.labels.push_back({"contact:" + spec.pathologies[i].id, scene::LabelKind::Contact,
                                     scene::LabelElement::SurfaceFace, spec.pathologies[i].id, std::move(faces)});
+        }
+        for (std::size_t i = 0; i < spec.pathologies.size(); ++i) {
+            auto base = tetsTouching(s.tets, static_cast<std::int32_t>(i + 2), 1);
+            if (!base.empty())
+                s.labels.push_back({"base:" + spec.pathologies[i].id, scene::LabelKind::PathologyBase,
+                                    scene::LabelElement::Tet, spec.pathologies[i].id, std::move(base)});
         }
         if (auto ostia = facesWith(s.surface.mesh, "tissue", kTissueOstium); !ostia.empty())
             s.labels.push_back(

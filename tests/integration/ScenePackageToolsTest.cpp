@@ -99,6 +99,12 @@ TEST_F(ScenePackageTools, MeshMshLoadsInMeshioWithTheRegionIds) {
     expectRegions(HS_PYTHON, quoted(file("mesh.msh")), false);
 }
 
+// ParaView's Python (python3-paraview) cannot be installed next to libvtk9-dev on Debian 12: the two conflict. VTK's
+// own Python reader is the reader ParaView wraps, so this checks the same thing where pvpython is missing.
+TEST_F(ScenePackageTools, TetsVtuLoadsInVtkPythonWithTheRegionIds) {
+    expectRegions(HS_PYTHON, "--vtk " + quoted(file("tets.vtu")), true);
+}
+
 TEST_F(ScenePackageTools, TetsVtuLoadsInParaViewWithTheRegionIds) {
     std::string interpreter;
     for (const char* candidate : {"pvpython", "pvbatch"})

@@ -1,4 +1,4 @@
-"""Reads a tetrahedral file with meshio (or, with --paraview, ParaView's XML reader) and prints its tetrahedron
+"""Reads a tetrahedral file with meshio (or, with --paraview, ParaView's XML reader; with --vtk, VTK's Python reader) and prints its tetrahedron
 count and the region id of every tetrahedron as JSON. Exit 3 when the library is missing (the test skips)."""
 import json
 import sys
@@ -34,7 +34,25 @@ def with_paraview(path):
     return {"tets": tets, "regions": regions, "arrays": arrays}
 
 
+def with_vtk(path):
+    """VTK's own Python reader: the vtkXMLUnstructuredGridReader that ParaView's reader wraps."""
+    try:
+        from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+    except ImportError:
+        sys.exit(3)
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    grid = reader.GetOutput()
+    array = grid.GetCellData().GetArray("region")
+    regions = [int(array.GetValue(i)) for i in range(array.GetNumberOfTuples())] if array else []
+    tets = sum(1 for i in range(grid.GetNumberOfCells()) if grid.GetCellType(i) == 10)
+    arrays = sorted(grid.GetCellData().GetArrayName(i) for i in range(grid.GetCellData().GetNumberOfArrays()))
+    return {"tets": tets, "regions": regions, "arrays": arrays}
+
+
 if __name__ == "__main__":
-    paraview = sys.argv[1] == "--paraview"
-    path = sys.argv[2] if paraview else sys.argv[1]
-    print(json.dumps(with_paraview(path) if paraview else with_meshio(path)))
+    mode = sys.argv[1] if sys.argv[1] in ("--paraview", "--vtk") else ""
+    path = sys.argv[2] if mode else sys.argv[1]
+    reader = {"--paraview": with_paraview, "--vtk": with_vtk, "": with_meshio}[mode]
+    print(json.dumps(reader(path)))
