@@ -143,6 +143,26 @@ std::vector<std::int32_t> facesWith(const SurfaceMesh& mesh, const std::string& 
     return faces;
 }
 
+/// The ostia are smaller than the mesh's triangles, so no boundary face may be nearest to an ostium face: carry
+/// them the other way too, marking the boundary face nearest to each ostium face of the organ.
+Status keepSmallTissueFeatures(const SurfaceMesh& outline, SurfaceMesh& boundary, double reach) {
+    SurfaceMesh probe = outline;
+    std::vector<std::int32_t> index(boundary.triangles.size());
+    for (std::size_t f = 0; f < index.size(); ++f)
+        index[f] = static_cast<std::int32_t>(f);
+    boundary.faceLabels["faceIndex"] = std::move(index);
+    const Status status = transferFaceLabels(boundary, probe, {"faceIndex"}, reach, -1);
+    boundary.faceLabels.erase("faceIndex");
+    HS_TRY(status);
+    const auto& tissue = outline.faceLabels.at("tissue");
+    const auto& nearest = probe.faceLabels.at("faceIndex");
+    auto& boundaryTissue = boundary.faceLabels.at("tissue");
+    for (std::size_t f = 0; f < tissue.size(); ++f)
+        if (tissue[f] == kTissueOstium && nearest[f] >= 0)
+            boundaryTissue[static_cast<std::size_t>(nearest[f])] = kTissueOstium;
+    return {};
+}
+
 /// Tets of region `region` that share a face with a tet of region `other`, ascending: where a pathology sits on the
 /// myometrium (a polyp's base, a myoma's intramural interface).
 std::vector<std::int32_t> tetsTouching(const TetMesh& mesh, std::int32_t region, std::int32_t other) {
@@ -259,6 +279,7 @@ Status generateVariant(const scene::CaseSpec& spec, const std::string& caseFile,
         const double reach = 3.0 * std::max(meshed->targetEdgeLength, 0.5);
         HS_TRY(transferFaceLabels(merged->body.surfaces.front().surface, boundary, {"tissue", merge::kPathologyLabel},
                                   reach));
+        HS_TRY(keepSmallTissueFeatures(merged->body.surfaces.front().surface, boundary, reach));
         std::vector<std::int32_t> appearance(boundary.triangles.size(), 0);
         const auto& over = boundary.faceLabels.at(merge::kPathologyLabel);
         for (std::size_t f = 0; f < appearance.size(); ++f) {
