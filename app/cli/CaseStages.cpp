@@ -69,28 +69,23 @@ std::string modelPathFor(const scene::CaseSpec& spec, const std::string& caseFil
 
 Result<OrganRequest> organRequestFor(const scene::CaseSpec& spec, const std::string& caseFile) {
     const auto& d = spec.anatomy.dimensions;
-    const std::pair<const char*, bool> unsupported[] = {
-        {"/anatomy/flexionDeg", spec.anatomy.flexionDeg.has_value()},
-        {"/anatomy/dimensions/lengthMm", d.lengthMm.has_value()},
-        {"/anatomy/dimensions/widthMm", d.widthMm.has_value()},
-        {"/anatomy/dimensions/apMm", d.apMm.has_value()},
-        {"/anatomy/dimensions/cavityLengthMm", d.cavityLengthMm.has_value()},
-        {"/anatomy/dimensions/cavityWidthMm", d.cavityWidthMm.has_value()},
-        {"/anatomy/dimensions/cornualAngleDeg", d.cornualAngleDeg.has_value()},
-        {"/anatomy/dimensions/fundalWallThicknessMm", d.fundalWallThicknessMm.has_value()},
-        {"/anatomy/dimensions/cervixLengthMm", d.cervixLengthMm.has_value()},
-    };
-    for (const auto& [path, set] : unsupported)
-        if (set)
-            return fail(ErrorCode::Unsupported,
-                        caseFile + ": " + path +
-                            ": the shape model conditions on the patient parameters only; conditioning on measured "
-                            "dimensions and flexion is not available yet: remove the field");
+    if (d.cornualAngleDeg)
+        return fail(ErrorCode::Unsupported, caseFile +
+                                                ": /anatomy/dimensions/cornualAngleDeg: the shape model does not "
+                                                "measure the cornual angle yet: remove the field");
     OrganRequest request;
     request.patient = patientOf(spec);
     request.seed = spec.seed;
     request.mean = spec.anatomy.shape == scene::ShapeMode::Mean;
     request.versionDeg = spec.anatomy.versionDeg;
+    request.dimensions.lengthMm = d.lengthMm;
+    request.dimensions.widthMm = d.widthMm;
+    request.dimensions.apDepthMm = d.apMm;
+    request.dimensions.cavityLengthMm = d.cavityLengthMm;
+    request.dimensions.cavityWidthMm = d.cavityWidthMm;
+    request.dimensions.fundalWallMm = d.fundalWallThicknessMm;
+    request.dimensions.cervixLengthMm = d.cervixLengthMm;
+    request.dimensions.flexionDeg = spec.anatomy.flexionDeg;
     return request;
 }
 
@@ -98,8 +93,12 @@ Result<OrganInstance> makeOrgan(const anatomy::ShapeModel& model, const OrganReq
     if (!model.layout())
         return fail(ErrorCode::Unsupported, "the shape model has no uterus template layout: organ dimensions cannot "
                                             "be measured (build it from uterus-template instances)");
-    auto mesh = request.mean ? model.mean(request.patient, request.versionDeg)
-                             : model.sample(request.patient, request.seed, request.versionDeg);
+    auto mesh = request.dimensions.any()
+                    ? model.withDimensions(request.patient, request.dimensions,
+                                           request.mean ? std::nullopt : std::optional<std::uint64_t>(request.seed),
+                                           request.versionDeg)
+                : request.mean ? model.mean(request.patient, request.versionDeg)
+                               : model.sample(request.patient, request.seed, request.versionDeg);
     if (!mesh)
         return mesh.failure();
     auto dims = anatomy::measureUterus(*mesh, *model.layout());

@@ -22,8 +22,9 @@ std::string modelPathFor(const scene::CaseSpec& spec, const std::string& caseFil
 struct OrganRequest {
     anatomy::PatientParams patient;
     std::uint64_t seed = 1;
-    bool mean = false;                ///< the expected organ for the patient instead of a seeded sample
-    std::optional<double> versionDeg; ///< degrees; unset: drawn (sample) or the most common (mean)
+    bool mean = false;                    ///< the expected organ for the patient instead of a seeded sample
+    std::optional<double> versionDeg;     ///< degrees; unset: drawn (sample) or the most common (mean)
+    anatomy::DimensionTargets dimensions; ///< measured dimensions the organ must have (the case's anatomy block)
 };
 
 struct OrganInstance {
@@ -31,11 +32,10 @@ struct OrganInstance {
     anatomy::UterusDimensions dimensions;
 };
 
-/// Loads the model and makes the organ. Anatomy fields the model cannot honour yet (measured dimensions, flexion)
-/// are refused by organRequestFor with an error naming the field.
+/// Makes the organ: a sample or the mean for the patient, moved to the requested dimensions when there are any.
 Result<OrganInstance> makeOrgan(const anatomy::ShapeModel& model, const OrganRequest& request);
 
-/// The organ request of a case; Unsupported for anatomy overrides the model does not condition on.
+/// The organ request of a case; Unsupported for the cornual angle, which the model does not measure.
 Result<OrganRequest> organRequestFor(const scene::CaseSpec& spec, const std::string& caseFile);
 
 /// The case's pathologies as the pathology stage's requests (the case is already validated); `override` replaces

@@ -360,3 +360,23 @@ TEST(Cli, GenerateRefusesAnInvalidCaseAndWritesNothing) {
     EXPECT_NE(run.out.find("/pathologies/0/figo"), std::string::npos) << run.out;
     EXPECT_FALSE(fs::exists(tmp.file("scene")));
 }
+
+TEST(Cli, OrganMeetsTheCaseDimensionsOrSaysWhichOneItCannotReach) {
+    hs::test::TempDir tmp;
+    std::ifstream in(kDefaultCase);
+    auto j = nlohmann::json::parse(in);
+    j["anatomy"]["dimensions"]["lengthMm"] = 80.0;
+    j["anatomy"]["flexionDeg"] = -20.0;
+    std::ofstream(tmp.file("long.json")) << j.dump(2);
+    auto run = cli("organ --json --case " + quote(tmp.file("long.json")) + " -o " + quote(tmp.file("o.vtp")));
+    ASSERT_EQ(run.exitCode, 0) << run.out;
+    const auto dims = nlohmann::json::parse(run.out)["dimensions"];
+    EXPECT_NEAR(dims["lengthMm"].get<double>(), 80.0, 1.0);
+    EXPECT_NEAR(dims["flexionDeg"].get<double>(), -20.0, 2.0);
+
+    j["anatomy"]["dimensions"]["lengthMm"] = 31.0;
+    std::ofstream(tmp.file("short.json")) << j.dump(2);
+    auto refused = cli("organ --case " + quote(tmp.file("short.json")) + " -o " + quote(tmp.file("p.vtp")));
+    EXPECT_EQ(refused.exitCode, 3) << refused.out;
+    EXPECT_NE(refused.out.find("lengthMm"), std::string::npos) << refused.out;
+}

@@ -198,3 +198,37 @@ TEST(OrganChecks, FastWallTestAgreesWithTheMeasuredMinimumWall) {
         }
     }
 }
+
+TEST(ShapeModel, MeetsRequestedDimensionsWithinOneMillimetre) {
+    auto model = loadShapeModel(HS_ANATOMY_DEFAULT_MODEL);
+    ASSERT_TRUE(model.ok()) << model.error().message();
+    PatientParams patient;
+    patient.ageYears = 35;
+    patient.parity = 1;
+    patient.gravidity = 1;
+    DimensionTargets targets;
+    targets.lengthMm = 80.0;
+    targets.widthMm = 48.0;
+    for (const std::optional<std::uint64_t> seed : {std::optional<std::uint64_t>(), std::optional<std::uint64_t>(3)}) {
+        auto organ = model->withDimensions(patient, targets, seed);
+        ASSERT_TRUE(organ.ok()) << organ.error().message();
+        auto dims = measureUterus(*organ, *model->layout());
+        ASSERT_TRUE(dims.ok());
+        EXPECT_NEAR(dims->lengthMm, 80.0, 1.0);
+        EXPECT_NEAR(dims->widthMm, 48.0, 1.0);
+        auto check = checkOrgan(*organ, *model->layout());
+        ASSERT_TRUE(check.ok());
+        EXPECT_TRUE(check->valid());
+    }
+}
+
+TEST(ShapeModel, RefusesDimensionsItCannotReachInsteadOfExtrapolating) {
+    auto model = loadShapeModel(HS_ANATOMY_DEFAULT_MODEL);
+    ASSERT_TRUE(model.ok());
+    DimensionTargets targets;
+    targets.lengthMm = 30.0;
+    auto organ = model->withDimensions(PatientParams{}, targets);
+    ASSERT_FALSE(organ.ok());
+    EXPECT_EQ(organ.error().code, hs::ErrorCode::InvalidInput);
+    EXPECT_NE(organ.error().detail.find("lengthMm"), std::string::npos) << organ.error().detail;
+}

@@ -44,6 +44,23 @@ struct PosePrior {
     double retrovertedMeanDeg = -25.0, retrovertedSdDeg = 10.0; ///< degree
 };
 
+/// Clinical measurements a supervisor may ask for on top of the patient parameters (as measureUterus measures them:
+/// mm, degrees). Unset ones are left to the patient's conditional model.
+struct DimensionTargets {
+    std::optional<double> lengthMm;
+    std::optional<double> widthMm;
+    std::optional<double> apDepthMm;
+    std::optional<double> cavityLengthMm;
+    std::optional<double> cavityWidthMm;
+    std::optional<double> fundalWallMm;
+    std::optional<double> cervixLengthMm;
+    std::optional<double> flexionDeg;
+    bool any() const {
+        return lengthMm || widthMm || apDepthMm || cavityLengthMm || cavityWidthMm || fundalWallMm || cervixLengthMm ||
+               flexionDeg;
+    }
+};
+
 class ShapeModel {
 public:
     struct Data;
@@ -80,6 +97,15 @@ public:
     /// the shape for a seed does not depend on it).
     Result<SurfaceMesh> sample(const PatientParams& patient, std::uint64_t seed,
                                std::optional<double> versionDeg = std::nullopt) const;
+    /// The organ for a patient that also has the requested dimensions: starting from the expected organ (or, with a
+    /// seed, from a sample), the coefficients are moved by Gauss-Newton to the least change (in standard deviations)
+    /// that meets every target within 1 mm (2 degrees for flexion), in the anatomical frame with `versionDeg` (default:
+    /// the most common version). Fails with InvalidInput naming the dimension when the model cannot reach it for
+    /// this patient without leaving the range of its training shapes (no silent extrapolation), or when the result
+    /// would not be a valid organ (wall under 5 mm, self-intersection). Unsupported without a uterus template.
+    Result<SurfaceMesh> withDimensions(const PatientParams& patient, const DimensionTargets& targets,
+                                       std::optional<std::uint64_t> seed = std::nullopt,
+                                       std::optional<double> versionDeg = std::nullopt) const;
     /// A sample of the unconditional model (model frame, no pose), for specificity.
     SurfaceMesh sampleUnconditional(std::uint64_t seed) const;
     /// Re-expresses a model-frame instance in the anatomical frame of UterusGenerator.h (external os at the origin,
