@@ -137,11 +137,15 @@ Result<SurfaceMesh> ShapeModel::withDimensions(const PatientParams& patient, con
                                                      " cannot be reached by the shape model for this patient " +
                                                      "(closest " + fmt(value(i)) + "); the model does not extrapolate");
     }
+    std::string requested;
+    for (const auto& t : wanted)
+        requested += (requested.empty() ? "" : ", ") + std::string(t.name) + " = " + fmt(t.value);
     for (Eigen::Index j = 0; j < k; ++j)
         if (std::abs(c(j)) > kMaxCoefficient)
-            return fail(ErrorCode::InvalidInput,
-                        "the requested dimensions lie outside the range of the model's training shapes (mode " +
-                            std::to_string(j + 1) + " at " + fmt(c(j)) + " SD); the model does not extrapolate");
+            return fail(ErrorCode::InvalidInput, "the requested dimensions (" + requested +
+                                                     ") lie outside the range of the model's training shapes (mode " +
+                                                     std::to_string(j + 1) + " at " + fmt(c(j)) +
+                                                     " SD); the model does not extrapolate");
     auto mesh = instance(std::vector<double>(c.data(), c.data() + k));
     if (!mesh)
         return mesh.failure();
@@ -149,8 +153,9 @@ Result<SurfaceMesh> ShapeModel::withDimensions(const PatientParams& patient, con
     if (!thick)
         return thick.failure();
     if (!*thick || hasSelfIntersections(*mesh))
-        return fail(ErrorCode::InvalidInput, "the requested dimensions give an organ whose wall is thinner than 5 mm "
-                                             "or that intersects itself: ask for less extreme values");
+        return fail(ErrorCode::InvalidInput, "the requested dimensions (" + requested +
+                                                 ") give an organ whose wall is thinner than 5 mm or that intersects "
+                                                 "itself: ask for less extreme values");
     return pose(std::move(mesh).value(), versionDeg.value_or(d.pose.antevertedMeanDeg));
 }
 
