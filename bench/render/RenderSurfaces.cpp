@@ -1,5 +1,8 @@
 // render_surfaces: offscreen VTK pictures of labelled surfaces side by side, for the docs (run under xvfb-run -a).
-//   render_surfaces OUT.png [--label NAME] [--cut] [--view front|side] [--size W H] SURFACE.vtp [TITLE] ...
+//   render_surfaces OUT.png [--label NAME] [--cut | --sagittal] [--view front|side] [--size W H]
+//   SURFACE.vtp[+MORE.vtp...] [TITLE]
+// A viewport may show several surfaces joined by '+': the first (the organ) is coloured by the label and cut, the
+// others (pathologies) are drawn whole in fixed colours (pale ivory, pink, blue, ...).
 // Each surface gets its own viewport with its title; faces are coloured by the integer face label NAME (default
 // "tissue"). --cut keeps the posterior half (y < centre) so the cavity shows in a coronal section, as on 3-D
 // ultrasound. All viewports share one camera distance so sizes compare.
@@ -18,6 +21,7 @@
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkWindowToImageFilter.h>
@@ -37,6 +41,7 @@ struct Options {
     std::string output;
     std::string label = "tissue";
     bool cut = false;
+    bool sagittal = false; ///< with cut: keep x < centre and look from +x
     std::string view = "front";
     int width = 400; ///< per viewport, pixels
     int height = 480;
@@ -53,12 +58,16 @@ bool parse(int argc, char** argv, Options& o) {
             o.label = argv[++i];
         else if (a == "--cut")
             o.cut = true;
-        else if (a == "--view" && i + 1 < argc)
+        else if (a == "--sagittal") { // cut along the mid-sagittal plane, seen from the patient's left
+            o.cut = true;
+            o.sagittal = true;
+            o.view = "side";
+        } else if (a == "--view" && i + 1 < argc)
             o.view = argv[++i];
         else if (a == "--size" && i + 2 < argc) {
             o.width = std::atoi(argv[++i]);
             o.height = std::atoi(argv[++i]);
-        } else if (a.size() > 4 && a.substr(a.size() - 4) == ".vtp") {
+        } else if (a.find(".vtp") != std::string::npos) {
             std::string title =
                 (i + 1 < argc && std::string(argv[i + 1]).find(".vtp") == std::string::npos && argv[i + 1][0] != '-')
                     ? argv[++i]
@@ -104,53 +113,81 @@ int main(int argc, char** argv) {
     std::vector<vtkRenderer*> renderers;
     std::vector<std::array<double, 3>> centres;
     for (int i = 0; i < n; ++i) {
-        vtkNew<vtkXMLPolyDataReader> reader;
-        reader->SetFileName(o.surfaces[static_cast<std::size_t>(i)].first.c_str());
-        reader->Update();
-        vtkPolyData* poly = reader->GetOutput();
-        if (!poly || poly->GetNumberOfCells() == 0) {
-            std::fprintf(stderr, "render_surfaces: %s: no surface\n",
-                         o.surfaces[static_cast<std::size_t>(i)].first.c_str());
-            return 3;
+        const std::string& spec = o.surfaces[static_cast<std::size_t>(i)].first;
+        std::vector<std::string> files;
+        for (std::size_t start = 0;;) {
+            const auto plus = spec.find('+', start);
+            files.push_back(spec.substr(start, plus == std::string::npos ? std::string::npos : plus - start));
+            if (plus == std::string::npos)
+                break;
+            start = plus + 1;
         }
-        double b[6];
-        poly->GetBounds(b);
-        const std::array<double, 3> c{(b[0] + b[1]) / 2, (b[2] + b[3]) / 2, (b[4] + b[5]) / 2};
-        radius = std::max({radius, (b[1] - b[0]) / 2, (b[3] - b[2]) / 2, (b[5] - b[4]) / 2});
-        centres.push_back(c);
-        vtkNew<vtkPolyDataMapper> mapper;
-        vtkNew<vtkClipPolyData> clip;
-        vtkNew<vtkPlane> plane;
-        if (o.cut) {
-            plane->SetOrigin(c[0], c[1], c[2]);
-            plane->SetNormal(0, -1, 0); // keep y < centre: the posterior half, seen from the front
-            clip->SetClipFunction(plane);
-            clip->SetInputData(poly);
-            mapper->SetInputConnection(clip->GetOutputPort());
-        } else {
-            mapper->SetInputData(poly);
+        std::vector<vtkSmartPointer<vtkActor>> actors;
+        std::array<double, 3> c{};
+        for (std::size_t f = 0; f < files.size(); ++f) {
+            vtkNew<vtkXMLPolyDataReader> reader;
+            reader->SetFileName(files[f].c_str());
+            reader->Update();
+            vtkPolyData* poly = reader->GetOutput();
+            if (!poly || poly->GetNumberOfCells() == 0) {
+                std::fprintf(stderr, "render_surfaces: %s: no surface\n", files[f].c_str());
+                return 3;
+            }
+            vtkNew<vtkPolyDataMapper> mapper;
+            if (f == 0) {
+                double b[6];
+                poly->GetBounds(b);
+                c = {(b[0] + b[1]) / 2, (b[2] + b[3]) / 2, (b[4] + b[5]) / 2};
+                radius = std::max({radius, (b[1] - b[0]) / 2, (b[3] - b[2]) / 2, (b[5] - b[4]) / 2});
+                centres.push_back(c);
+            }
+            if (o.cut && f == 0) {
+                vtkNew<vtkPlane> plane;
+                plane->SetOrigin(c[0], c[1], c[2]);
+                if (o.sagittal)
+                    plane->SetNormal(-1, 0, 0); // keep x < centre, seen from +x
+                else
+                    plane->SetNormal(0, -1, 0); // keep y < centre: the posterior half, seen from the front
+                vtkNew<vtkClipPolyData> clip;
+                clip->SetClipFunction(plane);
+                clip->SetInputData(poly);
+                clip->Update();
+                mapper->SetInputData(clip->GetOutput());
+            } else {
+                vtkNew<vtkPolyData> copy;
+                copy->DeepCopy(poly);
+                mapper->SetInputData(copy);
+            }
+            auto actor = vtkSmartPointer<vtkActor>::New();
+            if (f == 0 && poly->GetCellData()->GetArray(o.label.c_str())) {
+                mapper->SetScalarModeToUseCellFieldData();
+                mapper->SelectColorArray(o.label.c_str());
+                mapper->SetLookupTable(lut);
+                mapper->UseLookupTableScalarRangeOn();
+                mapper->ScalarVisibilityOn();
+            } else {
+                mapper->ScalarVisibilityOff();
+                const double colours[][3] = {{0.93, 0.90, 0.80}, {0.95, 0.60, 0.70}, {0.55, 0.70, 0.90}};
+                const auto& col = colours[(f == 0 ? 0 : f - 1) % 3];
+                actor->GetProperty()->SetColor(col[0], col[1], col[2]);
+            }
+            actor->SetMapper(mapper);
+            actor->GetProperty()->SetSpecular(0.2);
+            actor->GetProperty()->SetBackfaceCulling(0);
+            actors.push_back(actor);
         }
-        if (poly->GetCellData()->GetArray(o.label.c_str())) {
-            mapper->SetScalarModeToUseCellFieldData();
-            mapper->SelectColorArray(o.label.c_str());
-            mapper->SetLookupTable(lut);
-            mapper->UseLookupTableScalarRangeOn();
-            mapper->ScalarVisibilityOn();
-        }
-        vtkNew<vtkActor> actor;
-        actor->SetMapper(mapper);
-        actor->GetProperty()->SetSpecular(0.2);
-        actor->GetProperty()->SetBackfaceCulling(0);
         vtkNew<vtkRenderer> renderer;
         renderer->SetViewport(double(i) / n, 0.0, double(i + 1) / n, 1.0);
         renderer->SetBackground(1.0, 1.0, 1.0);
-        renderer->AddActor(actor);
+        for (const auto& actor : actors)
+            renderer->AddActor(actor);
         vtkNew<vtkTextActor> title;
         title->SetInput(o.surfaces[static_cast<std::size_t>(i)].second.c_str());
         title->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
-        title->GetTextProperty()->SetFontSize(18);
+        title->GetTextProperty()->SetFontSize(16);
+        title->GetTextProperty()->SetVerticalJustificationToTop();
         title->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-        title->SetPosition(0.03, 0.93);
+        title->SetPosition(0.03, 0.97);
         renderer->AddActor2D(title);
         window->AddRenderer(renderer);
         renderers.push_back(renderer);
@@ -159,10 +196,12 @@ int main(int argc, char** argv) {
         vtkCamera* camera = renderers[static_cast<std::size_t>(i)]->GetActiveCamera();
         const auto& c = centres[static_cast<std::size_t>(i)];
         camera->SetFocalPoint(c[0], c[1], c[2]);
+        // Far enough that the largest organ fits the narrower side of the viewport.
+        const double distance = 6.0 * radius * std::max(1.0, double(o.height) / double(o.width));
         if (o.view == "side")
-            camera->SetPosition(c[0] + 6 * radius, c[1], c[2]);
+            camera->SetPosition(c[0] + distance, c[1], c[2]);
         else
-            camera->SetPosition(c[0], c[1] + 6 * radius, c[2]);
+            camera->SetPosition(c[0], c[1] + distance, c[2]);
         camera->SetViewUp(0, 0, 1);
         camera->SetViewAngle(22.0);
         renderers[static_cast<std::size_t>(i)]->ResetCameraClippingRange();
