@@ -85,14 +85,22 @@ Result<OrganInfo> analyzeOrgan(const SurfaceMesh& organ) {
         return fail(ErrorCode::InvalidInput, "the organ surface lacks the endometrium, cervical canal or serosa "
                                              "labels needed to place pathologies");
     info.internalOs = os / nOs;
+    // The cavity's axis runs from the internal os through the centroid of the endometrium (on the midline); the
+    // farthest endometrium vertex would be a cornu and tilt the axis sideways.
+    Vec3 endoCentroid;
+    double nEndo = 0.0;
+    for (std::size_t v = 0; v < organ.points.size(); ++v)
+        if (inEndo[v]) {
+            endoCentroid += organ.points[v];
+            nEndo += 1.0;
+        }
+    info.axis = normalized(endoCentroid / std::max(nEndo, 1.0) - info.internalOs);
     double far = 0.0;
     for (std::size_t v = 0; v < organ.points.size(); ++v)
-        if (inEndo[v] && distance(organ.points[v], info.internalOs) > far) {
-            far = distance(organ.points[v], info.internalOs);
-            info.cavityFundus = organ.points[v];
-        }
+        if (inEndo[v])
+            far = std::max(far, dot(organ.points[v] - info.internalOs, info.axis));
+    info.cavityFundus = info.internalOs + info.axis * far;
     info.cavityLengthMm = far;
-    info.axis = normalized(info.cavityFundus - info.internalOs);
     const Vec3 x{1.0, 0.0, 0.0};
     info.lateral = normalized(x - info.axis * dot(x, info.axis));
     info.anterior = cross(info.axis, info.lateral);
