@@ -54,7 +54,7 @@ struct MeshParams {
 struct MeshResult {
     TetMesh mesh;          ///< positive tets, region id per tet
     QualityReport quality; ///< measured against the input body
-    StageTimings timings;  ///< per step (validate, voxelize, seed, relax, tetrahedralize, clean, quality)
+    StageTimings timings;  ///< per step (validate, voxelize, seed, relax, tetrahedralize, clean, improve, ...)
     std::vector<std::string> warnings;
     std::vector<double> relaxationEnergy; ///< particle method: interaction energy before each iteration
     double targetEdgeLength = 0.0;        ///< mm, the edge length used
