@@ -5,6 +5,7 @@
 
 #include "hs/anatomy/UterusGenerator.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace hs::merge {
@@ -16,52 +17,14 @@ bool isCavityTissue(std::int32_t tissue) {
            t == anatomy::Tissue::TubalOstium;
 }
 
-/// The pathology moved outwards along its vertex normals by `cover` mm: the wall tissue draped over it.
+/// The wall tissue draped over a pathology: a surface at `cover` mm around it. Offsetting the vertices along their
+/// normals folds wherever the surface is concave with a radius below `cover` (the voxel-scale creases of a grown
+/// shape), so the cover is an alpha wrap with that offset instead: closed, manifold and free of self-intersections by
+/// construction, and creases narrower than alpha are bridged rather than followed. Alpha is twice the cover (at
+/// least 1 mm): the wrap's triangles are about that size, fine enough for a 0.8 mm shell and coarse enough to keep
+/// the corefinement fast.
 SurfaceMesh coverOf(const SurfaceMesh& surface, double cover) {
-    SurfaceMesh out;
-    out.triangles = surface.triangles;
-    // Vertex normals averaged over their one-ring a few times: a field-grown surface has voxel-scale ripples whose
-    // raw normals would fold the offset.
-    std::vector<Vec3> normals = vertexNormals(surface);
-    std::vector<std::vector<std::int32_t>> ring(surface.points.size());
-    for (const Triangle& t : surface.triangles)
-        for (std::size_t k = 0; k < 3; ++k)
-            ring[static_cast<std::size_t>(t[k])].push_back(t[(k + 1) % 3]);
-    for (int it = 0; it < 3; ++it) {
-        std::vector<Vec3> next(normals.size());
-        for (std::size_t i = 0; i < normals.size(); ++i) {
-            Vec3 s = normals[i];
-            for (std::int32_t j : ring[i])
-                s += normals[static_cast<std::size_t>(j)];
-            next[i] = normalized(s);
-        }
-        normals.swap(next);
-    }
-    out.points.reserve(surface.points.size());
-    for (std::size_t i = 0; i < surface.points.size(); ++i)
-        out.points.push_back(surface.points[i] + normals[i] * cover);
-    return out;
-}
-
-/// Uniform Laplacian smoothing with Taubin's shrink compensation (Taubin 1995).
-void smoothCover(SurfaceMesh& mesh, int iterations) {
-    std::vector<std::vector<std::int32_t>> ring(mesh.points.size());
-    for (const Triangle& t : mesh.triangles)
-        for (std::size_t k = 0; k < 3; ++k)
-            ring[static_cast<std::size_t>(t[k])].push_back(t[(k + 1) % 3]);
-    for (int it = 0; it < 2 * iterations; ++it) {
-        const double w = it % 2 == 0 ? 0.5 : -0.53;
-        std::vector<Vec3> next = mesh.points;
-        for (std::size_t i = 0; i < mesh.points.size(); ++i) {
-            if (ring[i].empty())
-                continue;
-            Vec3 c;
-            for (std::int32_t j : ring[i])
-                c += mesh.points[static_cast<std::size_t>(j)];
-            next[i] = mesh.points[i] + (c / static_cast<double>(ring[i].size()) - mesh.points[i]) * w;
-        }
-        mesh.points.swap(next);
-    }
+    return detail::offsetWrap(surface, std::max(1.0, 2.0 * cover), cover);
 }
 
 std::vector<Vec3> faceCentres(const SurfaceMesh& mesh) {
@@ -147,15 +110,12 @@ Result<MergeResult> mergeBody(const pathology::PathologyResult& grown, const Mer
                 return fail(ErrorCode::Cancelled, "merge cancelled");
             if (!analyzeTopology(p.surface).isWatertight())
                 return fail(ErrorCode::InvalidInput, "merge: pathology '" + p.id + "' is not closed and manifold");
-            SurfaceMesh cover = coverOf(outwardOriented(p.surface), params.coverMm);
-            // A rippled surface can fold its offset in tight creases; smoothing the cover (not the pathology)
-            // removes the folds while keeping it around the pathology.
-            for (int attempt = 0; attempt < 4 && detail::selfIntersections(cover) > 0; ++attempt)
-                smoothCover(cover, 5);
-            if (const std::size_t n = detail::selfIntersections(cover); n > 0)
-                return fail(ErrorCode::InvalidInput, "merge: the " + std::to_string(params.coverMm) +
-                                                         " mm cover of pathology '" + p.id +
-                                                         "' intersects itself: the shape is too thin there");
+            if (const std::size_t n = detail::selfIntersections(p.surface); n > 0)
+                return fail(ErrorCode::InvalidInput, "merge: pathology '" + p.id + "' intersects itself (" +
+                                                         std::to_string(n) + " triangle pairs)");
+            SurfaceMesh cover = outwardOriented(coverOf(p.surface, params.coverMm));
+            if (cover.triangles.empty() || !analyzeTopology(cover).isWatertight())
+                return fail(ErrorCode::Internal, "merge: the cover of pathology '" + p.id + "' is not closed");
             covers.push_back(std::move(cover));
         }
     }

@@ -9,8 +9,11 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/alpha_wrap_3.h>
 
+#include <algorithm>
 #include <iterator>
+#include <tuple>
 
 namespace hs::merge::detail {
 namespace {
@@ -37,7 +40,8 @@ Mesh toCgal(const SurfaceMesh& in) {
     return out;
 }
 
-SurfaceMesh fromCgal(const ExactMesh& in) {
+template <class Mesh>
+SurfaceMesh fromCgal(const Mesh& in) {
     SurfaceMesh out;
     std::vector<std::int32_t> index(in.number_of_vertices() + in.number_of_removed_vertices(), -1);
     for (auto v : in.vertices()) {
@@ -56,7 +60,43 @@ SurfaceMesh fromCgal(const ExactMesh& in) {
     return out;
 }
 
+/// The same surface with its vertices in lexicographic order and its triangles (each starting at its smallest vertex,
+/// orientation kept) sorted. CGAL's corefinement reports the same vertices and faces in an order that depends on
+/// memory addresses, so without this the same input would not give the same bits.
+SurfaceMesh canonical(const SurfaceMesh& in) {
+    std::vector<std::int32_t> order(in.points.size());
+    for (std::size_t i = 0; i < order.size(); ++i)
+        order[i] = static_cast<std::int32_t>(i);
+    const auto key = [&](std::int32_t i) {
+        const Vec3& p = in.points[static_cast<std::size_t>(i)];
+        return std::make_tuple(p.x, p.y, p.z);
+    };
+    std::stable_sort(order.begin(), order.end(), [&](std::int32_t a, std::int32_t b) { return key(a) < key(b); });
+    SurfaceMesh out;
+    std::vector<std::int32_t> newIndex(order.size());
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        newIndex[static_cast<std::size_t>(order[i])] = static_cast<std::int32_t>(i);
+        out.points.push_back(in.points[static_cast<std::size_t>(order[i])]);
+    }
+    for (const Triangle& t : in.triangles) {
+        Triangle n{newIndex[static_cast<std::size_t>(t[0])], newIndex[static_cast<std::size_t>(t[1])],
+                   newIndex[static_cast<std::size_t>(t[2])]};
+        while (n[0] > n[1] || n[0] > n[2])
+            n = {n[1], n[2], n[0]};
+        out.triangles.push_back(n);
+    }
+    std::sort(out.triangles.begin(), out.triangles.end());
+    return out;
+}
+
 } // namespace
+
+SurfaceMesh offsetWrap(const SurfaceMesh& closed, double alpha, double offset) {
+    const FastMesh m = toCgal<FastMesh>(closed);
+    FastMesh wrap;
+    CGAL::alpha_wrap_3(m, alpha, offset, wrap);
+    return fromCgal(wrap);
+}
 
 std::size_t selfIntersections(const SurfaceMesh& mesh) {
     const FastMesh m = toCgal<FastMesh>(mesh);
@@ -81,7 +121,7 @@ Result<SurfaceMesh> unite(const SurfaceMesh& first, const std::vector<const Surf
                                                    "not be a manifold surface)");
         body = std::move(out);
     }
-    return fromCgal(body);
+    return canonical(fromCgal(body));
 }
 
 void nearestFaces(const SurfaceMesh& mesh, const std::vector<Vec3>& queries, std::vector<std::size_t>& face,

@@ -8,6 +8,11 @@
 
 namespace hs::merge::detail {
 
+/// A watertight, 2-manifold, intersection-free surface that strictly contains `closed`, its vertices at distance
+/// `offset` (mm) from it; concavities narrower than about `alpha` (mm) are bridged (alpha wrapping with an offset,
+/// Portaneri, Rouxel-Labbe, Hemmer, Cohen-Steiner, Alliez, SIGGRAPH 2022; CGAL alpha_wrap_3). Deterministic.
+SurfaceMesh offsetWrap(const SurfaceMesh& closed, double alpha, double offset);
+
 /// Number of intersecting triangle pairs of a surface with itself.
 std::size_t selfIntersections(const SurfaceMesh& mesh);
 

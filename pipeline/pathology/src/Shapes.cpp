@@ -187,6 +187,95 @@ SurfaceMesh surfaceFromOccupancy(std::vector<float> occ, const Grid& g) {
     return mesh;
 }
 
+/// Morphological closing (dilation, then erosion) with a ball of `radius` voxels. An Eden-type automaton leaves
+/// one- and two-voxel crevices between its lobes; polygonized, they become creases whose two sides nearly touch, so
+/// that smoothing can push them through each other and any offset of the surface folds. Closing fills exactly those
+/// crevices and keeps the lobes (Serra, "Image Analysis and Mathematical Morphology", 1982).
+std::vector<std::uint8_t> closeOccupancy(const std::vector<std::uint8_t>& occ, const Grid& g, int radius) {
+    std::vector<std::array<int, 3>> ball;
+    for (int dk = -radius; dk <= radius; ++dk)
+        for (int dj = -radius; dj <= radius; ++dj)
+            for (int di = -radius; di <= radius; ++di)
+                if (di * di + dj * dj + dk * dk <= radius * radius)
+                    ball.push_back({di, dj, dk});
+    const auto inside = [&](int i, int j, int k) {
+        return i >= 0 && j >= 0 && k >= 0 && i < g.nx && j < g.ny && k < g.nz;
+    };
+    std::vector<std::uint8_t> dilated(occ.size(), 0);
+    for (int k = 0; k < g.nz; ++k)
+        for (int j = 0; j < g.ny; ++j)
+            for (int i = 0; i < g.nx; ++i) {
+                if (!occ[g.index(i, j, k)])
+                    continue;
+                for (const auto& d : ball)
+                    if (inside(i + d[0], j + d[1], k + d[2]))
+                        dilated[g.index(i + d[0], j + d[1], k + d[2])] = 1;
+            }
+    std::vector<std::uint8_t> closed(occ.size(), 0);
+    for (int k = 0; k < g.nz; ++k)
+        for (int j = 0; j < g.ny; ++j)
+            for (int i = 0; i < g.nx; ++i) {
+                if (!dilated[g.index(i, j, k)])
+                    continue;
+                bool all = true;
+                for (const auto& d : ball)
+                    if (!inside(i + d[0], j + d[1], k + d[2]) || !dilated[g.index(i + d[0], j + d[1], k + d[2])]) {
+                        all = false;
+                        break;
+                    }
+                closed[g.index(i, j, k)] = all || occ[g.index(i, j, k)] ? 1 : 0;
+            }
+    return closed;
+}
+
+/// Trilinear resampling of `field` (on `g`, zero outside) onto a grid of spacing `h` over the same box.
+std::vector<float> resample(const std::vector<float>& field, const Grid& g, double h, Grid& out) {
+    Bounds box;
+    box.add(g.origin);
+    box.add(g.center(g.nx - 1, g.ny - 1, g.nz - 1));
+    out = Grid::covering(box, h, 1);
+    const auto at = [&](int i, int j, int k) {
+        return i < 0 || j < 0 || k < 0 || i >= g.nx || j >= g.ny || k >= g.nz ? 0.0 : double(field[g.index(i, j, k)]);
+    };
+    std::vector<float> result(out.size());
+    for (int k = 0; k < out.nz; ++k)
+        for (int j = 0; j < out.ny; ++j)
+            for (int i = 0; i < out.nx; ++i) {
+                const Vec3 q = (out.center(i, j, k) - g.origin) / g.h;
+                const int i0 = static_cast<int>(std::floor(q.x)), j0 = static_cast<int>(std::floor(q.y)),
+                          k0 = static_cast<int>(std::floor(q.z));
+                const double fx = q.x - i0, fy = q.y - j0, fz = q.z - k0;
+                double v = 0.0;
+                for (int c = 0; c < 8; ++c) {
+                    const int di = c & 1, dj = (c >> 1) & 1, dk = (c >> 2) & 1;
+                    const double w = (di ? fx : 1.0 - fx) * (dj ? fy : 1.0 - fy) * (dk ? fz : 1.0 - fz);
+                    v += w * at(i0 + di, j0 + dj, k0 + dk);
+                }
+                result[out.index(i, j, k)] = static_cast<float>(v);
+            }
+    return result;
+}
+
+/// The automaton's surface: closed occupancy (no crevices), blurred at the automaton's resolution, polygonized on a
+/// grid of `spacing` mm (coarser than the automaton's voxels: the blurred field has no detail below two voxels, and
+/// the organ adaptation and the merge cost grow with the triangle count), then smoothed (Taubin) and evened out.
+SurfaceMesh automatonSurface(const std::vector<std::uint8_t>& occ, const Grid& g, const ShapeSpec& spec,
+                             double spacing) {
+    const std::vector<std::uint8_t> closed = closeOccupancy(occ, g, 2);
+    std::vector<float> field(closed.begin(), closed.end());
+    if (spec.pedunculated || spec.polyp)
+        addCapsule(field, g, spec.base, spec.center, spec.stalkRadius);
+    Grid coarse;
+    const std::vector<float> sampled = resample(blur(blur(field, g), g), g, spacing, coarse);
+    SurfaceMesh mesh = polygonize(sampled, coarse, 0.5f);
+    taubinSmooth(mesh, 10);
+    relaxTangentially(mesh, 10);
+    taubinSmooth(mesh, 10);
+    relaxTangentially(mesh, 5);
+    orientOutward(mesh);
+    return mesh;
+}
+
 } // namespace
 
 SurfaceMesh skeletonShape(const ShapeSpec& spec, Rng& rng) {
@@ -326,9 +415,10 @@ Result<SurfaceMesh> cellularAutomatonShape(const ShapeSpec& spec, const SurfaceM
                     if (q == 0)
                         continue;
                     const double r = tissue[id] ? tuning.tissueResistance : tuning.yieldResistance;
+                    // The wall's fibres guide growth along its tangent plane; the cavity and the outside have none.
                     const double along = dot(normalized(from), spec.intoWall);
-                    const double p = std::min(1.0, 0.12 * (1.0 + 2.0 * q / 6.0) / r *
-                                                       (1.0 + tuning.anisotropy * (1.0 - along * along)));
+                    const double guide = tissue[id] ? tuning.anisotropy * (1.0 - along * along) : 0.0;
+                    const double p = std::min(1.0, 0.12 * (1.0 + 2.0 * q / 6.0) / r * (1.0 + guide));
                     if (rng.uniform() < p) {
                         born.push_back(id);
                         lo = {std::min(lo[0], i), std::min(lo[1], j), std::min(lo[2], k)};
@@ -339,10 +429,12 @@ Result<SurfaceMesh> cellularAutomatonShape(const ShapeSpec& spec, const SurfaceM
             occ[id] = 1;
         count += born.size();
     }
-    std::vector<float> field(occ.begin(), occ.end());
-    if (spec.pedunculated || spec.polyp)
-        addCapsule(field, g, spec.base, spec.center, spec.stalkRadius);
-    return surfaceFromOccupancy(std::move(field), g);
+    SurfaceMesh mesh = automatonSurface(occ, g, spec, spec.radius / tuning.surfaceCellsPerRadius);
+    // The placement owns the position, the automaton the shape: a tumour that drifted into yielding tissue keeps
+    // its lopsided shape but is centred (volume centroid) where it was planned, as the other models are.
+    if (!spec.pedunculated && !spec.polyp)
+        translate(mesh, spec.center - volumeCentroid(mesh));
+    return mesh;
 }
 
 Result<SurfaceMesh> particleShape(const ShapeSpec& spec, const SurfaceMesh& organ, const GrowthTuning& tuning, Rng& rng,

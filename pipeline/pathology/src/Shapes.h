@@ -26,17 +26,20 @@ SurfaceMesh skeletonShape(const ShapeSpec& spec, Rng& rng);
 
 /// Parameters shared by the two field-based models.
 struct GrowthTuning {
-    double tissueResistance = 1.0; ///< relative; the wall resists
-    double yieldResistance = 0.35; ///< relative; cavity and outside yield (grow about 3x as easily)
-    double anisotropy = 0.3;       ///< extra proliferation along the wall's tangent plane
-    int cellsPerDiameter = 26;     ///< CA voxels across the requested size
-    int particleCount = 1500;      ///< particles at the target volume
+    double tissueResistance = 1.0;      ///< relative; the wall resists
+    double yieldResistance = 0.35;      ///< relative; cavity and outside yield (grow about 3x as easily)
+    double anisotropy = 0.3;            ///< extra proliferation along the wall's tangent plane
+    int cellsPerDiameter = 26;          ///< CA voxels across the requested size
+    double surfaceCellsPerRadius = 5.5; ///< CA surface: polygonization cells per nominal radius (about 4000 triangles)
+    int particleCount = 1500;           ///< particles at the target volume
 };
 
 /// Cellular automaton (Eden-type growth with surface tension): every step each empty face-neighbour of the tumour
 /// becomes tumour with probability p0 (1 + 2 q) / r * (1 + a (d.t)^2), q the fraction of its neighbours already
 /// tumour (fills concavities), r the local resistance (tissue or cavity), d the growth direction, t the wall's
-/// tangent plane; stops at the target volume. Surface: blurred occupancy, marching tetrahedra, Taubin smoothing.
+/// tangent plane (a only in the wall: the fibres guide growth there); stops at the target volume. Surface: the
+/// occupancy closed with a 2-voxel ball (no crevices), blurred, resampled to `surfaceCellsPerRadius`, marching
+/// tetrahedra, Taubin smoothing and tangential relaxation; centred (volume centroid) on `center` unless stalked.
 Result<SurfaceMesh> cellularAutomatonShape(const ShapeSpec& spec, const SurfaceMesh& organ, const GrowthTuning& tuning,
                                            Rng& rng, Progress& progress);
 

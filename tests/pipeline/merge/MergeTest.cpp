@@ -6,6 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
 
 namespace hs::merge {
 namespace {
@@ -30,6 +33,90 @@ TEST(Merge, SubmucosalMyomaBecomesANestedRegionWithContactLabels) {
     const auto& draped = body.surfaces[0].surface.faceLabels.at(kPathologyLabel);
     EXPECT_GT(std::count(draped.begin(), draped.end(), 1), 0);
     EXPECT_EQ(body.surfaces[0].surface.faceLabels.at("tissue").size(), body.surfaces[0].surface.triangles.size());
+}
+
+// The automaton's surfaces used to fold their 0.8 mm cover in voxel-scale creases (bench_pathology: 38 of 180 merged).
+// 3 organs per type here; bench_pathology sweeps 20. FIGO 0 is left out: no model reaches it yet (docs/pathology.md,
+// known gaps); 2-5 too: in thick walls the automaton's oblate tumour reaches only one side (14 of 20 organs).
+class AutomatonFigo : public testing::TestWithParam<int> {};
+
+TEST_P(AutomatonFigo, MyomaMatchesItsTypeAndSizeAndMergesIntoAValidBody) {
+    const pathology::Figo figo{GetParam(), -1};
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+        pathology::PathologyParams params;
+        params.seed = seed;
+        params.pathologies.push_back(test::myoma("m", pathology::GrowthModel::CellularAutomaton, figo, 20.0));
+        auto grown = pathology::growPathologies(test::testOrgan(seed), params);
+        ASSERT_TRUE(grown.ok()) << "seed " << seed << ": " << grown.error().detail;
+        const pathology::Descriptors& d = grown->pathologies[0].descriptors;
+        EXPECT_EQ(d.figo, figo) << "seed " << seed << ": measured " << d.figo.toString();
+        EXPECT_NEAR(d.sizeMm, 20.0, 2.0) << "seed " << seed;
+        auto merged = mergeBody(*grown);
+        ASSERT_TRUE(merged.ok()) << "seed " << seed << ": " << merged.error().detail;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Merge, AutomatonFigo, testing::Values(1, 2, 3, 4, 5, 6, 7),
+                         [](const testing::TestParamInfo<int>& p) { return "figo" + std::to_string(p.param); });
+
+TEST(Merge, SameInputGivesTheSameBody) {
+    pathology::PathologyParams params;
+    params.pathologies.push_back(test::myoma("m", pathology::GrowthModel::CellularAutomaton, {2, -1}, 20.0));
+    auto grown = pathology::growPathologies(test::testOrgan(1), params);
+    ASSERT_TRUE(grown.ok()) << grown.error().detail;
+    auto a = mergeBody(*grown);
+    auto b = mergeBody(*grown);
+    ASSERT_TRUE(a.ok() && b.ok());
+    ASSERT_EQ(a->body.surfaces.size(), b->body.surfaces.size());
+    for (std::size_t i = 0; i < a->body.surfaces.size(); ++i) {
+        EXPECT_EQ(a->body.surfaces[i].surface.points, b->body.surfaces[i].surface.points) << i;
+        EXPECT_EQ(a->body.surfaces[i].surface.triangles, b->body.surfaces[i].surface.triangles) << i;
+    }
+}
+
+TEST(Merge, CoverKeepsItsThicknessAroundTheAutomatonsCreases) {
+    pathology::PathologyParams params;
+    params.pathologies.push_back(test::myoma("m", pathology::GrowthModel::CellularAutomaton, {6, -1}, 20.0));
+    auto grown = pathology::growPathologies(test::testOrgan(2), params);
+    ASSERT_TRUE(grown.ok()) << grown.error().detail;
+    auto merged = mergeBody(*grown);
+    ASSERT_TRUE(merged.ok()) << merged.error().detail;
+    // Outline faces draped over the myoma lie about one cover thickness from it, never on it.
+    const SurfaceMesh& outline = merged->body.surfaces[0].surface;
+    const SurfaceMesh& myoma = merged->body.surfaces[1].surface;
+    const auto& draped = outline.faceLabels.at(kPathologyLabel);
+    double nearest = 1e300;
+    for (std::size_t f = 0; f < outline.triangles.size(); ++f) {
+        if (draped[f] != 1)
+            continue;
+        for (int k = 0; k < 3; ++k) {
+            const Vec3& p = outline.points[static_cast<std::size_t>(outline.triangles[f][static_cast<std::size_t>(k)])];
+            for (const Vec3& q : myoma.points)
+                nearest = std::min(nearest, norm(p - q));
+        }
+    }
+    EXPECT_GT(nearest, 0.5 * MergeParams{}.coverMm);
+}
+
+TEST(Merge, PlacesAndMergesFiveAutomatonMyomasWithinTenSeconds) {
+    using pathology::GrowthModel;
+    using pathology::Location;
+    pathology::PathologyParams params;
+    params.pathologies.push_back(test::myoma("a", GrowthModel::CellularAutomaton, {2, -1}, 15.0, Location::Posterior));
+    params.pathologies.push_back(test::myoma("b", GrowthModel::CellularAutomaton, {4, -1}, 12.0, Location::Anterior));
+    params.pathologies.push_back(
+        test::myoma("c", GrowthModel::CellularAutomaton, {6, -1}, 15.0, Location::RightLateral));
+    params.pathologies.push_back(
+        test::myoma("d", GrowthModel::CellularAutomaton, {5, -1}, 12.0, Location::LeftLateral));
+    params.pathologies.push_back(test::myoma("e", GrowthModel::CellularAutomaton, {3, -1}, 10.0, Location::Fundal));
+    const auto start = std::chrono::steady_clock::now();
+    auto grown = pathology::growPathologies(test::testOrgan(2), params);
+    ASSERT_TRUE(grown.ok()) << grown.error().detail;
+    auto merged = mergeBody(*grown);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ASSERT_TRUE(merged.ok()) << merged.error().detail;
+    EXPECT_EQ(merged->body.surfaces.size(), 6u);
+    EXPECT_LE(seconds, 10.0);
 }
 
 TEST(Merge, RefusesANonPositiveCover) {

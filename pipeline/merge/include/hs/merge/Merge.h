@@ -33,7 +33,9 @@ inline constexpr const char* kPathologyLabel = "pathology";
 /// of the organ surface they replace.
 
 struct MergeParams {
-    double coverMm = 0.8; ///< mm of wall tissue draped over the parts of a pathology outside the wall
+    /// mm of wall tissue draped over the parts of a pathology outside the wall (an alpha wrap at this offset, which
+    /// cannot fold). A mesh whose edge is longer than this gives most of that layer to the pathology's region.
+    double coverMm = 0.8;
     bool validate = true; ///< checks the result with validate(RegionModel) (self-intersections, crossings)
 };
 

@@ -1,0 +1,82 @@
+// Pathologies -> merge -> particle mesher (Sierra et al. 2004, sec. 2.1 -> 2.2): the merged body meshes with every
+// region present, no inverted tets and each region's volume close to the volume its surfaces enclose.
+#include "SampleOrgans.h"
+
+#include "hs/merge/Merge.h"
+#include "hs/meshing/ParticleMesher.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdio>
+
+namespace hs {
+namespace {
+
+using pathology::Figo;
+using pathology::GrowthModel;
+using pathology::Location;
+
+/// Edge length of the mesh, mm: the coarsest that keeps the pathologies' shapes (12-20 mm across), so that the test
+/// stays at about 20 s in Release on two busy cores (1.6 mm takes twice as long and halves the volume errors).
+constexpr double kEdgeMm = 2.0;
+/// The bar: each region's volume within 2 % of its input.
+constexpr double kVolumeBar = 0.02;
+/// What holds now (docs/pathology.md, known gaps): at a 2 mm edge the healthy organ alone is meshed 2.2 % too large,
+/// the wall 3 % too large and the pathologies 3-9 % off (the 0.8 mm cover is thinner than one edge, so the draped
+/// wall goes to the pathology). Tighten to kVolumeBar when the mesher keeps thin layers and region volumes.
+constexpr double kVolumeNow = 0.10;
+
+double secondsSince(const std::chrono::steady_clock::time_point& start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+TEST(MergedBodyMeshing, MeshesOneMyomaPerModelAndAPolypWithEveryRegionAndItsVolume) {
+    pathology::PathologyParams params;
+    params.seed = 3;
+    params.pathologies.push_back(
+        test::myoma("ca", GrowthModel::CellularAutomaton, Figo{2, -1}, 20.0, Location::Posterior));
+    params.pathologies.push_back(test::myoma("skeleton", GrowthModel::Skeleton, Figo{4, -1}, 15.0, Location::Anterior));
+    params.pathologies.push_back(
+        test::myoma("particles", GrowthModel::Particles, Figo{6, -1}, 15.0, Location::LeftLateral));
+    params.pathologies.push_back(test::polyp("polyp", GrowthModel::Skeleton, 12.0, false, 0.0, Location::Fundal));
+    const auto start = std::chrono::steady_clock::now();
+    auto grown = pathology::growPathologies(test::testOrgan(2), params);
+    ASSERT_TRUE(grown.ok()) << grown.error().detail;
+    auto merged = merge::mergeBody(*grown);
+    ASSERT_TRUE(merged.ok()) << merged.error().detail;
+    const double mergeSeconds = secondsSince(start);
+
+    const auto meshStart = std::chrono::steady_clock::now();
+    meshing::ParticleMeshParams mp;
+    mp.targetEdgeLength = kEdgeMm;
+    mp.seed = 1;
+    auto meshed = meshing::meshParticles(merged->body, mp);
+    ASSERT_TRUE(meshed.ok()) << meshed.error().detail;
+    const double meshSeconds = secondsSince(meshStart);
+    const meshing::QualityReport& q = meshed->quality;
+
+    std::printf("edge %.1f mm: %zu vertices, %zu tets; min dihedral %.2f deg, slivers (< %.0f deg) %zu, inverted %zu; "
+                "grow + merge %.2f s, mesh %.2f s\n",
+                kEdgeMm, q.vertexCount, q.tetCount, q.minDihedralDeg, meshing::kSliverDihedralDeg, q.sliverCount,
+                q.invertedCount, mergeSeconds, meshSeconds);
+    for (const StepTiming& step : meshed->timings.steps)
+        std::printf("  mesh step %-14s %6.2f s\n", step.name.c_str(), step.seconds);
+    for (const meshing::RegionVolume& r : q.regions)
+        std::printf("  region %d: mesh %8.1f mm^3, input %8.1f mm^3, error %5.2f %%%s\n", r.regionId, r.meshVolume,
+                    r.inputVolume, 100.0 * r.relativeError, r.relativeError > kVolumeBar ? " (above the 2 % bar)" : "");
+
+    EXPECT_EQ(q.invertedCount, 0u);
+    EXPECT_EQ(q.degenerateCount, 0u);
+    ASSERT_EQ(q.regions.size(), merged->body.surfaces.size()); // the wall and one region per pathology
+    for (std::size_t i = 0; i < q.regions.size(); ++i) {
+        const meshing::RegionVolume& r = q.regions[i];
+        EXPECT_EQ(r.regionId, static_cast<std::int32_t>(i));
+        EXPECT_GT(r.meshVolume, 0.0) << "region " << r.regionId << " has no tets";
+        EXPECT_LE(r.relativeError, kVolumeNow) << "region " << r.regionId;
+    }
+    // Slivers are printed, not asserted: the mesher's sliver removal is being reworked (docs/meshing.md).
+}
+
+} // namespace
+} // namespace hs
