@@ -18,6 +18,7 @@ struct ShapeSpec {
     Vec3 intoWall;             ///< unit direction from the surface it grows from into the wall
     double radius = 10.0;      ///< nominal radius of the myoma or head
     double stalkRadius = 2.0;  ///< mm
+    bool transmural = false;   ///< a hybrid myoma: reaches both the endometrium and the serosa
 };
 
 /// Skeleton + revolved contours: a skeleton curve (stalk and head axis, or the myoma's axis) and a planar contour
