@@ -1,8 +1,10 @@
-// bench_pathology [ORGANS=20] [SIZE_MM=20] [MODEL] [-v]: for every FIGO type 0-7 (and 2-5) and every growth model (or
-// only MODEL: ca, skeleton, particles), grows a myoma in ORGANS seeded organs, merges it and prints how often the
-// measured FIGO type and size (within 10 %) match the request and the merged body is valid, with the mean grow and
-// merge times. A type the model refuses as unsupported is printed as such (not as a failure); -v prints on stderr
-// every failure's message, the measured type and fractions of every miss, and each run's step times.
+// bench_pathology [ORGANS=20] [SIZE_MM=20] [--only skeleton|ca|particles|polyps] [--row TEXT] [--verbose]: for every
+// FIGO type 0-7 (and 2-5) and every growth model, grows a posterior myoma in ORGANS seeded organs, merges it and prints
+// how often the measured FIGO type and size (within 10 %) match the request and the merged body is valid, with the mean
+// grow and merge times. Then the same for 12 mm polyps, sessile and pedunculated (8 mm stalk), fundal and posterior:
+// how often the measured attachment matches (a stalk measured for pedunculated ones, none for sessile ones), the size
+// (of the head) is within 10 % and the body merges. --verbose prints what was measured in every organ that misses. A
+// request the model refuses as unsupported in every organ is printed as such, not as a failure.
 #include "SampleOrgans.h"
 
 #include "hs/merge/Merge.h"
@@ -12,76 +14,127 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <string>
 
 using namespace hs;
 using namespace hs::pathology;
 
+namespace {
+
+struct Row {
+    int grown = 0, typeOk = 0, sizeOk = 0, valid = 0, unsupported = 0;
+    double growS = 0.0, mergeS = 0.0, stalkMm = 0.0;
+};
+
+/// Grows `request` in organ `s` (seed s + 1), merges it and adds the outcome to `row`.
+void runOne(const SurfaceMesh& organ, int s, const PathologyRequest& request, Row& row, bool verbose) {
+    PathologyParams params;
+    params.seed = static_cast<std::uint64_t>(s + 1);
+    params.pathologies.push_back(request);
+    const auto t0 = std::chrono::steady_clock::now();
+    auto grown = growPathologies(organ, params);
+    const auto t1 = std::chrono::steady_clock::now();
+    row.growS += std::chrono::duration<double>(t1 - t0).count();
+    if (!grown.ok()) {
+        row.unsupported += grown.error().code == ErrorCode::Unsupported ? 1 : 0;
+        if (verbose)
+            std::printf("    organ %2d: refused: %s\n", s + 1, grown.error().detail.c_str());
+        return;
+    }
+    ++row.grown;
+    const Descriptors& d = grown->pathologies[0].descriptors;
+    const bool typeOk = request.kind == Kind::Myoma
+                            ? d.figo == request.figo
+                            : d.pedunculated == (request.attachment == Attachment::Pedunculated);
+    const bool sizeOk = std::fabs(d.sizeMm - request.sizeMm) <= 0.1 * request.sizeMm;
+    row.typeOk += typeOk ? 1 : 0;
+    row.sizeOk += sizeOk ? 1 : 0;
+    row.stalkMm += d.stalkLengthMm;
+    auto body = merge::mergeBody(*grown);
+    row.mergeS += std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+    row.valid += body.ok() ? 1 : 0;
+    if (verbose && (!typeOk || !sizeOk || !body.ok()))
+        std::printf("    organ %2d: FIGO %-4s wall %.3f cavity %.3f outside %.3f endo %.2f serosa %.2f size %.1f "
+                    "stalk %.1f base %.1f%s%s\n",
+                    s + 1, d.figo.toString().c_str(), d.intramuralFraction, d.cavityFraction, d.outsideFraction,
+                    d.endometriumDistanceMm, d.serosaDistanceMm, d.sizeMm, d.stalkLengthMm, d.baseWidthMm,
+                    body.ok() ? "" : "; merge: ", body.ok() ? "" : body.error().detail.c_str());
+}
+
+void printRow(const char* model, const std::string& what, const Row& row, int organs, bool stalk) {
+    if (row.unsupported == organs) {
+        std::printf("%-10s %-14s unsupported by the model\n", model, what.c_str());
+        std::fflush(stdout);
+        return;
+    }
+    std::printf("%-10s %-14s %6d %6d %8d %6d", model, what.c_str(), row.grown, row.typeOk, row.sizeOk, row.valid);
+    if (stalk)
+        std::printf(" %8.1f", row.grown > 0 ? row.stalkMm / row.grown : 0.0);
+    else
+        std::printf(" %8s", "");
+    std::printf(" %8.3f %8.3f\n", row.growS / organs, row.mergeS / organs);
+    std::fflush(stdout);
+}
+
+} // namespace
+
 int main(int argc, char** argv) {
-    std::vector<const char*> args;
+    int organs = 20;
+    double size = 20.0;
+    std::string only, row; // --row: only the rows whose request contains this text
     bool verbose = false;
-    for (int i = 1; i < argc; ++i)
-        (std::strcmp(argv[i], "-v") == 0 ? (void)(verbose = true) : args.push_back(argv[i]));
-    const int organs = args.size() > 0 ? std::atoi(args[0]) : 20;
-    const double size = args.size() > 1 ? std::atof(args[1]) : 20.0;
-    const char* only = args.size() > 2 ? args[2] : nullptr;
+    int positional = 0;
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--verbose") == 0)
+            verbose = true;
+        else if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc)
+            only = argv[++i];
+        else if (std::strcmp(argv[i], "--row") == 0 && i + 1 < argc)
+            row = argv[++i];
+        else if (positional++ == 0)
+            organs = std::atoi(argv[i]);
+        else
+            size = std::atof(argv[i]);
+    }
     std::vector<SurfaceMesh> organMeshes;
     for (int s = 1; s <= organs; ++s)
         organMeshes.push_back(test::testOrgan(static_cast<std::uint64_t>(s)));
     const std::vector<Figo> figos = {{0, -1}, {1, -1}, {2, -1}, {3, -1}, {4, -1}, {5, -1}, {6, -1}, {7, -1}, {2, 5}};
-    std::printf("%d organs, %.0f mm myoma, posterior wall\n", organs, size);
-    std::printf("%-10s %-5s %8s %8s %8s %8s %9s %9s\n", "model", "FIGO", "grown", "figo=", "size10%", "valid", "grow s",
-                "merge s");
-    for (GrowthModel model : {GrowthModel::CellularAutomaton, GrowthModel::Skeleton, GrowthModel::Particles})
+    std::printf("%d organs, %.0f mm myoma, posterior wall; 12 mm polyps (stalk 8 mm)\n", organs, size);
+    std::printf("%-10s %-14s %6s %6s %8s %6s %8s %8s %8s\n", "model", "request", "grown", "type=", "size10%", "valid",
+                "stalk mm", "grow s", "merge s");
+    for (GrowthModel model : {GrowthModel::CellularAutomaton, GrowthModel::Skeleton, GrowthModel::Particles}) {
+        if (!only.empty() && only != toString(model))
+            continue;
         for (const Figo& f : figos) {
-            if (only && std::strcmp(only, toString(model)) != 0)
+            if (!row.empty() && ("FIGO " + f.toString()).find(row) == std::string::npos)
                 continue;
-            int grownOk = 0, figoOk = 0, sizeOk = 0, valid = 0, unsupported = 0;
-            double growS = 0.0, mergeS = 0.0;
-            for (int s = 0; s < organs; ++s) {
-                PathologyParams params;
-                params.seed = static_cast<std::uint64_t>(s + 1);
-                params.pathologies.push_back(test::myoma("m", model, f, size));
-                const auto t0 = std::chrono::steady_clock::now();
-                auto grown = growPathologies(organMeshes[static_cast<std::size_t>(s)], params);
-                const auto t1 = std::chrono::steady_clock::now();
-                growS += std::chrono::duration<double>(t1 - t0).count();
-                if (!grown.ok()) {
-                    unsupported += grown.error().code == ErrorCode::Unsupported ? 1 : 0;
-                    if (verbose)
-                        std::fprintf(stderr, "%s %s organ %d: %s\n", toString(model), f.toString().c_str(), s + 1,
-                                     grown.error().detail.c_str());
-                    continue;
-                }
-                ++grownOk;
-                if (verbose) {
-                    std::fprintf(stderr, "%s %s organ %d: steps", toString(model), f.toString().c_str(), s + 1);
-                    for (const StepTiming& st : grown->timings.steps)
-                        std::fprintf(stderr, " %s %.3f s", st.name.c_str(), st.seconds);
-                    std::fprintf(stderr, ", %zu triangles", grown->pathologies[0].surface.triangles.size());
-                    std::fprintf(stderr, "\n");
-                }
-                const Descriptors& d = grown->pathologies[0].descriptors;
-                figoOk += d.figo == f ? 1 : 0;
-                sizeOk += std::fabs(d.sizeMm - size) <= 0.1 * size ? 1 : 0;
-                auto body = merge::mergeBody(*grown);
-                mergeS += std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
-                valid += body.ok() ? 1 : 0;
-                if (verbose && !body.ok())
-                    std::fprintf(stderr, "%s %s organ %d: %s\n", toString(model), f.toString().c_str(), s + 1,
-                                 body.error().detail.c_str());
-                if (verbose && (d.figo != f || std::fabs(d.sizeMm - size) > 0.1 * size))
-                    std::fprintf(stderr, "%s %s organ %d: measured FIGO %s, size %.1f mm, cavity %.3f, outside %.3f\n",
-                                 toString(model), f.toString().c_str(), s + 1, d.figo.toString().c_str(), d.sizeMm,
-                                 d.cavityFraction, d.outsideFraction);
-            }
-            if (unsupported == organs) {
-                std::printf("%-10s %-5s %8s\n", toString(model), f.toString().c_str(), "unsupported by the model");
-                std::fflush(stdout);
-                continue;
-            }
-            std::printf("%-10s %-5s %8d %8d %8d %8d %9.3f %9.3f\n", toString(model), f.toString().c_str(), grownOk,
-                        figoOk, sizeOk, valid, growS / organs, mergeS / organs);
-            std::fflush(stdout);
+            Row counts;
+            if (verbose)
+                std::printf("%s FIGO %s\n", toString(model), f.toString().c_str());
+            for (int s = 0; s < organs; ++s)
+                runOne(organMeshes[static_cast<std::size_t>(s)], s, test::myoma("m", model, f, size), counts, verbose);
+            printRow(toString(model), "FIGO " + f.toString(), counts, organs, f.type == 0 || f.type == 7);
         }
+    }
+    for (GrowthModel model : {GrowthModel::Skeleton, GrowthModel::Particles}) {
+        if (!only.empty() && only != "polyps" && only != toString(model))
+            continue;
+        for (Location where : {Location::Fundal, Location::Posterior})
+            for (bool pedunculated : {false, true}) {
+                const std::string what =
+                    std::string(pedunculated ? "pedunc " : "sessile ") + (where == Location::Fundal ? "fund" : "post");
+                if (!row.empty() && what.find(row) == std::string::npos)
+                    continue;
+                if (verbose)
+                    std::printf("%s polyp %s\n", toString(model), what.c_str());
+                Row counts;
+                for (int s = 0; s < organs; ++s)
+                    runOne(organMeshes[static_cast<std::size_t>(s)], s,
+                           test::polyp("p", model, 12.0, pedunculated, pedunculated ? 8.0 : 0.0, where), counts,
+                           verbose);
+                printRow(toString(model), what, counts, organs, true);
+            }
+    }
     return 0;
 }

@@ -97,6 +97,64 @@ void classifyFree(const OrganInfo& info, const Grid& g, const std::vector<std::u
             }
 }
 
+/// The base: organ vertices of `side` inside the pathology or within 1 mm of it, restricted to the pieces of that
+/// surface (connected through near vertices) where the pathology passes through the wall. A head that merely comes
+/// close to another part of the wall does not widen the base.
+std::vector<Vec3> basePoints(const SurfaceMesh& organ, const OrganInfo& info, Side side, const Grid& g,
+                             const std::vector<std::uint8_t>& pm) {
+    const double h = g.h;
+    const int reach = static_cast<int>(std::ceil(1.0 / h));
+    const std::size_t nv = organ.points.size();
+    std::vector<std::uint8_t> near(nv, 0), inside(nv, 0);
+    for (std::size_t v = 0; v < nv; ++v) {
+        if (info.vertexSide[v] != side)
+            continue;
+        const Vec3& p = organ.points[v];
+        const int i = static_cast<int>(std::lround((p.x - g.origin.x) / h));
+        const int j = static_cast<int>(std::lround((p.y - g.origin.y) / h));
+        const int k = static_cast<int>(std::lround((p.z - g.origin.z) / h));
+        for (int dk = -reach; dk <= reach && !near[v]; ++dk)
+            for (int dj = -reach; dj <= reach && !near[v]; ++dj)
+                for (int di = -reach; di <= reach && !near[v]; ++di) {
+                    const int a = i + di, b = j + dj, c = k + dk;
+                    near[v] = a >= 0 && b >= 0 && c >= 0 && a < g.nx && b < g.ny && c < g.nz && pm[g.index(a, b, c)];
+                }
+        inside[v] = near[v] && i >= 0 && j >= 0 && k >= 0 && i < g.nx && j < g.ny && k < g.nz && pm[g.index(i, j, k)];
+    }
+    // Flood the near vertices from those inside the pathology along the organ's edges.
+    std::vector<std::vector<std::size_t>> nbr(nv);
+    for (const Triangle& t : organ.triangles)
+        for (std::size_t a = 0; a < 3; ++a) {
+            const auto va = static_cast<std::size_t>(t[a]), vb = static_cast<std::size_t>(t[(a + 1) % 3]);
+            if (near[va] && near[vb]) {
+                nbr[va].push_back(vb);
+                nbr[vb].push_back(va);
+            }
+        }
+    std::vector<std::uint8_t> keep(nv, 0);
+    std::deque<std::size_t> queue;
+    for (std::size_t v = 0; v < nv; ++v)
+        if (inside[v]) {
+            keep[v] = 1;
+            queue.push_back(v);
+        }
+    const bool anyInside = !queue.empty();
+    while (!queue.empty()) {
+        const std::size_t v = queue.front();
+        queue.pop_front();
+        for (std::size_t w : nbr[v])
+            if (!keep[w]) {
+                keep[w] = 1;
+                queue.push_back(w);
+            }
+    }
+    std::vector<Vec3> base;
+    for (std::size_t v = 0; v < nv; ++v)
+        if (anyInside ? keep[v] : near[v])
+            base.push_back(organ.points[v]);
+    return base;
+}
+
 } // namespace
 } // namespace detail
 
@@ -152,25 +210,7 @@ Result<Descriptors> measure(const SurfaceMesh& organ, const SurfaceMesh& patholo
     const Side baseSide = (f.cavity > 0.0 || (f.outside == 0.0 && f.endometriumDistanceMm <= f.serosaDistanceMm))
                               ? Side::Cavity
                               : Side::Serosa;
-    const int reach = static_cast<int>(std::ceil(1.0 / h));
-    std::vector<Vec3> base;
-    for (std::size_t v = 0; v < organ.points.size(); ++v) {
-        if (info.vertexSide[v] != baseSide)
-            continue;
-        const Vec3& p = organ.points[v];
-        const int i = static_cast<int>(std::lround((p.x - g.origin.x) / h));
-        const int j = static_cast<int>(std::lround((p.y - g.origin.y) / h));
-        const int k = static_cast<int>(std::lround((p.z - g.origin.z) / h));
-        bool near = false;
-        for (int dk = -reach; dk <= reach && !near; ++dk)
-            for (int dj = -reach; dj <= reach && !near; ++dj)
-                for (int di = -reach; di <= reach && !near; ++di) {
-                    const int a = i + di, b = j + dj, c = k + dk;
-                    near = a >= 0 && b >= 0 && c >= 0 && a < g.nx && b < g.ny && c < g.nz && pm[g.index(a, b, c)];
-                }
-        if (near)
-            base.push_back(p);
-    }
+    const std::vector<Vec3> base = basePoints(organ, info, baseSide, g, pm);
     const Vec3 bodyCentre = volumeCentroid(pathology);
     Vec3 baseCentre;
     if (!base.empty()) {

@@ -73,6 +73,7 @@ namespace {
 using namespace detail;
 
 constexpr double kSinkMm = 1.5;           ///< a stalk's root lies this deep in the wall
+constexpr double kOpenStretch = 1.0;      ///< the far wall's window ramp widens by this fraction of its push
 constexpr double kMaxSizeToCorpus = 1.25; ///< largest myoma against the smallest corpus dimension
 constexpr double kMaxPolypToCavity = 0.8; ///< largest polyp head against the cavity length
 
@@ -287,6 +288,20 @@ Result<double> centreDepth(const PathologyRequest& r, const Seat& seat, double r
     return bestStart + 0.5 * bestLength;
 }
 
+/// Signed distance from p to a closed surface (negative inside), capped at `cutoff`.
+double signedDistance(const SurfaceMesh& s, const Bounds& box, const Vec3& p, double cutoff) {
+    if (p.x < box.min.x - cutoff || p.y < box.min.y - cutoff || p.z < box.min.z - cutoff || p.x > box.max.x + cutoff ||
+        p.y > box.max.y + cutoff || p.z > box.max.z + cutoff)
+        return cutoff;
+    double best = cutoff * cutoff;
+    for (const Triangle& t : s.triangles)
+        best = std::min(best, pointTriangleDistance2(p, s.points[static_cast<std::size_t>(t[0])],
+                                                     s.points[static_cast<std::size_t>(t[1])],
+                                                     s.points[static_cast<std::size_t>(t[2])]));
+    const double d = std::sqrt(best);
+    return windingNumber(s, p) > 0.5 ? -d : d;
+}
+
 /// The growth direction of a stalk into the cavity: away from the wall and down towards the internal os, the way
 /// a pedunculated polyp hangs in the cavity.
 Vec3 stalkDirection(const OrganInfo& info, const Vec3& intoWall) {
@@ -296,8 +311,55 @@ Vec3 stalkDirection(const OrganInfo& info, const Vec3& intoWall) {
     return normalized(-intoWall * 0.85 + normalized(down) * 0.5);
 }
 
+/// How far a head of `radius` at the end of a stalk from `root` along `dir` stays from the pathologies planned
+/// before it (mm; large when there are none).
+double stalkClearance(const Vec3& root, const Vec3& dir, double reach, double radius, double stalkRadius,
+                      const std::vector<const SurfaceMesh*>& earlier) {
+    double worst = 1e9;
+    for (const SurfaceMesh* other : earlier) {
+        const Bounds box = bounds(*other);
+        const double cutoff = 2.0 * radius + 10.0;
+        worst = std::min(worst, signedDistance(*other, box, root + dir * reach, cutoff) - radius);
+        for (double t = 0.25; t < 0.8; t += 0.25)
+            worst = std::min(worst, signedDistance(*other, box, root + dir * (t * reach), cutoff) - stalkRadius);
+    }
+    return worst;
+}
+
+/// The stalk's direction: the way it hangs (stalkDirection), or, when that runs into a pathology planned before
+/// it, the nearest direction (tilted in 15 degree steps, still leaving the wall) whose head keeps `gap` from it.
+Vec3 freeStalkDirection(const OrganInfo& info, const Seat& seat, double reach, double radius, double stalkRadius,
+                        double gap, const std::vector<const SurfaceMesh*>& earlier) {
+    const Vec3 hang = stalkDirection(info, seat.intoWall);
+    double best = stalkClearance(seat.endometrium, hang, reach, radius, stalkRadius, earlier);
+    if (best >= gap)
+        return hang;
+    Vec3 bestDir = hang, e1, e2;
+    orthonormalFrame(hang, e1, e2);
+    constexpr double kDegree = 3.14159265358979323846 / 180.0;
+    for (int tilt = 15; tilt <= 60; tilt += 15) {
+        bool found = false;
+        for (int azimuth = 0; azimuth < 360; azimuth += 30) {
+            const double a = azimuth * kDegree, t = tilt * kDegree;
+            const Vec3 dir = normalized(hang * std::cos(t) + (e1 * std::cos(a) + e2 * std::sin(a)) * std::sin(t));
+            if (dot(dir, -seat.intoWall) < 0.35)
+                continue;
+            const double clear = stalkClearance(seat.endometrium, dir, reach, radius, stalkRadius, earlier);
+            if (clear > best) {
+                best = clear;
+                bestDir = dir;
+                found = found || clear >= gap;
+            }
+        }
+        if (found)
+            break;
+    }
+    return bestDir;
+}
+
 Result<ShapeSpec> planShape(const PathologyRequest& r, const OrganInfo& info, const Seat& seat,
-                            const PathologyParams& params, bool& fromSerosa) {
+                            const PathologyParams& params, const std::vector<const SurfaceMesh*>& earlier,
+                            bool& fromSerosa) {
     ShapeSpec spec;
     const double radius = 0.5 * r.sizeMm;
     spec.radius = radius;
@@ -310,7 +372,10 @@ Result<ShapeSpec> planShape(const PathologyRequest& r, const OrganInfo& info, co
             spec.pedunculated = true;
             const double stalk = r.stalkLengthMm > 0.0 ? r.stalkLengthMm : 0.5 * r.sizeMm;
             spec.stalkRadius = std::clamp(0.18 * radius, 0.8, 3.0);
-            spec.center = seat.endometrium + stalkDirection(info, seat.intoWall) * (stalk + radius);
+            const double gap = params.minimumGapMm + params.clearanceMm;
+            spec.center = seat.endometrium +
+                          freeStalkDirection(info, seat, stalk + radius, radius, spec.stalkRadius, gap, earlier) *
+                              (stalk + radius);
         } else {
             spec.stalkRadius = 0.65 * radius;
             spec.center = seat.endometrium - seat.intoWall * (0.6 * radius);
@@ -336,6 +401,7 @@ Result<ShapeSpec> planShape(const PathologyRequest& r, const OrganInfo& info, co
     if (!depth.ok())
         return depth.failure();
     fromSerosa = !f.isHybrid() && f.type >= 5;
+    spec.transmural = f.isHybrid();
     spec.center = seat.endometrium + seat.intoWall * *depth;
     spec.base = spec.center;
     return spec;
@@ -355,25 +421,102 @@ Result<SurfaceMesh> grow(const PathologyRequest& r, const ShapeSpec& spec, const
     return fail(ErrorCode::Internal, "unknown growth model");
 }
 
-/// Scales about the stalk root (stalked shapes) or the centroid so the measured size equals the request.
+/// Scales so the measured size equals the request: about the centroid, or, for stalked shapes, about the foot of
+/// the head when it grows (the stalk keeps its length; its root sinks deeper into the wall) and about the stalk's
+/// root when it shrinks (the root stays in the wall).
 void scaleToSize(SurfaceMesh& mesh, const ShapeSpec& spec, double sizeMm) {
     const bool stalked = spec.polyp || spec.pedunculated;
+    const Vec3 axis = normalized(spec.center - spec.base);
     for (int it = 0; it < 3; ++it) {
-        const double now =
-            stalked ? headDiameter(mesh.points, spec.base, normalized(spec.center - spec.base)) : diameter(mesh.points);
+        const double now = stalked ? headDiameter(mesh.points, spec.base, axis) : diameter(mesh.points);
         if (now <= 0.0)
             return;
-        scaleAbout(mesh, stalked ? spec.base : volumeCentroid(mesh), sizeMm / now);
+        const double factor = sizeMm / now;
+        const Vec3 pivot =
+            !stalked ? volumeCentroid(mesh) : (factor > 1.0 ? spec.center - axis * spec.radius : spec.base);
+        scaleAbout(mesh, pivot, factor);
+    }
+}
+
+/// Depths along the wall chord (0 at the endometrium) of the shape's inside voxels (edge size / 40), sorted.
+std::vector<double> voxelDepths(const SurfaceMesh& mesh, const PathologyRequest& r, const Seat& seat) {
+    const double h = r.sizeMm / 40.0;
+    const Grid g = Grid::covering(bounds(mesh), h, 1);
+    const auto inside = insideMask(mesh, g);
+    std::vector<double> depth;
+    for (int k = 0; k < g.nz; ++k)
+        for (int j = 0; j < g.ny; ++j)
+            for (int i = 0; i < g.nx; ++i)
+                if (inside[g.index(i, j, k)])
+                    depth.push_back(dot(g.center(i, j, k) - seat.endometrium, seat.intoWall));
+    std::sort(depth.begin(), depth.end());
+    return depth;
+}
+
+/// The shift along the chord that centres a 2-5 hybrid in the wall slab: the fractions beyond the endometrium and
+/// beyond the serosa, each over the threshold that makes it count (classifyFigo: 0.01 and 0.02), are made equal,
+/// keeping at least half of the volume in the wall.
+double hybridShift(const SurfaceMesh& mesh, const PathologyRequest& r, const Seat& seat) {
+    const std::vector<double> depth = voxelDepths(mesh, r, seat);
+    if (depth.empty())
+        return 0.0;
+    const auto n = static_cast<double>(depth.size());
+    auto fractions = [&](double shift, double& cavity, double& outside) {
+        cavity = static_cast<double>(std::lower_bound(depth.begin(), depth.end(), -shift) - depth.begin()) / n;
+        outside =
+            static_cast<double>(depth.end() - std::upper_bound(depth.begin(), depth.end(), seat.wallMm - shift)) / n;
+    };
+    double best = 0.0, bestScore = -1e300;
+    const double span = depth.back() - depth.front() + seat.wallMm;
+    for (double shift = -span; shift <= span; shift += 0.05) {
+        double cavity = 0.0, outside = 0.0;
+        fractions(shift, cavity, outside);
+        const double score = std::min(cavity / 0.01, outside / 0.02) - (cavity + outside > 0.5 ? 1e6 : 0.0);
+        if (score > bestScore) {
+            bestScore = score;
+            best = shift;
+        }
+    }
+    return best;
+}
+
+/// The slab is flat, the organ is not: where the curved cavity leaves less of the shape beyond the endometrium (or
+/// the serosa) than the slab promised, the shape moves along the chord in 0.25 mm steps towards the side that falls
+/// short of its threshold, measured on the organ, as long as the other side keeps its own.
+void refineHybrid(SurfaceMesh& mesh, const SurfaceMesh& organ, const PathologyRequest& r, const Seat& seat,
+                  const PathologyParams& params) {
+    for (int it = 0; it < 8; ++it) {
+        auto d = measure(organ, mesh, Kind::Myoma, params);
+        if (!d.ok() || d->figo == r.figo)
+            return;
+        const double cavity = d->cavityFraction / 0.01, outside = d->outsideFraction / 0.02;
+        const double step = cavity < 1.0 && outside > 1.0 ? -0.25 : (outside < 1.0 && cavity > 1.0 ? 0.25 : 0.0);
+        if (step == 0.0)
+            return;
+        translate(mesh, seat.intoWall * step);
+        auto after = measure(organ, mesh, Kind::Myoma, params);
+        if (!after.ok() || (step < 0.0 ? after->outsideFraction < 0.02 : after->cavityFraction < 0.01)) {
+            translate(mesh, seat.intoWall * -step); // the other side would fall short: keep the balance
+            return;
+        }
     }
 }
 
 /// Moves the shape along the wall chord until its depth matches the FIGO type, measured against the planes of
 /// the wall at the seat (the local slab, so the far wall of a narrow cavity does not count): intramural fraction
 /// 0.25 (types 1, 6) or 0.75 (types 2, 5), or a gap of half the contact tolerance to the endometrium (type 3).
-void fitDepth(SurfaceMesh& mesh, const PathologyRequest& r, const Seat& seat, const PathologyParams& params) {
-    if (r.kind != Kind::Myoma || r.figo.isHybrid())
+void fitDepth(SurfaceMesh& mesh, const SurfaceMesh& organ, const PathologyRequest& r, const Seat& seat,
+              const PathologyParams& params) {
+    if (r.kind != Kind::Myoma)
         return;
     const int type = r.figo.type;
+    if (r.figo.isHybrid()) {
+        if (r.figo == Figo{2, 5}) { // other hybrids keep the depth of the ideal sphere
+            translate(mesh, seat.intoWall * hybridShift(mesh, r, seat));
+            refineHybrid(mesh, organ, r, seat, params);
+        }
+        return;
+    }
     if (type != 1 && type != 2 && type != 3 && type != 5 && type != 6)
         return;
     double shift = 0.0;
@@ -383,18 +526,9 @@ void fitDepth(SurfaceMesh& mesh, const PathologyRequest& r, const Seat& seat, co
             shallowest = std::min(shallowest, dot(q - seat.endometrium, seat.intoWall));
         shift = 0.5 * params.contactToleranceMm - shallowest;
     } else {
-        const double h = r.sizeMm / 40.0;
-        const Grid g = Grid::covering(bounds(mesh), h, 1);
-        const auto inside = insideMask(mesh, g);
-        std::vector<double> depth; // of each voxel along the chord
-        for (int k = 0; k < g.nz; ++k)
-            for (int j = 0; j < g.ny; ++j)
-                for (int i = 0; i < g.nx; ++i)
-                    if (inside[g.index(i, j, k)])
-                        depth.push_back(dot(g.center(i, j, k) - seat.endometrium, seat.intoWall));
+        const std::vector<double> depth = voxelDepths(mesh, r, seat);
         if (depth.empty())
             return;
-        std::sort(depth.begin(), depth.end());
         const double target = type == 1 ? 0.05 : (type == 6 ? 0.25 : 0.75);
         // Types 1-2: the fraction deeper than the endometrium plane; 5-6: shallower than the serosa plane.
         const auto n = static_cast<double>(depth.size());
@@ -409,49 +543,72 @@ void fitDepth(SurfaceMesh& mesh, const PathologyRequest& r, const Seat& seat, co
     translate(mesh, seat.intoWall * shift);
 }
 
-/// An injective deformation that opens room: points move along `n` by amount * s(tau) * (1 - s(rho)), tau the
-/// coordinate along n from `origin`, rho the distance from the axis through origin. Every line along n maps to
-/// itself monotonically, so the organ can never fold over itself, however steep the ramps.
+/// An injective deformation that opens room: points move along `n` by amount * s(h) * (1 - s(rho)), h the height
+/// along `up` (n unless set; up . n > 0) from `origin`, rho the distance from the axis through origin along n. Every
+/// line along n maps to itself monotonically (s(h) only grows along it), so the organ can never fold over itself,
+/// however steep the ramps.
+///
+/// The radial variant moves points away from that axis instead, by amount * g * (1 - s(rho)), g rising with the
+/// height and falling beyond the pathology's top along n. Each half-plane bounded by the axis maps to itself, and
+/// rho -> rho + amount * weight is strictly increasing when the ramps that fall along rho are wide enough: the fall
+/// over rho is 2.5 amount and the height ramp amount (0.5 + 4 sin(up, n)) (the height changes along rho when up is
+/// tilted from n), so the weight's slope along rho stays below 0.6 / amount + 0.375 / amount. The walls around a
+/// pathology that stands in the cavity then move away from it in every direction across the axis.
 struct Push {
     Vec3 origin, n;
-    double rampLo = 0.0, rampHi = 1.0;     ///< mm along n: no motion below, full motion above
+    double rampLo = 0.0, rampHi = 1.0;     ///< mm of height: no motion below, full motion above
     double window = 0.0, windowRamp = 5.0; ///< mm from the axis: full motion inside, none beyond window + ramp
     double amount = 0.0;
-    double stretch = 0.0; ///< the ramp widens by this fraction of the amount (a triangle mesh follows a smooth map)
+    double stretch = 0.0; ///< the window ramp widens by this fraction of the amount (a mesh follows a smooth map)
+    bool radial = false;
+    Vec3 up{};                       ///< height direction; zero: n
+    double topLo = 0.0, topHi = 0.0; ///< radial: mm along n where the motion falls back to 0 (beyond the pathology)
+    /// Axial solve: only points this close to the axis drive the amount (0: all); the far wall in front of the
+    /// pathology, not the side walls that the radial push moves.
+    double solveWithin = 0.0;
+    Vec3 upDir() const { return norm(up) > 0.0 ? up : n; }
+    double fall() const { return radial ? std::max(windowRamp, 2.5 * amount) : std::max(windowRamp, stretch * amount); }
     double weight(const Vec3& x) const {
         const Vec3 d = x - origin;
         const double tau = dot(d, n);
         const double rho = norm(d - n * tau);
-        const double hi = std::max(rampHi, rampLo + stretch * amount);
-        return smoothstep(rampLo, hi, tau) *
-               (1.0 - smoothstep(window, window + std::max(windowRamp, stretch * amount), rho));
+        const double height = dot(d, upDir());
+        const double across = 1.0 - smoothstep(window, window + fall(), rho);
+        if (radial) {
+            const double tilt = norm(cross(upDir(), n));
+            const double hi = std::max(rampHi, rampLo + amount * (0.5 + 4.0 * tilt));
+            // Rising from the axis over half the window: no wall lies there (the far wall's push cleared it), but
+            // another pathology may, and it moves with the tissue.
+            return smoothstep(rampLo, hi, height) * (1.0 - smoothstep(topLo, topHi, tau)) *
+                   smoothstep(0.0, std::max(0.5, 0.5 * window), rho) * across;
+        }
+        return smoothstep(rampLo, rampHi, height) * across;
     }
-    Vec3 apply(const Vec3& x) const { return x + n * (amount * weight(x)); }
+    Vec3 direction(const Vec3& x) const {
+        if (!radial)
+            return n;
+        const Vec3 d = x - origin;
+        const Vec3 r = d - n * dot(d, n);
+        const double len = norm(r);
+        return len > 1e-12 ? r / len : Vec3{};
+    }
+    Vec3 apply(const Vec3& x) const { return x + direction(x) * (amount * weight(x)); }
 };
-
-/// Signed distance from p to a closed surface (negative inside), capped at `cutoff`.
-double signedDistance(const SurfaceMesh& s, const Bounds& box, const Vec3& p, double cutoff) {
-    if (p.x < box.min.x - cutoff || p.y < box.min.y - cutoff || p.z < box.min.z - cutoff || p.x > box.max.x + cutoff ||
-        p.y > box.max.y + cutoff || p.z > box.max.z + cutoff)
-        return cutoff;
-    double best = cutoff * cutoff;
-    for (const Triangle& t : s.triangles)
-        best = std::min(best, pointTriangleDistance2(p, s.points[static_cast<std::size_t>(t[0])],
-                                                     s.points[static_cast<std::size_t>(t[1])],
-                                                     s.points[static_cast<std::size_t>(t[2])]));
-    const double d = std::sqrt(best);
-    return windingNumber(s, p) > 0.5 ? -d : d;
-}
 
 /// Increases the push until the organ points it moves keep `clearance` from the pathology (at most `cap`).
 void solvePush(Push& push, const SurfaceMesh& organ, const SurfaceMesh& pathology, double clearance, double cap) {
     const Bounds box = bounds(pathology);
-    for (int it = 0; it < 8 && push.amount < cap; ++it) {
+    for (int it = 0; it < 12 && push.amount < cap; ++it) {
         double deficit = 0.0;
         for (const Vec3& x0 : organ.points) {
             const double w = push.weight(x0);
             if (w < 0.3)
                 continue;
+            if (push.solveWithin > 0.0) {
+                const Vec3 d = x0 - push.origin;
+                if (norm(d - push.n * dot(d, push.n)) > push.solveWithin)
+                    continue;
+            }
             const double sd = signedDistance(pathology, box, push.apply(x0), clearance + 1.0);
             if (sd < clearance)
                 deficit = std::max(deficit, (clearance - sd) / w);
@@ -462,9 +619,16 @@ void solvePush(Push& push, const SurfaceMesh& organ, const SurfaceMesh& patholog
     }
 }
 
+/// The direction a pathology stands into the cavity: its stalk (pedunculated) or straight out of the wall.
+Vec3 protrusionDirection(const Planned& p) {
+    if (p.spec.pedunculated && !p.fromSerosa)
+        return normalized(p.spec.center - p.seat.endometrium);
+    return -p.seat.intoWall;
+}
+
 /// The pushes a pathology needs, by where it must and must not reach (UTERUS.md: types 0-2 bulge into the cavity,
 /// 3 touches the endometrium, 4 stays in the wall, 5-7 bulge outwards).
-std::vector<Push> planPushes(const Planned& p, const PathologyParams& params) {
+std::vector<Push> planPushes(const Planned& p, const OrganInfo& info, const PathologyParams& params) {
     const SurfaceMesh& mesh = p.surface;
     const Vec3 e = p.seat.endometrium, u = p.seat.intoWall;
     double shallowest = 1e300, deepest = -1e300, lateral = 0.0;
@@ -483,8 +647,33 @@ std::vector<Push> planPushes(const Planned& p, const PathologyParams& params) {
     const double c = params.clearanceMm;
     std::vector<Push> pushes;
     const double w = p.seat.wallMm;
-    if (intoCavity) // open the cavity: the far wall moves away from the seat
-        pushes.push_back(Push{e, -u, 1.5, 3.0, lateral + c, windowRamp, 0.0, 1.0});
+    if (intoCavity) {
+        // Open the cavity around the part that stands in it: first the far wall moves away along the protrusion
+        // (driven by the wall in front of it), then, around a head on a stalk, the walls move away across it.
+        const Vec3 d = protrusionDirection(p);
+        double top = 0.0, across = 0.0;
+        for (const Vec3& q : mesh.points) {
+            const double t = dot(q - e, d);
+            top = std::max(top, t);
+            if (t > 0.5)
+                across = std::max(across, norm((q - e) - d * t));
+        }
+        // Heights are measured from the seat's endometrium plane, so a slanting stalk does not drag the wall it
+        // grows from.
+        const auto far = info.ray(e + d * 0.5, d, Side::Cavity);
+        const double farMm = (far ? far->t + 0.5 : top) * dot(d, -u);
+        Push open{e, d, 1.5, std::max(3.0, 0.6 * farMm), across + c, windowRamp, 0.0, kOpenStretch};
+        open.up = -u;
+        open.solveWithin = std::max(1.0, 0.5 * across);
+        pushes.push_back(open);
+        Push around{e, d, 0.5, 2.0, across + c, windowRamp, 0.0, 0.0};
+        around.radial = true;
+        around.up = -u;
+        around.topLo = top;
+        around.topHi = top + c;
+        if (p.spec.pedunculated) // a head on a stalk; a dome on the wall keeps its corners (they would fold)
+            pushes.push_back(around);
+    }
     if (clearOfCavity) { // the endometrium (and the cavity with it) moves away from the myoma; the ramp lies in the
                          // wall between the myoma's top and the endometrium, or just under the endometrium
         const double hi = std::min(-0.3, -shallowest + 0.2 + std::clamp(0.5 * std::max(shallowest, 0.0), 0.3, 3.0));
@@ -501,20 +690,36 @@ std::vector<Push> planPushes(const Planned& p, const PathologyParams& params) {
 }
 
 /// Applies pathology `which`'s pushes to the organ and to every other pathology (they sit in the moving tissue).
-void adaptOrgan(SurfaceMesh& organ, std::vector<Planned>& all, std::size_t which, const PathologyParams& params) {
+Status adaptOrgan(SurfaceMesh& organ, std::vector<Planned>& all, std::size_t which, const PathologyParams& params) {
     const SurfaceMesh& mesh = all[which].surface;
     const double cap = 2.0 * all[which].spec.radius + 2.0 * params.clearanceMm;
-    for (Push& push : planPushes(all[which], params)) {
+    auto info = analyzeOrgan(organ); // the organ as earlier pathologies left it
+    if (!info.ok())
+        return info.failure();
+    for (Push& push : planPushes(all[which], *info, params)) {
         solvePush(push, organ, mesh, params.clearanceMm, cap);
         if (push.amount <= 0.0)
             continue;
         for (Vec3& x : organ.points)
             x = push.apply(x);
-        for (std::size_t j = 0; j < all.size(); ++j)
-            if (j != which)
-                for (Vec3& q : all[j].surface.points)
+        // Other pathologies move with the tissue; across a radial push, which opens the free cavity around a head,
+        // rigidly by their mean motion (its ramps would stretch a body that stands in them).
+        for (std::size_t j = 0; j < all.size(); ++j) {
+            if (j == which)
+                continue;
+            std::vector<Vec3>& points = all[j].surface.points;
+            if (!push.radial) {
+                for (Vec3& q : points)
                     q = push.apply(q);
+                continue;
+            }
+            Vec3 mean;
+            for (const Vec3& q : points)
+                mean += push.apply(q) - q;
+            translate(all[j].surface, mean / static_cast<double>(std::max<std::size_t>(1, points.size())));
+        }
     }
+    return {};
 }
 
 Status checkOverlaps(const std::vector<Planned>& all, double gap) {
@@ -562,7 +767,10 @@ Result<PathologyResult> growPathologies(const SurfaceMesh& organ, const Patholog
             if (!seat.ok())
                 return seat.failure();
             p.seat = *seat;
-            auto spec = planShape(r, info, p.seat, params, p.fromSerosa);
+            std::vector<const SurfaceMesh*> earlier;
+            for (std::size_t j = 0; j < i; ++j)
+                earlier.push_back(&plans[j].surface);
+            auto spec = planShape(r, info, p.seat, params, earlier, p.fromSerosa);
             if (!spec.ok())
                 return spec.failure();
             p.spec = *spec;
@@ -583,7 +791,7 @@ Result<PathologyResult> growPathologies(const SurfaceMesh& organ, const Patholog
         {
             ScopedStepTimer timer(result.timings, "fit");
             const Vec3 before = volumeCentroid(p.surface);
-            fitDepth(p.surface, r, p.seat, params);
+            fitDepth(p.surface, organ, r, p.seat, params);
             const Vec3 moved = volumeCentroid(p.surface) - before;
             p.spec.center += moved;
             p.spec.base += moved;
@@ -598,7 +806,7 @@ Result<PathologyResult> growPathologies(const SurfaceMesh& organ, const Patholog
         ScopedStepTimer timer(result.timings, "adapt");
         result.organ = organ;
         for (std::size_t i = 0; i < plans.size(); ++i)
-            adaptOrgan(result.organ, plans, i, params);
+            HS_TRY(adaptOrgan(result.organ, plans, i, params));
     }
     ScopedStepTimer timer(result.timings, "measure");
     for (std::size_t i = 0; i < plans.size(); ++i) {

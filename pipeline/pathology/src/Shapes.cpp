@@ -295,12 +295,19 @@ SurfaceMesh skeletonShape(const ShapeSpec& spec, Rng& rng) {
         const double angle = rng.uniform(0.0, 2.0 * kPi);
         bendDir = e1 * std::cos(angle) + e2 * std::sin(angle);
         bend = spec.pedunculated || profile.length > 1.5 * spec.radius ? rng.uniform(0.05, 0.2) * profile.length : 0.0;
+        // The bow's curvature peaks at 2 pi^2 bend / L^2 (L the bowed length); its radius stays above the stalk's
+        // radius plus a few millimetres, or the stalk's inner side (and any offset of it) would fold.
+        const double bowed = std::max(profile.length - profile.radius, 0.3 * profile.length);
+        bend = std::min(bend, bowed * bowed / (2.0 * kPi * kPi * (profile.stalkRadius + 3.0)));
     } else {
-        // A myoma: an ellipsoid of revolution whose axis lies mostly in the wall's tangent plane.
+        // A myoma: an ellipsoid of revolution whose axis lies mostly in the wall's tangent plane (across the wall
+        // for a transmural one, which must reach both its surfaces).
         Vec3 e1, e2;
         orthonormalFrame(spec.intoWall, e1, e2);
         const double angle = rng.uniform(0.0, 2.0 * kPi);
-        dir = normalized(e1 * std::cos(angle) + e2 * std::sin(angle) + spec.intoWall * rng.uniform(-0.3, 0.3));
+        const Vec3 tangent = e1 * std::cos(angle) + e2 * std::sin(angle);
+        dir = spec.transmural ? normalized(spec.intoWall + tangent * rng.uniform(0.0, 0.1))
+                              : normalized(tangent + spec.intoWall * rng.uniform(-0.3, 0.3));
         profile.length = spec.radius * rng.uniform(1.0, 1.2);
         profile.radius = spec.radius;
         start = spec.center;
@@ -328,7 +335,7 @@ SurfaceMesh skeletonShape(const ShapeSpec& spec, Rng& rng) {
             return start + dir * s;
         // The stalk bows out and back before the head starts, so the head's rings stay parallel.
         const double x = std::clamp(s / std::max(profile.length - profile.radius, 0.3 * profile.length), 0.0, 1.0);
-        return start + dir * s + bendDir * (bend * 16.0 * x * x * (1.0 - x) * (1.0 - x));
+        return start + dir * s + bendDir * (bend * 0.5 * (1.0 - std::cos(2.0 * kPi * x)));
     };
 
     SurfaceMesh mesh;
@@ -416,8 +423,12 @@ Result<SurfaceMesh> cellularAutomatonShape(const ShapeSpec& spec, const SurfaceM
                         continue;
                     const double r = tissue[id] ? tuning.tissueResistance : tuning.yieldResistance;
                     // The wall's fibres guide growth along its tangent plane; the cavity and the outside have none.
+                    // A transmural (hybrid) myoma, which must reach both the endometrium and the serosa, grows
+                    // across the wall instead.
                     const double along = dot(normalized(from), spec.intoWall);
-                    const double guide = tissue[id] ? tuning.anisotropy * (1.0 - along * along) : 0.0;
+                    const double guide = !tissue[id]       ? 0.0
+                                         : spec.transmural ? tuning.transmuralAnisotropy * along * along
+                                                           : tuning.anisotropy * (1.0 - along * along);
                     const double p = std::min(1.0, 0.12 * (1.0 + 2.0 * q / 6.0) / r * (1.0 + guide));
                     if (rng.uniform() < p) {
                         born.push_back(id);
@@ -509,8 +520,11 @@ Result<SurfaceMesh> particleShape(const ShapeSpec& spec, const SurfaceMesh& orga
                 const bool wall = inTissue(cells[i]);
                 disp[i] -=
                     (cells[i] - spec.center) * (wall ? 0.02 * tuning.tissueResistance : 0.02 * tuning.yieldResistance);
-                if (wall) // the wall's fibres guide growth along its tangent plane
-                    disp[i] -= spec.intoWall * (dot(disp[i], spec.intoWall) * tuning.anisotropy);
+                // The wall's fibres guide growth along its tangent plane; a transmural (hybrid) myoma, which spans
+                // the wall, grows across it instead.
+                const Vec3 across = spec.intoWall * dot(disp[i], spec.intoWall);
+                if (wall)
+                    disp[i] -= (spec.transmural ? disp[i] - across : across) * tuning.anisotropy;
             }
             for (std::size_t i = 0; i < cells.size(); ++i)
                 cells[i] += disp[i];
@@ -544,11 +558,25 @@ double headDiameter(const std::vector<Vec3>& points, const Vec3& base, const Vec
     }
     const int bins = 40;
     const double w = std::max((tMax - tMin) / bins, 1e-9);
-    std::vector<double> radius(bins, 0.0);
+    // A bin's radius is measured from the centre of its own cross-section: a bowed or tilted stalk is as narrow as a
+    // straight one.
+    std::vector<Vec3> centre(bins);
+    std::vector<double> count(bins, 0.0), radius(bins, 0.0);
+    auto binOf = [&](const Vec3& p) {
+        return static_cast<std::size_t>(std::clamp(static_cast<int>((dot(p - base, axis) - tMin) / w), 0, bins - 1));
+    };
     for (const Vec3& p : points) {
-        const double t = dot(p - base, axis);
-        const int b = std::clamp(static_cast<int>((t - tMin) / w), 0, bins - 1);
-        radius[static_cast<std::size_t>(b)] = std::max(radius[static_cast<std::size_t>(b)], norm(p - base - axis * t));
+        const std::size_t b = binOf(p);
+        centre[b] += p - axis * dot(p - base, axis);
+        count[b] += 1.0;
+    }
+    for (std::size_t b = 0; b < centre.size(); ++b)
+        if (count[b] > 0.0)
+            centre[b] = centre[b] / count[b];
+    for (const Vec3& p : points) {
+        const std::size_t b = binOf(p);
+        const Vec3 offset = p - axis * dot(p - base, axis) - centre[b];
+        radius[b] = std::max(radius[b], norm(offset));
     }
     const double maxR = *std::max_element(radius.begin(), radius.end());
     // The stalk: consecutive bins from the wall (t = 0) narrower than half the head.

@@ -18,6 +18,7 @@ struct ShapeSpec {
     Vec3 intoWall;             ///< unit direction from the surface it grows from into the wall
     double radius = 10.0;      ///< nominal radius of the myoma or head
     double stalkRadius = 2.0;  ///< mm
+    bool transmural = false;   ///< a hybrid myoma: reaches both the endometrium and the serosa
 };
 
 /// Skeleton + revolved contours: a skeleton curve (stalk and head axis, or the myoma's axis) and a planar contour
@@ -29,6 +30,7 @@ struct GrowthTuning {
     double tissueResistance = 1.0;      ///< relative; the wall resists
     double yieldResistance = 0.35;      ///< relative; cavity and outside yield (grow about 3x as easily)
     double anisotropy = 0.3;            ///< extra proliferation along the wall's tangent plane
+    double transmuralAnisotropy = 1.0;  ///< extra proliferation across the wall (hybrid myomas, which span it)
     int cellsPerDiameter = 26;          ///< CA voxels across the requested size
     double surfaceCellsPerRadius = 5.5; ///< CA surface: polygonization cells per nominal radius (about 4000 triangles)
     int particleCount = 1500;           ///< particles at the target volume

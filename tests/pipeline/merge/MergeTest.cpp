@@ -36,8 +36,8 @@ TEST(Merge, SubmucosalMyomaBecomesANestedRegionWithContactLabels) {
 }
 
 // The automaton's surfaces used to fold their 0.8 mm cover in voxel-scale creases (bench_pathology: 38 of 180 merged).
-// 3 organs per type here; bench_pathology sweeps 20. FIGO 0 is left out: no model reaches it yet (docs/pathology.md,
-// known gaps); 2-5 too: in thick walls the automaton's oblate tumour reaches only one side (14 of 20 organs).
+// 3 organs per type here; bench_pathology sweeps 20. The hybrid 2-5 is left out: in walls nearly as thick as the
+// myoma the automaton's tumour reaches one side by too little (18 of 20 organs, docs/pathology.md, known gaps).
 class AutomatonFigo : public testing::TestWithParam<int> {};
 
 TEST_P(AutomatonFigo, MyomaMatchesItsTypeAndSizeAndMergesIntoAValidBody) {
@@ -56,7 +56,7 @@ TEST_P(AutomatonFigo, MyomaMatchesItsTypeAndSizeAndMergesIntoAValidBody) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Merge, AutomatonFigo, testing::Values(1, 2, 3, 4, 5, 6, 7),
+INSTANTIATE_TEST_SUITE_P(Merge, AutomatonFigo, testing::Values(0, 1, 2, 3, 4, 5, 6, 7),
                          [](const testing::TestParamInfo<int>& p) { return "figo" + std::to_string(p.param); });
 
 TEST(Merge, SameInputGivesTheSameBody) {
