@@ -1,5 +1,6 @@
 // Pathologies -> merge -> particle mesher (Sierra et al. 2004, sec. 2.1 -> 2.2): the merged body meshes with every
-// region present, no inverted tets and each region's volume close to the volume its surfaces enclose.
+// region present, no inverted tets, no slivers and each region's volume within 2 % of the volume its surfaces
+// enclose, although the cover over a pathology (0.8 mm) is thinner than one edge (docs/meshing.md, thin layers).
 #include "SampleOrgans.h"
 
 #include "hs/merge/Merge.h"
@@ -17,15 +18,13 @@ using pathology::Figo;
 using pathology::GrowthModel;
 using pathology::Location;
 
-/// Edge length of the mesh, mm: the coarsest that keeps the pathologies' shapes (12-20 mm across), so that the test
-/// stays at about 20 s in Release on two busy cores (1.6 mm takes twice as long and halves the volume errors).
+/// Edge length of the mesh, mm: the coarsest that keeps the pathologies' shapes (12-20 mm across); the 0.8 mm cover
+/// the merge drapes over a pathology is then 0.4 edge thick, which is what this test is about.
 constexpr double kEdgeMm = 2.0;
 /// The bar: each region's volume within 2 % of its input.
 constexpr double kVolumeBar = 0.02;
-/// What holds now (docs/pathology.md, known gaps): at a 2 mm edge the healthy organ alone is meshed 2.2 % too large,
-/// the wall 3 % too large and the pathologies 3-11 % off (the 0.8 mm cover is thinner than one edge, so the draped
-/// wall goes to the pathology). Tighten to kVolumeBar when the mesher keeps thin layers and region volumes.
-constexpr double kVolumeNow = 0.12;
+/// The bar on tet shape: no dihedral angle below 15 degrees (so no sliver, < 10 degrees, either).
+constexpr double kMinDihedralBarDeg = 15.0;
 
 double secondsSince(const std::chrono::steady_clock::time_point& start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -57,9 +56,9 @@ TEST(MergedBodyMeshing, MeshesOneMyomaPerModelAndAPolypWithEveryRegionAndItsVolu
     const meshing::QualityReport& q = meshed->quality;
 
     std::printf("edge %.1f mm: %zu vertices, %zu tets; min dihedral %.2f deg, slivers (< %.0f deg) %zu, inverted %zu; "
-                "grow + merge %.2f s, mesh %.2f s\n",
+                "Hausdorff %.3f mm (%.3f %%); grow + merge %.2f s, mesh %.2f s\n",
                 kEdgeMm, q.vertexCount, q.tetCount, q.minDihedralDeg, meshing::kSliverDihedralDeg, q.sliverCount,
-                q.invertedCount, mergeSeconds, meshSeconds);
+                q.invertedCount, q.hausdorffDistance, 100.0 * q.hausdorffRelative, mergeSeconds, meshSeconds);
     for (const StepTiming& step : meshed->timings.steps)
         std::printf("  mesh step %-14s %6.2f s\n", step.name.c_str(), step.seconds);
     for (const meshing::RegionVolume& r : q.regions)
@@ -68,14 +67,15 @@ TEST(MergedBodyMeshing, MeshesOneMyomaPerModelAndAPolypWithEveryRegionAndItsVolu
 
     EXPECT_EQ(q.invertedCount, 0u);
     EXPECT_EQ(q.degenerateCount, 0u);
+    EXPECT_EQ(q.sliverCount, 0u);
+    EXPECT_GE(q.minDihedralDeg, kMinDihedralBarDeg);
     ASSERT_EQ(q.regions.size(), merged->body.surfaces.size()); // the wall and one region per pathology
     for (std::size_t i = 0; i < q.regions.size(); ++i) {
         const meshing::RegionVolume& r = q.regions[i];
         EXPECT_EQ(r.regionId, static_cast<std::int32_t>(i));
         EXPECT_GT(r.meshVolume, 0.0) << "region " << r.regionId << " has no tets";
-        EXPECT_LE(r.relativeError, kVolumeNow) << "region " << r.regionId;
+        EXPECT_LE(r.relativeError, kVolumeBar) << "region " << r.regionId;
     }
-    // Slivers are printed, not asserted: the mesher's sliver removal is being reworked (docs/meshing.md).
 }
 
 } // namespace

@@ -424,11 +424,16 @@ private:
         if (dot(n0, n1) < std::cos(m_params.coplanarDeg / kRadToDeg))
             return false;
         if (n == 1) {
-            // Peeling: the two other faces must be inner faces, so the boundary stays a manifold.
+            // Peeling: the two other faces must be inner faces of the same region, so the boundary stays a
+            // manifold and no other region is laid open (in a layer thinner than one edge the tet behind is often
+            // the nested region's).
             const Tet& tet = m_tets[first];
             for (int k = 0; k < 4; ++k) {
                 const std::int32_t v = tet[static_cast<std::size_t>(k)];
-                if ((v == a || v == b) && neighbourAcross(first, k) == kNoTet)
+                if (v != a && v != b)
+                    continue;
+                const TetId behind = neighbourAcross(first, k);
+                if (behind == kNoTet || m_region[behind] != ring.region)
                     return false;
             }
         } else if (edgeExists(r[0], r[n])) {

@@ -1,6 +1,7 @@
 #include "hs/meshing/ParticleMesher.h"
 
 #include "Delaunay.h"
+#include "InterfaceVolume.h"
 #include "MeshImprove.h"
 #include "Parallel.h"
 #include "Particles.h"
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <unordered_map>
 
@@ -89,21 +91,31 @@ RegionModel orientedOutward(const RegionModel& body, std::vector<std::string>& w
 
 /// Removes flat tets at the boundary whose four vertices are boundary particles: they are the caps and slivers a
 /// Delaunay tetrahedralization leaves on a curved surface; taking them away only flips a surface diagonal.
-/// `region` is per Delaunay tet (negative: not in the mesh); peeled tets get kOutside.
-std::size_t peelBoundarySlivers(const std::vector<Vec3>& points, const detail::Particles& ps,
+/// `region` is per Delaunay tet (negative: not in the mesh); peeled tets get kOutside. Only caps on the outline or
+/// a void surface (all four vertices on that one surface) exposed to the outside are peeled: in a layer between two
+/// nested surfaces thinner than one edge (a 0.8 mm cover over a pathology) every tet has four boundary particles and
+/// is flat, and peeling would open the layer and then eat the pathology's own caps behind it.
+std::size_t peelBoundarySlivers(const RegionModel& body, const std::vector<Vec3>& points, const detail::Particles& ps,
                                 const detail::DelaunayOutput& dt, std::vector<std::int32_t>& region) {
     const std::size_t n = dt.tets.size();
     auto onBoundary = [&](std::int32_t v) {
         return ps.kind[static_cast<std::size_t>(v)] != detail::ParticleKind::Inner;
     };
+    auto onePeelableSurface = [&](const Tet& tet) {
+        const std::int32_t s = ps.surface[static_cast<std::size_t>(tet[0])];
+        for (std::size_t i = 1; i < 4; ++i)
+            if (ps.surface[static_cast<std::size_t>(tet[i])] != s)
+                return false;
+        return s == 0 || body.surfaces[static_cast<std::size_t>(s)].regionId == RegionModel::kVoidRegion;
+    };
     auto peelable = [&](std::size_t t) {
         const Tet& tet = dt.tets[t];
-        if (region[t] < 0 || !std::all_of(tet.begin(), tet.end(), onBoundary))
+        if (region[t] < 0 || !std::all_of(tet.begin(), tet.end(), onBoundary) || !onePeelableSurface(tet))
             return false;
         bool exposed = false;
         for (std::size_t f = 0; f < 4 && !exposed; ++f) {
             const std::int64_t nb = dt.neighbours[t][f];
-            exposed = nb < 0 || region[static_cast<std::size_t>(nb)] != region[t];
+            exposed = nb < 0 || region[static_cast<std::size_t>(nb)] < 0;
         }
         if (!exposed)
             return false;
@@ -147,7 +159,45 @@ std::vector<std::int32_t> classifyTets(const std::vector<Vec3>& points, const Re
     return region;
 }
 
-/// Tets whose inner particles lie in different regions cross an interface (Delaunay did not recover it there):
+/// Tets whose four vertices are boundary particles of a surface and of the surface it is directly nested in lie in
+/// the layer between the two, i.e. in the outer surface's region. Their centroid says otherwise where the layer is
+/// thinner than one edge: between the chords of the outer surface and the caps of the inner one the centroid can
+/// fall inside the inner surface, and the tet then joins the pathology although it touches the outline. Tets the
+/// centroid puts outside the body stay outside (a Delaunay tet may bridge a crease of the outline).
+std::size_t classifyLayerTets(const RegionModel& body, const std::vector<std::int32_t>& parent,
+                              const detail::Particles& ps, const std::vector<Tet>& tets,
+                              std::vector<std::int32_t>& region) {
+    if (body.surfaces.size() < 2)
+        return 0;
+    std::size_t changed = 0;
+    for (std::size_t t = 0; t < tets.size(); ++t) {
+        if (region[t] < 0)
+            continue;
+        std::int32_t lo = std::numeric_limits<std::int32_t>::max(), hi = -1;
+        bool boundaryOnly = true;
+        for (auto v : tets[t]) {
+            const auto i = static_cast<std::size_t>(v);
+            boundaryOnly = boundaryOnly && ps.kind[i] != detail::ParticleKind::Inner;
+            lo = std::min(lo, ps.surface[i]);
+            hi = std::max(hi, ps.surface[i]);
+        }
+        if (!boundaryOnly || lo == hi || parent[static_cast<std::size_t>(hi)] != lo)
+            continue;
+        bool twoSurfaces = true;
+        for (auto v : tets[t])
+            twoSurfaces = twoSurfaces && (ps.surface[static_cast<std::size_t>(v)] == lo ||
+                                          ps.surface[static_cast<std::size_t>(v)] == hi);
+        const std::int32_t layer = body.surfaces[static_cast<std::size_t>(lo)].regionId;
+        if (!twoSurfaces || layer == RegionModel::kVoidRegion || region[t] == layer)
+            continue;
+        region[t] = layer;
+        ++changed;
+    }
+    return changed;
+}
+
+/// Tets whose inner particles lie in different regions, or that join an inner particle to a surface that does not
+/// bound its region, cross an interface (Delaunay did not recover it there):
 /// adds an interface particle where the segment between two such particles meets the nearest nested surface, unless
 /// a particle is already close. Returns how many were added; the caller tetrahedralizes again.
 std::size_t addInterfaceParticles(const detail::DelaunayOutput& dt, const RegionModel& body,
@@ -155,13 +205,30 @@ std::size_t addInterfaceParticles(const detail::DelaunayOutput& dt, const Region
                                   detail::Particles& ps) {
     if (body.surfaces.size() < 2)
         return 0;
+    const std::vector<std::int32_t> parent = detail::parentSurfaces(body);
+    // An inner particle of region r and a particle on surface s: the edge crosses an interface unless s bounds r
+    // (s is r's surface or nested directly in it). In a layer thinner than one edge Delaunay joins the outline's
+    // particles to the pathology's inner particles through the pathology's surface.
+    auto bounds = [&](std::int32_t r, std::int32_t s) {
+        const auto su = static_cast<std::size_t>(s);
+        return body.surfaces[su].regionId == r ||
+               (parent[su] >= 0 && body.surfaces[static_cast<std::size_t>(parent[su])].regionId == r);
+    };
+    auto crosses = [&](std::uint32_t a, std::uint32_t b) {
+        const bool innerA = ps.kind[a] == detail::ParticleKind::Inner,
+                   innerB = ps.kind[b] == detail::ParticleKind::Inner;
+        if (innerA && innerB)
+            return ps.region[a] != ps.region[b];
+        if (innerA != innerB)
+            return innerA ? !bounds(ps.region[a], ps.surface[b]) : !bounds(ps.region[b], ps.surface[a]);
+        return false;
+    };
     std::vector<std::pair<std::uint32_t, std::uint32_t>> crossing;
     for (const Tet& t : dt.tets)
         for (std::size_t i = 0; i < 4; ++i)
             for (std::size_t j = i + 1; j < 4; ++j) {
                 const auto a = static_cast<std::uint32_t>(t[i]), b = static_cast<std::uint32_t>(t[j]);
-                if (ps.kind[a] == detail::ParticleKind::Inner && ps.kind[b] == detail::ParticleKind::Inner &&
-                    ps.region[a] != ps.region[b])
+                if (crosses(a, b))
                     crossing.emplace_back(std::min(a, b), std::max(a, b));
             }
     std::sort(crossing.begin(), crossing.end());
@@ -201,7 +268,7 @@ std::size_t addInterfaceParticles(const detail::DelaunayOutput& dt, const Region
         std::size_t bestSurface = 0;
         double bestD = 1e300;
         for (std::size_t s = 1; s < body.surfaces.size(); ++s) {
-            const detail::SurfaceHit hit = locator.surfaceGrid(s).closest(mid);
+            const detail::SurfaceHit hit = locator.surfaceGrid(s).closestWithin(mid, bestD);
             if (hit.triangle >= 0 && hit.closest.distance2 < bestD) {
                 bestD = hit.closest.distance2;
                 best = hit;
@@ -528,7 +595,9 @@ Result<ParticleMeshResult> meshParticles(const RegionModel& input, const Particl
     {
         ScopedStepTimer timer(timings, "clean");
         region = classifyTets(particles.position, locator, threads, dt.tets);
-        const std::size_t peeled = peelBoundarySlivers(particles.position, particles, dt, region);
+        const std::size_t layerTets = classifyLayerTets(body, detail::parentSurfaces(body), particles, dt.tets, region);
+        timings.step("clean").counts.emplace_back("layerTets", static_cast<std::int64_t>(layerTets));
+        const std::size_t peeled = peelBoundarySlivers(body, particles.position, particles, dt, region);
         timings.step("clean").counts.emplace_back("peeled", static_cast<std::int64_t>(peeled));
     }
     std::vector<Tet> tets = std::move(dt.tets);
@@ -539,6 +608,16 @@ Result<ParticleMeshResult> meshParticles(const RegionModel& input, const Particl
         if (!improved.ok())
             return improved.failure();
         recordImprovement(*improved, timings.step("improve"));
+    }
+    {
+        ScopedStepTimer timer(timings, "interfaceVolume");
+        const detail::InterfaceVolumeStats stats =
+            detail::matchInterfaceVolumes(body, adjacency, particles, tets, region, kImproveDihedralDeg);
+        auto& counts = timings.step("interfaceVolume").counts;
+        counts.emplace_back("surfaces", static_cast<std::int64_t>(stats.surfaces));
+        counts.emplace_back("movedVertices", static_cast<std::int64_t>(stats.movedVertices));
+        counts.emplace_back("keptVertices", static_cast<std::int64_t>(stats.keptVertices));
+        counts.emplace_back("largestOffsetMicrometres", std::lround(stats.largestOffset * 1000.0));
     }
     {
         ScopedStepTimer timer(timings, "assemble");

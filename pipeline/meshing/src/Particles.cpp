@@ -15,10 +15,18 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 // Seeding radii, in target edge lengths: a candidate closer than this to an accepted particle is dropped.
-constexpr double kFeatureRadius = 0.8;     ///< features against corners and features
-constexpr double kSurfaceRadius = 0.75;    ///< surface candidates against everything accepted before
+constexpr double kFeatureRadius = 0.8;  ///< features against corners and features
+constexpr double kSurfaceRadius = 0.75; ///< surface candidates against accepted particles of their own sheet
+/// Surface candidates against accepted particles of other sheets (other surfaces, the far side of a slit). Much
+/// smaller than kSurfaceRadius: where two nested surfaces come closer than one edge (the 0.8 mm cover over a
+/// pathology at a 2 mm edge), each keeps its own particles, so the layer between them is resolved instead of the
+/// later surface losing its particles there.
+constexpr double kCrossSurfaceRadius = 0.25;
 constexpr double kInnerRadius = 0.6;       ///< inner candidates against surface, feature and corner particles
 constexpr double kRandomInnerRadius = 0.5; ///< Seeding::Random: inner candidates against everything
+/// Two boundary particles of one surface whose normals differ by more (cosine below this) lie on opposite sides
+/// of a slit: different sheets.
+constexpr double kSheetCos = -0.5;
 constexpr int kSurfaceCandidatesPerVoxel = 3;
 
 // Relaxation schedule (Sierra et al.: the motility shrinks every iteration).
@@ -106,6 +114,17 @@ struct NeighbourGrid {
     }
 };
 
+/// Whether boundary particle u lies on the same sheet as a point of surface s with normal n: the same surface, with
+/// normals less than about 120 degrees apart. Opposite sides of a slit or of a layer thinner than one edge (the
+/// uterine cavity, the cover over a pathology) are different sheets and must keep their own particles.
+bool sameSheet(const Particles& ps, const std::vector<SurfaceAdjacency>& adjacency, std::size_t u, std::int32_t s,
+               const Vec3& n) {
+    if (ps.surface[u] != s)
+        return false;
+    const Vec3& nu = adjacency[static_cast<std::size_t>(s)].faceNormals[static_cast<std::size_t>(ps.triangle[u])];
+    return dot(nu, n) > kSheetCos;
+}
+
 /// Accepted particles hashed by voxel (head/next lists) for the seeding radius checks.
 struct AcceptedIndex {
     const VoxelGrid<std::int32_t>* grid = nullptr;
@@ -126,6 +145,28 @@ struct AcceptedIndex {
                     for (std::int32_t i = head[grid->linear(nb)]; i >= 0; i = next[static_cast<std::size_t>(i)])
                         if (norm2(ps.position[static_cast<std::size_t>(i)] - p) < r2)
                             return true;
+                }
+        return false;
+    }
+    /// True when an accepted particle of the same sheet (surface `s`, normal `n` within kSheetCos) lies closer than
+    /// `sameRadius`, or any other one closer than `otherRadius`.
+    bool nearOnSheet(const Particles& ps, const std::vector<SurfaceAdjacency>& adjacency, const Vec3& p, std::int32_t s,
+                     const Vec3& n, double sameRadius, double otherRadius) const {
+        const Index3 c = grid->voxelOf(p);
+        const double same2 = sameRadius * sameRadius, other2 = otherRadius * otherRadius;
+        const auto reach = static_cast<std::int64_t>(std::ceil(std::max(sameRadius, otherRadius) / grid->spacing()));
+        for (std::int64_t dk = -reach; dk <= reach; ++dk)
+            for (std::int64_t dj = -reach; dj <= reach; ++dj)
+                for (std::int64_t di = -reach; di <= reach; ++di) {
+                    const Index3 nb{c[0] + di, c[1] + dj, c[2] + dk};
+                    if (!grid->contains(nb))
+                        continue;
+                    for (std::int32_t i = head[grid->linear(nb)]; i >= 0; i = next[static_cast<std::size_t>(i)]) {
+                        const auto u = static_cast<std::size_t>(i);
+                        const double d2 = norm2(ps.position[u] - p);
+                        if (d2 < other2 || (d2 < same2 && sameSheet(ps, adjacency, u, s, n)))
+                            return true;
+                    }
                 }
         return false;
     }
@@ -221,7 +262,9 @@ void seedSurface(const SeedingInput& in, std::size_t s, const Rng& base, Particl
                     bestTri = sv.triangles[it];
                 }
             }
-            if (bestTri >= 0 && !index.near(ps, best.point, kSurfaceRadius * in.edge))
+            if (bestTri >= 0 && !index.nearOnSheet(ps, *in.adjacency, best.point, si,
+                                                   (*in.adjacency)[s].faceNormals[static_cast<std::size_t>(bestTri)],
+                                                   kSurfaceRadius * in.edge, kCrossSurfaceRadius * in.edge))
                 index.add(ps, best.point, ParticleKind::Surface, si, bestTri, -1);
         }
     }
@@ -405,6 +448,11 @@ Result<RelaxationStats> relaxParticles(Particles& ps, const RegionModel& body, c
             double energy = 0.0, maxMove = 0.0;
             for (std::size_t i = begin; i < end; ++i) {
                 const Vec3 xi = ps.position[i];
+                const std::int32_t si = ps.surface[i];
+                const Vec3 normalI =
+                    si >= 0
+                        ? adjacency[static_cast<std::size_t>(si)].faceNormals[static_cast<std::size_t>(ps.triangle[i])]
+                        : Vec3{};
                 Vec3 force;
                 std::int64_t cc[3];
                 for (int q = 0; q < 3; ++q)
@@ -421,7 +469,10 @@ Result<RelaxationStats> relaxParticles(Particles& ps, const RegionModel& body, c
                                 .start[static_cast<std::size_t>(row + std::min(cc[0] + 1, neighbours.dims[0] - 1)) + 1];
                         for (std::uint32_t m = b; m < e; ++m) {
                             const std::uint32_t jdx = neighbours.items[m];
-                            if (jdx == i)
+                            // Boundary particles of two different sheets do not interact: across a layer or slit
+                            // thinner than one edge they would thin each other out (see kCrossSurfaceRadius).
+                            if (jdx == i ||
+                                (si >= 0 && ps.surface[jdx] >= 0 && !sameSheet(ps, adjacency, jdx, si, normalI)))
                                 continue;
                             const Vec3 dx = xi - ps.position[jdx];
                             const double d2 = norm2(dx) * invR02;

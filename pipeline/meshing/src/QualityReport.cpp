@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 
@@ -106,16 +107,29 @@ std::vector<Vec3> samplePoints(const SurfaceMesh& mesh) {
     return samples;
 }
 
-/// Largest distance from `samples` to the nearest of `targets`.
+/// Largest distance from `samples` to the nearest of `targets`. Exact, but bounded: the grids are searched nearest
+/// box first, each only for triangles closer than the best so far, and a sample stops as soon as it is within the
+/// largest distance found so far (it cannot raise the maximum). A multi-region body has a small grid per pathology;
+/// searched without a bound, a far-away grid was scanned cell by cell for every sample (18 of 21 s of the merged-body
+/// test).
 double oneSidedDistance(const std::vector<Vec3>& samples, const std::vector<const detail::TriangleGrid*>& targets,
                         int threads) {
     std::vector<double> partial(detail::chunkCount(samples.size(), kChunk), 0.0);
     detail::parallelChunks(samples.size(), kChunk, threads, [&](std::size_t c, std::size_t begin, std::size_t end) {
         double worst = 0.0;
+        std::vector<std::pair<double, std::size_t>> order(targets.size());
         for (std::size_t i = begin; i < end; ++i) {
-            double best = 1e300;
-            for (const auto* grid : targets)
-                best = std::min(best, grid->closest(samples[i]).closest.distance2);
+            for (std::size_t g = 0; g < targets.size(); ++g)
+                order[g] = {targets[g]->boxDistance2(samples[i]), g};
+            std::sort(order.begin(), order.end());
+            double best = std::numeric_limits<double>::infinity();
+            for (const auto& [box2, g] : order) {
+                if (!(box2 < best) || best <= worst)
+                    break;
+                const detail::SurfaceHit hit = targets[g]->closestWithin(samples[i], best);
+                if (hit.triangle >= 0)
+                    best = std::min(best, hit.closest.distance2);
+            }
             worst = std::max(worst, best);
         }
         partial[c] = worst;

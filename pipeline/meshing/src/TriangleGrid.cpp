@@ -100,27 +100,39 @@ TriangleGrid::TriangleGrid(const SurfaceMesh& mesh, double cellSize) : m_mesh(&m
     }
 }
 
-SurfaceHit TriangleGrid::closest(const Vec3& p) const {
-    SurfaceHit best;
-    best.closest.distance2 = std::numeric_limits<double>::infinity();
-    const SurfaceMesh& mesh = *m_mesh;
-    std::int64_t c[3];
-    for (int q = 0; q < 3; ++q)
-        c[q] = std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor((p[q] - m_origin[q]) / m_cell)), 0,
-                                        m_dims[q] - 1);
-    // Distance from p to the grid box (p may lie outside it).
+double TriangleGrid::boxDistance2(const Vec3& p) const {
     double outside2 = 0.0;
     for (int q = 0; q < 3; ++q) {
         const double lo = m_origin[q], hi = m_origin[q] + double(m_dims[q]) * m_cell;
         const double d = p[q] < lo ? lo - p[q] : (p[q] > hi ? p[q] - hi : 0.0);
         outside2 += d * d;
     }
+    return outside2;
+}
+
+SurfaceHit TriangleGrid::closest(const Vec3& p) const {
+    return closestWithin(p, std::numeric_limits<double>::infinity());
+}
+
+SurfaceHit TriangleGrid::closestWithin(const Vec3& p, double maxDistance2) const {
+    SurfaceHit best;
+    best.closest.distance2 = std::numeric_limits<double>::infinity();
+    const SurfaceMesh& mesh = *m_mesh;
+    // Distance from p to the grid box (p may lie outside it).
+    const double outside2 = boxDistance2(p);
+    if (!(outside2 < maxDistance2))
+        return best;
+    std::int64_t c[3];
+    for (int q = 0; q < 3; ++q)
+        c[q] = std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor((p[q] - m_origin[q]) / m_cell)), 0,
+                                        m_dims[q] - 1);
     const std::int64_t maxRing = std::max({m_dims[0], m_dims[1], m_dims[2]});
     for (std::int64_t ring = 0; ring <= maxRing; ++ring) {
         // Every point in ring r+1 or further is at least r * cell away from p's cell boundary.
         if (ring > 0) {
             const double reach = double(ring - 1) * m_cell;
-            if (best.closest.distance2 < reach * reach + outside2 && best.triangle >= 0)
+            const double lowerBound = reach * reach + outside2;
+            if ((best.closest.distance2 < lowerBound && best.triangle >= 0) || !(lowerBound < maxDistance2))
                 break;
         }
         for (std::int64_t k = c[2] - ring; k <= c[2] + ring; ++k) {
@@ -153,6 +165,8 @@ SurfaceHit TriangleGrid::closest(const Vec3& p) const {
             }
         }
     }
+    if (!(best.closest.distance2 < maxDistance2))
+        return SurfaceHit{};
     return best;
 }
 

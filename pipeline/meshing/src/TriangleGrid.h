@@ -21,6 +21,11 @@ public:
 
     /// The closest triangle to p (exact: rings are searched until no cell can hold a closer point).
     SurfaceHit closest(const Vec3& p) const;
+    /// The closest triangle to p if it lies closer than sqrt(maxDistance2), else no hit (triangle -1). Cells that
+    /// cannot hold a closer point are not searched, so a far-away grid costs one box test.
+    SurfaceHit closestWithin(const Vec3& p, double maxDistance2) const;
+    /// Squared distance from p to the grid's box (0 inside): a lower bound of every distance to the surface.
+    double boxDistance2(const Vec3& p) const;
     /// Signed distance-side test with angle-weighted pseudo-normals (Baerentzen & Aanaes 2005): true when p lies
     /// inside the outward-oriented closed surface.
     bool inside(const Vec3& p) const;

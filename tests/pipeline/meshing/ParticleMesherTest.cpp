@@ -77,6 +77,22 @@ TEST(VoxelSpace, LabelsASphereByDistanceFromItsCentre) {
     }
 }
 
+TEST(VoxelSpace, LabelsAnEnclosedCavityOfTheSurfaceAsOutside) {
+    // One surface of two components, a sphere of 10 mm and an inverted one of 5 mm inside it: the cavity is outside
+    // the surface but the growth from the grid border cannot reach it (like the uterine cavity behind a cervical
+    // canal narrower than a voxel); the winding number tells.
+    SurfaceMesh shell = test::icosphere(10.0, 3);
+    const SurfaceMesh cavity = test::icosphere(5.0, 3);
+    const auto offset = static_cast<std::int32_t>(shell.points.size());
+    shell.points.insert(shell.points.end(), cavity.points.begin(), cavity.points.end());
+    for (const Triangle& t : cavity.triangles)
+        shell.triangles.push_back({t[0] + offset, t[2] + offset, t[1] + offset});
+    auto space = buildVoxelSpace(RegionModel::fromSurfaces({shell}), 1.0);
+    ASSERT_TRUE(space.ok()) << space.error().message();
+    EXPECT_EQ(space->region.at(space->region.voxelOf({0.1, 0.1, 0.1})), VoxelSpace::kOutside);
+    EXPECT_EQ(space->region.at(space->region.voxelOf({7.6, 0.1, 0.1})), 0);
+}
+
 TEST(ParticleMesher, MeshesASphereWithGoodTetsAndItsVolume) {
     auto result = meshParticles(sphereBody(), smallParams());
     ASSERT_TRUE(result.ok()) << result.error().message();
@@ -162,6 +178,36 @@ TEST(ParticleMesher, GivesEachRegionOfANestedModelItsOwnTets) {
     for (std::size_t f = 0; f < faces.triangles.size(); ++f)
         interfaceFaces += faces.faceLabels.at("otherRegion")[f] == 1;
     EXPECT_GT(interfaceFaces, 100u);
+}
+
+TEST(ParticleMesher, KeepsALayerThinnerThanOneEdgeBetweenNestedSurfaces) {
+    // A sphere of 6 mm 0.8 mm under the surface of one of 20 mm, meshed at a 2 mm edge, like a pathology under the
+    // cover the merge drapes over it: both surfaces keep their particles, so the wall stays between the pathology
+    // and the outside, each region keeps its volume and there are no slivers; nor does the result depend on the
+    // thread count.
+    const RegionModel body = RegionModel::fromSurfaces(
+        {test::icosphere(20.0, 4), test::icosphere(6.0, 4, {13.2, 0.0, 0.0})}, {"wall", "pathology"});
+    MeshParams p = smallParams(2.0);
+    p.threads = 1;
+    auto one = meshParticles(body, p);
+    ASSERT_TRUE(one.ok()) << one.error().message();
+    const QualityReport& q = one->quality;
+    EXPECT_EQ(q.sliverCount, 0u);
+    EXPECT_GE(q.minDihedralDeg, 15.0);
+    EXPECT_EQ(q.invertedCount, 0u);
+    ASSERT_EQ(q.regions.size(), 2u);
+    for (const RegionVolume& r : q.regions)
+        EXPECT_LE(r.relativeError, 0.02) << "region " << r.regionId;
+    const SurfaceMesh faces = extractBoundary(one->mesh, true);
+    std::size_t exposed = 0;
+    for (std::size_t f = 0; f < faces.triangles.size(); ++f)
+        exposed += faces.faceLabels.at("region")[f] == 1 && faces.faceLabels.at("otherRegion")[f] < 0;
+    EXPECT_EQ(exposed, 0u) << "the pathology reaches the outside through the shell";
+    p.threads = 2;
+    auto two = meshParticles(body, p);
+    ASSERT_TRUE(two.ok());
+    EXPECT_EQ(one->mesh.points, two->mesh.points);
+    EXPECT_EQ(one->mesh.tets, two->mesh.tets);
 }
 
 TEST(ParticleMesher, WritesByteIdenticalFilesForOneAndTwoThreads) {
