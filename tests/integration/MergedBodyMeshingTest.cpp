@@ -8,8 +8,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
+#include <map>
+#include <utility>
 
 namespace hs {
 namespace {
@@ -25,6 +29,30 @@ constexpr double kEdgeMm = 2.0;
 constexpr double kVolumeBar = 0.02;
 /// The bar on tet shape: no dihedral angle below 15 degrees (so no sliver, < 10 degrees, either).
 constexpr double kMinDihedralBarDeg = 15.0;
+
+/// Boundary edges shared by more than two boundary faces (two parts of the body touching along an edge): a simulator
+/// extracting the surface needs none.
+std::size_t pinchedBoundaryEdges(const TetMesh& mesh) {
+    std::map<std::array<std::int32_t, 3>, int> faces;
+    for (const Tet& t : mesh.tets)
+        for (int skip = 0; skip < 4; ++skip) {
+            std::array<std::int32_t, 3> f{};
+            for (int k = 0, n = 0; k < 4; ++k)
+                if (k != skip)
+                    f[static_cast<std::size_t>(n++)] = t[static_cast<std::size_t>(k)];
+            std::sort(f.begin(), f.end());
+            ++faces[f];
+        }
+    std::map<std::pair<std::int32_t, std::int32_t>, int> edges;
+    for (const auto& [f, n] : faces)
+        if (n == 1) {
+            ++edges[{f[0], f[1]}];
+            ++edges[{f[0], f[2]}];
+            ++edges[{f[1], f[2]}];
+        }
+    return static_cast<std::size_t>(
+        std::count_if(edges.begin(), edges.end(), [](const auto& e) { return e.second > 2; }));
+}
 
 double secondsSince(const std::chrono::steady_clock::time_point& start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -59,8 +87,12 @@ TEST(MergedBodyMeshing, MeshesOneMyomaPerModelAndAPolypWithEveryRegionAndItsVolu
                 "Hausdorff %.3f mm (%.3f %%); grow + merge %.2f s, mesh %.2f s\n",
                 kEdgeMm, q.vertexCount, q.tetCount, q.minDihedralDeg, meshing::kSliverDihedralDeg, q.sliverCount,
                 q.invertedCount, q.hausdorffDistance, 100.0 * q.hausdorffRelative, mergeSeconds, meshSeconds);
-    for (const StepTiming& step : meshed->timings.steps)
-        std::printf("  mesh step %-14s %6.2f s\n", step.name.c_str(), step.seconds);
+    for (const StepTiming& step : meshed->timings.steps) {
+        std::printf("  mesh step %-14s %6.2f s", step.name.c_str(), step.seconds);
+        for (const auto& [what, n] : step.counts)
+            std::printf(" %s %lld", what.c_str(), static_cast<long long>(n));
+        std::printf("\n");
+    }
     for (const meshing::RegionVolume& r : q.regions)
         std::printf("  region %d: mesh %8.1f mm^3, input %8.1f mm^3, error %5.2f %%%s\n", r.regionId, r.meshVolume,
                     r.inputVolume, 100.0 * r.relativeError, r.relativeError > kVolumeBar ? " (above the 2 % bar)" : "");
@@ -69,6 +101,7 @@ TEST(MergedBodyMeshing, MeshesOneMyomaPerModelAndAPolypWithEveryRegionAndItsVolu
     EXPECT_EQ(q.degenerateCount, 0u);
     EXPECT_EQ(q.sliverCount, 0u);
     EXPECT_GE(q.minDihedralDeg, kMinDihedralBarDeg);
+    EXPECT_EQ(pinchedBoundaryEdges(meshed->mesh), 0u);
     ASSERT_EQ(q.regions.size(), merged->body.surfaces.size()); // the wall and one region per pathology
     for (std::size_t i = 0; i < q.regions.size(); ++i) {
         const meshing::RegionVolume& r = q.regions[i];

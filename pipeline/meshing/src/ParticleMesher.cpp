@@ -5,6 +5,7 @@
 #include "MeshImprove.h"
 #include "Parallel.h"
 #include "Particles.h"
+#include "Pinches.h"
 #include "TriangleGrid.h"
 #include "hs/core/Rng.h"
 #include "hs/meshing/Geometry.h"
@@ -618,6 +619,19 @@ Result<ParticleMeshResult> meshParticles(const RegionModel& input, const Particl
         counts.emplace_back("movedVertices", static_cast<std::int64_t>(stats.movedVertices));
         counts.emplace_back("keptVertices", static_cast<std::int64_t>(stats.keptVertices));
         counts.emplace_back("largestOffsetMicrometres", std::lround(stats.largestOffset * 1000.0));
+    }
+    {
+        // After the flips and the interface offsets, so that what the simulator gets has a manifold boundary.
+        ScopedStepTimer timer(timings, "pinches");
+        const detail::PinchStats stats = detail::openPinches(tets, region, body.surfaces.front().regionId);
+        auto& counts = timings.step("pinches").counts;
+        counts.emplace_back("pinches", static_cast<std::int64_t>(stats.pinchedBefore));
+        counts.emplace_back("removedTets", static_cast<std::int64_t>(stats.removedTets));
+        counts.emplace_back("pinchesLeft", static_cast<std::int64_t>(stats.pinchedAfter));
+        if (stats.pinchedAfter > 0)
+            result.warnings.push_back(
+                std::to_string(stats.pinchedAfter) +
+                " pinched boundary edges or vertices are left (two parts of the body touch there)");
     }
     {
         ScopedStepTimer timer(timings, "assemble");

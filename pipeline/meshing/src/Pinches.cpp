@@ -1,0 +1,220 @@
+#include "Pinches.h"
+
+#include <algorithm>
+#include <array>
+#include <numeric>
+#include <utility>
+
+namespace hs::meshing::detail {
+namespace {
+
+using Face = std::array<std::int32_t, 3>;
+using Edge = std::pair<std::int32_t, std::int32_t>;
+
+Face sortedFace(std::int32_t a, std::int32_t b, std::int32_t c) {
+    Face f{a, b, c};
+    std::sort(f.begin(), f.end());
+    return f;
+}
+
+/// Faces of the kept tets with the tets on their sides (second -1 on the boundary), sorted by face.
+struct FaceTable {
+    std::vector<std::pair<Face, std::int64_t>> entries; ///< (face, tet), sorted
+    explicit FaceTable(const std::vector<Tet>& tets, const std::vector<std::int32_t>& region) {
+        for (std::size_t t = 0; t < tets.size(); ++t) {
+            if (region[t] < 0)
+                continue;
+            const Tet& k = tets[t];
+            const auto id = static_cast<std::int64_t>(t);
+            entries.emplace_back(sortedFace(k[1], k[2], k[3]), id);
+            entries.emplace_back(sortedFace(k[0], k[2], k[3]), id);
+            entries.emplace_back(sortedFace(k[0], k[1], k[3]), id);
+            entries.emplace_back(sortedFace(k[0], k[1], k[2]), id);
+        }
+        std::sort(entries.begin(), entries.end());
+    }
+    /// The tet across `face` from tet `t`, -1 when the face is on the boundary.
+    std::int64_t across(const Face& face, std::int64_t t) const {
+        auto it = std::lower_bound(entries.begin(), entries.end(), std::make_pair(face, std::int64_t{-1}));
+        for (; it != entries.end() && it->first == face; ++it)
+            if (it->second != t)
+                return it->second;
+        return -1;
+    }
+};
+
+std::vector<Edge> pinchedEdges(const FaceTable& faces) {
+    std::vector<Edge> edges;
+    const auto& e = faces.entries;
+    for (std::size_t i = 0; i < e.size();) {
+        std::size_t j = i + 1;
+        while (j < e.size() && e[j].first == e[i].first)
+            ++j;
+        if (j - i == 1) { // a boundary face
+            const Face& f = e[i].first;
+            edges.emplace_back(f[0], f[1]);
+            edges.emplace_back(f[0], f[2]);
+            edges.emplace_back(f[1], f[2]);
+        }
+        i = j;
+    }
+    std::sort(edges.begin(), edges.end());
+    std::vector<Edge> pinched;
+    for (std::size_t i = 0; i < edges.size();) {
+        std::size_t j = i + 1;
+        while (j < edges.size() && edges[j] == edges[i])
+            ++j;
+        if (j - i > 2)
+            pinched.push_back(edges[i]);
+        i = j;
+    }
+    return pinched;
+}
+
+std::int64_t findRoot(std::vector<std::int64_t>& parent, std::int64_t x) {
+    while (parent[static_cast<std::size_t>(x)] != x) {
+        parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+        x = parent[static_cast<std::size_t>(x)];
+    }
+    return x;
+}
+
+/// The fans of tets around a simplex (an edge or a vertex): the tets of `ring` (all containing the simplex) joined
+/// across shared faces (which then contain the simplex too).
+std::vector<std::vector<std::int64_t>> fansOf(const std::vector<Tet>& tets, const std::vector<std::int64_t>& ring) {
+    std::vector<std::int64_t> parent(ring.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    for (std::size_t i = 0; i < ring.size(); ++i)
+        for (std::size_t j = i + 1; j < ring.size(); ++j) {
+            const Tet& u = tets[static_cast<std::size_t>(ring[i])];
+            const Tet& w = tets[static_cast<std::size_t>(ring[j])];
+            int shared = 0;
+            for (std::int32_t x : u)
+                shared += std::find(w.begin(), w.end(), x) != w.end() ? 1 : 0;
+            if (shared == 3)
+                parent[static_cast<std::size_t>(findRoot(parent, static_cast<std::int64_t>(i)))] =
+                    findRoot(parent, static_cast<std::int64_t>(j));
+        }
+    std::vector<std::vector<std::int64_t>> fans;
+    std::vector<std::int64_t> rootOf;
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+        const std::int64_t r = findRoot(parent, static_cast<std::int64_t>(i));
+        const auto it = std::find(rootOf.begin(), rootOf.end(), r);
+        const auto k = static_cast<std::size_t>(it - rootOf.begin());
+        if (it == rootOf.end()) {
+            rootOf.push_back(r);
+            fans.emplace_back();
+        }
+        fans[k].push_back(ring[i]);
+    }
+    return fans;
+}
+
+/// A pinch: an edge (a < b) or a vertex (b = -1).
+using Pinch = std::pair<std::int32_t, std::int32_t>;
+
+/// Pinched edges and vertices of the kept tets: boundary edges with more than two boundary faces, and boundary
+/// vertices whose tets form more than one fan. `rings` gets the tets around each.
+std::vector<Pinch> findPinches(const std::vector<Tet>& tets, const std::vector<std::int32_t>& region,
+                               const FaceTable& faces, std::vector<std::vector<std::int64_t>>& rings) {
+    std::vector<std::pair<std::int32_t, std::int64_t>> incidence; // (vertex, tet), sorted
+    for (std::size_t t = 0; t < tets.size(); ++t)
+        if (region[t] >= 0)
+            for (std::int32_t v : tets[t])
+                incidence.emplace_back(v, static_cast<std::int64_t>(t));
+    std::sort(incidence.begin(), incidence.end());
+    auto tetsAround = [&](std::int32_t a, std::int32_t b) {
+        std::vector<std::int64_t> ring;
+        auto it = std::lower_bound(incidence.begin(), incidence.end(), std::make_pair(a, std::int64_t{-1}));
+        for (; it != incidence.end() && it->first == a; ++it) {
+            const Tet& k = tets[static_cast<std::size_t>(it->second)];
+            if (b < 0 || std::find(k.begin(), k.end(), b) != k.end())
+                ring.push_back(it->second);
+        }
+        return ring;
+    };
+    std::vector<Pinch> pinches;
+    rings.clear();
+    for (const Edge& e : pinchedEdges(faces)) {
+        pinches.push_back(e);
+        rings.push_back(tetsAround(e.first, e.second));
+    }
+    std::vector<std::int32_t> boundaryVertices;
+    const auto& entries = faces.entries;
+    for (std::size_t i = 0; i < entries.size();) {
+        std::size_t j = i + 1;
+        while (j < entries.size() && entries[j].first == entries[i].first)
+            ++j;
+        if (j - i == 1)
+            boundaryVertices.insert(boundaryVertices.end(), entries[i].first.begin(), entries[i].first.end());
+        i = j;
+    }
+    std::sort(boundaryVertices.begin(), boundaryVertices.end());
+    boundaryVertices.erase(std::unique(boundaryVertices.begin(), boundaryVertices.end()), boundaryVertices.end());
+    for (std::int32_t v : boundaryVertices) {
+        std::vector<std::int64_t> ring = tetsAround(v, -1);
+        if (fansOf(tets, ring).size() > 1) {
+            pinches.emplace_back(v, -1);
+            rings.push_back(std::move(ring));
+        }
+    }
+    return pinches;
+}
+
+} // namespace
+
+PinchStats openPinches(const std::vector<Tet>& tets, std::vector<std::int32_t>& region, std::int32_t outerRegion) {
+    PinchStats stats;
+    std::vector<std::vector<std::int64_t>> rings;
+    for (int pass = 0; pass < 8; ++pass) {
+        const FaceTable faces(tets, region);
+        const std::vector<Pinch> pinches = findPinches(tets, region, faces, rings);
+        if (pass == 0)
+            stats.pinchedBefore = pinches.size();
+        if (pinches.empty())
+            break;
+        bool removedAny = false;
+        for (std::size_t p = 0; p < pinches.size(); ++p) {
+            std::vector<std::int64_t>& ring = rings[p];
+            ring.erase(std::remove_if(ring.begin(), ring.end(),
+                                      [&](std::int64_t t) { return region[static_cast<std::size_t>(t)] < 0; }),
+                       ring.end());
+            const auto fans = fansOf(tets, ring);
+            if (fans.size() < 2)
+                continue; // already opened by an earlier removal in this pass
+            auto removable = [&](const std::vector<std::int64_t>& fan) {
+                for (std::int64_t t : fan) {
+                    if (region[static_cast<std::size_t>(t)] != outerRegion)
+                        return false;
+                    const Tet& k = tets[static_cast<std::size_t>(t)];
+                    for (int f = 0; f < 4; ++f) {
+                        const Face face = sortedFace(k[static_cast<std::size_t>((f + 1) & 3)],
+                                                     k[static_cast<std::size_t>((f + 2) & 3)],
+                                                     k[static_cast<std::size_t>((f + 3) & 3)]);
+                        const std::int64_t nb = faces.across(face, t);
+                        if (nb >= 0 && region[static_cast<std::size_t>(nb)] >= 0 &&
+                            region[static_cast<std::size_t>(nb)] != outerRegion)
+                            return false;
+                    }
+                }
+                return true;
+            };
+            const std::vector<std::int64_t>* smallest = nullptr;
+            for (const auto& fan : fans)
+                if (removable(fan) && (smallest == nullptr || fan.size() < smallest->size()))
+                    smallest = &fan;
+            if (smallest == nullptr)
+                continue;
+            for (std::int64_t t : *smallest)
+                region[static_cast<std::size_t>(t)] = -1;
+            stats.removedTets += smallest->size();
+            removedAny = true;
+        }
+        if (!removedAny)
+            break;
+    }
+    stats.pinchedAfter = findPinches(tets, region, FaceTable(tets, region), rings).size();
+    return stats;
+}
+
+} // namespace hs::meshing::detail

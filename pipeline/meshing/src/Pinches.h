@@ -1,0 +1,26 @@
+#pragma once
+// Pinches of a tet mesh's boundary: two solid wedges that touch only along an edge (four boundary faces meet there)
+// or two cones that touch only at a vertex. A simulator's surface extraction, collision and cutting expect a
+// manifold boundary, so they are opened.
+
+#include "hs/core/TetMesh.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace hs::meshing::detail {
+
+struct PinchStats {
+    std::size_t pinchedBefore = 0; ///< pinched edges and vertices, before
+    std::size_t pinchedAfter = 0;  ///< left: every fan there touches another region
+    std::size_t removedTets = 0;
+};
+
+/// Opens every pinch (a boundary edge shared by more than two boundary faces, a boundary vertex whose tets form more
+/// than one fan) by removing the smallest fan of tets around it (tets joined across faces that contain the edge or
+/// vertex), taking only fans whose tets all belong to `outerRegion` and have no face against another region (so no
+/// interface becomes boundary). Removed tets get region -1; tets with a negative region are not part of the mesh.
+/// Repeats until no pinch is left or no fan can go (at most 8 passes). Deterministic: pinches in sorted order.
+PinchStats openPinches(const std::vector<Tet>& tets, std::vector<std::int32_t>& region, std::int32_t outerRegion);
+
+} // namespace hs::meshing::detail
