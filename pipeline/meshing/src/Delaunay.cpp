@@ -1,5 +1,7 @@
 #include "Delaunay.h"
 
+#include "MeshImprove.h"
+
 #include "hs/core/Rng.h"
 #include "hs/meshing/Geometry.h"
 
@@ -31,24 +33,8 @@ using VertexHandle = Delaunay::Vertex_handle;
 using CellHandle = Delaunay::Cell_handle;
 using Point = Kernel::Point_3;
 
-constexpr double kRadToDeg = 57.295779513082320876798;
-
 Vec3 toVec(const Point& p) {
     return {p.x(), p.y(), p.z()};
-}
-
-/// Smallest dihedral angle (degrees) of tet (a, b, c, d); negative when it is inverted or flat. One acos per tet.
-double minDihedral(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-    const Vec3 ab = b - a, ac = c - a, ad = d - a;
-    if (dot(ab, cross(ac, ad)) <= 0.0)
-        return -1.0;
-    const Vec3 n[4] = {normalized(cross(c - b, d - b)), normalized(cross(ad, ac)), normalized(cross(ab, ad)),
-                       normalized(cross(ac, ab))};
-    double worst = -1.0; // largest -cos(normal_i, normal_j) = cos(dihedral)
-    for (int i = 0; i < 4; ++i)
-        for (int j = i + 1; j < 4; ++j)
-            worst = std::max(worst, -dot(n[i], n[j]));
-    return std::acos(std::clamp(worst, -1.0, 1.0)) * kRadToDeg;
 }
 
 class SliverRepair {
@@ -74,8 +60,8 @@ public:
     double cellScore(CellHandle c) {
         if (m_dt.is_infinite(c))
             return 1e9;
-        const double q = minDihedral(toVec(c->vertex(0)->point()), toVec(c->vertex(1)->point()),
-                                     toVec(c->vertex(2)->point()), toVec(c->vertex(3)->point()));
+        const double q = minDihedralDeg(toVec(c->vertex(0)->point()), toVec(c->vertex(1)->point()),
+                                        toVec(c->vertex(2)->point()), toVec(c->vertex(3)->point()));
         if (q >= m_params.minDihedralDeg || !kept(c))
             return std::max(q, m_params.minDihedralDeg);
         return q;
@@ -122,7 +108,7 @@ public:
         auto linkScore = [&](const Vec3& p) {
             double worst = 1e9;
             for (const auto& f : m_link)
-                worst = std::min(worst, minDihedral(p, f[0], f[1], f[2]));
+                worst = std::min(worst, minDihedralDeg(p, f[0], f[1], f[2]));
             return worst;
         };
         Rng rng = Rng(m_params.seed).derive((std::uint64_t(id) << 8) ^ std::uint64_t(round));
