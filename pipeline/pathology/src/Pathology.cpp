@@ -73,6 +73,7 @@ namespace {
 using namespace detail;
 
 constexpr double kSinkMm = 1.5;           ///< a stalk's root lies this deep in the wall
+constexpr double kOpenKeep = 0.5;         ///< the far wall's serosa moves by this fraction less than its endometrium
 constexpr double kOpenStretch = 1.0;      ///< the far wall's window ramp widens by this fraction of its push
 constexpr double kMaxSizeToCorpus = 1.25; ///< largest myoma against the smallest corpus dimension
 constexpr double kMaxPolypToCavity = 0.8; ///< largest polyp head against the cavity length
@@ -566,14 +567,27 @@ struct Push {
     /// Axial solve: only points this close to the axis drive the amount (0: all); the far wall in front of the
     /// pathology, not the side walls that the radial push moves.
     double solveWithin = 0.0;
+    /// Axial: a dome instead of a plateau across the axis, the motion falling off smoothly from the axis itself
+    /// (so the pocket it opens is rounded, not a box with flat faces and sharp corners). Any profile across the
+    /// axis keeps the map injective: it is constant along each line along n.
+    bool dome = false;
+    /// Axial: beyond this height (mm, 0: never) the motion falls back to 1 - keep, over a ramp of at least 2 keep
+    /// amount (so the slope along n stays below 0.75 / amount and lines along n still map monotonically): the far
+    /// wall moves away with the cavity, its serosa less.
+    double keepFrom = 0.0, keep = 0.0;
     Vec3 upDir() const { return norm(up) > 0.0 ? up : n; }
+    double beyond(double height) const {
+        if (keepFrom <= 0.0 || keep <= 0.0)
+            return 1.0;
+        return 1.0 - keep * smoothstep(keepFrom, keepFrom + std::max(windowRamp, 2.0 * keep * amount), height);
+    }
     double fall() const { return radial ? std::max(windowRamp, 2.5 * amount) : std::max(windowRamp, stretch * amount); }
     double weight(const Vec3& x) const {
         const Vec3 d = x - origin;
         const double tau = dot(d, n);
         const double rho = norm(d - n * tau);
         const double height = dot(d, upDir());
-        const double across = 1.0 - smoothstep(window, window + fall(), rho);
+        const double across = 1.0 - smoothstep(dome ? 0.0 : window, window + fall(), rho);
         if (radial) {
             const double tilt = norm(cross(upDir(), n));
             const double hi = std::max(rampHi, rampLo + amount * (0.5 + 4.0 * tilt));
@@ -582,7 +596,7 @@ struct Push {
             return smoothstep(rampLo, hi, height) * (1.0 - smoothstep(topLo, topHi, tau)) *
                    smoothstep(0.0, std::max(0.5, 0.5 * window), rho) * across;
         }
-        return smoothstep(rampLo, rampHi, height) * across;
+        return smoothstep(rampLo, rampHi, height) * beyond(height) * across;
     }
     Vec3 direction(const Vec3& x) const {
         if (!radial)
@@ -665,12 +679,16 @@ std::vector<Push> planPushes(const Planned& p, const OrganInfo& info, const Path
         Push open{e, d, 1.5, std::max(3.0, 0.6 * farMm), across + c, windowRamp, 0.0, kOpenStretch};
         open.up = -u;
         open.solveWithin = std::max(1.0, 0.5 * across);
+        open.dome = true;
+        open.keepFrom = far ? farMm + c : 0.0;
+        open.keep = kOpenKeep;
         pushes.push_back(open);
         Push around{e, d, 0.5, 2.0, across + c, windowRamp, 0.0, 0.0};
         around.radial = true;
         around.up = -u;
         around.topLo = top;
-        around.topHi = top + c;
+        around.topHi = top + c + 0.5 * across; // a wide fall over the head rounds the pocket's corners; any fall
+                                               // along n keeps the radial map injective
         if (p.spec.pedunculated) // a head on a stalk; a dome on the wall keeps its corners (they would fold)
             pushes.push_back(around);
     }
