@@ -17,28 +17,47 @@ Face sortedFace(std::int32_t a, std::int32_t b, std::int32_t c) {
     return f;
 }
 
-/// Faces of the kept tets with the tets on their sides (second -1 on the boundary), sorted by face.
+/// Faces of the kept tets with the tets on their sides, sorted by face: bucketed by their smallest vertex with a
+/// counting sort (linear), then sorted within each bucket (a few dozen faces).
 struct FaceTable {
     std::vector<std::pair<Face, std::int64_t>> entries; ///< (face, tet), sorted
+    std::vector<std::size_t> bucket;                    ///< entries of smallest vertex v: [bucket[v], bucket[v + 1])
     explicit FaceTable(const std::vector<Tet>& tets, const std::vector<std::int32_t>& region) {
-        for (std::size_t t = 0; t < tets.size(); ++t) {
-            if (region[t] < 0)
-                continue;
-            const Tet& k = tets[t];
-            const auto id = static_cast<std::int64_t>(t);
-            entries.emplace_back(sortedFace(k[1], k[2], k[3]), id);
-            entries.emplace_back(sortedFace(k[0], k[2], k[3]), id);
-            entries.emplace_back(sortedFace(k[0], k[1], k[3]), id);
-            entries.emplace_back(sortedFace(k[0], k[1], k[2]), id);
-        }
-        std::sort(entries.begin(), entries.end());
+        std::int32_t vertices = 0;
+        for (std::size_t t = 0; t < tets.size(); ++t)
+            if (region[t] >= 0)
+                for (std::int32_t v : tets[t])
+                    vertices = std::max(vertices, v + 1);
+        bucket.assign(static_cast<std::size_t>(vertices) + 1, 0);
+        auto forEachFace = [&](auto&& visit) {
+            for (std::size_t t = 0; t < tets.size(); ++t) {
+                if (region[t] < 0)
+                    continue;
+                const Tet& k = tets[t];
+                const auto id = static_cast<std::int64_t>(t);
+                visit(sortedFace(k[1], k[2], k[3]), id);
+                visit(sortedFace(k[0], k[2], k[3]), id);
+                visit(sortedFace(k[0], k[1], k[3]), id);
+                visit(sortedFace(k[0], k[1], k[2]), id);
+            }
+        };
+        forEachFace([&](const Face& f, std::int64_t) { ++bucket[static_cast<std::size_t>(f[0]) + 1]; });
+        std::partial_sum(bucket.begin(), bucket.end(), bucket.begin());
+        entries.resize(bucket.back());
+        std::vector<std::size_t> fill(bucket.begin(), bucket.end() - 1);
+        forEachFace([&](const Face& f, std::int64_t t) { entries[fill[static_cast<std::size_t>(f[0])]++] = {f, t}; });
+        for (std::size_t v = 0; v + 1 < bucket.size(); ++v)
+            std::sort(entries.begin() + static_cast<std::ptrdiff_t>(bucket[v]),
+                      entries.begin() + static_cast<std::ptrdiff_t>(bucket[v + 1]));
     }
     /// The tet across `face` from tet `t`, -1 when the face is on the boundary.
     std::int64_t across(const Face& face, std::int64_t t) const {
-        auto it = std::lower_bound(entries.begin(), entries.end(), std::make_pair(face, std::int64_t{-1}));
-        for (; it != entries.end() && it->first == face; ++it)
-            if (it->second != t)
-                return it->second;
+        const auto v = static_cast<std::size_t>(face[0]);
+        if (v + 1 >= bucket.size())
+            return -1;
+        for (std::size_t i = bucket[v]; i < bucket[v + 1]; ++i)
+            if (entries[i].first == face && entries[i].second != t)
+                return entries[i].second;
         return -1;
     }
 };
@@ -117,19 +136,28 @@ using Pinch = std::pair<std::int32_t, std::int32_t>;
 /// vertices whose tets form more than one fan. `rings` gets the tets around each.
 std::vector<Pinch> findPinches(const std::vector<Tet>& tets, const std::vector<std::int32_t>& region,
                                const FaceTable& faces, std::vector<std::vector<std::int64_t>>& rings) {
-    std::vector<std::pair<std::int32_t, std::int64_t>> incidence; // (vertex, tet), sorted
+    // Vertex -> tets (CSR by a counting sort; tets ascending per vertex).
+    std::vector<std::size_t> first(faces.bucket.size(), 0);
     for (std::size_t t = 0; t < tets.size(); ++t)
         if (region[t] >= 0)
             for (std::int32_t v : tets[t])
-                incidence.emplace_back(v, static_cast<std::int64_t>(t));
-    std::sort(incidence.begin(), incidence.end());
+                ++first[static_cast<std::size_t>(v) + 1];
+    std::partial_sum(first.begin(), first.end(), first.begin());
+    std::vector<std::int64_t> incident(first.back());
+    {
+        std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+        for (std::size_t t = 0; t < tets.size(); ++t)
+            if (region[t] >= 0)
+                for (std::int32_t v : tets[t])
+                    incident[fill[static_cast<std::size_t>(v)]++] = static_cast<std::int64_t>(t);
+    }
     auto tetsAround = [&](std::int32_t a, std::int32_t b) {
         std::vector<std::int64_t> ring;
-        auto it = std::lower_bound(incidence.begin(), incidence.end(), std::make_pair(a, std::int64_t{-1}));
-        for (; it != incidence.end() && it->first == a; ++it) {
-            const Tet& k = tets[static_cast<std::size_t>(it->second)];
+        const auto va = static_cast<std::size_t>(a);
+        for (std::size_t i = first[va]; i < first[va + 1]; ++i) {
+            const Tet& k = tets[static_cast<std::size_t>(incident[i])];
             if (b < 0 || std::find(k.begin(), k.end(), b) != k.end())
-                ring.push_back(it->second);
+                ring.push_back(incident[i]);
         }
         return ring;
     };
@@ -172,7 +200,7 @@ PinchStats openPinches(const std::vector<Tet>& tets, std::vector<std::int32_t>& 
         if (pass == 0)
             stats.pinchedBefore = pinches.size();
         if (pinches.empty())
-            break;
+            return stats; // none (left): pinchedAfter stays 0
         bool removedAny = false;
         for (std::size_t p = 0; p < pinches.size(); ++p) {
             std::vector<std::int64_t>& ring = rings[p];
