@@ -132,7 +132,9 @@ struct AcceptedIndex {
     std::vector<std::int32_t> next;
 
     explicit AcceptedIndex(const VoxelGrid<std::int32_t>& g) : grid(&g), head(g.size(), -1) {}
-    bool near(const Particles& ps, const Vec3& p, double radius) const {
+    /// Whether `accept(index, squared distance)` holds for an accepted particle within `radius` of p.
+    template <typename Accept>
+    bool anyWithin(const Particles& ps, const Vec3& p, double radius, Accept&& accept) const {
         const Index3 c = grid->voxelOf(p);
         const double r2 = radius * radius;
         const auto reach = static_cast<std::int64_t>(std::ceil(radius / grid->spacing()));
@@ -142,33 +144,26 @@ struct AcceptedIndex {
                     const Index3 nb{c[0] + di, c[1] + dj, c[2] + dk};
                     if (!grid->contains(nb))
                         continue;
-                    for (std::int32_t i = head[grid->linear(nb)]; i >= 0; i = next[static_cast<std::size_t>(i)])
-                        if (norm2(ps.position[static_cast<std::size_t>(i)] - p) < r2)
+                    for (std::int32_t i = head[grid->linear(nb)]; i >= 0; i = next[static_cast<std::size_t>(i)]) {
+                        const auto u = static_cast<std::size_t>(i);
+                        const double d2 = norm2(ps.position[u] - p);
+                        if (d2 < r2 && accept(u, d2))
                             return true;
+                    }
                 }
         return false;
+    }
+    bool near(const Particles& ps, const Vec3& p, double radius) const {
+        return anyWithin(ps, p, radius, [](std::size_t, double) { return true; });
     }
     /// True when an accepted particle of the same sheet (surface `s`, normal `n` within kSheetCos) lies closer than
     /// `sameRadius`, or any other one closer than `otherRadius`.
     bool nearOnSheet(const Particles& ps, const std::vector<SurfaceAdjacency>& adjacency, const Vec3& p, std::int32_t s,
                      const Vec3& n, double sameRadius, double otherRadius) const {
-        const Index3 c = grid->voxelOf(p);
         const double same2 = sameRadius * sameRadius, other2 = otherRadius * otherRadius;
-        const auto reach = static_cast<std::int64_t>(std::ceil(std::max(sameRadius, otherRadius) / grid->spacing()));
-        for (std::int64_t dk = -reach; dk <= reach; ++dk)
-            for (std::int64_t dj = -reach; dj <= reach; ++dj)
-                for (std::int64_t di = -reach; di <= reach; ++di) {
-                    const Index3 nb{c[0] + di, c[1] + dj, c[2] + dk};
-                    if (!grid->contains(nb))
-                        continue;
-                    for (std::int32_t i = head[grid->linear(nb)]; i >= 0; i = next[static_cast<std::size_t>(i)]) {
-                        const auto u = static_cast<std::size_t>(i);
-                        const double d2 = norm2(ps.position[u] - p);
-                        if (d2 < other2 || (d2 < same2 && sameSheet(ps, adjacency, u, s, n)))
-                            return true;
-                    }
-                }
-        return false;
+        return anyWithin(ps, p, std::max(sameRadius, otherRadius), [&](std::size_t u, double d2) {
+            return d2 < other2 || (d2 < same2 && sameSheet(ps, adjacency, u, s, n));
+        });
     }
     void add(Particles& ps, const Vec3& p, ParticleKind k, std::int32_t s, std::int32_t t, std::int32_t r) {
         const Index3 c = grid->voxelOf(p);
