@@ -9,6 +9,7 @@
 #include "hs/anatomy/UterusGenerator.h"
 #include "hs/core/RegionModel.h"
 #include "hs/core/Rng.h"
+#include "hs/core/Units.h"
 
 #include <algorithm>
 #include <cmath>
@@ -77,6 +78,9 @@ constexpr double kOpenKeep = 0.5;         ///< the far wall's serosa moves by th
 constexpr double kOpenStretch = 1.0;      ///< the far wall's window ramp widens by this fraction of its push
 constexpr double kMaxSizeToCorpus = 1.25; ///< largest myoma against the smallest corpus dimension
 constexpr double kMaxPolypToCavity = 0.8; ///< largest polyp head against the cavity length
+constexpr double kHybridPlay = 0.15;      ///< a hybrid's seat: play for the centre across the wall, of the radius
+constexpr double kHybridSlide = 0.4;      ///< a hybrid's seat slides at most this fraction of the cavity length
+constexpr double kHybridTurnDeg = 30.0;   ///< and faces within this angle of the nominal seat
 
 std::string fmt(double v, int digits = 1) {
     std::ostringstream s;
@@ -165,7 +169,107 @@ Vec3 faceNormalOf(const OrganInfo& info, std::size_t face) {
     return faceNormal(*info.mesh, face);
 }
 
-Result<Seat> seatFrom(const PathologyRequest& r, const OrganInfo& info) {
+Vec3 faceCentroid(const SurfaceMesh& mesh, std::size_t face) {
+    const Triangle& t = mesh.triangles[face];
+    return (mesh.points[static_cast<std::size_t>(t[0])] + mesh.points[static_cast<std::size_t>(t[1])] +
+            mesh.points[static_cast<std::size_t>(t[2])]) /
+           3.0;
+}
+
+/// Completes a seat from its endometrium point and direction: the serosa where the chord leaves the wall. False
+/// when the chord leaves through the cavity side (near the cervix).
+bool reachSerosa(const OrganInfo& info, Seat& seat) {
+    auto out = info.ray(seat.endometrium + seat.intoWall * 0.01, seat.intoWall, std::nullopt);
+    if (!out || info.faceSide[out->face] != Side::Serosa)
+        return false;
+    seat.serosa = out->point;
+    seat.wallMm = out->t + 0.01;
+    return true;
+}
+
+double capFraction(double depth, double radius) {
+    const double h = std::clamp(depth, 0.0, 2.0 * radius);
+    return h * h * (3.0 * radius - h) / (4.0 * radius * radius * radius);
+}
+
+/// The centre depths along the wall chord (0 at the endometrium) at which an ideal sphere in a slab `wallMm` thick
+/// classifies as `want`: the start and length (mm) of the longest such interval, length <= 0 when there is none.
+/// Surfaces the type must not reach are left out of the slab: the organ will make room there.
+std::pair<double, double> figoRun(const Figo& want, double wallMm, double radius, double tol) {
+    const bool useCavity = want.isHybrid() || want.type <= 3;
+    const bool useSerosa = want.isHybrid() || want.type >= 5;
+    double bestStart = 0.0, bestLength = -1.0, runStart = 0.0;
+    bool inRun = false;
+    const double step = 0.02;
+    const double lo = -radius - 2.0, hi = wallMm + radius + 2.0;
+    for (double s = lo; s <= hi + step; s += step) {
+        Fractions f;
+        f.cavity = useCavity ? capFraction(radius - s, radius) : 0.0;
+        f.outside = useSerosa ? capFraction(s + radius - wallMm, radius) : 0.0;
+        f.tissue = 1.0 - f.cavity - f.outside;
+        f.endometriumDistanceMm = useCavity ? std::max(0.0, s - radius) : 1e9;
+        f.serosaDistanceMm = useSerosa ? std::max(0.0, wallMm - s - radius) : 1e9;
+        const bool match = s <= hi && classifyFigo(f, tol) == want;
+        if (match && !inRun) {
+            inRun = true;
+            runStart = s;
+        }
+        if (!match && inRun) {
+            inRun = false;
+            if (s - runStart > bestLength) {
+                bestLength = s - runStart;
+                bestStart = runStart;
+            }
+        }
+    }
+    return {bestStart, bestLength};
+}
+
+/// A hybrid (X-Y) must span the wall, and a clinical location names a wall, not a point on it. Where the wall at the
+/// nominal seat is too thick for the requested size to span it with room to spare (an ideal sphere's centre must
+/// have kHybridPlay of its radius of play), the seat slides to the nearest endometrium point within kHybridSlide of
+/// the cavity's length that faces the same way (within kHybridTurnDeg) and where the wall is thin enough; to the
+/// one with the most play when there is none (the measured type then tells). A point placement stays where it was
+/// put.
+Seat slideHybridSeat(const PathologyRequest& r, const OrganInfo& info, const Seat& nominal, double tol) {
+    const double radius = 0.5 * r.sizeMm;
+    const double enough = kHybridPlay * radius;
+    auto play = [&](const Seat& s) { return figoRun(r.figo, s.wallMm, radius, tol).second; };
+    Seat best = nominal;
+    double bestPlay = play(nominal);
+    if (bestPlay >= enough)
+        return nominal;
+    const SurfaceMesh& organ = *info.mesh;
+    const auto& tissue = organ.faceLabels.at(anatomy::kTissueLabel);
+    const double reach = std::max(5.0, kHybridSlide * info.cavityLengthMm);
+    const double minCos = std::cos(units::degToRad(kHybridTurnDeg));
+    std::vector<std::pair<double, std::size_t>> candidates;
+    for (std::size_t f = 0; f < organ.triangles.size(); ++f) {
+        if (static_cast<anatomy::Tissue>(tissue[f]) != anatomy::Tissue::Endometrium)
+            continue;
+        const double d = distance(faceCentroid(organ, f), nominal.endometrium);
+        if (d <= reach && dot(-faceNormalOf(info, f), nominal.intoWall) >= minCos)
+            candidates.emplace_back(d, f);
+    }
+    std::sort(candidates.begin(), candidates.end());
+    for (const auto& [d, f] : candidates) {
+        Seat s;
+        s.endometrium = faceCentroid(organ, f);
+        s.intoWall = -faceNormalOf(info, f);
+        if (!reachSerosa(info, s))
+            continue;
+        const double p = play(s);
+        if (p >= enough)
+            return s;
+        if (p > bestPlay) {
+            bestPlay = p;
+            best = s;
+        }
+    }
+    return best;
+}
+
+Result<Seat> seatFrom(const PathologyRequest& r, const OrganInfo& info, double tol) {
     Seat seat;
     const auto& tissue = info.mesh->faceLabels.at(anatomy::kTissueLabel);
     if (const auto* c = std::get_if<ClinicalPlacement>(&r.placement)) {
@@ -235,58 +339,26 @@ Result<Seat> seatFrom(const PathologyRequest& r, const OrganInfo& info) {
             seat.intoWall = normalized(onFace - back->point);
         }
     }
-    auto out = info.ray(seat.endometrium + seat.intoWall * 0.01, seat.intoWall, std::nullopt);
-    if (!out || info.faceSide[out->face] != Side::Serosa)
+    if (!reachSerosa(info, seat))
         return fail(ErrorCode::InvalidInput, who(r) + ": the wall at " + fmt(seat.endometrium) +
                                                  " does not reach the serosa (placement too close to the cervix?)");
-    seat.serosa = out->point;
-    seat.wallMm = out->t + 0.01;
+    if (r.kind == Kind::Myoma && r.figo.isHybrid() && std::holds_alternative<ClinicalPlacement>(r.placement))
+        return slideHybridSeat(r, info, seat, tol);
     return seat;
 }
 
-double capFraction(double depth, double radius) {
-    const double h = std::clamp(depth, 0.0, 2.0 * radius);
-    return h * h * (3.0 * radius - h) / (4.0 * radius * radius * radius);
-}
-
 /// Depth of a sphere's centre along the wall chord (0 at the endometrium, W at the serosa) for the requested FIGO
-/// type: the middle of the longest interval in which an ideal sphere in a slab classifies as requested. Surfaces the
-/// type must not reach are left out of the slab: the organ will make room there.
+/// type: the middle of the longest interval in which an ideal sphere in a slab classifies as requested.
 Result<double> centreDepth(const PathologyRequest& r, const Seat& seat, double radius, double tol) {
     const Figo want = r.figo;
     if (want.type == 4 && !want.isHybrid())
         return 0.5 * seat.wallMm;
-    const bool useCavity = want.isHybrid() || want.type <= 3;
-    const bool useSerosa = want.isHybrid() || want.type >= 5;
-    double bestStart = 0.0, bestLength = -1.0, runStart = 0.0;
-    bool inRun = false;
-    const double step = 0.02;
-    const double lo = -radius - 2.0, hi = seat.wallMm + radius + 2.0;
-    for (double s = lo; s <= hi + step; s += step) {
-        Fractions f;
-        f.cavity = useCavity ? capFraction(radius - s, radius) : 0.0;
-        f.outside = useSerosa ? capFraction(s + radius - seat.wallMm, radius) : 0.0;
-        f.tissue = 1.0 - f.cavity - f.outside;
-        f.endometriumDistanceMm = useCavity ? std::max(0.0, s - radius) : 1e9;
-        f.serosaDistanceMm = useSerosa ? std::max(0.0, seat.wallMm - s - radius) : 1e9;
-        const bool match = s <= hi && classifyFigo(f, tol) == want;
-        if (match && !inRun) {
-            inRun = true;
-            runStart = s;
-        }
-        if (!match && inRun) {
-            inRun = false;
-            if (s - runStart > bestLength) {
-                bestLength = s - runStart;
-                bestStart = runStart;
-            }
-        }
-    }
-    if (bestLength <= 0.0)
+    const auto [start, length] = figoRun(want, seat.wallMm, radius, tol);
+    if (length <= 0.0)
         return fail(ErrorCode::InvalidInput, who(r) + ": FIGO " + want.toString() + " is impossible for a " +
                                                  fmt(r.sizeMm, 0) + " mm myoma in a wall " + fmt(seat.wallMm) +
                                                  " mm thick (a hybrid must span the wall)");
-    return bestStart + 0.5 * bestLength;
+    return start + 0.5 * length;
 }
 
 /// Signed distance from p to a closed surface (negative inside), capped at `cutoff`.
@@ -781,7 +853,7 @@ Result<PathologyResult> growPathologies(const SurfaceMesh& organ, const Patholog
             ScopedStepTimer timer(result.timings, "place");
             HS_TRY(checkRequest(r));
             HS_TRY(checkSize(r, info));
-            auto seat = seatFrom(r, info);
+            auto seat = seatFrom(r, info, params.contactToleranceMm);
             if (!seat.ok())
                 return seat.failure();
             p.seat = *seat;

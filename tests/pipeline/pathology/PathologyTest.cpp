@@ -127,6 +127,30 @@ TEST(Pathology, PlacesAPosteriorMyomaBesideAPedunculatedFundalPolyp) {
     EXPECT_TRUE(body.ok()) << (body.ok() ? "" : body.error().detail);
 }
 
+// A clinical location names a wall: organ 6's posterior wall is about 17 mm thick at the nominal seat, too thick for a
+// 20 mm hybrid to span, so the seat slides to a thinner part of the same wall. A point placement stays where it is.
+TEST(Pathology, SlidesAHybridsSeatToWhereTheWallIsThinEnoughButKeepsAPointPlacement) {
+    const SurfaceMesh organ = test::testOrgan(6);
+    PathologyParams params;
+    params.pathologies.push_back(myoma("m", GrowthModel::Skeleton, {2, -1}, 20.0));
+    auto nominal = growPathologies(organ, params);
+    ASSERT_TRUE(nominal.ok()) << nominal.error().detail;
+    const Vec3 seat = nominal->pathologies[0].anchor;
+
+    params.pathologies[0].figo = {2, 5};
+    auto hybrid = growPathologies(organ, params);
+    ASSERT_TRUE(hybrid.ok()) << hybrid.error().detail;
+    EXPECT_EQ(hybrid->pathologies[0].descriptors.figo, (Figo{2, 5}));
+    const double slid = distance(hybrid->pathologies[0].anchor, seat);
+    EXPECT_GT(slid, 1.0);
+    EXPECT_LT(slid, 0.4 * 50.0);
+
+    params.pathologies[0].placement = SurfacePlacement{seat, {0.0, 0.0, 1.0}};
+    auto clicked = growPathologies(organ, params);
+    ASSERT_TRUE(clicked.ok()) << clicked.error().detail;
+    EXPECT_LT(distance(clicked->pathologies[0].anchor, seat), 0.5);
+}
+
 TEST(Pathology, SameSeedGivesTheSameShape) {
     PathologyParams params;
     params.pathologies.push_back(myoma("m", GrowthModel::CellularAutomaton, {2, -1}, 20.0));
