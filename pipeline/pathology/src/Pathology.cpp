@@ -401,6 +401,8 @@ double stalkClearance(const Vec3& root, const Vec3& dir, double reach, double ra
 
 /// The stalk's direction: the way it hangs (stalkDirection), or, when that runs into a pathology planned before
 /// it, the nearest direction (tilted in 15 degree steps, still leaving the wall) whose head keeps `gap` from it.
+/// Among the clear directions of a tilt, the one that stays closest to the cavity's plane (least anteroposterior):
+/// the cavity is flat, so a head tilted towards the anterior or posterior wall would stand in it.
 Vec3 freeStalkDirection(const OrganInfo& info, const Seat& seat, double reach, double radius, double stalkRadius,
                         double gap, const std::vector<const SurfaceMesh*>& earlier) {
     const Vec3 hang = stalkDirection(info, seat.intoWall);
@@ -411,20 +413,22 @@ Vec3 freeStalkDirection(const OrganInfo& info, const Seat& seat, double reach, d
     orthonormalFrame(hang, e1, e2);
     constexpr double kDegree = 3.14159265358979323846 / 180.0;
     for (int tilt = 15; tilt <= 60; tilt += 15) {
-        bool found = false;
+        double flattest = 2.0;
         for (int azimuth = 0; azimuth < 360; azimuth += 30) {
             const double a = azimuth * kDegree, t = tilt * kDegree;
             const Vec3 dir = normalized(hang * std::cos(t) + (e1 * std::cos(a) + e2 * std::sin(a)) * std::sin(t));
             if (dot(dir, -seat.intoWall) < 0.35)
                 continue;
             const double clear = stalkClearance(seat.endometrium, dir, reach, radius, stalkRadius, earlier);
-            if (clear > best) {
-                best = clear;
+            const double ap = std::fabs(dot(dir, info.anterior));
+            if (clear >= gap ? ap < flattest : (flattest > 1.0 && clear > best)) {
+                if (clear >= gap)
+                    flattest = ap;
+                best = std::max(best, clear);
                 bestDir = dir;
-                found = found || clear >= gap;
             }
         }
-        if (found)
+        if (flattest <= 1.0)
             break;
     }
     return bestDir;
@@ -792,21 +796,27 @@ Status adaptOrgan(SurfaceMesh& organ, std::vector<Planned>& all, std::size_t whi
             continue;
         for (Vec3& x : organ.points)
             x = push.apply(x);
-        // Other pathologies move with the tissue; across a radial push, which opens the free cavity around a head,
-        // rigidly by their mean motion (its ramps would stretch a body that stands in them).
+        // Other pathologies move with the tissue, rigidly: a myoma in the wall by its mean motion (it is stiffer than
+        // the myometrium, UTERUS.md), a polyp or a stalked myoma with the root of its stalk, which the wall carries
+        // (the head hangs in the free cavity). A push's ramps would stretch whatever stands in them: a far-wall push
+        // once stretched a 25 mm myoma to 31 mm and a 10 mm polyp to 20 mm.
         for (std::size_t j = 0; j < all.size(); ++j) {
             if (j == which)
                 continue;
-            std::vector<Vec3>& points = all[j].surface.points;
-            if (!push.radial) {
-                for (Vec3& q : points)
-                    q = push.apply(q);
-                continue;
+            Planned& other = all[j];
+            Vec3 motion;
+            if (other.spec.polyp || other.spec.pedunculated) {
+                motion = push.apply(other.spec.base) - other.spec.base;
+            } else {
+                for (const Vec3& q : other.surface.points)
+                    motion += push.apply(q) - q;
+                motion = motion / static_cast<double>(std::max<std::size_t>(1, other.surface.points.size()));
             }
-            Vec3 mean;
-            for (const Vec3& q : points)
-                mean += push.apply(q) - q;
-            translate(all[j].surface, mean / static_cast<double>(std::max<std::size_t>(1, points.size())));
+            translate(other.surface, motion);
+            other.seat.endometrium = push.apply(other.seat.endometrium); // still on the organ's surfaces
+            other.seat.serosa = push.apply(other.seat.serosa);
+            other.spec.center += motion;
+            other.spec.base += motion;
         }
     }
     return {};
