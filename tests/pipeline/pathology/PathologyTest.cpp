@@ -115,16 +115,25 @@ INSTANTIATE_TEST_SUITE_P(Pathology, PolypBar,
                                          PolypCase{GrowthModel::Particles, true, Location::Posterior}),
                          polypName);
 
-// The former default case: a FIGO 2 posterior myoma and a pedunculated fundal polyp in the same cavity.
+// The former default case: a 25 mm FIGO 2 posterior myoma and a pedunculated fundal polyp (10 mm, stalk 8 mm) in the
+// same cavity. The polyp's pushes once stretched the myoma to 31 mm, and the myoma's the polyp to 20 mm (measured
+// sessile, its head in the anterior wall).
 TEST(Pathology, PlacesAPosteriorMyomaBesideAPedunculatedFundalPolyp) {
-    PathologyParams params;
-    params.pathologies.push_back(myoma("m", GrowthModel::Skeleton, {2, -1}, 20.0, Location::Posterior));
-    params.pathologies.push_back(polyp("p", GrowthModel::Skeleton, 12.0, true, 8.0, Location::Fundal));
-    auto grown = growPathologies(test::testOrgan(1), params);
-    ASSERT_TRUE(grown.ok()) << grown.error().detail;
-    EXPECT_TRUE(grown->pathologies[1].descriptors.pedunculated);
-    auto body = merge::mergeBody(*grown);
-    EXPECT_TRUE(body.ok()) << (body.ok() ? "" : body.error().detail);
+    for (GrowthModel model : {GrowthModel::Skeleton, GrowthModel::CellularAutomaton}) {
+        PathologyParams params;
+        params.pathologies.push_back(myoma("m", model, {2, -1}, 25.0, Location::Posterior));
+        params.pathologies.push_back(polyp("p", GrowthModel::Skeleton, 10.0, true, 8.0, Location::Fundal));
+        auto grown = growPathologies(test::testOrgan(1), params);
+        ASSERT_TRUE(grown.ok()) << grown.error().detail;
+        const Descriptors& m = grown->pathologies[0].descriptors;
+        const Descriptors& p = grown->pathologies[1].descriptors;
+        EXPECT_EQ(m.figo, (Figo{2, -1})) << toString(model);
+        EXPECT_NEAR(m.sizeMm, 25.0, 2.5) << toString(model);
+        EXPECT_TRUE(p.pedunculated) << toString(model);
+        EXPECT_NEAR(p.sizeMm, 10.0, 1.0) << toString(model);
+        auto body = merge::mergeBody(*grown);
+        EXPECT_TRUE(body.ok()) << (body.ok() ? "" : body.error().detail);
+    }
 }
 
 // A clinical location names a wall: organ 6's posterior wall is about 17 mm thick at the nominal seat, too thick for a
