@@ -455,7 +455,7 @@ Result<ShapeSpec> planShape(const PathologyRequest& r, const OrganInfo& info, co
                               (stalk + radius);
         } else {
             spec.stalkRadius = 0.65 * radius;
-            spec.center = seat.endometrium - seat.intoWall * (0.6 * radius);
+            spec.center = seat.endometrium - seat.intoWall * (0.85 * radius);
         }
         return spec;
     }
@@ -500,7 +500,8 @@ Result<SurfaceMesh> grow(const PathologyRequest& r, const ShapeSpec& spec, const
 
 /// Scales so the measured size equals the request: about the centroid, or, for stalked shapes, about the foot of
 /// the head when it grows (the stalk keeps its length; its root sinks deeper into the wall) and about the stalk's
-/// root when it shrinks (the root stays in the wall).
+/// root when it shrinks (the root stays in the wall); a sessile polyp about the endometrium point it sits on (about
+/// its sunk root, a shrinking head sank into the wall: 22-39 % of it measured intramural).
 void scaleToSize(SurfaceMesh& mesh, const ShapeSpec& spec, double sizeMm) {
     const bool stalked = spec.polyp || spec.pedunculated;
     const Vec3 axis = normalized(spec.center - spec.base);
@@ -509,8 +510,10 @@ void scaleToSize(SurfaceMesh& mesh, const ShapeSpec& spec, double sizeMm) {
         if (now <= 0.0)
             return;
         const double factor = sizeMm / now;
-        const Vec3 pivot =
-            !stalked ? volumeCentroid(mesh) : (factor > 1.0 ? spec.center - axis * spec.radius : spec.base);
+        const Vec3 pivot = !stalked                           ? volumeCentroid(mesh)
+                           : spec.polyp && !spec.pedunculated ? spec.base - spec.intoWall * kSinkMm
+                           : factor > 1.0                     ? spec.center - axis * spec.radius
+                                                              : spec.base;
         scaleAbout(mesh, pivot, factor);
     }
 }
