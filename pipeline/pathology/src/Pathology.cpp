@@ -230,8 +230,9 @@ std::pair<double, double> figoRun(const Figo& want, double wallMm, double radius
 /// have kHybridPlay of its radius of play), the seat slides to the nearest endometrium point within kHybridSlide of
 /// the cavity's length that faces the same way (within kHybridTurnDeg) and where the wall is thin enough; to the
 /// one with the most play when there is none (the measured type then tells). A point placement stays where it was
-/// put.
-Seat slideHybridSeat(const PathologyRequest& r, const OrganInfo& info, const Seat& nominal, double tol) {
+/// put. A slide is reported in `notes`.
+Seat slideHybridSeat(const PathologyRequest& r, const OrganInfo& info, const Seat& nominal, double tol,
+                     std::vector<std::string>& notes) {
     const double radius = 0.5 * r.sizeMm;
     const double enough = kHybridPlay * radius;
     auto play = [&](const Seat& s) { return figoRun(r.figo, s.wallMm, radius, tol).second; };
@@ -252,6 +253,13 @@ Seat slideHybridSeat(const PathologyRequest& r, const OrganInfo& info, const Sea
             candidates.emplace_back(d, f);
     }
     std::sort(candidates.begin(), candidates.end());
+    auto slid = [&](const Seat& s) {
+        notes.push_back(who(r) + ": the wall at the nominal seat is " + fmt(nominal.wallMm) +
+                        " mm thick, too thick for a " + fmt(r.sizeMm, 0) + " mm FIGO " + r.figo.toString() +
+                        " myoma to span; seated " + fmt(distance(s.endometrium, nominal.endometrium)) +
+                        " mm away, where it is " + fmt(s.wallMm) + " mm");
+        return s;
+    };
     for (const auto& [d, f] : candidates) {
         Seat s;
         s.endometrium = faceCentroid(organ, f);
@@ -260,16 +268,16 @@ Seat slideHybridSeat(const PathologyRequest& r, const OrganInfo& info, const Sea
             continue;
         const double p = play(s);
         if (p >= enough)
-            return s;
+            return slid(s);
         if (p > bestPlay) {
             bestPlay = p;
             best = s;
         }
     }
-    return best;
+    return bestPlay > play(nominal) ? slid(best) : nominal;
 }
 
-Result<Seat> seatFrom(const PathologyRequest& r, const OrganInfo& info, double tol) {
+Result<Seat> seatFrom(const PathologyRequest& r, const OrganInfo& info, double tol, std::vector<std::string>& notes) {
     Seat seat;
     const auto& tissue = info.mesh->faceLabels.at(anatomy::kTissueLabel);
     if (const auto* c = std::get_if<ClinicalPlacement>(&r.placement)) {
@@ -343,7 +351,7 @@ Result<Seat> seatFrom(const PathologyRequest& r, const OrganInfo& info, double t
         return fail(ErrorCode::InvalidInput, who(r) + ": the wall at " + fmt(seat.endometrium) +
                                                  " does not reach the serosa (placement too close to the cervix?)");
     if (r.kind == Kind::Myoma && r.figo.isHybrid() && std::holds_alternative<ClinicalPlacement>(r.placement))
-        return slideHybridSeat(r, info, seat, tol);
+        return slideHybridSeat(r, info, seat, tol, notes);
     return seat;
 }
 
@@ -866,7 +874,7 @@ Result<PathologyResult> growPathologies(const SurfaceMesh& organ, const Patholog
             ScopedStepTimer timer(result.timings, "place");
             HS_TRY(checkRequest(r));
             HS_TRY(checkSize(r, info));
-            auto seat = seatFrom(r, info, params.contactToleranceMm);
+            auto seat = seatFrom(r, info, params.contactToleranceMm, result.warnings);
             if (!seat.ok())
                 return seat.failure();
             p.seat = *seat;

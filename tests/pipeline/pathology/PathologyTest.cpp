@@ -153,6 +153,9 @@ TEST(Pathology, SlidesAHybridsSeatToWhereTheWallIsThinEnoughButKeepsAPointPlacem
     const double slid = distance(hybrid->pathologies[0].anchor, seat);
     EXPECT_GT(slid, 1.0);
     EXPECT_LT(slid, 0.4 * 50.0);
+    ASSERT_EQ(hybrid->warnings.size(), 1u); // the slide is reported
+    EXPECT_NE(hybrid->warnings[0].find("too thick for a 20 mm FIGO 2-5 myoma to span; seated"), std::string::npos)
+        << hybrid->warnings[0];
 
     params.pathologies[0].placement = SurfacePlacement{seat, {0.0, 0.0, 1.0}};
     auto clicked = growPathologies(organ, params);
