@@ -60,6 +60,21 @@ void translate(SurfaceMesh& mesh, const Vec3& by);
 /// Smallest distance from any vertex of a to the triangles of b (bounding-box filtered), mm.
 double surfaceDistance(const SurfaceMesh& a, const SurfaceMesh& b, double cutoff);
 
+/// Triangles of a surface binned in a regular grid of cells `cellMm` wide, for distances up to a cutoff near it.
+class TriangleGrid {
+public:
+    TriangleGrid(const SurfaceMesh& mesh, double cellMm);
+    /// Unsigned distance from p to the surface, or `cutoff` when it is at least that far (cutoff <= the cell size
+    /// gives a search of 3 x 3 x 3 cells).
+    double distance(const Vec3& p, double cutoff) const;
+
+private:
+    const SurfaceMesh* mesh_;
+    Grid grid_;
+    std::vector<std::uint32_t> start_;     ///< cell -> first entry in triangles_ (size cells + 1)
+    std::vector<std::uint32_t> triangles_; ///< triangle ids, by cell
+};
+
 /// Two unit vectors completing `n` (unit) to an orthonormal frame.
 void orthonormalFrame(const Vec3& n, Vec3& e1, Vec3& e2);
 

@@ -6,6 +6,7 @@
 #include "Organ.h"
 #include "Shapes.h"
 
+#include "hs/anatomy/OrganChecks.h"
 #include "hs/anatomy/UterusGenerator.h"
 #include "hs/core/RegionModel.h"
 #include "hs/core/Rng.h"
@@ -81,6 +82,8 @@ constexpr double kMaxPolypToCavity = 0.8; ///< largest polyp head against the ca
 constexpr double kHybridPlay = 0.15;      ///< a hybrid's seat: play for the centre across the wall, of the radius
 constexpr double kHybridSlide = 0.4;      ///< a hybrid's seat slides at most this fraction of the cavity length
 constexpr double kHybridTurnDeg = 30.0;   ///< and faces within this angle of the nominal seat
+constexpr int kPocketRounds = 30;         ///< rounds of averaging that round the pockets the pushes open
+constexpr double kPocketSlackMm = 1.0;    ///< a rounded pocket keeps this much more than the clearance
 
 std::string fmt(double v, int digits = 1) {
     std::ostringstream s;
@@ -833,6 +836,130 @@ Status adaptOrgan(SurfaceMesh& organ, std::vector<Planned>& all, std::size_t whi
     return {};
 }
 
+/// The pushes leave a pocket with flat faces and square corners around a head on a stalk, where it meets the wall it
+/// opens from (each push is a smooth map of space, but the walls they move by different amounts meet at a crease).
+/// The cavity's walls collapse onto a mass instead: the displacement of the moved cavity-side vertices near such a
+/// head (within twice its radius + 5 mm of its centre), and two rings around them, is averaged
+/// with their neighbours' (Jacobi, kPocketRounds rounds, half weight), each vertex held where its next step would
+/// bring it closer than the clearance to a pathology (tracked with a slack, so distances are only recomputed when a
+/// vertex may have used its slack up; steps are shorter than the clearance, so none jumps through a surface), and
+/// vertices inside a pathology or within the clearance of one (the wall it stands in) held throughout. Kept only when
+/// the organ still does not intersect itself.
+void roundPockets(SurfaceMesh& adapted, const SurfaceMesh& original, const OrganInfo& info,
+                  const std::vector<Planned>& plans, const PathologyParams& params) {
+    // Only around a head on a stalk in the cavity (FIGO 0, pedunculated polyps): its pocket is opened by the far
+    // wall's and the radial push together. A dome on the wall keeps the pocket of its far wall's push, which is
+    // rounded (and collapsing the walls onto it narrows the cavity beside it below a mesh edge).
+    std::vector<std::pair<Vec3, double>> heads; // centre, reach
+    for (const Planned& p : plans)
+        if (p.spec.pedunculated && !p.fromSerosa)
+            heads.emplace_back(p.spec.center, 3.0 * p.spec.radius + 10.0);
+    if (heads.empty())
+        return;
+    const std::size_t n = adapted.points.size();
+    std::vector<Vec3> disp(n);
+    std::vector<std::uint8_t> active(n, 0);
+    for (std::size_t v = 0; v < n; ++v) {
+        disp[v] = adapted.points[v] - original.points[v];
+        const bool nearHead = std::any_of(heads.begin(), heads.end(), [&](const std::pair<Vec3, double>& h) {
+            return distance(adapted.points[v], h.first) < h.second;
+        });
+        active[v] = nearHead && info.vertexSide[v] == Side::Cavity && norm(disp[v]) > 0.05 ? 1 : 0;
+    }
+    std::vector<std::vector<std::size_t>> ring(n);
+    for (const Triangle& t : adapted.triangles)
+        for (int k = 0; k < 3; ++k) {
+            const auto a = static_cast<std::size_t>(t[static_cast<std::size_t>(k)]);
+            const auto b = static_cast<std::size_t>(t[static_cast<std::size_t>((k + 1) % 3)]);
+            ring[a].push_back(b);
+            ring[b].push_back(a);
+        }
+    for (auto& r : ring) {
+        std::sort(r.begin(), r.end());
+        r.erase(std::unique(r.begin(), r.end()), r.end());
+    }
+    for (int grow = 0; grow < 2; ++grow) {
+        const std::vector<std::uint8_t> before = active;
+        for (std::size_t v = 0; v < n; ++v)
+            if (before[v])
+                for (std::size_t w : ring[v])
+                    if (info.vertexSide[w] == Side::Cavity)
+                        active[w] = 1;
+    }
+    std::vector<std::size_t> movable;
+    for (std::size_t v = 0; v < n; ++v)
+        if (active[v])
+            movable.push_back(v);
+    if (movable.empty())
+        return;
+    const double clearance = params.clearanceMm + kPocketSlackMm;
+    const double reach = clearance + 1.0;
+    std::vector<TriangleGrid> grids;
+    for (const Planned& p : plans)
+        grids.emplace_back(p.surface, 2.0);
+    auto nearest = [&](const Vec3& x) {
+        double d = reach;
+        for (const TriangleGrid& g : grids)
+            d = std::min(d, g.distance(x, reach));
+        return d;
+    };
+    // Inside a pathology, for points at least the clearance from it: voxels of 1 mm (half a diagonal, 0.87 mm, below
+    // the clearance) classify them exactly.
+    std::vector<Grid> voxelGrids;
+    std::vector<std::vector<std::uint8_t>> masks;
+    for (const Planned& p : plans) {
+        voxelGrids.push_back(Grid::covering(bounds(p.surface), 1.0, 1));
+        masks.push_back(insideMask(p.surface, voxelGrids.back()));
+    }
+    auto inside = [&](const Vec3& x) {
+        for (std::size_t j = 0; j < plans.size(); ++j) {
+            const Grid& g = voxelGrids[j];
+            const Vec3 c = (x - g.origin) / g.h;
+            const int i = static_cast<int>(std::lround(c.x)), jj = static_cast<int>(std::lround(c.y)),
+                      k = static_cast<int>(std::lround(c.z));
+            if (i >= 0 && jj >= 0 && k >= 0 && i < g.nx && jj < g.ny && k < g.nz && masks[j][g.index(i, jj, k)])
+                return true;
+        }
+        return false;
+    };
+    std::vector<double> slack(n, 0.0);
+    std::vector<std::uint8_t> held(n, 0);
+    for (std::size_t v : movable) {
+        const double d = nearest(adapted.points[v]);
+        held[v] = d < clearance || inside(adapted.points[v]) ? 1 : 0; // a wall a pathology stands in stays
+        slack[v] = d - clearance;
+    }
+    std::vector<Vec3> next = disp;
+    for (int round = 0; round < kPocketRounds; ++round) {
+        for (std::size_t v : movable) {
+            if (held[v])
+                continue;
+            Vec3 mean;
+            for (std::size_t w : ring[v])
+                mean += disp[w];
+            const Vec3 target = disp[v] * 0.5 + mean / static_cast<double>(ring[v].size()) * 0.5;
+            const double step = norm(target - disp[v]);
+            if (step < 1e-9 || step >= clearance) // shorter than the clearance: it cannot jump through a surface
+                continue;
+            if (slack[v] < step) {
+                const double d = nearest(original.points[v] + target);
+                if (d < clearance)
+                    continue; // it would come too close: it stays this round
+                slack[v] = d - clearance;
+            } else {
+                slack[v] -= step;
+            }
+            next[v] = target;
+        }
+        disp = next;
+    }
+    SurfaceMesh rounded = adapted;
+    for (std::size_t v : movable)
+        rounded.points[v] = original.points[v] + disp[v];
+    if (!anatomy::hasSelfIntersections(rounded))
+        adapted.points = std::move(rounded.points);
+}
+
 Status checkOverlaps(const std::vector<Planned>& all, double gap) {
     for (std::size_t i = 0; i < all.size(); ++i)
         for (std::size_t j = i + 1; j < all.size(); ++j) {
@@ -918,6 +1045,7 @@ Result<PathologyResult> growPathologies(const SurfaceMesh& organ, const Patholog
         result.organ = organ;
         for (std::size_t i = 0; i < plans.size(); ++i)
             HS_TRY(adaptOrgan(result.organ, plans, i, params));
+        roundPockets(result.organ, organ, info, plans, params);
     }
     ScopedStepTimer timer(result.timings, "measure");
     for (std::size_t i = 0; i < plans.size(); ++i) {
