@@ -839,12 +839,12 @@ Status adaptOrgan(SurfaceMesh& organ, std::vector<Planned>& all, std::size_t whi
 /// The pushes leave a pocket with flat faces and square corners around a head on a stalk, where it meets the wall it
 /// opens from (each push is a smooth map of space, but the walls they move by different amounts meet at a crease).
 /// The cavity's walls collapse onto a mass instead: the displacement of the moved cavity-side vertices near such a
-/// head (within twice its radius + 5 mm of its centre), and two rings around them, is averaged
-/// with their neighbours' (Jacobi, kPocketRounds rounds, half weight), each vertex held where its next step would
-/// bring it closer than the clearance to a pathology (tracked with a slack, so distances are only recomputed when a
-/// vertex may have used its slack up; steps are shorter than the clearance, so none jumps through a surface), and
-/// vertices inside a pathology or within the clearance of one (the wall it stands in) held throughout. Kept only when
-/// the organ still does not intersect itself.
+/// head (within 3 radii + 10 mm of its centre), and two rings around them, is averaged with their neighbours'
+/// (Jacobi, kPocketRounds rounds, half weight), each vertex held where its next step would bring it closer than the
+/// clearance + kPocketSlackMm to a pathology (tracked with a slack, so distances are only recomputed when a vertex
+/// may have used its slack up; steps are shorter than that distance, so none jumps through a surface), and vertices
+/// inside a pathology or already that close to one (the wall it stands in) held throughout. Kept only when the organ
+/// still does not intersect itself.
 void roundPockets(SurfaceMesh& adapted, const SurfaceMesh& original, const OrganInfo& info,
                   const std::vector<Planned>& plans, const PathologyParams& params) {
     // Only around a head on a stalk in the cavity (FIGO 0, pedunculated polyps): its pocket is opened by the far
