@@ -77,6 +77,7 @@ using namespace detail;
 constexpr double kSinkMm = 1.5;           ///< a stalk's root lies this deep in the wall
 constexpr double kOpenKeep = 0.5;         ///< the far wall's serosa moves by this fraction less than its endometrium
 constexpr double kOpenStretch = 1.0;      ///< the far wall's window ramp widens by this fraction of its push
+constexpr double kOpenWiden = 1.0;        ///< the far wall's outside moves over a profile this much wider
 constexpr double kMaxSizeToCorpus = 1.25; ///< largest myoma against the smallest corpus dimension
 constexpr double kMaxPolypToCavity = 0.8; ///< largest polyp head against the cavity length
 constexpr double kHybridPlay = 0.15;      ///< a hybrid's seat: play for the centre across the wall, of the radius
@@ -665,11 +666,23 @@ struct Push {
     /// amount (so the slope along n stays below 0.75 / amount and lines along n still map monotonically): the far
     /// wall moves away with the cavity, its serosa less.
     double keepFrom = 0.0, keep = 0.0;
+    /// Axial, with keep: over the same ramp the profile across the axis widens by this factor more (so the far wall's
+    /// outside rises as a wide, low swelling rather than a bump). Widening with the height only adds motion further
+    /// along each line along n, so it keeps the map injective.
+    double widen = 0.0;
     Vec3 upDir() const { return norm(up) > 0.0 ? up : n; }
+    double keepRamp(double height) const {
+        return smoothstep(keepFrom, keepFrom + std::max(windowRamp, 2.0 * keep * amount), height);
+    }
     double beyond(double height) const {
         if (keepFrom <= 0.0 || keep <= 0.0)
             return 1.0;
-        return 1.0 - keep * smoothstep(keepFrom, keepFrom + std::max(windowRamp, 2.0 * keep * amount), height);
+        return 1.0 - keep * keepRamp(height);
+    }
+    double widthAt(double height) const {
+        if (keepFrom <= 0.0 || keep <= 0.0 || widen <= 0.0)
+            return 1.0;
+        return 1.0 + widen * keepRamp(height);
     }
     double fall() const { return radial ? std::max(windowRamp, 2.5 * amount) : std::max(windowRamp, stretch * amount); }
     double weight(const Vec3& x) const {
@@ -677,7 +690,7 @@ struct Push {
         const double tau = dot(d, n);
         const double rho = norm(d - n * tau);
         const double height = dot(d, upDir());
-        const double across = 1.0 - smoothstep(dome ? 0.0 : window, window + fall(), rho);
+        const double across = 1.0 - smoothstep(dome ? 0.0 : window, (window + fall()) * widthAt(height), rho);
         if (radial) {
             const double tilt = norm(cross(upDir(), n));
             const double hi = std::max(rampHi, rampLo + amount * (0.5 + 4.0 * tilt));
@@ -772,6 +785,7 @@ std::vector<Push> planPushes(const Planned& p, const OrganInfo& info, const Path
         open.dome = true;
         open.keepFrom = far ? farMm + c : 0.0;
         open.keep = kOpenKeep;
+        open.widen = kOpenWiden;
         pushes.push_back(open);
         Push around{e, d, 0.5, 2.0, across + c, windowRamp, 0.0, 0.0};
         around.radial = true;
