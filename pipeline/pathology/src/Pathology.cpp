@@ -510,10 +510,12 @@ Result<SurfaceMesh> grow(const PathologyRequest& r, const ShapeSpec& spec, const
     return fail(ErrorCode::Internal, "unknown growth model");
 }
 
-/// Scales so the measured size equals the request: about the centroid, or, for stalked shapes, about the foot of
-/// the head when it grows (the stalk keeps its length; its root sinks deeper into the wall) and about the stalk's
-/// root when it shrinks (the root stays in the wall); a sessile polyp about the endometrium point it sits on (about
-/// its sunk root, a shrinking head sank into the wall: 22-39 % of it measured intramural).
+/// Scales so the measured size equals the request: about the centroid, or, for stalked shapes, about the planned
+/// centre of the head when it grows (a head grown smaller than planned has its foot further out by the difference,
+/// and growing about its centre brings the foot back to the planned stalk length; its root sinks deeper into the
+/// wall; scaled about the planned foot, the particle model's stalks measured 9.4-10.7 mm where 7-8 mm were asked)
+/// and about the stalk's root when it shrinks (the root stays in the wall); a sessile polyp about the endometrium
+/// point it sits on (about its sunk root, a shrinking head sank into the wall: 22-39 % of it measured intramural).
 void scaleToSize(SurfaceMesh& mesh, const ShapeSpec& spec, double sizeMm) {
     const bool stalked = spec.polyp || spec.pedunculated;
     const Vec3 axis = normalized(spec.center - spec.base);
@@ -524,7 +526,7 @@ void scaleToSize(SurfaceMesh& mesh, const ShapeSpec& spec, double sizeMm) {
         const double factor = sizeMm / now;
         const Vec3 pivot = !stalked                           ? volumeCentroid(mesh)
                            : spec.polyp && !spec.pedunculated ? spec.base - spec.intoWall * kSinkMm
-                           : factor > 1.0                     ? spec.center - axis * spec.radius
+                           : factor > 1.0                     ? spec.center
                                                               : spec.base;
         scaleAbout(mesh, pivot, factor);
     }

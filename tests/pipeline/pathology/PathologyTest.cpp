@@ -128,6 +128,7 @@ class PolypBar : public testing::TestWithParam<PolypCase> {};
 // for, the size (of the head) within 10 %, merged into a valid body.
 TEST_P(PolypBar, GrowsWithItsStalkAndSizeAndMergesIntoAValidBody) {
     const PolypCase c = GetParam();
+    double stalkSum = 0.0;
     for (int seed = 1; seed <= 3; ++seed) {
         PathologyParams params;
         params.seed = static_cast<std::uint64_t>(seed);
@@ -137,12 +138,16 @@ TEST_P(PolypBar, GrowsWithItsStalkAndSizeAndMergesIntoAValidBody) {
         const Descriptors& d = grown->pathologies[0].descriptors;
         EXPECT_EQ(d.pedunculated, c.pedunculated) << "seed " << seed;
         if (c.pedunculated) {
-            EXPECT_GE(d.stalkLengthMm, 2.0) << "seed " << seed;
+            EXPECT_NEAR(d.stalkLengthMm, 8.0, 1.5) << "seed " << seed;
+            stalkSum += d.stalkLengthMm;
         }
         EXPECT_NEAR(d.sizeMm, 12.0, 1.2) << "seed " << seed;
         EXPECT_GT(d.cavityFraction, 0.5) << "seed " << seed;
         auto body = merge::mergeBody(*grown);
         EXPECT_TRUE(body.ok()) << "seed " << seed << ": " << (body.ok() ? "" : body.error().detail);
+    }
+    if (c.pedunculated) { // 8 mm asked; the particle model's measured 9.4 mm on average when scaled about the foot
+        EXPECT_NEAR(stalkSum / 3.0, 8.0, 0.8);
     }
 }
 
