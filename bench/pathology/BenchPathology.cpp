@@ -1,11 +1,10 @@
 // bench_pathology [ORGANS=20] [SIZE_MM=20] [--only skeleton|ca|particles|polyps] [--row TEXT] [--verbose] [--check]:
-// for every
-// FIGO type 0-7 (and 2-5) and every growth model, grows a posterior myoma in ORGANS seeded organs, merges it and prints
-// how often the measured FIGO type and size (within 10 %) match the request and the merged body is valid, with the mean
-// grow and merge times. Then the same for 12 mm polyps, sessile and pedunculated (8 mm stalk), fundal and posterior:
-// how often the measured attachment matches (a stalk measured for pedunculated ones, none for sessile ones), the size
-// (of the head) is within 10 % and the body merges. --verbose prints what was measured in every organ that misses. A
-// request the model refuses as unsupported in every organ is printed as such, not as a failure.
+// for every FIGO type 0-7 (and 2-5) and every growth model, grows a posterior myoma in ORGANS seeded organs, merges it
+// and prints how often the measured FIGO type and size (within 10 %) match the request and the merged body is valid,
+// with the mean grow and merge times. Then the same for 12 mm polyps, sessile and pedunculated (8 mm stalk), fundal and
+// posterior: how often the measured attachment matches (a stalk measured for pedunculated ones, none for sessile ones),
+// the size (of the head) is within 10 % and the body merges. --verbose prints what was measured in every organ that
+// misses. A request the model refuses as unsupported in every organ is printed as such, not as a failure.
 // --check exits with 1 when a row misses the bars of the pathology stage: every request grown, its size within 10 %
 // and its body valid in every organ, its measured type (or attachment) as requested in at least 95 % of the organs
 // (the test suite runs it over 20 organs).

@@ -64,8 +64,8 @@ double surfaceDistance(const SurfaceMesh& a, const SurfaceMesh& b, double cutoff
 class TriangleGrid {
 public:
     TriangleGrid(const SurfaceMesh& mesh, double cellMm);
-    /// Unsigned distance from p to the surface, or `cutoff` when it is at least that far (cutoff <= the cell size
-    /// gives a search of 3 x 3 x 3 cells).
+    /// Unsigned distance from p to the surface, or `cutoff` when it is at least that far (searches the cells within
+    /// cutoff + half a cell of p's cell: keep the cutoff to a few cells).
     double distance(const Vec3& p, double cutoff) const;
 
 private:
