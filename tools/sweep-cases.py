@@ -1,0 +1,86 @@
+#!/usr/bin/env python3
+"""Writes the 20-case sweep: ages 20-75, parity 0-4, every supported FIGO type (0-7, 2-5) and polyps.
+
+Used to check that a change keeps the scene bytes (docs/build-and-test.md, "Byte-identical output") and by the
+sweeps of the scene tests. The cases are a deterministic function of this file: run it again, get the same files.
+
+    python3 tools/sweep-cases.py OUT_DIR     # writes OUT_DIR/sweep-00.json .. sweep-19.json
+"""
+import copy
+import json
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+DEFAULT = os.path.join(HERE, "..", "resources", "cases", "default.json")
+
+FIGO = ["0", "1", "2", "3", "4", "5", "6", "7", "2-5"]
+LOCATIONS = ["posterior", "anterior", "fundal", "left-lateral", "right-lateral"]
+MYOMA_MODELS = ["skeleton", "particles", "ca"]
+POLYP_MODELS = ["skeleton", "particles"]
+
+
+def figo_value(text):
+    return int(text) if "-" not in text else text
+
+
+def sweep_case(i, base):
+    case = copy.deepcopy(base)
+    age = 20 + round(i * 55 / 19)  # 20 .. 75
+    parity = i % 5
+    case["title"] = f"Sweep {i:02d}: {age} years, parity {parity}"
+    case["seed"] = 1000 + i
+    patient = case["patient"]
+    patient["ageYears"] = float(age)
+    patient["parity"] = parity
+    patient["gravidity"] = parity + (i % 2)
+    patient["heightCm"] = 155.0 + (i * 7) % 30
+    patient["weightKg"] = 55.0 + (i * 11) % 40
+    patient["menopausal"] = age >= 55
+    pathologies = []
+    # Every case has a myoma; the FIGO types cycle so that each appears at least twice.
+    figo = FIGO[i % len(FIGO)]
+    pathologies.append({
+        "id": "myoma-1",
+        "kind": "myoma",
+        "growthModel": MYOMA_MODELS[i % len(MYOMA_MODELS)],
+        "sizeMm": 15.0 + (i * 3) % 12,
+        "figo": figo_value(figo),
+        "placement": {"location": LOCATIONS[i % len(LOCATIONS)]},
+    })
+    # Every other case also has a polyp, sessile or pedunculated, fundal or in a cornu.
+    if i % 2 == 0:
+        pedunculated = (i // 2) % 2 == 1
+        polyp = {
+            "id": "polyp-1",
+            "kind": "polyp",
+            "growthModel": POLYP_MODELS[(i // 2) % len(POLYP_MODELS)],
+            "sizeMm": 8.0 + (i % 4),
+            "attachment": "pedunculated" if pedunculated else "sessile",
+            "stalkLengthMm": 6.0 if pedunculated else None,
+            "placement": {"location": "fundal" if i % 4 == 0 else "cornual-right"},
+        }
+        pathologies.append(polyp)
+    case["pathologies"] = pathologies
+    return case
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.stderr.write(__doc__)
+        return 2
+    out = sys.argv[1]
+    os.makedirs(out, exist_ok=True)
+    with open(DEFAULT, encoding="utf-8") as f:
+        base = json.load(f)
+    for i in range(20):
+        path = os.path.join(out, f"sweep-{i:02d}.json")
+        with open(path + ".tmp", "w", encoding="utf-8") as f:
+            json.dump(sweep_case(i, base), f, indent=4)
+            f.write("\n")
+        os.replace(path + ".tmp", path)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
