@@ -1,29 +1,22 @@
-// `generate CASE.json -o SCENE`: the whole pipeline (organ, pathologies, merge, meshing, texture, scene) into a
-// scene package, with a progress bar and per-stage timings; --variants N makes N scenes with derived seeds.
-#include "CaseStages.h"
+// `generate CASE.json -o SCENE`: the whole pipeline into a scene package, with a progress bar and per-stage timings;
+// --variants N makes N scenes with derived seeds. The chain itself is hs::generate::generateScene; this file holds
+// the options, the progress printing, the package writing and the report.
 #include "CliCommon.h"
 #include "Commands.h"
 
-#include "hs/core/LabelTransfer.h"
-#include "hs/core/Rng.h"
 #include "hs/core/Timings.h"
-#include "hs/core/Units.h"
-#include "hs/merge/Merge.h"
-#include "hs/meshing/BaselineMeshers.h"
+#include "hs/generate/Generate.h"
+#include "hs/generate/Seeds.h"
 #include "hs/scene/Scene.h"
 #include "hs/scene/ScenePackage.h"
-#include "hs/texture/Bake.h"
 
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
-#include <array>
 #include <atomic>
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <map>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -31,17 +24,6 @@
 
 namespace hs::cli {
 namespace {
-
-// Sub-seeds of the case seed, one per stage, so that changing one stage's randomness leaves the others alone.
-constexpr std::uint64_t kMeshingStream = 7;
-constexpr std::uint64_t kTextureStream = 11;
-constexpr std::uint64_t kMaterialStream = 13;
-
-/// Face label on the visual surface: 0 wall (endometrium, serosa), 1 over a myoma, 2 over a polyp.
-constexpr const char* kAppearanceLabel = "appearance";
-/// Tissue label values of the organ surface (hs/anatomy/UterusGenerator.h).
-constexpr std::int32_t kTissueCervicalCanal = 3;
-constexpr std::int32_t kTissueOstium = 4;
 
 struct GenerateOptions {
     std::string casePath;
@@ -68,310 +50,22 @@ struct VariantReport {
     std::vector<std::string> warnings;
 };
 
-meshing::MeshMethod methodOf(scene::MeshingMethod m) {
-    switch (m) {
-    case scene::MeshingMethod::Particle:
-        return meshing::MeshMethod::Particle;
-    case scene::MeshingMethod::TetGen:
-        return meshing::MeshMethod::TetGen;
-    case scene::MeshingMethod::Cgal:
-        return meshing::MeshMethod::Cgal;
-    }
-    return meshing::MeshMethod::Particle;
-}
+/// Generates one variant (`spec` already carries its seed) and writes its package.
+Status generateVariant(const scene::CaseSpec& spec, const GenerateOptions& options, VariantReport& report,
+                       Progress& progress) {
+    auto generateSub = progress.sub(0.0, 0.85);
+    generate::GenerateParams params;
+    params.caseFile = options.casePath;
+    params.threads = options.threads;
+    auto generated = generate::generateScene(spec, params, generateSub);
+    if (!generated)
+        return generated.failure();
+    report.timings = generated->timings;
+    const scene::Scene& s = *generated->scene;
 
-meshing::MeshParams meshParamsFor(const scene::CaseSpec& spec, std::optional<int> threads) {
-    meshing::MeshParams p;
-    p.targetEdgeLength = spec.meshing.targetEdgeLengthMm.value_or(0.0);
-    p.targetVertices = spec.meshing.targetVertices.value_or(0);
-    p.seed = Rng::deriveSeed(spec.seed, kMeshingStream);
-    p.threads = threads.value_or(spec.meshing.threads);
-    p.particlesPerVoxel = spec.meshing.particlesPerInnerVoxel;
-    p.relaxationIterations = spec.meshing.relaxationIterations;
-    return p;
-}
-
-texture::BakeParams bakeParamsFor(const scene::CaseSpec& spec, std::optional<int> threads) {
-    texture::BakeParams p;
-    p.size = spec.texture.sizePx;
-    p.seed = Rng::deriveSeed(spec.seed, kTextureStream);
-    p.threads = threads.value_or(spec.meshing.threads);
-    p.labels.appearanceLabel = kAppearanceLabel;
-    p.labels.myomaValues = {1};
-    p.labels.polypValues = {2};
-    p.exemplarFiles[static_cast<std::size_t>(texture::Appearance::Endometrium)] =
-        spec.texture.exemplars.endometrium.value_or("");
-    p.exemplarFiles[static_cast<std::size_t>(texture::Appearance::Myoma)] = spec.texture.exemplars.myoma.value_or("");
-    p.exemplarFiles[static_cast<std::size_t>(texture::Appearance::Polyp)] = spec.texture.exemplars.polyp.value_or("");
-    p.vessels = spec.texture.vesselDensity > 0.0;
-    for (auto& c : p.vesselParams.perClass)
-        c.attractorsPerMm2 *= spec.texture.vesselDensity;
-    return p;
-}
-
-scene::MeshQuality qualityOf(const meshing::QualityReport& q) {
-    scene::MeshQuality m;
-    m.vertexCount = q.vertexCount;
-    m.tetCount = q.tetCount;
-    m.meanRadiusRatio = q.meanRadiusRatio;
-    m.minRadiusRatio = q.minRadiusRatio;
-    m.minDihedralDeg = q.minDihedralDeg;
-    m.maxDihedralDeg = q.maxDihedralDeg;
-    m.meanEdgeRatio = q.meanEdgeRatio;
-    m.maxEdgeRatio = q.maxEdgeRatio;
-    m.radiusRatioHistogram.assign(q.radiusRatioHistogram.begin(), q.radiusRatioHistogram.end());
-    m.minDihedralHistogram.assign(q.minDihedralHistogram.begin(), q.minDihedralHistogram.end());
-    m.sliverCount = q.sliverCount;
-    m.invertedCount = q.invertedCount;
-    m.degenerateCount = q.degenerateCount;
-    m.hasReference = q.hasReference;
-    m.hausdorffDistanceMm = q.hausdorffDistance;
-    m.hausdorffRelative = q.hausdorffRelative;
-    m.volumeError = q.volumeError;
-    return m;
-}
-
-/// Indices of the faces whose `label` equals `value`, ascending.
-std::vector<std::int32_t> facesWith(const SurfaceMesh& mesh, const std::string& label, std::int32_t value) {
-    std::vector<std::int32_t> faces;
-    const auto it = mesh.faceLabels.find(label);
-    if (it == mesh.faceLabels.end())
-        return faces;
-    for (std::size_t f = 0; f < it->second.size(); ++f)
-        if (it->second[f] == value)
-            faces.push_back(static_cast<std::int32_t>(f));
-    return faces;
-}
-
-/// The ostia are smaller than the mesh's triangles, so no boundary face may be nearest to an ostium face: carry
-/// them the other way too, marking the boundary face nearest to each ostium face of the organ.
-Status keepSmallTissueFeatures(const SurfaceMesh& outline, SurfaceMesh& boundary, double reach) {
-    SurfaceMesh probe = outline;
-    std::vector<std::int32_t> index(boundary.triangles.size());
-    for (std::size_t f = 0; f < index.size(); ++f)
-        index[f] = static_cast<std::int32_t>(f);
-    boundary.faceLabels["faceIndex"] = std::move(index);
-    const Status status = transferFaceLabels(boundary, probe, {"faceIndex"}, reach, -1);
-    boundary.faceLabels.erase("faceIndex");
-    HS_TRY(status);
-    const auto& tissue = outline.faceLabels.at("tissue");
-    const auto& nearest = probe.faceLabels.at("faceIndex");
-    auto& boundaryTissue = boundary.faceLabels.at("tissue");
-    for (std::size_t f = 0; f < tissue.size(); ++f)
-        if (tissue[f] == kTissueOstium && nearest[f] >= 0)
-            boundaryTissue[static_cast<std::size_t>(nearest[f])] = kTissueOstium;
-    return {};
-}
-
-/// Tets of region `region` that share a face with a tet of region `other`, ascending: where a pathology sits on the
-/// myometrium (a polyp's base, a myoma's intramural interface).
-std::vector<std::int32_t> tetsTouching(const TetMesh& mesh, std::int32_t region, std::int32_t other) {
-    std::map<std::array<std::int32_t, 3>, std::int32_t> otherFaces; // sorted face -> 1
-    constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
-    auto faceOf = [&mesh](std::size_t t, const int* f) {
-        std::array<std::int32_t, 3> key{mesh.tets[t][static_cast<std::size_t>(f[0])],
-                                        mesh.tets[t][static_cast<std::size_t>(f[1])],
-                                        mesh.tets[t][static_cast<std::size_t>(f[2])]};
-        std::sort(key.begin(), key.end());
-        return key;
-    };
-    for (std::size_t t = 0; t < mesh.tets.size(); ++t)
-        if (mesh.regionOf(t) == other)
-            for (const auto& f : kFaces)
-                otherFaces.emplace(faceOf(t, f), 1);
-    std::vector<std::int32_t> out;
-    for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
-        if (mesh.regionOf(t) != region)
-            continue;
-        for (const auto& f : kFaces)
-            if (otherFaces.count(faceOf(t, f))) {
-                out.push_back(static_cast<std::int32_t>(t));
-                break;
-            }
-    }
-    return out;
-}
-
-std::string locationKey(const scene::PathologySpec& p) {
-    if (const auto* c = std::get_if<scene::ClinicalPlacement>(&p.placement))
-        return std::string(scene::toString(c->location));
-    return "";
-}
-
-/// Runs every stage for one variant and writes its package. `spec` already carries the variant's seed.
-Status generateVariant(const scene::CaseSpec& spec, const std::string& caseFile, const GenerateOptions& options,
-                       VariantReport& report, Progress& progress) {
-    StageTimings& t = report.timings;
-    auto checkCancel = [&progress]() -> Status {
-        if (progress.cancelled())
-            return fail(ErrorCode::Cancelled, "generation cancelled");
-        return {};
-    };
-
-    // 1. Organ from the shape model.
-    std::optional<OrganInstance> organ;
-    {
-        ScopedStepTimer timer(t, "organ");
-        auto request = organRequestFor(spec, caseFile);
-        if (!request)
-            return request.failure();
-        auto model = anatomy::loadShapeModel(modelPathFor(spec, caseFile));
-        if (!model)
-            return model.failure();
-        auto made = makeOrgan(*model, *request);
-        if (!made)
-            return made.failure();
-        organ = std::move(made).value();
-    }
-    progress.report("organ", 0.05);
-    HS_TRY(checkCancel());
-
-    // 2. Pathologies grown in the organ, 3. merged into one body.
-    auto pathologySub = progress.sub(0.05, 0.15);
-    std::optional<pathology::PathologyResult> grown;
-    {
-        ScopedStepTimer timer(t, "pathology");
-        auto result = pathology::growPathologies(organ->mesh, pathologyParamsFor(spec), pathologySub);
-        if (!result)
-            return fail(result.error().code, caseFile + ": " + result.error().detail);
-        grown = std::move(result).value();
-    }
-    auto mergeSub = progress.sub(0.15, 0.25);
-    std::optional<merge::MergeResult> merged;
-    {
-        ScopedStepTimer timer(t, "merge");
-        auto result = merge::mergeBody(*grown, {}, mergeSub);
-        if (!result)
-            return fail(result.error().code, caseFile + ": " + result.error().detail);
-        merged = std::move(result).value();
-    }
-    HS_TRY(checkCancel());
-
-    // 4. Tetrahedral mesh. Scene region ids start at 1 (Gmsh physical tags must be positive): body region r -> r + 1.
-    auto meshSub = progress.sub(0.25, 0.65);
-    std::optional<meshing::MeshResult> meshed;
-    {
-        ScopedStepTimer timer(t, "meshing");
-        auto result = meshing::meshWith(methodOf(spec.meshing.method), merged->body,
-                                        meshParamsFor(spec, options.threads), meshSub);
-        if (!result)
-            return result.failure();
-        meshed = std::move(result).value();
-    }
-    scene::Scene s;
-    s.tets = std::move(meshed->mesh);
-    for (auto& r : s.tets.regions)
-        r += 1;
-    s.regions.push_back({1, "myometrium", scene::Tissue::Myometrium, ""});
-    for (std::size_t i = 0; i < spec.pathologies.size(); ++i) {
-        const auto& p = spec.pathologies[i];
-        s.regions.push_back({static_cast<std::int32_t>(i + 2), p.id,
-                             p.kind == scene::PathologyKind::Myoma ? scene::Tissue::Myoma : scene::Tissue::Polyp,
-                             p.id});
-    }
-    HS_TRY(checkCancel());
-
-    // 5. Visual surface: the mesh's boundary, with the organ's tissue and pathology labels carried over.
-    auto bakeSub = progress.sub(0.65, 0.85);
-    {
-        ScopedStepTimer timer(t, "texture");
-        SurfaceMesh boundary = extractBoundary(s.tets);
-        const double reach = 3.0 * std::max(meshed->targetEdgeLength, 0.5);
-        HS_TRY(transferFaceLabels(merged->body.surfaces.front().surface, boundary, {"tissue", merge::kPathologyLabel},
-                                  reach));
-        HS_TRY(keepSmallTissueFeatures(merged->body.surfaces.front().surface, boundary, reach));
-        std::vector<std::int32_t> appearance(boundary.triangles.size(), 0);
-        const auto& over = boundary.faceLabels.at(merge::kPathologyLabel);
-        for (std::size_t f = 0; f < appearance.size(); ++f) {
-            const auto p = over[f] - 1; // 1 + index of the pathology a face is draped over
-            if (p >= 0 && static_cast<std::size_t>(p) < spec.pathologies.size())
-                appearance[f] =
-                    spec.pathologies[static_cast<std::size_t>(p)].kind == scene::PathologyKind::Myoma ? 1 : 2;
-        }
-        boundary.faceLabels[kAppearanceLabel] = std::move(appearance);
-        auto baked = texture::bakeAppearance(boundary, bakeParamsFor(spec, options.threads), bakeSub);
-        if (!baked)
-            return baked.failure();
-        texture::TexturedSurface textured = texture::makeTexturedSurface(boundary, baked->atlas);
-        s.surface.mesh = std::move(textured.mesh);
-        s.surface.uvs = std::move(textured.uv);
-        s.surface.albedo = std::move(baked->albedo);
-        s.surface.normal = std::move(baked->normal);
-        s.surface.roughness = std::move(baked->roughness);
-        for (const auto& w : baked->warnings)
-            s.warnings.push_back("texture: " + w);
-    }
-    HS_TRY(checkCancel());
-
-    // 6. Materials, labels, descriptors, hydrometra.
-    {
-        ScopedStepTimer timer(t, "scene");
-        scene::MaterialOptions materialOptions;
-        materialOptions.seed = Rng::deriveSeed(spec.seed, kMaterialStream);
-        auto materials = scene::assignMaterials(s.tets, s.regions, spec.scene, materialOptions);
-        if (!materials)
-            return materials.failure();
-        s.materials = std::move(materials).value();
-
-        for (std::size_t i = 0; i < spec.pathologies.size(); ++i) {
-            auto faces = facesWith(s.surface.mesh, merge::kPathologyLabel, static_cast<std::int32_t>(i + 1));
-            if (!faces.empty())
-                s.labels.push_back({"contact:" + spec.pathologies[i].id, scene::LabelKind::Contact,
-                                    scene::LabelElement::SurfaceFace, spec.pathologies[i].id, std::move(faces)});
-        }
-        for (std::size_t i = 0; i < spec.pathologies.size(); ++i) {
-            auto base = tetsTouching(s.tets, static_cast<std::int32_t>(i + 2), 1);
-            if (!base.empty())
-                s.labels.push_back({"base:" + spec.pathologies[i].id, scene::LabelKind::PathologyBase,
-                                    scene::LabelElement::Tet, spec.pathologies[i].id, std::move(base)});
-        }
-        if (auto ostia = facesWith(s.surface.mesh, "tissue", kTissueOstium); !ostia.empty())
-            s.labels.push_back(
-                {"ostia", scene::LabelKind::Ostium, scene::LabelElement::SurfaceFace, "", std::move(ostia)});
-        if (auto canal = facesWith(s.surface.mesh, "tissue", kTissueCervicalCanal); !canal.empty())
-            s.labels.push_back({"cervical-canal", scene::LabelKind::CervicalCanal, scene::LabelElement::SurfaceFace, "",
-                                std::move(canal)});
-
-        const auto& d = organ->dimensions;
-        s.clinical.organ = {d.lengthMm, d.widthMm, d.apDepthMm, d.cavityLengthMm, d.cavityWidthMm, d.ellipsoidVolumeMl};
-        const auto volumes = regionVolumes(s.tets);
-        for (std::size_t i = 0; i < grown->pathologies.size() && i < spec.pathologies.size(); ++i) {
-            const auto& g = grown->pathologies[i];
-            scene::PathologyDescriptor pd;
-            pd.id = g.id;
-            pd.kind = spec.pathologies[i].kind;
-            pd.regionId = static_cast<std::int32_t>(i + 2);
-            pd.sizeMm = g.descriptors.sizeMm;
-            const auto v = volumes.find(pd.regionId);
-            pd.volumeMl = v == volumes.end() ? 0.0 : units::mlFromMm3(v->second);
-            if (g.kind == pathology::Kind::Myoma) {
-                pd.figo = scene::FigoType{g.descriptors.figo.type, g.descriptors.figo.serosal};
-                const auto& l = g.descriptors.lasmar;
-                pd.lasmar = scene::LasmarScore{l.size, l.topography, l.extension, l.penetration, l.wall};
-            }
-            pd.location = locationKey(spec.pathologies[i]);
-            s.clinical.pathologies.push_back(pd);
-        }
-        auto hydrometra = scene::computeHydrometra(d.ellipsoidVolumeMl, spec.scene.hydrometraPressureKpa);
-        if (!hydrometra)
-            return hydrometra.failure();
-        s.hydrometra = *hydrometra;
-        s.quality = qualityOf(meshed->quality);
-        s.caseSpec = spec;
-        s.toolVersions = scene::defaultToolVersions();
-        for (const auto& w : grown->warnings)
-            s.warnings.push_back("pathology: " + w);
-        for (const auto& w : merged->warnings)
-            s.warnings.push_back("merge: " + w);
-        for (const auto& w : meshed->warnings)
-            s.warnings.push_back("meshing: " + w);
-        HS_TRY(scene::checkScene(s));
-    }
-
-    // 7. The package, written atomically.
     auto writeSub = progress.sub(0.85, 1.0);
     {
-        ScopedStepTimer timer(t, "package");
+        ScopedStepTimer timer(report.timings, "package");
         auto written = scene::writeScenePackage(s, report.folder, {}, writeSub);
         if (!written)
             return written.failure();
@@ -506,7 +200,7 @@ int runGenerate(const GenerateOptions& options) {
     std::vector<VariantReport> reports(n);
     for (std::size_t i = 0; i < n; ++i) {
         reports[i].index = static_cast<int>(i);
-        reports[i].seed = n == 1 ? baseSeed : Rng::deriveSeed(baseSeed, i);
+        reports[i].seed = n == 1 ? baseSeed : generate::variantSeed(baseSeed, i);
         char name[32];
         std::snprintf(name, sizeof name, "variant-%03zu", i);
         reports[i].folder = n == 1 ? options.output : (std::filesystem::path(options.output) / name).string();
@@ -528,7 +222,7 @@ int runGenerate(const GenerateOptions& options) {
             scene::CaseSpec spec = *loaded;
             spec.seed = reports[i].seed;
             Progress progress([&printer, i](std::string_view stage, double f) { printer.update(i, stage, f); });
-            const Status status = generateVariant(spec, options.casePath, options, reports[i], progress);
+            const Status status = generateVariant(spec, options, reports[i], progress);
             if (!status.ok())
                 reports[i].error = status.error();
             printer.update(i, "done", 1.0);

@@ -1,7 +1,7 @@
 // `organ`: a healthy uterus for a patient from the statistical shape model, with its clinical dimensions.
-#include "CaseStages.h"
 #include "CliCommon.h"
 #include "Commands.h"
+#include "hs/generate/CaseStages.h"
 
 #include "hs/core/Resources.h"
 #include "hs/io/MeshIO.h"
@@ -62,10 +62,10 @@ void printDimensions(const anatomy::UterusDimensions& d) {
                 d.tissueVolumeMl, d.cavityVolumeMl, d.ellipsoidVolumeMl);
 }
 
-Result<OrganRequest> requestFromOptions(const OrganOptions& o, std::string& modelPath) {
+Result<generate::OrganRequest> requestFromOptions(const OrganOptions& o, std::string& modelPath) {
     const bool anyPatientOption =
         o.ageYears || o.parity || o.gravidity || o.heightCm || o.weightKg || !o.menopausal.empty();
-    OrganRequest request;
+    generate::OrganRequest request;
     if (!o.casePath.empty()) {
         if (anyPatientOption)
             return fail(ErrorCode::InvalidInput, "give either --case or the patient options (--age, --parity, "
@@ -73,12 +73,12 @@ Result<OrganRequest> requestFromOptions(const OrganOptions& o, std::string& mode
         auto spec = scene::loadCase(o.casePath);
         if (!spec)
             return spec.failure();
-        auto fromCase = organRequestFor(*spec, o.casePath);
+        auto fromCase = generate::organRequestFor(*spec, o.casePath);
         if (!fromCase)
             return fromCase.failure();
         request = *fromCase;
         if (o.modelPath.empty())
-            modelPath = modelPathFor(*spec, o.casePath);
+            modelPath = generate::modelPathFor(*spec, o.casePath);
     } else {
         anatomy::PatientParams p; // defaults of the shape model's patient
         p.ageYears = o.ageYears.value_or(p.ageYears);
@@ -115,7 +115,7 @@ int runOrgan(const OrganOptions& options) {
     auto model = anatomy::loadShapeModel(modelPath);
     if (!model)
         return reportError("organ", model.error());
-    auto organ = makeOrgan(*model, *request);
+    auto organ = generate::makeOrgan(*model, *request);
     if (!organ)
         return reportError("organ", organ.error());
     if (auto written = io::writeSurface(organ->mesh, options.output); !written.ok())

@@ -1,8 +1,8 @@
 // `pathology --case CASE.json -o DIR`: grows the case's pathologies in its organ, merges them into one multi-region
 // body, writes one surface per region plus manifest.json, and prints the descriptors measured from the geometry.
-#include "CaseStages.h"
 #include "CliCommon.h"
 #include "Commands.h"
+#include "hs/generate/CaseStages.h"
 
 #include "hs/core/Rng.h"
 #include "hs/io/AtomicFile.h"
@@ -66,16 +66,16 @@ int run(const PathologyOptions& o) {
                                                   "--model: '" + o.model + "' is not one of ca, skeleton, particles"});
         override = m;
     }
-    auto request = organRequestFor(*spec, o.casePath);
+    auto request = generate::organRequestFor(*spec, o.casePath);
     if (!request.ok())
         return reportError("pathology", request.error());
-    auto model = anatomy::loadShapeModel(modelPathFor(*spec, o.casePath));
+    auto model = anatomy::loadShapeModel(generate::modelPathFor(*spec, o.casePath));
     if (!model.ok())
         return reportError("pathology", model.error());
-    auto organ = makeOrgan(*model, *request);
+    auto organ = generate::makeOrgan(*model, *request);
     if (!organ.ok())
         return reportError("pathology", organ.error());
-    auto grown = pathology::growPathologies(organ->mesh, pathologyParamsFor(*spec, override));
+    auto grown = pathology::growPathologies(organ->mesh, generate::pathologyParamsFor(*spec, override));
     if (!grown.ok())
         return reportError("pathology", Error{grown.error().code, o.casePath + ": " + grown.error().detail});
     auto merged = merge::mergeBody(*grown);

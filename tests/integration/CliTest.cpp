@@ -1,7 +1,9 @@
 // Runs hysteroscene-cli as a user would and checks exit codes and output.
 #include "TestSupport.h"
 
+#include "hs/generate/Generate.h"
 #include "hs/io/MeshIO.h"
+#include "hs/scene/ScenePackage.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -332,6 +334,29 @@ TEST(Cli, GenerateGivesTheSamePackageOnRepeatedRunsAndAnyThreadCount) {
     const std::string a = readText(tmp.file("a/manifest.json"));
     EXPECT_FALSE(a.empty());
     EXPECT_EQ(a, readText(tmp.file("b/manifest.json")));
+}
+
+TEST(Cli, GenerateWritesTheSameBytesAsTheLibraryChain) {
+    // The command is a thin caller of hs::generate::generateScene: options, progress, the package, the report.
+    hs::test::TempDir tmp;
+    const std::string small = writeSmallCase(tmp);
+    ASSERT_EQ(cli("generate " + quote(small) + " -o " + quote(tmp.file("cli"))).exitCode, 0);
+    auto spec = hs::scene::loadCase(small);
+    ASSERT_TRUE(spec.ok()) << spec.error().message();
+    hs::generate::GenerateParams params;
+    params.caseFile = small;
+    auto generated = hs::generate::generateScene(*spec, params);
+    ASSERT_TRUE(generated.ok()) << generated.error().message();
+    ASSERT_TRUE(hs::scene::writeScenePackage(*generated->scene, tmp.file("library")).ok());
+    std::size_t files = 0;
+    for (const auto& e : fs::recursive_directory_iterator(tmp.file("cli"))) {
+        if (!e.is_regular_file())
+            continue;
+        const auto rel = fs::relative(e.path(), tmp.file("cli"));
+        EXPECT_EQ(readText(e.path().string()), readText((fs::path(tmp.file("library")) / rel).string())) << rel;
+        ++files;
+    }
+    EXPECT_GT(files, 5u);
 }
 
 TEST(Cli, GenerateWritesVariantsWithDerivedSeeds) {

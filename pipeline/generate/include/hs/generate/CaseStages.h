@@ -1,16 +1,20 @@
 #pragma once
-/// From a case file to the inputs of each pipeline stage (shared by the subcommands that run stages).
+/// From a case to the parameters of each pipeline stage. The stages do not know the case format; this is the one
+/// place that maps a CaseSpec onto their own parameter structs (the CLI's subcommands, generateScene and the
+/// workstation's jobs all use it).
 
 #include "hs/anatomy/ShapeModel.h"
 #include "hs/core/Result.h"
+#include "hs/meshing/MeshTypes.h"
 #include "hs/pathology/Pathology.h"
 #include "hs/scene/CaseSpec.h"
+#include "hs/texture/Bake.h"
 
 #include <cstdint>
 #include <optional>
 #include <string>
 
-namespace hs::cli {
+namespace hs::generate {
 
 /// The case's patient block as the shape model's parameters (same fields, same units).
 anatomy::PatientParams patientOf(const scene::CaseSpec& spec);
@@ -33,14 +37,25 @@ struct OrganInstance {
 };
 
 /// Makes the organ: a sample or the mean for the patient, moved to the requested dimensions when there are any.
-Result<OrganInstance> makeOrgan(const anatomy::ShapeModel& model, const OrganRequest& request);
+[[nodiscard]] Result<OrganInstance> makeOrgan(const anatomy::ShapeModel& model, const OrganRequest& request);
 
 /// The organ request of a case; Unsupported for the cornual angle, which the model does not measure.
-Result<OrganRequest> organRequestFor(const scene::CaseSpec& spec, const std::string& caseFile);
+[[nodiscard]] Result<OrganRequest> organRequestFor(const scene::CaseSpec& spec, const std::string& caseFile);
 
 /// The case's pathologies as the pathology stage's requests (the case is already validated); `override` replaces
-/// every pathology's growth model. The stage's seed is derived from the case seed.
+/// every pathology's growth model. The stage's seed is the pathology stream of the case seed.
 pathology::PathologyParams pathologyParamsFor(const scene::CaseSpec& spec,
                                               const std::optional<scene::GrowthModel>& override = std::nullopt);
 
-} // namespace hs::cli
+/// The meshing method the case asks for.
+meshing::MeshMethod meshMethodFor(const scene::CaseSpec& spec);
+/// The meshing stage's parameters; `threads` replaces the case's thread count (never changes the mesh).
+meshing::MeshParams meshParamsFor(const scene::CaseSpec& spec, std::optional<int> threads = std::nullopt);
+
+/// Face label of the visual surface that says which appearance a face takes: 0 wall (endometrium, serosa), 1 over a
+/// myoma, 2 over a polyp.
+inline constexpr const char* kAppearanceLabel = "appearance";
+/// The texture stage's parameters; `threads` replaces the case's thread count (never changes the maps).
+texture::BakeParams bakeParamsFor(const scene::CaseSpec& spec, std::optional<int> threads = std::nullopt);
+
+} // namespace hs::generate

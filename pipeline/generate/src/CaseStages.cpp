@@ -1,12 +1,11 @@
-#include "CaseStages.h"
+#include "hs/generate/CaseStages.h"
 
 #include "hs/core/Resources.h"
-
-#include "hs/core/Rng.h"
+#include "hs/generate/Seeds.h"
 
 #include <filesystem>
 
-namespace hs::cli {
+namespace hs::generate {
 namespace {
 
 pathology::Location locationOf(scene::UterineLocation l) {
@@ -75,7 +74,7 @@ Result<OrganRequest> organRequestFor(const scene::CaseSpec& spec, const std::str
                                                 "measure the cornual angle yet: remove the field");
     OrganRequest request;
     request.patient = patientOf(spec);
-    request.seed = spec.seed;
+    request.seed = organSeed(spec.seed);
     request.mean = spec.anatomy.shape == scene::ShapeMode::Mean;
     request.versionDeg = spec.anatomy.versionDeg;
     request.dimensions.lengthMm = d.lengthMm;
@@ -107,11 +106,10 @@ Result<OrganInstance> makeOrgan(const anatomy::ShapeModel& model, const OrganReq
     return OrganInstance{std::move(mesh).value(), *dims};
 }
 
-/// The case's pathologies as the stage's requests (the case is already validated).
 pathology::PathologyParams pathologyParamsFor(const scene::CaseSpec& spec,
                                               const std::optional<scene::GrowthModel>& override) {
     pathology::PathologyParams params;
-    params.seed = Rng::deriveSeed(spec.seed, 5); // the pathology stage's stream of the case seed
+    params.seed = streamSeed(spec.seed, Stream::Pathology);
     for (const auto& p : spec.pathologies) {
         pathology::PathologyRequest r;
         r.id = p.id;
@@ -135,4 +133,45 @@ pathology::PathologyParams pathologyParamsFor(const scene::CaseSpec& spec,
     return params;
 }
 
-} // namespace hs::cli
+meshing::MeshMethod meshMethodFor(const scene::CaseSpec& spec) {
+    switch (spec.meshing.method) {
+    case scene::MeshingMethod::Particle:
+        return meshing::MeshMethod::Particle;
+    case scene::MeshingMethod::TetGen:
+        return meshing::MeshMethod::TetGen;
+    case scene::MeshingMethod::Cgal:
+        return meshing::MeshMethod::Cgal;
+    }
+    return meshing::MeshMethod::Particle;
+}
+
+meshing::MeshParams meshParamsFor(const scene::CaseSpec& spec, std::optional<int> threads) {
+    meshing::MeshParams p;
+    p.targetEdgeLength = spec.meshing.targetEdgeLengthMm.value_or(0.0);
+    p.targetVertices = spec.meshing.targetVertices.value_or(0);
+    p.seed = streamSeed(spec.seed, Stream::Meshing);
+    p.threads = threads.value_or(spec.meshing.threads);
+    p.particlesPerVoxel = spec.meshing.particlesPerInnerVoxel;
+    p.relaxationIterations = spec.meshing.relaxationIterations;
+    return p;
+}
+
+texture::BakeParams bakeParamsFor(const scene::CaseSpec& spec, std::optional<int> threads) {
+    texture::BakeParams p;
+    p.size = spec.texture.sizePx;
+    p.seed = streamSeed(spec.seed, Stream::Texture);
+    p.threads = threads.value_or(spec.meshing.threads);
+    p.labels.appearanceLabel = kAppearanceLabel;
+    p.labels.myomaValues = {1};
+    p.labels.polypValues = {2};
+    p.exemplarFiles[static_cast<std::size_t>(texture::Appearance::Endometrium)] =
+        spec.texture.exemplars.endometrium.value_or("");
+    p.exemplarFiles[static_cast<std::size_t>(texture::Appearance::Myoma)] = spec.texture.exemplars.myoma.value_or("");
+    p.exemplarFiles[static_cast<std::size_t>(texture::Appearance::Polyp)] = spec.texture.exemplars.polyp.value_or("");
+    p.vessels = spec.texture.vesselDensity > 0.0;
+    for (auto& c : p.vesselParams.perClass)
+        c.attractorsPerMm2 *= spec.texture.vesselDensity;
+    return p;
+}
+
+} // namespace hs::generate

@@ -1,0 +1,234 @@
+#include "hs/generate/Assembly.h"
+
+#include "hs/anatomy/UterusGenerator.h"
+#include "hs/core/LabelTransfer.h"
+#include "hs/core/Units.h"
+#include "hs/generate/Seeds.h"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <utility>
+#include <variant>
+
+namespace hs::generate {
+namespace {
+
+constexpr auto kTissueCervicalCanal = static_cast<std::int32_t>(anatomy::Tissue::CervicalCanal);
+constexpr auto kTissueOstium = static_cast<std::int32_t>(anatomy::Tissue::TubalOstium);
+
+/// The ostia are smaller than the mesh's triangles, so no boundary face may be nearest to an ostium face: carry
+/// them the other way too, marking the boundary face nearest to each ostium face of the organ.
+Status keepSmallTissueFeatures(const SurfaceMesh& outline, SurfaceMesh& boundary, double reach) {
+    SurfaceMesh probe = outline;
+    std::vector<std::int32_t> index(boundary.triangles.size());
+    for (std::size_t f = 0; f < index.size(); ++f)
+        index[f] = static_cast<std::int32_t>(f);
+    boundary.faceLabels["faceIndex"] = std::move(index);
+    const Status status = transferFaceLabels(boundary, probe, {"faceIndex"}, reach, -1);
+    boundary.faceLabels.erase("faceIndex");
+    HS_TRY(status);
+    const auto& tissue = outline.faceLabels.at(anatomy::kTissueLabel);
+    const auto& nearest = probe.faceLabels.at("faceIndex");
+    auto& boundaryTissue = boundary.faceLabels.at(anatomy::kTissueLabel);
+    for (std::size_t f = 0; f < tissue.size(); ++f)
+        if (tissue[f] == kTissueOstium && nearest[f] >= 0)
+            boundaryTissue[static_cast<std::size_t>(nearest[f])] = kTissueOstium;
+    return {};
+}
+
+std::string locationKey(const scene::PathologySpec& p) {
+    if (const auto* c = std::get_if<scene::ClinicalPlacement>(&p.placement))
+        return std::string(scene::toString(c->location));
+    return "";
+}
+
+scene::Tissue tissueOf(scene::PathologyKind kind) {
+    return kind == scene::PathologyKind::Myoma ? scene::Tissue::Myoma : scene::Tissue::Polyp;
+}
+
+} // namespace
+
+std::int32_t pathologyRegion(std::size_t pathologyIndex) {
+    return static_cast<std::int32_t>(pathologyIndex) + kWallRegion + 1;
+}
+
+std::vector<scene::SceneRegion> sceneRegions(const scene::CaseSpec& spec) {
+    std::vector<scene::SceneRegion> regions;
+    regions.push_back({kWallRegion, "myometrium", scene::Tissue::Myometrium, ""});
+    for (std::size_t i = 0; i < spec.pathologies.size(); ++i) {
+        const auto& p = spec.pathologies[i];
+        regions.push_back({pathologyRegion(i), p.id, tissueOf(p.kind), p.id});
+    }
+    return regions;
+}
+
+TetMesh sceneTets(const TetMesh& meshed) {
+    TetMesh tets = meshed;
+    for (auto& r : tets.regions)
+        r += kSceneRegionOffset;
+    return tets;
+}
+
+Result<SurfaceMesh> labelledBoundary(const TetMesh& tets, const SurfaceMesh& outline, const scene::CaseSpec& spec,
+                                     double reachMm) {
+    SurfaceMesh boundary = extractBoundary(tets);
+    HS_TRY(transferFaceLabels(outline, boundary, {anatomy::kTissueLabel, merge::kPathologyLabel}, reachMm));
+    HS_TRY(keepSmallTissueFeatures(outline, boundary, reachMm));
+    std::vector<std::int32_t> appearance(boundary.triangles.size(), 0);
+    const auto& over = boundary.faceLabels.at(merge::kPathologyLabel);
+    for (std::size_t f = 0; f < appearance.size(); ++f) {
+        const auto p = over[f] - 1; // 1 + index of the pathology a face is draped over
+        if (p >= 0 && static_cast<std::size_t>(p) < spec.pathologies.size())
+            appearance[f] = spec.pathologies[static_cast<std::size_t>(p)].kind == scene::PathologyKind::Myoma ? 1 : 2;
+    }
+    boundary.faceLabels[kAppearanceLabel] = std::move(appearance);
+    return boundary;
+}
+
+std::vector<std::int32_t> facesWith(const SurfaceMesh& mesh, const std::string& label, std::int32_t value) {
+    std::vector<std::int32_t> faces;
+    const auto it = mesh.faceLabels.find(label);
+    if (it == mesh.faceLabels.end())
+        return faces;
+    for (std::size_t f = 0; f < it->second.size(); ++f)
+        if (it->second[f] == value)
+            faces.push_back(static_cast<std::int32_t>(f));
+    return faces;
+}
+
+std::vector<std::int32_t> tetsTouching(const TetMesh& mesh, std::int32_t region, std::int32_t other) {
+    std::map<std::array<std::int32_t, 3>, std::int32_t> otherFaces; // sorted face -> 1
+    constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+    auto faceOf = [&mesh](std::size_t t, const int* f) {
+        std::array<std::int32_t, 3> key{mesh.tets[t][static_cast<std::size_t>(f[0])],
+                                        mesh.tets[t][static_cast<std::size_t>(f[1])],
+                                        mesh.tets[t][static_cast<std::size_t>(f[2])]};
+        std::sort(key.begin(), key.end());
+        return key;
+    };
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+        if (mesh.regionOf(t) == other)
+            for (const auto& f : kFaces)
+                otherFaces.emplace(faceOf(t, f), 1);
+    std::vector<std::int32_t> out;
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+        if (mesh.regionOf(t) != region)
+            continue;
+        for (const auto& f : kFaces)
+            if (otherFaces.count(faceOf(t, f))) {
+                out.push_back(static_cast<std::int32_t>(t));
+                break;
+            }
+    }
+    return out;
+}
+
+std::vector<scene::SceneLabel> sceneLabels(const scene::CaseSpec& spec, const TetMesh& tets,
+                                           const SurfaceMesh& visual) {
+    std::vector<scene::SceneLabel> labels;
+    for (std::size_t i = 0; i < spec.pathologies.size(); ++i) {
+        auto faces = facesWith(visual, merge::kPathologyLabel, static_cast<std::int32_t>(i + 1));
+        if (!faces.empty())
+            labels.push_back({"contact:" + spec.pathologies[i].id, scene::LabelKind::Contact,
+                              scene::LabelElement::SurfaceFace, spec.pathologies[i].id, std::move(faces)});
+    }
+    for (std::size_t i = 0; i < spec.pathologies.size(); ++i) {
+        auto base = tetsTouching(tets, pathologyRegion(i), kWallRegion);
+        if (!base.empty())
+            labels.push_back({"base:" + spec.pathologies[i].id, scene::LabelKind::PathologyBase,
+                              scene::LabelElement::Tet, spec.pathologies[i].id, std::move(base)});
+    }
+    if (auto ostia = facesWith(visual, anatomy::kTissueLabel, kTissueOstium); !ostia.empty())
+        labels.push_back({"ostia", scene::LabelKind::Ostium, scene::LabelElement::SurfaceFace, "", std::move(ostia)});
+    if (auto canal = facesWith(visual, anatomy::kTissueLabel, kTissueCervicalCanal); !canal.empty())
+        labels.push_back({"cervical-canal", scene::LabelKind::CervicalCanal, scene::LabelElement::SurfaceFace, "",
+                          std::move(canal)});
+    return labels;
+}
+
+scene::ClinicalDescriptors clinicalDescriptors(const scene::CaseSpec& spec, const anatomy::UterusDimensions& organ,
+                                               const pathology::PathologyResult& grown, const TetMesh& tets) {
+    scene::ClinicalDescriptors c;
+    c.organ = {organ.lengthMm,       organ.widthMm,       organ.apDepthMm,
+               organ.cavityLengthMm, organ.cavityWidthMm, organ.ellipsoidVolumeMl};
+    const auto volumes = regionVolumes(tets);
+    for (std::size_t i = 0; i < grown.pathologies.size() && i < spec.pathologies.size(); ++i) {
+        const auto& g = grown.pathologies[i];
+        scene::PathologyDescriptor pd;
+        pd.id = g.id;
+        pd.kind = spec.pathologies[i].kind;
+        pd.regionId = pathologyRegion(i);
+        pd.sizeMm = g.descriptors.sizeMm;
+        const auto v = volumes.find(pd.regionId);
+        pd.volumeMl = v == volumes.end() ? 0.0 : units::mlFromMm3(v->second);
+        if (g.kind == pathology::Kind::Myoma) {
+            pd.figo = scene::FigoType{g.descriptors.figo.type, g.descriptors.figo.serosal};
+            const auto& l = g.descriptors.lasmar;
+            pd.lasmar = scene::LasmarScore{l.size, l.topography, l.extension, l.penetration, l.wall};
+        }
+        pd.location = locationKey(spec.pathologies[i]);
+        c.pathologies.push_back(pd);
+    }
+    return c;
+}
+
+scene::MeshQuality qualityOf(const meshing::QualityReport& q) {
+    scene::MeshQuality m;
+    m.vertexCount = q.vertexCount;
+    m.tetCount = q.tetCount;
+    m.meanRadiusRatio = q.meanRadiusRatio;
+    m.minRadiusRatio = q.minRadiusRatio;
+    m.minDihedralDeg = q.minDihedralDeg;
+    m.maxDihedralDeg = q.maxDihedralDeg;
+    m.meanEdgeRatio = q.meanEdgeRatio;
+    m.maxEdgeRatio = q.maxEdgeRatio;
+    m.radiusRatioHistogram.assign(q.radiusRatioHistogram.begin(), q.radiusRatioHistogram.end());
+    m.minDihedralHistogram.assign(q.minDihedralHistogram.begin(), q.minDihedralHistogram.end());
+    m.sliverCount = q.sliverCount;
+    m.invertedCount = q.invertedCount;
+    m.degenerateCount = q.degenerateCount;
+    m.hasReference = q.hasReference;
+    m.hausdorffDistanceMm = q.hausdorffDistance;
+    m.hausdorffRelative = q.hausdorffRelative;
+    m.volumeError = q.volumeError;
+    return m;
+}
+
+Result<scene::Scene> assembleScene(const scene::CaseSpec& spec, const OrganInstance& organ,
+                                   const pathology::PathologyResult& grown, const merge::MergeResult& merged,
+                                   const meshing::MeshResult& meshed, const Appearance& appearance) {
+    scene::Scene s;
+    s.tets = sceneTets(meshed.mesh);
+    s.regions = sceneRegions(spec);
+    s.surface = appearance.surface;
+
+    scene::MaterialOptions materialOptions;
+    materialOptions.seed = streamSeed(spec.seed, Stream::Material);
+    auto materials = scene::assignMaterials(s.tets, s.regions, spec.scene, materialOptions);
+    if (!materials)
+        return materials.failure();
+    s.materials = std::move(materials).value();
+
+    s.labels = sceneLabels(spec, s.tets, s.surface.mesh);
+    s.clinical = clinicalDescriptors(spec, organ.dimensions, grown, s.tets);
+    auto hydrometra = scene::computeHydrometra(organ.dimensions.ellipsoidVolumeMl, spec.scene.hydrometraPressureKpa);
+    if (!hydrometra)
+        return hydrometra.failure();
+    s.hydrometra = *hydrometra;
+    s.quality = qualityOf(meshed.quality);
+    s.caseSpec = spec;
+    s.toolVersions = scene::defaultToolVersions();
+    for (const auto& w : appearance.warnings)
+        s.warnings.push_back("texture: " + w);
+    for (const auto& w : grown.warnings)
+        s.warnings.push_back("pathology: " + w);
+    for (const auto& w : merged.warnings)
+        s.warnings.push_back("merge: " + w);
+    for (const auto& w : meshed.warnings)
+        s.warnings.push_back("meshing: " + w);
+    HS_TRY(scene::checkScene(s));
+    return s;
+}
+
+} // namespace hs::generate

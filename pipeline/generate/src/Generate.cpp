@@ -1,0 +1,229 @@
+#include "hs/generate/Generate.h"
+
+#include "hs/anatomy/ShapeModel.h"
+#include "hs/meshing/BaselineMeshers.h"
+#include "hs/texture/Bake.h"
+
+#include <algorithm>
+#include <array>
+#include <utility>
+
+namespace hs::generate {
+namespace {
+
+/// Where each stage starts in generateScene's progress range, by cost on the default case (the mesh takes about
+/// half the time, the texture a quarter); the last entry closes the range.
+constexpr std::array<double, kStageCount + 1> kStageStart{0.0, 0.06, 0.18, 0.29, 0.76, 1.0, 1.0};
+
+std::size_t indexOf(Stage stage) {
+    return static_cast<std::size_t>(stage);
+}
+
+/// A stage's error, prefixed with the case file where the stage itself does not name it.
+Error inCase(const GenerateParams& params, Error error) {
+    if (!params.caseFile.empty())
+        error.detail = params.caseFile + ": " + error.detail;
+    return error;
+}
+
+Status checkCancel(const Progress& progress) {
+    if (progress.cancelled())
+        return fail(ErrorCode::Cancelled, "generation cancelled");
+    return {};
+}
+
+Status runOrgan(Generated& g, const GenerateParams& params) {
+    auto request = organRequestFor(g.spec, params.caseFile);
+    if (!request)
+        return request.failure();
+    auto model = anatomy::loadShapeModel(modelPathFor(g.spec, params.caseFile));
+    if (!model)
+        return model.failure();
+    auto made = makeOrgan(*model, *request);
+    if (!made)
+        return made.failure();
+    g.organ = std::move(made).value();
+    return {};
+}
+
+Status runPathology(Generated& g, const GenerateParams& params, Progress& progress) {
+    auto result = pathology::growPathologies(g.organ->mesh, pathologyParamsFor(g.spec), progress);
+    if (!result)
+        return inCase(params, result.error());
+    g.pathologies = std::move(result).value();
+    return {};
+}
+
+Status runMerge(Generated& g, const GenerateParams& params, Progress& progress) {
+    auto result = merge::mergeBody(*g.pathologies, {}, progress);
+    if (!result)
+        return inCase(params, result.error());
+    g.body = std::move(result).value();
+    return {};
+}
+
+Status runMeshing(Generated& g, const GenerateParams& params, Progress& progress) {
+    auto result =
+        meshing::meshWith(meshMethodFor(g.spec), g.body->body, meshParamsFor(g.spec, params.threads), progress);
+    if (!result)
+        return result.failure();
+    g.mesh = std::move(result).value();
+    return {};
+}
+
+/// The visual surface: the mesh's boundary with the body outline's labels, baked and split along chart seams.
+Status runTexture(Generated& g, const GenerateParams& params, Progress& progress) {
+    const double reach = 3.0 * std::max(g.mesh->targetEdgeLength, 0.5);
+    auto boundary = labelledBoundary(sceneTets(g.mesh->mesh), g.body->body.surfaces.front().surface, g.spec, reach);
+    if (!boundary)
+        return boundary.failure();
+    auto baked = texture::bakeAppearance(*boundary, bakeParamsFor(g.spec, params.threads), progress);
+    if (!baked)
+        return baked.failure();
+    texture::TexturedSurface textured = texture::makeTexturedSurface(*boundary, baked->atlas);
+    Appearance a;
+    a.surface.mesh = std::move(textured.mesh);
+    a.surface.uvs = std::move(textured.uv);
+    a.surface.albedo = std::move(baked->albedo);
+    a.surface.normal = std::move(baked->normal);
+    a.surface.roughness = std::move(baked->roughness);
+    a.stats = baked->stats;
+    a.warnings = std::move(baked->warnings);
+    g.appearance = std::move(a);
+    return {};
+}
+
+Status runScene(Generated& g) {
+    auto s = assembleScene(g.spec, *g.organ, *g.pathologies, *g.body, *g.mesh, *g.appearance);
+    if (!s)
+        return s.failure();
+    g.scene = std::move(s).value();
+    return {};
+}
+
+Status runStage(Stage stage, Generated& g, const GenerateParams& params, Progress& progress) {
+    switch (stage) {
+    case Stage::Organ:
+        return runOrgan(g, params);
+    case Stage::Pathology:
+        return runPathology(g, params, progress);
+    case Stage::Merge:
+        return runMerge(g, params, progress);
+    case Stage::Meshing:
+        return runMeshing(g, params, progress);
+    case Stage::Texture:
+        return runTexture(g, params, progress);
+    case Stage::Scene:
+        return runScene(g);
+    }
+    return fail(ErrorCode::InvalidInput, "unknown stage");
+}
+
+void clearFrom(Stage from, Generated& g) {
+    const auto i = indexOf(from);
+    if (i <= indexOf(Stage::Organ))
+        g.organ.reset();
+    if (i <= indexOf(Stage::Pathology))
+        g.pathologies.reset();
+    if (i <= indexOf(Stage::Merge))
+        g.body.reset();
+    if (i <= indexOf(Stage::Meshing))
+        g.mesh.reset();
+    if (i <= indexOf(Stage::Texture))
+        g.appearance.reset();
+    g.scene.reset();
+}
+
+/// Runs `from` and the stages after it; the results of the stages before it must be set.
+Status runFrom(Stage from, Generated& g, const GenerateParams& params, Progress& progress) {
+    if (auto issues = scene::checkCase(g.spec); !issues.empty()) {
+        std::string detail;
+        for (const auto& issue : issues)
+            detail += (detail.empty() ? "" : "\n") + (params.caseFile.empty() ? "case" : params.caseFile) + ": " +
+                      issue.text();
+        return fail(ErrorCode::InvalidInput, detail);
+    }
+    clearFrom(from, g);
+    g.timings = {};
+    for (auto i = indexOf(from); i < static_cast<std::size_t>(kStageCount); ++i) {
+        const auto stage = static_cast<Stage>(i);
+        HS_TRY(checkCancel(progress));
+        auto sub = progress.sub(kStageStart[i], kStageStart[i + 1]);
+        {
+            ScopedStepTimer timer(g.timings, std::string(toString(stage)));
+            HS_TRY(runStage(stage, g, params, sub));
+        }
+        progress.report(toString(stage), kStageStart[i + 1]);
+    }
+    return {};
+}
+
+} // namespace
+
+bool Generated::has(Stage stage) const {
+    switch (stage) {
+    case Stage::Organ:
+        return organ.has_value();
+    case Stage::Pathology:
+        return pathologies.has_value();
+    case Stage::Merge:
+        return body.has_value();
+    case Stage::Meshing:
+        return mesh.has_value();
+    case Stage::Texture:
+        return appearance.has_value();
+    case Stage::Scene:
+        return scene.has_value();
+    }
+    return false;
+}
+
+Result<Generated> generateScene(const scene::CaseSpec& spec, const GenerateParams& params, Progress& progress) {
+    Generated g;
+    g.spec = spec;
+    HS_TRY(runFrom(Stage::Organ, g, params, progress));
+    return g;
+}
+
+std::optional<CaseChange> firstChangedStage(const scene::CaseSpec& before, const scene::CaseSpec& after) {
+    if (before.seed != after.seed)
+        return CaseChange{Stage::Organ, "/seed"};
+    if (!(before.patient == after.patient))
+        return CaseChange{Stage::Organ, "/patient"};
+    if (!(before.anatomy == after.anatomy))
+        return CaseChange{Stage::Organ, "/anatomy"};
+    if (!(before.pathologies == after.pathologies))
+        return CaseChange{Stage::Pathology, "/pathologies"};
+    scene::MeshingParams meshingBefore = before.meshing;
+    meshingBefore.threads = after.meshing.threads; // the thread count never changes a result
+    if (!(meshingBefore == after.meshing))
+        return CaseChange{Stage::Meshing, "/meshing"};
+    if (!(before.texture == after.texture))
+        return CaseChange{Stage::Texture, "/texture"};
+    if (!(before.scene == after.scene))
+        return CaseChange{Stage::Scene, "/scene"};
+    if (before.title != after.title)
+        return CaseChange{Stage::Scene, "/title"};
+    return std::nullopt;
+}
+
+Result<Generated> regenerateFrom(Stage from, Generated previous, const scene::CaseSpec& edited,
+                                 const GenerateParams& params, Progress& progress) {
+    if (const auto change = firstChangedStage(previous.spec, edited); change && indexOf(change->stage) < indexOf(from))
+        return fail(ErrorCode::InvalidInput,
+                    (params.caseFile.empty() ? std::string("case") : params.caseFile) + ": " + change->field +
+                        " changed, which the " + std::string(toString(change->stage)) +
+                        " stage reads: regenerate from '" + std::string(toString(change->stage)) +
+                        "' or earlier, not from '" + std::string(toString(from)) + "'");
+    for (auto i = indexOf(Stage::Organ); i < indexOf(from); ++i)
+        if (!previous.has(static_cast<Stage>(i)))
+            return fail(ErrorCode::InvalidInput, "regenerating from '" + std::string(toString(from)) +
+                                                     "' needs the result of the " +
+                                                     std::string(toString(static_cast<Stage>(i))) +
+                                                     " stage, which the previous run does not have");
+    previous.spec = edited;
+    HS_TRY(runFrom(from, previous, params, progress));
+    return previous;
+}
+
+} // namespace hs::generate

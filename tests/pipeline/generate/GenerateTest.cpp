@@ -1,0 +1,189 @@
+// The chain on a light version of the default case: every stage's result is kept, an edit reruns only the stages
+// it touches and gives the same package bytes as a full run, edits that reach back are refused.
+#include "hs/generate/Generate.h"
+
+#include "TestSupport.h"
+
+#include "hs/scene/ScenePackage.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <string>
+
+using namespace hs;
+using namespace hs::generate;
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The default case with fewer vertices and smaller maps (a few seconds per run).
+scene::CaseSpec lightCase() {
+    auto spec = scene::loadCase(HS_DEFAULT_CASE_FILE);
+    EXPECT_TRUE(spec.ok()) << spec.error().message();
+    scene::CaseSpec s = *spec;
+    s.meshing.targetVertices = 5000;
+    s.texture.sizePx = 256;
+    s.meshing.threads = 2;
+    return s;
+}
+
+/// Every file of a package folder, by relative path.
+std::map<std::string, std::string> packageFiles(const std::string& folder) {
+    std::map<std::string, std::string> files;
+    for (const auto& e : fs::recursive_directory_iterator(folder))
+        if (e.is_regular_file()) {
+            std::ifstream in(e.path(), std::ios::binary);
+            files[fs::relative(e.path(), folder).string()] =
+                std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+        }
+    return files;
+}
+
+std::map<std::string, std::string> written(const Generated& g, const test::TempDir& tmp, const std::string& name) {
+    EXPECT_TRUE(g.scene.has_value());
+    auto w = scene::writeScenePackage(*g.scene, tmp.file(name));
+    EXPECT_TRUE(w.ok()) << w.error().message();
+    return packageFiles(tmp.file(name));
+}
+
+void expectSameBytes(const std::map<std::string, std::string>& a, const std::map<std::string, std::string>& b) {
+    ASSERT_EQ(a.size(), b.size());
+    for (const auto& [name, bytes] : a) {
+        const auto it = b.find(name);
+        ASSERT_NE(it, b.end()) << name;
+        EXPECT_TRUE(bytes == it->second) << name << " differs";
+    }
+}
+
+/// One full run of the light case, shared by the tests (the chain takes a few seconds).
+const Generated& baseRun() {
+    static const Generated g = [] {
+        auto r = generateScene(lightCase());
+        EXPECT_TRUE(r.ok()) << r.error().message();
+        return r.ok() ? std::move(r).value() : Generated{};
+    }();
+    return g;
+}
+
+} // namespace
+
+TEST(Generate, KeepsEveryStageResultAndTimesEachStage) {
+    const Generated& g = baseRun();
+    for (int i = 0; i < kStageCount; ++i)
+        EXPECT_TRUE(g.has(static_cast<Stage>(i))) << toString(static_cast<Stage>(i));
+    ASSERT_TRUE(g.scene.has_value());
+    EXPECT_EQ(g.scene->regions.size(), 3u);
+    EXPECT_EQ(g.scene->tets.tets.size(), g.mesh->mesh.tets.size());
+    EXPECT_EQ(g.scene->caseSpec, lightCase());
+    std::vector<std::string> steps;
+    for (const auto& s : g.timings.steps)
+        steps.push_back(s.name);
+    EXPECT_EQ(steps, (std::vector<std::string>{"organ", "pathology", "merge", "meshing", "texture", "scene"}));
+}
+
+TEST(Generate, RegeneratingTheTextureGivesTheBytesOfAFullRunOfTheEditedCase) {
+    test::TempDir tmp;
+    scene::CaseSpec edited = lightCase();
+    edited.texture.sizePx = 128;
+    edited.texture.vesselDensity = 0.5;
+    std::vector<std::string> keys;
+    Progress watched([&keys](std::string_view key, double) { keys.emplace_back(key); });
+    auto again = regenerateFrom(Stage::Texture, baseRun(), edited, {}, watched);
+    ASSERT_TRUE(again.ok()) << again.error().message();
+    // Only the texture and scene stages ran; the earlier results are the previous run's.
+    ASSERT_EQ(again->timings.steps.size(), 2u);
+    EXPECT_EQ(again->timings.steps[0].name, "texture");
+    EXPECT_EQ(again->organ->mesh.points, baseRun().organ->mesh.points);
+    EXPECT_EQ(again->mesh->mesh.tets, baseRun().mesh->mesh.tets);
+    EXPECT_EQ(std::count(keys.begin(), keys.end(), "organ"), 0);
+    EXPECT_EQ(again->scene->surface.albedo.width(), 128);
+
+    auto full = generateScene(edited);
+    ASSERT_TRUE(full.ok()) << full.error().message();
+    expectSameBytes(written(*again, tmp, "regenerated"), written(*full, tmp, "full"));
+}
+
+TEST(Generate, RegeneratingTheSceneAppliesAMaterialEdit) {
+    scene::CaseSpec edited = lightCase();
+    edited.scene.materials[static_cast<std::size_t>(scene::Tissue::Myoma)].youngsModulusKpa = 100.0;
+    edited.scene.hydrometraPressureKpa = 10.0;
+    edited.title = "stiffer myoma";
+    auto again = regenerateFrom(Stage::Scene, baseRun(), edited);
+    ASSERT_TRUE(again.ok()) << again.error().message();
+    ASSERT_EQ(again->timings.steps.size(), 1u);
+    const auto& materials = again->scene->materials;
+    ASSERT_EQ(materials.size(), 3u);
+    EXPECT_EQ(materials[1].material.youngsModulusKpa, 100.0);
+    EXPECT_EQ(again->scene->caseSpec.title, "stiffer myoma");
+    EXPECT_NE(again->scene->hydrometra.pressureKpa, baseRun().scene->hydrometra.pressureKpa);
+}
+
+TEST(Generate, RefusesToRegenerateFromAStageAfterTheOneTheEditChanges) {
+    scene::CaseSpec edited = lightCase();
+    edited.pathologies[0].sizeMm = 22.0;
+    auto refused = regenerateFrom(Stage::Meshing, baseRun(), edited);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.error().code, ErrorCode::InvalidInput);
+    EXPECT_NE(refused.error().detail.find("/pathologies"), std::string::npos) << refused.error().detail;
+    EXPECT_NE(refused.error().detail.find("regenerate from 'pathology'"), std::string::npos) << refused.error().detail;
+
+    edited = lightCase();
+    edited.seed = 2;
+    auto seedRefused = regenerateFrom(Stage::Pathology, baseRun(), edited);
+    ASSERT_FALSE(seedRefused.ok());
+    EXPECT_NE(seedRefused.error().detail.find("/seed"), std::string::npos) << seedRefused.error().detail;
+}
+
+TEST(Generate, RefusesToRegenerateWithoutTheEarlierResults) {
+    Generated partial;
+    partial.spec = lightCase();
+    auto refused = regenerateFrom(Stage::Texture, partial, lightCase());
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.error().code, ErrorCode::InvalidInput);
+    EXPECT_NE(refused.error().detail.find("organ"), std::string::npos) << refused.error().detail;
+}
+
+TEST(Generate, FirstChangedStageNamesTheEarliestStageAndField) {
+    const scene::CaseSpec a = lightCase();
+    EXPECT_FALSE(firstChangedStage(a, a).has_value());
+    scene::CaseSpec b = a;
+    b.meshing.threads = 1; // never changes a result
+    EXPECT_FALSE(firstChangedStage(a, b).has_value());
+    b.title = "x";
+    EXPECT_EQ(firstChangedStage(a, b)->stage, Stage::Scene);
+    EXPECT_EQ(firstChangedStage(a, b)->field, "/title");
+    b.texture.sizePx = 512;
+    EXPECT_EQ(firstChangedStage(a, b)->stage, Stage::Texture);
+    b.meshing.relaxationIterations = 10;
+    EXPECT_EQ(firstChangedStage(a, b)->stage, Stage::Meshing);
+    b.pathologies.pop_back();
+    EXPECT_EQ(firstChangedStage(a, b)->stage, Stage::Pathology);
+    b.patient.ageYears = 50.0;
+    EXPECT_EQ(firstChangedStage(a, b)->stage, Stage::Organ);
+    EXPECT_EQ(firstChangedStage(a, b)->field, "/patient");
+}
+
+TEST(Generate, RefusesAnInvalidCaseNamingTheField) {
+    scene::CaseSpec bad = lightCase();
+    bad.pathologies[0].figo = scene::FigoType{9, -1};
+    GenerateParams params;
+    params.caseFile = "bad.json";
+    auto refused = generateScene(bad, params);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.error().code, ErrorCode::InvalidInput);
+    EXPECT_NE(refused.error().detail.find("bad.json: /pathologies/0/figo"), std::string::npos)
+        << refused.error().detail;
+}
+
+TEST(Generate, StopsWhenCancelled) {
+    Progress progress;
+    progress.requestCancel();
+    auto cancelled = generateScene(lightCase(), {}, progress);
+    ASSERT_FALSE(cancelled.ok());
+    EXPECT_EQ(cancelled.error().code, ErrorCode::Cancelled);
+}
