@@ -80,10 +80,10 @@ Result<generate::OrganRequest> requestFromOptions(const OrganOptions& o, std::st
         if (o.modelPath.empty())
             modelPath = generate::modelPathFor(*spec, o.casePath);
     } else {
-        anatomy::PatientParams p; // defaults of the shape model's patient
+        clinical::PatientParams p; // the default patient of a case
         p.ageYears = o.ageYears.value_or(p.ageYears);
         p.parity = o.parity.value_or(p.parity);
-        p.gravidity = o.gravidity.value_or(std::max(p.gravidity, p.parity));
+        p.gravidity = o.gravidity.value_or(p.parity);
         p.heightCm = o.heightCm.value_or(p.heightCm);
         p.weightKg = o.weightKg.value_or(p.weightKg);
         p.menopausal = o.menopausal == "yes";

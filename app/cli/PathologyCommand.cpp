@@ -32,9 +32,9 @@ nlohmann::ordered_json descriptorJson(const pathology::GrownPathology& g) {
     const auto& d = g.descriptors;
     nlohmann::ordered_json j;
     j["id"] = g.id;
-    j["kind"] = pathology::toString(g.kind);
-    j["model"] = pathology::toString(g.model);
-    if (g.kind == pathology::Kind::Myoma)
+    j["kind"] = std::string(clinical::toString(g.kind));
+    j["model"] = std::string(clinical::toString(g.model));
+    if (g.kind == clinical::PathologyKind::Myoma)
         j["figo"] = d.figo.toString();
     j["sizeMm"] = d.sizeMm;
     j["volumeMm3"] = d.volumeMm3;
@@ -47,7 +47,7 @@ nlohmann::ordered_json descriptorJson(const pathology::GrownPathology& g) {
     j["baseExtension"] = d.baseExtension;
     j["topography"] = d.topography == 0 ? "lower" : (d.topography == 1 ? "middle" : "upper");
     j["lateralWall"] = d.lateralWall;
-    if (g.kind == pathology::Kind::Myoma)
+    if (g.kind == clinical::PathologyKind::Myoma)
         j["lasmar"] = {{"size", d.lasmar.size},           {"topography", d.lasmar.topography},
                        {"extension", d.lasmar.extension}, {"penetration", d.lasmar.penetration},
                        {"wall", d.lasmar.wall},           {"total", d.lasmar.total()}};
@@ -58,10 +58,10 @@ int run(const PathologyOptions& o) {
     auto spec = scene::loadCase(o.casePath);
     if (!spec.ok())
         return reportError("pathology", spec.error());
-    std::optional<scene::GrowthModel> override;
+    std::optional<clinical::GrowthModel> override;
     if (!o.model.empty()) {
-        scene::GrowthModel m{};
-        if (!scene::fromString(o.model, m))
+        clinical::GrowthModel m{};
+        if (!clinical::fromString(o.model, m))
             return reportError("pathology", Error{ErrorCode::InvalidInput,
                                                   "--model: '" + o.model + "' is not one of ca, skeleton, particles"});
         override = m;
@@ -115,9 +115,9 @@ int run(const PathologyOptions& o) {
     }
     for (const auto& g : grown->pathologies) {
         const auto& d = g.descriptors;
-        std::printf("%-12s%s (%s): %.1f mm", g.id.c_str(), pathology::toString(g.kind), pathology::toString(g.model),
-                    d.sizeMm);
-        if (g.kind == pathology::Kind::Myoma)
+        std::printf("%-12s%s (%s): %.1f mm", g.id.c_str(), std::string(clinical::toString(g.kind)).c_str(),
+                    std::string(clinical::toString(g.model)).c_str(), d.sizeMm);
+        if (g.kind == clinical::PathologyKind::Myoma)
             std::printf(", FIGO %s, %.0f %% intramural, base %.1f mm (%.2f of the wall), %s third%s, Lasmar %d",
                         d.figo.toString().c_str(), 100.0 * d.intramuralFraction, d.baseWidthMm, d.baseExtension,
                         d.topography == 0 ? "lower" : (d.topography == 1 ? "middle" : "upper"),

@@ -77,7 +77,7 @@ int runValidatePackage(const ValidateOptions& options, const std::string& folder
               << "tets        " << scene->tets.tetCount() << " tetrahedra, " << scene->tets.vertexCount() << " points\n"
               << "surface     " << scene->surface.mesh.faceCount() << " triangles\n";
     for (const auto& m : scene->materials)
-        std::cout << "material    " << m.name << " (" << scene::toString(m.tissue) << "): E "
+        std::cout << "material    " << m.name << " (" << clinical::toString(m.tissue) << "): E "
                   << m.material.youngsModulusKpa << " kPa, nu " << m.material.poissonRatio << ", "
                   << m.material.densityKgPerM3 << " kg/m^3\n";
     std::cout << "labels      " << scene->labels.size() << '\n'

@@ -74,7 +74,7 @@ int bench(const std::string& path, int count) {
     double worstSample = 0.0, sumSample = 0.0, worstWall = 1e9;
     int valid = 0, watertight = 0, intersecting = 0, outside = 0;
     for (int i = 0; i < count; ++i) {
-        const PatientParams patient = sampleSupportedPatient(rng);
+        const hs::clinical::PatientParams patient = sampleSupportedPatient(rng);
         const auto start = Clock::now();
         auto organ = model->sample(patient, static_cast<std::uint64_t>(i));
         const double dt = secondsSince(start);

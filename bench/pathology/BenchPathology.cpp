@@ -46,9 +46,9 @@ void runOne(const SurfaceMesh& organ, int s, const PathologyRequest& request, Ro
     }
     ++row.grown;
     const Descriptors& d = grown->pathologies[0].descriptors;
-    const bool typeOk = request.kind == Kind::Myoma
+    const bool typeOk = request.kind == clinical::PathologyKind::Myoma
                             ? d.figo == request.figo
-                            : d.pedunculated == (request.attachment == Attachment::Pedunculated);
+                            : d.pedunculated == (request.attachment == clinical::PolypAttachment::Pedunculated);
     const bool sizeOk = std::fabs(d.sizeMm - request.sizeMm) <= 0.1 * request.sizeMm;
     row.typeOk += typeOk ? 1 : 0;
     row.sizeOk += sizeOk ? 1 : 0;
@@ -108,42 +108,46 @@ int main(int argc, char** argv) {
     std::vector<SurfaceMesh> organMeshes;
     for (int s = 1; s <= organs; ++s)
         organMeshes.push_back(test::testOrgan(static_cast<std::uint64_t>(s)));
-    const std::vector<Figo> figos = {{0, -1}, {1, -1}, {2, -1}, {3, -1}, {4, -1}, {5, -1}, {6, -1}, {7, -1}, {2, 5}};
+    const std::vector<clinical::FigoType> figos = {{0, -1}, {1, -1}, {2, -1}, {3, -1}, {4, -1},
+                                                   {5, -1}, {6, -1}, {7, -1}, {2, 5}};
     std::printf("%d organs, %.0f mm myoma, posterior wall; 12 mm polyps (stalk 8 mm)\n", organs, size);
     std::printf("%-10s %-14s %6s %6s %8s %6s %8s %8s %8s\n", "model", "request", "grown", "type=", "size10%", "valid",
                 "stalk mm", "grow s", "merge s");
-    for (GrowthModel model : {GrowthModel::CellularAutomaton, GrowthModel::Skeleton, GrowthModel::Particles}) {
+    for (clinical::GrowthModel model : {clinical::GrowthModel::CellularAutomaton, clinical::GrowthModel::Skeleton,
+                                        clinical::GrowthModel::Particles}) {
         if (!only.empty() && only != toString(model))
             continue;
-        for (const Figo& f : figos) {
+        for (const clinical::FigoType& f : figos) {
             if (!row.empty() && ("FIGO " + f.toString()).find(row) == std::string::npos)
                 continue;
             Row counts;
             if (verbose)
-                std::printf("%s FIGO %s\n", toString(model), f.toString().c_str());
+                std::printf("%s FIGO %s\n", std::string(toString(model)).c_str(), f.toString().c_str());
             for (int s = 0; s < organs; ++s)
                 runOne(organMeshes[static_cast<std::size_t>(s)], s, test::myoma("m", model, f, size), counts, verbose);
-            allOk =
-                printRow(toString(model), "FIGO " + f.toString(), counts, organs, f.type == 0 || f.type == 7) && allOk;
+            allOk = printRow(std::string(toString(model)).c_str(), "FIGO " + f.toString(), counts, organs,
+                             f.type == 0 || f.type == 7) &&
+                    allOk;
         }
     }
-    for (GrowthModel model : {GrowthModel::Skeleton, GrowthModel::Particles}) {
+    for (clinical::GrowthModel model : {clinical::GrowthModel::Skeleton, clinical::GrowthModel::Particles}) {
         if (!only.empty() && only != "polyps" && only != toString(model))
             continue;
-        for (Location where : {Location::Fundal, Location::Posterior})
+        for (clinical::UterineLocation where :
+             {clinical::UterineLocation::Fundal, clinical::UterineLocation::Posterior})
             for (bool pedunculated : {false, true}) {
-                const std::string what =
-                    std::string(pedunculated ? "pedunc " : "sessile ") + (where == Location::Fundal ? "fund" : "post");
+                const std::string what = std::string(pedunculated ? "pedunc " : "sessile ") +
+                                         (where == clinical::UterineLocation::Fundal ? "fund" : "post");
                 if (!row.empty() && what.find(row) == std::string::npos)
                     continue;
                 if (verbose)
-                    std::printf("%s polyp %s\n", toString(model), what.c_str());
+                    std::printf("%s polyp %s\n", std::string(toString(model)).c_str(), what.c_str());
                 Row counts;
                 for (int s = 0; s < organs; ++s)
                     runOne(organMeshes[static_cast<std::size_t>(s)], s,
                            test::polyp("p", model, 12.0, pedunculated, pedunculated ? 8.0 : 0.0, where), counts,
                            verbose);
-                allOk = printRow(toString(model), what, counts, organs, true) && allOk;
+                allOk = printRow(std::string(toString(model)).c_str(), what, counts, organs, true) && allOk;
             }
     }
     return check && !allOk ? 1 : 0;

@@ -18,9 +18,9 @@
 namespace hs {
 namespace {
 
-using pathology::Figo;
-using pathology::GrowthModel;
-using pathology::Location;
+using clinical::FigoType;
+using clinical::GrowthModel;
+using clinical::UterineLocation;
 
 /// Edge length of the mesh, mm: the coarsest that keeps the pathologies' shapes (12-20 mm across); the 0.8 mm cover
 /// the merge drapes over a pathology is then 0.4 edge thick, which is what this test is about.
@@ -62,11 +62,13 @@ TEST(MergedBodyMeshing, MeshesOneMyomaPerModelAndAPolypWithEveryRegionAndItsVolu
     pathology::PathologyParams params;
     params.seed = 3;
     params.pathologies.push_back(
-        test::myoma("ca", GrowthModel::CellularAutomaton, Figo{2, -1}, 20.0, Location::Posterior));
-    params.pathologies.push_back(test::myoma("skeleton", GrowthModel::Skeleton, Figo{4, -1}, 15.0, Location::Anterior));
+        test::myoma("ca", GrowthModel::CellularAutomaton, FigoType{2, -1}, 20.0, UterineLocation::Posterior));
     params.pathologies.push_back(
-        test::myoma("particles", GrowthModel::Particles, Figo{6, -1}, 15.0, Location::LeftLateral));
-    params.pathologies.push_back(test::polyp("polyp", GrowthModel::Skeleton, 12.0, false, 0.0, Location::Fundal));
+        test::myoma("skeleton", GrowthModel::Skeleton, FigoType{4, -1}, 15.0, UterineLocation::Anterior));
+    params.pathologies.push_back(
+        test::myoma("particles", GrowthModel::Particles, FigoType{6, -1}, 15.0, UterineLocation::LeftLateral));
+    params.pathologies.push_back(
+        test::polyp("polyp", GrowthModel::Skeleton, 12.0, false, 0.0, UterineLocation::Fundal));
     const auto start = std::chrono::steady_clock::now();
     auto grown = pathology::growPathologies(test::testOrgan(2), params);
     ASSERT_TRUE(grown.ok()) << grown.error().detail;

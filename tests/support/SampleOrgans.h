@@ -28,9 +28,12 @@ inline const anatomy::ShapeModel* defaultShapeModel() {
 /// Organ `seed` (deterministic).
 inline SurfaceMesh testOrgan(std::uint64_t seed) {
     if (const auto* model = defaultShapeModel()) {
-        anatomy::PatientParams patient;
+        clinical::PatientParams patient; // stated in full: the pathology bars were measured on these organs
+        patient.ageYears = 35.0;
         patient.parity = 1;
         patient.gravidity = 1;
+        patient.heightCm = 164.0;
+        patient.weightKg = 65.0;
         auto organ = model->sample(patient, seed);
         if (organ.ok())
             return std::move(*organ);
@@ -38,29 +41,30 @@ inline SurfaceMesh testOrgan(std::uint64_t seed) {
     return generateUterus(anatomy::UterusShapeParams{}).value().mesh;
 }
 
-inline pathology::PathologyRequest myoma(const std::string& id, pathology::GrowthModel model, pathology::Figo figo,
-                                         double sizeMm, pathology::Location where = pathology::Location::Posterior) {
+inline pathology::PathologyRequest myoma(const std::string& id, clinical::GrowthModel model, clinical::FigoType figo,
+                                         double sizeMm,
+                                         clinical::UterineLocation where = clinical::UterineLocation::Posterior) {
     pathology::PathologyRequest r;
     r.id = id;
-    r.kind = pathology::Kind::Myoma;
+    r.kind = clinical::PathologyKind::Myoma;
     r.model = model;
     r.figo = figo;
     r.sizeMm = sizeMm;
-    r.placement = pathology::ClinicalPlacement{where};
+    r.placement = clinical::ClinicalPlacement{where};
     return r;
 }
 
-inline pathology::PathologyRequest polyp(const std::string& id, pathology::GrowthModel model, double sizeMm,
+inline pathology::PathologyRequest polyp(const std::string& id, clinical::GrowthModel model, double sizeMm,
                                          bool pedunculated, double stalkMm,
-                                         pathology::Location where = pathology::Location::Fundal) {
+                                         clinical::UterineLocation where = clinical::UterineLocation::Fundal) {
     pathology::PathologyRequest r;
     r.id = id;
-    r.kind = pathology::Kind::Polyp;
+    r.kind = clinical::PathologyKind::Polyp;
     r.model = model;
     r.sizeMm = sizeMm;
-    r.attachment = pedunculated ? pathology::Attachment::Pedunculated : pathology::Attachment::Sessile;
+    r.attachment = pedunculated ? clinical::PolypAttachment::Pedunculated : clinical::PolypAttachment::Sessile;
     r.stalkLengthMm = stalkMm;
-    r.placement = pathology::ClinicalPlacement{where};
+    r.placement = clinical::ClinicalPlacement{where};
     return r;
 }
 

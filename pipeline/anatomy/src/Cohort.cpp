@@ -76,7 +76,7 @@ struct Relations {
     double yearsPost = 0.0;
 };
 
-Relations relations(const PatientParams& p, double menopauseAge) {
+Relations relations(const clinical::PatientParams& p, double menopauseAge) {
     Relations r;
     const double births = std::min(p.parity, 4);
     const double births2 = std::min(p.parity, 2);
@@ -110,8 +110,8 @@ Relations relations(const PatientParams& p, double menopauseAge) {
 
 } // namespace
 
-PatientParams samplePatient(Rng& rng, double* menopauseAgeYears) {
-    PatientParams p;
+clinical::PatientParams samplePatient(Rng& rng, double* menopauseAgeYears) {
+    clinical::PatientParams p;
     p.ageYears = truncatedNormal(rng, kAgeMean, kAgeSd, 18.0, 85.0);
     const double menopause = truncatedNormal(rng, kMenopauseMean, kMenopauseSd, 40.0, 60.0);
     p.menopausal = p.ageYears >= menopause;
@@ -135,8 +135,8 @@ PatientParams samplePatient(Rng& rng, double* menopauseAgeYears) {
     return p;
 }
 
-PatientParams sampleSupportedPatient(Rng& rng) {
-    PatientParams p;
+clinical::PatientParams sampleSupportedPatient(Rng& rng) {
+    clinical::PatientParams p;
     p.ageYears = rng.uniform(18.0, 85.0);
     p.menopausal = p.ageYears > 60.0 || (p.ageYears >= 40.0 && rng.bernoulli((p.ageYears - 40.0) / 20.0));
     p.parity = static_cast<int>(rng.between(0, 6));
@@ -146,11 +146,11 @@ PatientParams sampleSupportedPatient(Rng& rng) {
     return p;
 }
 
-UterusShapeParams expectedShape(const PatientParams& patient) {
+UterusShapeParams expectedShape(const clinical::PatientParams& patient) {
     return relations(patient, kMenopauseMean).mean;
 }
 
-UterusShapeParams sampleShape(const PatientParams& patient, double menopauseAgeYears, Rng& rng) {
+UterusShapeParams sampleShape(const clinical::PatientParams& patient, double menopauseAgeYears, Rng& rng) {
     const Relations r = relations(patient, menopauseAgeYears);
     UterusShapeParams s = r.mean;
     const double shrink = atrophy(r.yearsPost, 1.0);

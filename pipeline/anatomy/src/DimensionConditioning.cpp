@@ -54,7 +54,7 @@ std::string fmt(double v) {
 
 } // namespace
 
-Result<SurfaceMesh> ShapeModel::withDimensions(const PatientParams& patient, const DimensionTargets& targets,
+Result<SurfaceMesh> ShapeModel::withDimensions(const clinical::PatientParams& patient, const DimensionTargets& targets,
                                                std::optional<std::uint64_t> seed,
                                                std::optional<double> versionDeg) const {
     const auto& d = *m_data;

@@ -120,7 +120,7 @@ Status conditioningError(const ShapeModel& model, const ModelEvaluationParams& p
         errors[i].dimension = names[i];
     Rng rng(Rng::deriveSeed(params.seed, 0xC0D1));
     for (int p = 0; p < params.conditioningPatients; ++p) {
-        const PatientParams patient = samplePatient(rng);
+        const clinical::PatientParams patient = samplePatient(rng);
         auto predicted = model.mean(patient);
         auto requested = generateUterus(expectedShape(patient), layout);
         if (!predicted)

@@ -34,7 +34,7 @@ const std::vector<ParamRange>& supportedPatientRanges() {
     return ranges;
 }
 
-Status validatePatient(const PatientParams& patient) {
+Status validatePatient(const clinical::PatientParams& patient) {
     const auto& r = supportedPatientRanges();
     HS_TRY(checkRange(r[0], patient.ageYears));
     HS_TRY(checkRange(r[1], patient.parity));

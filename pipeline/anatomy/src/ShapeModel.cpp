@@ -15,7 +15,7 @@ namespace hs::anatomy {
 
 namespace detail {
 
-Eigen::VectorXd patientFeatures(const PatientParams& p) {
+Eigen::VectorXd patientFeatures(const clinical::PatientParams& p) {
     // Piecewise-linear in age like the relations: growth to 30 and to 45, atrophy by years after 51 if menopausal.
     Eigen::VectorXd f(9);
     const double meno = p.menopausal ? 1.0 : 0.0;
@@ -187,7 +187,7 @@ std::vector<double> ShapeModel::project(const std::vector<Vec3>& shape) const {
     return {c.data(), c.data() + c.size()};
 }
 
-Result<std::vector<double>> ShapeModel::conditionalCoefficients(const PatientParams& patient) const {
+Result<std::vector<double>> ShapeModel::conditionalCoefficients(const clinical::PatientParams& patient) const {
     HS_TRY(validatePatient(patient));
     const auto& d = *m_data;
     if (!d.conditioned)
@@ -196,7 +196,7 @@ Result<std::vector<double>> ShapeModel::conditionalCoefficients(const PatientPar
     return std::vector<double>(c.data(), c.data() + c.size());
 }
 
-Result<SurfaceMesh> ShapeModel::mean(const PatientParams& patient, std::optional<double> versionDeg) const {
+Result<SurfaceMesh> ShapeModel::mean(const clinical::PatientParams& patient, std::optional<double> versionDeg) const {
     auto c = conditionalCoefficients(patient);
     if (!c)
         return c.failure();
@@ -206,7 +206,7 @@ Result<SurfaceMesh> ShapeModel::mean(const PatientParams& patient, std::optional
     return pose(std::move(mesh).value(), versionDeg.value_or(m_data->pose.antevertedMeanDeg));
 }
 
-Result<SurfaceMesh> ShapeModel::sample(const PatientParams& patient, std::uint64_t seed,
+Result<SurfaceMesh> ShapeModel::sample(const clinical::PatientParams& patient, std::uint64_t seed,
                                        std::optional<double> versionDeg) const {
     auto c = conditionalCoefficients(patient);
     if (!c)

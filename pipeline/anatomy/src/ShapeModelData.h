@@ -28,7 +28,7 @@ struct ShapeModel::Data {
 namespace detail {
 
 /// The regression features of a patient (see conditioningFeatureNames()).
-Eigen::VectorXd patientFeatures(const PatientParams& patient);
+Eigen::VectorXd patientFeatures(const clinical::PatientParams& patient);
 /// Centroid size (RMS distance to the centroid) of the instance with `coefficients`, relative to the mean's.
 double sizeRatio(const ShapeModel::Data& d, const Eigen::VectorXd& coefficients);
 /// Rounds to single precision, as stored in the file, so that a built and a loaded model sample identically.

@@ -366,13 +366,13 @@ Status readOurs(const Reader& r, ShapeModel::Data& d) {
             return fail(ErrorCode::InvalidInput, r.path + ": /hysteroscene/template/layout does not match the mesh");
         d.layout = layout;
     }
-    const std::string tissue = std::string("/hysteroscene/template/faceLabels/") + kTissueLabel;
+    const std::string tissue = std::string("/hysteroscene/template/faceLabels/") + clinical::kSurfaceTissueLabel;
     if (r.exists(tissue)) {
         auto labels = r.read<std::int32_t>(tissue, H5T_NATIVE_INT32, dims);
         if (!labels)
             return labels.failure();
         HS_TRY(expectDims(r.path, tissue, dims, {static_cast<hsize_t>(d.reference.triangles.size())}));
-        d.reference.faceLabels[kTissueLabel] = std::move(labels).value();
+        d.reference.faceLabels[clinical::kSurfaceTissueLabel] = std::move(labels).value();
     }
     return {};
 }

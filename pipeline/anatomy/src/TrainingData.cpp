@@ -60,8 +60,9 @@ Result<bool> parseYesNo(const std::string& text, const std::string& csv, std::si
     return rowError(csv, line, "menopausal", "'" + text + "' is not one of yes, no, true, false, 1, 0");
 }
 
-Result<PatientParams> parsePatient(const std::vector<std::string>& cells, const std::string& csv, std::size_t line) {
-    PatientParams p;
+Result<clinical::PatientParams> parsePatient(const std::vector<std::string>& cells, const std::string& csv,
+                                             std::size_t line) {
+    clinical::PatientParams p;
     auto age = parseNumber(cells[1], csv, line, "ageYears");
     if (!age)
         return age.failure();
@@ -126,7 +127,7 @@ Result<TrainingSet> loadTrainingSet(const std::string& meshDir, const std::strin
         auto patient = parsePatient(cells, paramsCsv, lineNo);
         if (!patient)
             return patient.failure();
-        const PatientParams& p = *patient;
+        const clinical::PatientParams& p = *patient;
         if (auto valid = validatePatient(p); !valid.ok())
             return fail(ErrorCode::InvalidInput,
                         paramsCsv + ": line " + std::to_string(lineNo) + ": " + valid.error().detail);

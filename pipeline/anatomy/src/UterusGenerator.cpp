@@ -297,12 +297,12 @@ void addTopology(SurfaceMesh& mesh, const TemplateLayout& l) {
     tissue.reserve(static_cast<std::size_t>(l.faceCount()));
     auto bandTissue = [&](int band) {
         if (band <= l.outerRings - 2)
-            return Tissue::Serosa;
+            return clinical::SurfaceTissue::Serosa;
         if (band < l.firstCanalRing())
-            return Tissue::Ectocervix;
+            return clinical::SurfaceTissue::Ectocervix;
         if (band < l.internalOsRing())
-            return Tissue::CervicalCanal;
-        return Tissue::Endometrium;
+            return clinical::SurfaceTissue::CervicalCanal;
+        return clinical::SurfaceTissue::Endometrium;
     };
     auto isOstial = [&](int ring, int j) {
         if (ring < l.lastCavityRing() - 1 || ring > l.lastCavityRing() + 1)
@@ -311,26 +311,26 @@ void addTopology(SurfaceMesh& mesh, const TemplateLayout& l) {
         const int half = m / 2;
         return jj <= 1 || jj >= m - 1 || std::abs(jj - half) <= 1;
     };
-    auto push = [&](int a, int b, int c, Tissue t) {
+    auto push = [&](int a, int b, int c, clinical::SurfaceTissue t) {
         mesh.triangles.push_back({a, b, c});
-        tissue.push_back(static_cast<std::int32_t>(t));
+        tissue.push_back(clinical::labelValue(t));
     };
     for (int j = 0; j < m; ++j)
-        push(0, l.vertex(0, j), l.vertex(0, j + 1), Tissue::Serosa);
+        push(0, l.vertex(0, j), l.vertex(0, j + 1), clinical::SurfaceTissue::Serosa);
     for (int band = 0; band < rings - 1; ++band) {
-        const Tissue t = bandTissue(band);
+        const clinical::SurfaceTissue t = bandTissue(band);
         for (int j = 0; j < m; ++j) {
             const int a = l.vertex(band, j), b = l.vertex(band + 1, j);
             const int c = l.vertex(band + 1, j + 1), d = l.vertex(band, j + 1);
             const bool ostium =
                 isOstial(band, j) && isOstial(band + 1, j) && isOstial(band, j + 1) && isOstial(band + 1, j + 1);
-            push(a, b, c, ostium ? Tissue::TubalOstium : t);
-            push(a, c, d, ostium ? Tissue::TubalOstium : t);
+            push(a, b, c, ostium ? clinical::SurfaceTissue::TubalOstium : t);
+            push(a, c, d, ostium ? clinical::SurfaceTissue::TubalOstium : t);
         }
     }
     for (int j = 0; j < m; ++j)
-        push(l.vertex(rings - 1, j), l.innerPole(), l.vertex(rings - 1, j + 1), Tissue::Endometrium);
-    mesh.faceLabels[kTissueLabel] = std::move(tissue);
+        push(l.vertex(rings - 1, j), l.innerPole(), l.vertex(rings - 1, j + 1), clinical::SurfaceTissue::Endometrium);
+    mesh.faceLabels[clinical::kSurfaceTissueLabel] = std::move(tissue);
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 #include "hs/generate/Assembly.h"
 
 #include "hs/anatomy/UterusGenerator.h"
+#include "hs/clinical/Tissue.h"
 #include "hs/core/LabelTransfer.h"
 #include "hs/core/Units.h"
 #include "hs/generate/Seeds.h"
@@ -14,8 +15,8 @@
 namespace hs::generate {
 namespace {
 
-constexpr auto kTissueCervicalCanal = static_cast<std::int32_t>(anatomy::Tissue::CervicalCanal);
-constexpr auto kTissueOstium = static_cast<std::int32_t>(anatomy::Tissue::TubalOstium);
+constexpr auto kTissueCervicalCanal = clinical::labelValue(clinical::SurfaceTissue::CervicalCanal);
+constexpr auto kTissueOstium = clinical::labelValue(clinical::SurfaceTissue::TubalOstium);
 
 /// The ostia are smaller than the mesh's triangles, so no boundary face may be nearest to an ostium face: carry
 /// them the other way too, marking the boundary face nearest to each ostium face of the organ.
@@ -28,9 +29,9 @@ Status keepSmallTissueFeatures(const SurfaceMesh& outline, SurfaceMesh& boundary
     const Status status = transferFaceLabels(boundary, probe, {"faceIndex"}, reach, -1);
     boundary.faceLabels.erase("faceIndex");
     HS_TRY(status);
-    const auto& tissue = outline.faceLabels.at(anatomy::kTissueLabel);
+    const auto& tissue = outline.faceLabels.at(clinical::kSurfaceTissueLabel);
     const auto& nearest = probe.faceLabels.at("faceIndex");
-    auto& boundaryTissue = boundary.faceLabels.at(anatomy::kTissueLabel);
+    auto& boundaryTissue = boundary.faceLabels.at(clinical::kSurfaceTissueLabel);
     for (std::size_t f = 0; f < tissue.size(); ++f)
         if (tissue[f] == kTissueOstium && nearest[f] >= 0)
             boundaryTissue[static_cast<std::size_t>(nearest[f])] = kTissueOstium;
@@ -38,13 +39,13 @@ Status keepSmallTissueFeatures(const SurfaceMesh& outline, SurfaceMesh& boundary
 }
 
 std::string locationKey(const scene::PathologySpec& p) {
-    if (const auto* c = std::get_if<scene::ClinicalPlacement>(&p.placement))
-        return std::string(scene::toString(c->location));
+    if (const auto* c = std::get_if<clinical::ClinicalPlacement>(&p.placement))
+        return std::string(clinical::toString(c->location));
     return "";
 }
 
-scene::Tissue tissueOf(scene::PathologyKind kind) {
-    return kind == scene::PathologyKind::Myoma ? scene::Tissue::Myoma : scene::Tissue::Polyp;
+clinical::Tissue tissueOf(clinical::PathologyKind kind) {
+    return kind == clinical::PathologyKind::Myoma ? clinical::Tissue::Myoma : clinical::Tissue::Polyp;
 }
 
 } // namespace
@@ -55,7 +56,7 @@ std::int32_t pathologyRegion(std::size_t pathologyIndex) {
 
 std::vector<scene::SceneRegion> sceneRegions(const scene::CaseSpec& spec) {
     std::vector<scene::SceneRegion> regions;
-    regions.push_back({kWallRegion, "myometrium", scene::Tissue::Myometrium, ""});
+    regions.push_back({kWallRegion, "myometrium", clinical::Tissue::Myometrium, ""});
     for (std::size_t i = 0; i < spec.pathologies.size(); ++i) {
         const auto& p = spec.pathologies[i];
         regions.push_back({pathologyRegion(i), p.id, tissueOf(p.kind), p.id});
@@ -73,14 +74,15 @@ TetMesh sceneTets(const TetMesh& meshed) {
 Result<SurfaceMesh> labelledBoundary(const TetMesh& tets, const SurfaceMesh& outline, const scene::CaseSpec& spec,
                                      double reachMm) {
     SurfaceMesh boundary = extractBoundary(tets);
-    HS_TRY(transferFaceLabels(outline, boundary, {anatomy::kTissueLabel, merge::kPathologyLabel}, reachMm));
+    HS_TRY(transferFaceLabels(outline, boundary, {clinical::kSurfaceTissueLabel, merge::kPathologyLabel}, reachMm));
     HS_TRY(keepSmallTissueFeatures(outline, boundary, reachMm));
     std::vector<std::int32_t> appearance(boundary.triangles.size(), 0);
     const auto& over = boundary.faceLabels.at(merge::kPathologyLabel);
     for (std::size_t f = 0; f < appearance.size(); ++f) {
         const auto p = over[f] - 1; // 1 + index of the pathology a face is draped over
         if (p >= 0 && static_cast<std::size_t>(p) < spec.pathologies.size())
-            appearance[f] = spec.pathologies[static_cast<std::size_t>(p)].kind == scene::PathologyKind::Myoma ? 1 : 2;
+            appearance[f] =
+                spec.pathologies[static_cast<std::size_t>(p)].kind == clinical::PathologyKind::Myoma ? 1 : 2;
     }
     boundary.faceLabels[kAppearanceLabel] = std::move(appearance);
     return boundary;
@@ -139,9 +141,9 @@ std::vector<scene::SceneLabel> sceneLabels(const scene::CaseSpec& spec, const Te
             labels.push_back({"base:" + spec.pathologies[i].id, scene::LabelKind::PathologyBase,
                               scene::LabelElement::Tet, spec.pathologies[i].id, std::move(base)});
     }
-    if (auto ostia = facesWith(visual, anatomy::kTissueLabel, kTissueOstium); !ostia.empty())
+    if (auto ostia = facesWith(visual, clinical::kSurfaceTissueLabel, kTissueOstium); !ostia.empty())
         labels.push_back({"ostia", scene::LabelKind::Ostium, scene::LabelElement::SurfaceFace, "", std::move(ostia)});
-    if (auto canal = facesWith(visual, anatomy::kTissueLabel, kTissueCervicalCanal); !canal.empty())
+    if (auto canal = facesWith(visual, clinical::kSurfaceTissueLabel, kTissueCervicalCanal); !canal.empty())
         labels.push_back({"cervical-canal", scene::LabelKind::CervicalCanal, scene::LabelElement::SurfaceFace, "",
                           std::move(canal)});
     return labels;
@@ -162,10 +164,9 @@ scene::ClinicalDescriptors clinicalDescriptors(const scene::CaseSpec& spec, cons
         pd.sizeMm = g.descriptors.sizeMm;
         const auto v = volumes.find(pd.regionId);
         pd.volumeMl = v == volumes.end() ? 0.0 : units::mlFromMm3(v->second);
-        if (g.kind == pathology::Kind::Myoma) {
-            pd.figo = scene::FigoType{g.descriptors.figo.type, g.descriptors.figo.serosal};
-            const auto& l = g.descriptors.lasmar;
-            pd.lasmar = scene::LasmarScore{l.size, l.topography, l.extension, l.penetration, l.wall};
+        if (g.kind == clinical::PathologyKind::Myoma) {
+            pd.figo = g.descriptors.figo;
+            pd.lasmar = g.descriptors.lasmar;
         }
         pd.location = locationKey(spec.pathologies[i]);
         c.pathologies.push_back(pd);

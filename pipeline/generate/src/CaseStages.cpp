@@ -6,56 +6,6 @@
 #include <filesystem>
 
 namespace hs::generate {
-namespace {
-
-pathology::Location locationOf(scene::UterineLocation l) {
-    switch (l) {
-    case scene::UterineLocation::Fundal:
-        return pathology::Location::Fundal;
-    case scene::UterineLocation::Anterior:
-        return pathology::Location::Anterior;
-    case scene::UterineLocation::Posterior:
-        return pathology::Location::Posterior;
-    case scene::UterineLocation::LeftLateral:
-        return pathology::Location::LeftLateral;
-    case scene::UterineLocation::RightLateral:
-        return pathology::Location::RightLateral;
-    case scene::UterineLocation::CornualLeft:
-        return pathology::Location::CornualLeft;
-    case scene::UterineLocation::CornualRight:
-        return pathology::Location::CornualRight;
-    case scene::UterineLocation::Isthmic:
-        return pathology::Location::Isthmic;
-    case scene::UterineLocation::Cervical:
-        return pathology::Location::Cervical;
-    }
-    return pathology::Location::Fundal;
-}
-
-pathology::GrowthModel modelOf(scene::GrowthModel m) {
-    switch (m) {
-    case scene::GrowthModel::CellularAutomaton:
-        return pathology::GrowthModel::CellularAutomaton;
-    case scene::GrowthModel::Skeleton:
-        return pathology::GrowthModel::Skeleton;
-    case scene::GrowthModel::Particles:
-        return pathology::GrowthModel::Particles;
-    }
-    return pathology::GrowthModel::Skeleton;
-}
-
-} // namespace
-
-anatomy::PatientParams patientOf(const scene::CaseSpec& spec) {
-    anatomy::PatientParams p;
-    p.ageYears = spec.patient.ageYears;
-    p.parity = spec.patient.parity;
-    p.gravidity = spec.patient.gravidity;
-    p.heightCm = spec.patient.heightCm;
-    p.weightKg = spec.patient.weightKg;
-    p.menopausal = spec.patient.menopausal;
-    return p;
-}
 
 std::string modelPathFor(const scene::CaseSpec& spec, const std::string& caseFile) {
     if (!spec.anatomy.modelPath)
@@ -73,7 +23,7 @@ Result<OrganRequest> organRequestFor(const scene::CaseSpec& spec, const std::str
                                                 ": /anatomy/dimensions/cornualAngleDeg: the shape model does not "
                                                 "measure the cornual angle yet: remove the field");
     OrganRequest request;
-    request.patient = patientOf(spec);
+    request.patient = spec.patient;
     request.seed = organSeed(spec.seed);
     request.mean = spec.anatomy.shape == scene::ShapeMode::Mean;
     request.versionDeg = spec.anatomy.versionDeg;
@@ -107,27 +57,21 @@ Result<OrganInstance> makeOrgan(const anatomy::ShapeModel& model, const OrganReq
 }
 
 pathology::PathologyParams pathologyParamsFor(const scene::CaseSpec& spec,
-                                              const std::optional<scene::GrowthModel>& override) {
+                                              const std::optional<clinical::GrowthModel>& override) {
     pathology::PathologyParams params;
     params.seed = streamSeed(spec.seed, Stream::Pathology);
     for (const auto& p : spec.pathologies) {
         pathology::PathologyRequest r;
         r.id = p.id;
-        r.kind = p.kind == scene::PathologyKind::Myoma ? pathology::Kind::Myoma : pathology::Kind::Polyp;
-        r.model = modelOf(override ? *override : p.growthModel);
+        r.kind = p.kind;
+        r.model = override ? *override : p.growthModel;
         r.sizeMm = p.sizeMm;
         if (p.figo)
-            r.figo = pathology::Figo{p.figo->type, p.figo->serosal};
+            r.figo = *p.figo;
         if (p.attachment)
-            r.attachment = *p.attachment == scene::PolypAttachment::Sessile ? pathology::Attachment::Sessile
-                                                                            : pathology::Attachment::Pedunculated;
+            r.attachment = *p.attachment;
         r.stalkLengthMm = p.stalkLengthMm.value_or(0.0);
-        if (const auto* c = std::get_if<scene::ClinicalPlacement>(&p.placement))
-            r.placement = pathology::ClinicalPlacement{locationOf(c->location)};
-        else {
-            const auto& s = std::get<scene::SurfacePlacement>(p.placement);
-            r.placement = pathology::SurfacePlacement{s.pointMm, s.normal};
-        }
+        r.placement = p.placement;
         params.pathologies.push_back(r);
     }
     return params;

@@ -3,7 +3,7 @@
 
 #include "MergeCgal.h"
 
-#include "hs/anatomy/UterusGenerator.h"
+#include "hs/clinical/Tissue.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,9 +12,9 @@ namespace hs::merge {
 namespace {
 
 bool isCavityTissue(std::int32_t tissue) {
-    const auto t = static_cast<anatomy::Tissue>(tissue);
-    return t == anatomy::Tissue::Endometrium || t == anatomy::Tissue::CervicalCanal ||
-           t == anatomy::Tissue::TubalOstium;
+    const auto t = static_cast<clinical::SurfaceTissue>(tissue);
+    return t == clinical::SurfaceTissue::Endometrium || t == clinical::SurfaceTissue::CervicalCanal ||
+           t == clinical::SurfaceTissue::TubalOstium;
 }
 
 /// The wall tissue draped over a pathology: a surface at `cover` mm around it. Offsetting the vertices along their
@@ -48,7 +48,7 @@ SurfaceMesh outwardOriented(SurfaceMesh mesh) {
 /// "pathology" the 1-based index of the pathology a cover face drapes.
 void labelOutline(SurfaceMesh& outline, const SurfaceMesh& organ, const std::vector<SurfaceMesh>& covers) {
     const std::vector<Vec3> centres = faceCentres(outline);
-    const auto& organTissue = organ.faceLabels.at(anatomy::kTissueLabel);
+    const auto& organTissue = organ.faceLabels.at(clinical::kSurfaceTissueLabel);
     std::vector<std::size_t> organFace;
     std::vector<double> organDist;
     detail::nearestFaces(organ, centres, organFace, organDist);
@@ -66,7 +66,7 @@ void labelOutline(SurfaceMesh& outline, const SurfaceMesh& organ, const std::vec
     }
     for (std::size_t i = 0; i < centres.size(); ++i)
         tissue[i] = organTissue[organFace[i]];
-    outline.faceLabels[anatomy::kTissueLabel] = std::move(tissue);
+    outline.faceLabels[clinical::kSurfaceTissueLabel] = std::move(tissue);
     outline.faceLabels[kPathologyLabel] = std::move(pathology);
 }
 
@@ -77,7 +77,7 @@ void labelPathology(SurfaceMesh& surface, const SurfaceMesh& organ) {
     std::vector<std::size_t> face;
     std::vector<double> dist;
     detail::nearestFaces(organ, centres, face, dist);
-    const auto& organTissue = organ.faceLabels.at(anatomy::kTissueLabel);
+    const auto& organTissue = organ.faceLabels.at(clinical::kSurfaceTissueLabel);
     std::vector<std::int32_t> contact(centres.size());
     for (std::size_t i = 0; i < centres.size(); ++i)
         contact[i] = static_cast<std::int32_t>(inWall[i]                              ? Contact::Myometrium
@@ -93,7 +93,7 @@ Result<MergeResult> mergeBody(const pathology::PathologyResult& grown, const Mer
     if (!std::isfinite(params.coverMm) || params.coverMm <= 0.0)
         return fail(ErrorCode::InvalidInput,
                     "merge: coverMm must be positive (got " + std::to_string(params.coverMm) + ")");
-    if (grown.organ.faceLabels.count(anatomy::kTissueLabel) == 0)
+    if (grown.organ.faceLabels.count(clinical::kSurfaceTissueLabel) == 0)
         return fail(ErrorCode::InvalidInput, "merge: the organ has no \"tissue\" face label");
     const SurfaceMesh organ = outwardOriented(grown.organ);
     std::vector<SurfaceMesh> covers;

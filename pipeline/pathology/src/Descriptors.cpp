@@ -10,21 +10,21 @@
 namespace hs::pathology {
 namespace detail {
 
-Figo classifyFigo(const Fractions& f, double tol) {
+clinical::FigoType classifyFigo(const Fractions& f, double tol) {
     const bool cavity = f.cavity > 0.01;
     const bool serosal = f.outside > 0.02;
     const bool touchesEndometrium = cavity || f.endometriumDistanceMm <= tol;
     if (cavity && serosal)
-        return Figo{f.cavity >= 0.5 ? 1 : 2, f.outside >= 0.5 ? 6 : 5};
+        return clinical::FigoType{f.cavity >= 0.5 ? 1 : 2, f.outside >= 0.5 ? 6 : 5};
     if (cavity)
-        return Figo{f.pedunculated ? 0 : (f.tissue < 0.5 ? 1 : 2), -1};
+        return clinical::FigoType{f.pedunculated ? 0 : (f.tissue < 0.5 ? 1 : 2), -1};
     if (serosal) {
         const int y = f.pedunculated ? 7 : (f.tissue < 0.5 ? 6 : 5);
         if (touchesEndometrium && y != 7)
-            return Figo{3, y};
-        return Figo{y, -1};
+            return clinical::FigoType{3, y};
+        return clinical::FigoType{y, -1};
     }
-    return Figo{touchesEndometrium ? 3 : 4, -1};
+    return clinical::FigoType{touchesEndometrium ? 3 : 4, -1};
 }
 
 double tissueFraction(const SurfaceMesh& organ, const SurfaceMesh& pathology, double h) {
@@ -158,8 +158,8 @@ std::vector<Vec3> basePoints(const SurfaceMesh& organ, const OrganInfo& info, Si
 } // namespace
 } // namespace detail
 
-LasmarScore lasmarScore(const Descriptors& d) {
-    LasmarScore s;
+clinical::LasmarScore lasmarScore(const Descriptors& d) {
+    clinical::LasmarScore s;
     s.size = d.sizeMm <= 20.0 ? 0 : (d.sizeMm <= 50.0 ? 1 : 2);
     s.topography = d.topography;
     s.extension = d.baseExtension <= 1.0 / 3.0 ? 0 : (d.baseExtension <= 2.0 / 3.0 ? 1 : 2);
@@ -168,7 +168,7 @@ LasmarScore lasmarScore(const Descriptors& d) {
     return s;
 }
 
-Result<Descriptors> measure(const SurfaceMesh& organ, const SurfaceMesh& pathology, Kind kind,
+Result<Descriptors> measure(const SurfaceMesh& organ, const SurfaceMesh& pathology, clinical::PathologyKind kind,
                             const PathologyParams& params) {
     using namespace detail;
     if (!analyzeTopology(pathology).isWatertight())
@@ -248,11 +248,11 @@ Result<Descriptors> measure(const SurfaceMesh& organ, const SurfaceMesh& patholo
     d.topography = along < 1.0 / 3.0 ? 0 : (along < 2.0 / 3.0 ? 1 : 2);
     const Vec3 radial = (baseCentre - info.internalOs) - info.axis * dot(baseCentre - info.internalOs, info.axis);
     d.lateralWall = norm(radial) > 0.25 * info.cavityWidthMm && std::fabs(dot(normalized(radial), info.lateral)) > 0.8;
-    if (kind == Kind::Myoma) {
+    if (kind == clinical::PathologyKind::Myoma) {
         d.figo = classifyFigo(f, params.contactToleranceMm);
         d.lasmar = lasmarScore(d);
     } else {
-        d.figo = Figo{-1, -1};
+        d.figo = clinical::FigoType{-1, -1};
     }
     return d;
 }

@@ -20,7 +20,7 @@ struct Fractions {
 /// FIGO type from fractions and contacts (UTERUS.md: 0 pedunculated intracavitary, 1 < 50 % intramural, 2 >= 50 %,
 /// 3 contacts the endometrium, 4 intramural, 5 subserosal >= 50 % intramural, 6 < 50 %, 7 pedunculated subserosal;
 /// hybrids X-Y when it reaches both sides).
-Figo classifyFigo(const Fractions& f, double contactToleranceMm);
+clinical::FigoType classifyFigo(const Fractions& f, double contactToleranceMm);
 
 /// Fraction of the pathology's volume inside the organ's wall, on voxels of edge h.
 double tissueFraction(const SurfaceMesh& organ, const SurfaceMesh& pathology, double h);

@@ -2,14 +2,12 @@
 
 #include "Geometry.h"
 
-#include "hs/anatomy/UterusGenerator.h"
+#include "hs/clinical/Tissue.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace hs::pathology::detail {
-
-using anatomy::Tissue;
 
 std::optional<RayHit> OrganInfo::ray(const Vec3& origin, const Vec3& dir, std::optional<Side> side, double tMin) const {
     std::optional<RayHit> best;
@@ -46,7 +44,7 @@ std::pair<std::size_t, double> OrganInfo::nearestFace(const Vec3& p, std::option
 }
 
 Result<OrganInfo> analyzeOrgan(const SurfaceMesh& organ) {
-    const auto it = organ.faceLabels.find(anatomy::kTissueLabel);
+    const auto it = organ.faceLabels.find(clinical::kSurfaceTissueLabel);
     if (it == organ.faceLabels.end() || it->second.size() != organ.triangles.size())
         return fail(ErrorCode::InvalidInput, "the organ surface has no face label \"tissue\" (a uterus-template "
                                              "surface from the anatomy stage is expected)");
@@ -60,17 +58,18 @@ Result<OrganInfo> analyzeOrgan(const SurfaceMesh& organ) {
     int nR = 0, nL = 0;
     bool anySerosa = false;
     for (std::size_t f = 0; f < organ.triangles.size(); ++f) {
-        const auto t = static_cast<Tissue>(tissue[f]);
-        const bool cavity = t == Tissue::Endometrium || t == Tissue::CervicalCanal || t == Tissue::TubalOstium;
+        const auto t = static_cast<clinical::SurfaceTissue>(tissue[f]);
+        const bool cavity = t == clinical::SurfaceTissue::Endometrium || t == clinical::SurfaceTissue::CervicalCanal ||
+                            t == clinical::SurfaceTissue::TubalOstium;
         info.faceSide[f] = cavity ? Side::Cavity : Side::Serosa;
-        anySerosa = anySerosa || t == Tissue::Serosa;
+        anySerosa = anySerosa || t == clinical::SurfaceTissue::Serosa;
         for (std::int32_t v : organ.triangles[f]) {
             const auto vi = static_cast<std::size_t>(v);
             if (cavity)
                 info.vertexSide[vi] = Side::Cavity;
-            if (t == Tissue::CervicalCanal)
+            if (t == clinical::SurfaceTissue::CervicalCanal)
                 inCanal[vi] = 1;
-            if (t == Tissue::Endometrium || t == Tissue::TubalOstium)
+            if (t == clinical::SurfaceTissue::Endometrium || t == clinical::SurfaceTissue::TubalOstium)
                 inEndo[vi] = 1;
         }
     }
@@ -107,7 +106,7 @@ Result<OrganInfo> analyzeOrgan(const SurfaceMesh& organ) {
     info.cavityCenter = (info.internalOs + info.cavityFundus) * 0.5;
 
     for (std::size_t f = 0; f < organ.triangles.size(); ++f) {
-        if (static_cast<Tissue>(tissue[f]) != Tissue::TubalOstium)
+        if (static_cast<clinical::SurfaceTissue>(tissue[f]) != clinical::SurfaceTissue::TubalOstium)
             continue;
         for (std::int32_t v : organ.triangles[f]) {
             const Vec3& p = organ.points[static_cast<std::size_t>(v)];

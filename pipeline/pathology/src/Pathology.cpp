@@ -7,7 +7,7 @@
 #include "Shapes.h"
 
 #include "hs/anatomy/OrganChecks.h"
-#include "hs/anatomy/UterusGenerator.h"
+#include "hs/clinical/Tissue.h"
 #include "hs/core/RegionModel.h"
 #include "hs/core/Rng.h"
 #include "hs/core/Units.h"
@@ -17,59 +17,6 @@
 #include <sstream>
 
 namespace hs::pathology {
-
-const char* toString(Kind value) {
-    return value == Kind::Myoma ? "myoma" : "polyp";
-}
-const char* toString(GrowthModel value) {
-    switch (value) {
-    case GrowthModel::CellularAutomaton:
-        return "ca";
-    case GrowthModel::Skeleton:
-        return "skeleton";
-    case GrowthModel::Particles:
-        return "particles";
-    }
-    return "";
-}
-const char* toString(Location value) {
-    switch (value) {
-    case Location::Fundal:
-        return "fundal";
-    case Location::Anterior:
-        return "anterior";
-    case Location::Posterior:
-        return "posterior";
-    case Location::LeftLateral:
-        return "left-lateral";
-    case Location::RightLateral:
-        return "right-lateral";
-    case Location::CornualLeft:
-        return "cornual-left";
-    case Location::CornualRight:
-        return "cornual-right";
-    case Location::Isthmic:
-        return "isthmic";
-    case Location::Cervical:
-        return "cervical";
-    }
-    return "";
-}
-const char* toString(Attachment value) {
-    return value == Attachment::Sessile ? "sessile" : "pedunculated";
-}
-
-std::string Figo::toString() const {
-    if (type < 0)
-        return "-";
-    return isHybrid() ? std::to_string(type) + "-" + std::to_string(serosal) : std::to_string(type);
-}
-bool operator==(const Figo& a, const Figo& b) {
-    return a.type == b.type && a.serosal == b.serosal;
-}
-bool operator!=(const Figo& a, const Figo& b) {
-    return !(a == b);
-}
 
 namespace {
 using namespace detail;
@@ -118,8 +65,8 @@ std::string who(const PathologyRequest& r) {
 Status checkRequest(const PathologyRequest& r) {
     if (!std::isfinite(r.sizeMm) || r.sizeMm <= 0.0)
         return fail(ErrorCode::InvalidInput, who(r) + ": size " + fmt(r.sizeMm) + " mm must be positive");
-    if (r.kind == Kind::Myoma) {
-        const Figo& f = r.figo;
+    if (r.kind == clinical::PathologyKind::Myoma) {
+        const clinical::FigoType& f = r.figo;
         if (f.isHybrid()) {
             if (f.type < 1 || f.type > 3 || f.serosal < 5 || f.serosal > 6)
                 return fail(ErrorCode::InvalidInput, who(r) + ": FIGO hybrid " + f.toString() +
@@ -132,15 +79,17 @@ Status checkRequest(const PathologyRequest& r) {
                         who(r) + ": FIGO type 8 (cervical, parasitic) is not modelled; use types 0-7 or a hybrid");
         }
     } else {
-        if (r.model == GrowthModel::CellularAutomaton)
+        if (r.model == clinical::GrowthModel::CellularAutomaton)
             return fail(ErrorCode::InvalidInput,
                         who(r) + ": the cellular automaton grows myomas only; use skeleton or particles for polyps");
-        if (r.attachment == Attachment::Pedunculated && (!std::isfinite(r.stalkLengthMm) || r.stalkLengthMm < 0.0))
+        if (r.attachment == clinical::PolypAttachment::Pedunculated &&
+            (!std::isfinite(r.stalkLengthMm) || r.stalkLengthMm < 0.0))
             return fail(ErrorCode::InvalidInput, who(r) + ": stalk length must be >= 0 mm");
     }
-    if (const auto* c = std::get_if<ClinicalPlacement>(&r.placement); c && c->location == Location::Cervical)
+    if (const auto* c = std::get_if<clinical::ClinicalPlacement>(&r.placement);
+        c && c->location == clinical::UterineLocation::Cervical)
         return fail(ErrorCode::Unsupported, who(r) + ": cervical pathologies are not modelled");
-    if (const auto* s = std::get_if<SurfacePlacement>(&r.placement);
+    if (const auto* s = std::get_if<clinical::SurfacePlacement>(&r.placement);
         s && (!isFinite(s->pointMm) || !isFinite(s->normal) || norm(s->normal) == 0.0))
         return fail(ErrorCode::InvalidInput,
                     who(r) + ": the surface point and normal must be finite, the normal non-zero");
@@ -148,7 +97,7 @@ Status checkRequest(const PathologyRequest& r) {
 }
 
 Status checkSize(const PathologyRequest& r, const OrganInfo& info) {
-    if (r.kind == Kind::Myoma) {
+    if (r.kind == clinical::PathologyKind::Myoma) {
         const double smallest = std::min({info.corpusWidthMm, info.corpusDepthMm, info.corpusLengthMm});
         if (r.sizeMm > kMaxSizeToCorpus * smallest)
             return fail(ErrorCode::InvalidInput, who(r) + ": a " + fmt(r.sizeMm, 0) +
@@ -159,7 +108,8 @@ Status checkSize(const PathologyRequest& r, const OrganInfo& info) {
                                                      fmt(kMaxSizeToCorpus * smallest, 0) + " mm");
     } else {
         const double room = kMaxPolypToCavity * info.cavityLengthMm;
-        const double length = r.sizeMm + (r.attachment == Attachment::Pedunculated ? r.stalkLengthMm : 0.0);
+        const double length =
+            r.sizeMm + (r.attachment == clinical::PolypAttachment::Pedunculated ? r.stalkLengthMm : 0.0);
         if (r.sizeMm > room || length > 1.2 * info.cavityLengthMm)
             return fail(ErrorCode::InvalidInput,
                         who(r) + ": a " + fmt(r.sizeMm, 0) + " mm polyp" +
@@ -199,7 +149,7 @@ double capFraction(double depth, double radius) {
 /// The centre depths along the wall chord (0 at the endometrium) at which an ideal sphere in a slab `wallMm` thick
 /// classifies as `want`: the start and length (mm) of the longest such interval, length <= 0 when there is none.
 /// Surfaces the type must not reach are left out of the slab: the organ will make room there.
-std::pair<double, double> figoRun(const Figo& want, double wallMm, double radius, double tol) {
+std::pair<double, double> figoRun(const clinical::FigoType& want, double wallMm, double radius, double tol) {
     const bool useCavity = want.isHybrid() || want.type <= 3;
     const bool useSerosa = want.isHybrid() || want.type >= 5;
     double bestStart = 0.0, bestLength = -1.0, runStart = 0.0;
@@ -245,12 +195,12 @@ Seat slideHybridSeat(const PathologyRequest& r, const OrganInfo& info, const Sea
     if (bestPlay >= enough)
         return nominal;
     const SurfaceMesh& organ = *info.mesh;
-    const auto& tissue = organ.faceLabels.at(anatomy::kTissueLabel);
+    const auto& tissue = organ.faceLabels.at(clinical::kSurfaceTissueLabel);
     const double reach = std::max(5.0, kHybridSlide * info.cavityLengthMm);
     const double minCos = std::cos(units::degToRad(kHybridTurnDeg));
     std::vector<std::pair<double, std::size_t>> candidates;
     for (std::size_t f = 0; f < organ.triangles.size(); ++f) {
-        if (static_cast<anatomy::Tissue>(tissue[f]) != anatomy::Tissue::Endometrium)
+        if (static_cast<clinical::SurfaceTissue>(tissue[f]) != clinical::SurfaceTissue::Endometrium)
             continue;
         const double d = distance(faceCentroid(organ, f), nominal.endometrium);
         if (d <= reach && dot(-faceNormalOf(info, f), nominal.intoWall) >= minCos)
@@ -283,46 +233,46 @@ Seat slideHybridSeat(const PathologyRequest& r, const OrganInfo& info, const Sea
 
 Result<Seat> seatFrom(const PathologyRequest& r, const OrganInfo& info, double tol, std::vector<std::string>& notes) {
     Seat seat;
-    const auto& tissue = info.mesh->faceLabels.at(anatomy::kTissueLabel);
-    if (const auto* c = std::get_if<ClinicalPlacement>(&r.placement)) {
+    const auto& tissue = info.mesh->faceLabels.at(clinical::kSurfaceTissueLabel);
+    if (const auto* c = std::get_if<clinical::ClinicalPlacement>(&r.placement)) {
         Vec3 origin = info.cavityCenter, dir;
         switch (c->location) {
-        case Location::Fundal:
+        case clinical::UterineLocation::Fundal:
             dir = info.axis;
             break;
-        case Location::Anterior:
+        case clinical::UterineLocation::Anterior:
             dir = info.anterior;
             break;
-        case Location::Posterior:
+        case clinical::UterineLocation::Posterior:
             dir = -info.anterior;
             break;
-        case Location::RightLateral:
+        case clinical::UterineLocation::RightLateral:
             dir = info.lateral;
             break;
-        case Location::LeftLateral:
+        case clinical::UterineLocation::LeftLateral:
             dir = -info.lateral;
             break;
-        case Location::CornualRight:
+        case clinical::UterineLocation::CornualRight:
             dir = normalized(info.cornuRight - info.cavityCenter);
             break;
-        case Location::CornualLeft:
+        case clinical::UterineLocation::CornualLeft:
             dir = normalized(info.cornuLeft - info.cavityCenter);
             break;
-        case Location::Isthmic:
+        case clinical::UterineLocation::Isthmic:
             origin = info.internalOs + info.axis * (0.2 * info.cavityLengthMm);
             dir = info.anterior;
             break;
-        case Location::Cervical:
+        case clinical::UterineLocation::Cervical:
             break;
         }
         auto hit = info.ray(origin, dir, Side::Cavity);
         if (!hit)
             return fail(ErrorCode::InvalidInput,
-                        who(r) + ": no endometrium found towards the " + toString(c->location) + " wall");
+                        who(r) + ": no endometrium found towards the " + std::string(toString(c->location)) + " wall");
         seat.endometrium = hit->point;
         seat.intoWall = -faceNormalOf(info, hit->face);
     } else {
-        const auto& s = std::get<SurfacePlacement>(r.placement);
+        const auto& s = std::get<clinical::SurfacePlacement>(r.placement);
         const auto [face, dist] = info.nearestFace(s.pointMm);
         if (dist > 5.0)
             return fail(ErrorCode::InvalidInput, who(r) + ": the point " + fmt(s.pointMm) + " lies " + fmt(dist) +
@@ -330,15 +280,15 @@ Result<Seat> seatFrom(const PathologyRequest& r, const OrganInfo& info, double t
         const Vec3 n = faceNormalOf(info, face);
         const Triangle& t = info.mesh->triangles[face];
         const Vec3 onFace = s.pointMm - n * dot(s.pointMm - info.mesh->points[static_cast<std::size_t>(t[0])], n);
-        const auto label = static_cast<anatomy::Tissue>(tissue[face]);
-        if (label == anatomy::Tissue::CervicalCanal || label == anatomy::Tissue::Ectocervix)
+        const auto label = static_cast<clinical::SurfaceTissue>(tissue[face]);
+        if (label == clinical::SurfaceTissue::CervicalCanal || label == clinical::SurfaceTissue::Ectocervix)
             return fail(ErrorCode::Unsupported, who(r) + ": the point " + fmt(s.pointMm) +
                                                     " lies on the cervix; cervical pathologies are not modelled");
         if (info.faceSide[face] == Side::Cavity) {
             seat.endometrium = onFace;
             seat.intoWall = -n;
         } else {
-            if (r.kind == Kind::Polyp)
+            if (r.kind == clinical::PathologyKind::Polyp)
                 return fail(ErrorCode::InvalidInput,
                             who(r) + ": a polyp grows from the endometrium into the cavity, but the point " +
                                 fmt(s.pointMm) + " lies on the serosa, outside the cavity");
@@ -354,7 +304,8 @@ Result<Seat> seatFrom(const PathologyRequest& r, const OrganInfo& info, double t
     if (!reachSerosa(info, seat))
         return fail(ErrorCode::InvalidInput, who(r) + ": the wall at " + fmt(seat.endometrium) +
                                                  " does not reach the serosa (placement too close to the cervix?)");
-    if (r.kind == Kind::Myoma && r.figo.isHybrid() && std::holds_alternative<ClinicalPlacement>(r.placement))
+    if (r.kind == clinical::PathologyKind::Myoma && r.figo.isHybrid() &&
+        std::holds_alternative<clinical::ClinicalPlacement>(r.placement))
         return slideHybridSeat(r, info, seat, tol, notes);
     return seat;
 }
@@ -362,7 +313,7 @@ Result<Seat> seatFrom(const PathologyRequest& r, const OrganInfo& info, double t
 /// Depth of a sphere's centre along the wall chord (0 at the endometrium, W at the serosa) for the requested FIGO
 /// type: the middle of the longest interval in which an ideal sphere in a slab classifies as requested.
 Result<double> centreDepth(const PathologyRequest& r, const Seat& seat, double radius, double tol) {
-    const Figo want = r.figo;
+    const clinical::FigoType want = r.figo;
     if (want.type == 4 && !want.isHybrid())
         return 0.5 * seat.wallMm;
     const auto [start, length] = figoRun(want, seat.wallMm, radius, tol);
@@ -454,10 +405,10 @@ Result<ShapeSpec> planShape(const PathologyRequest& r, const OrganInfo& info, co
     spec.radius = radius;
     spec.intoWall = seat.intoWall;
     fromSerosa = false;
-    if (r.kind == Kind::Polyp) {
+    if (r.kind == clinical::PathologyKind::Polyp) {
         spec.polyp = true;
         spec.base = seat.endometrium + seat.intoWall * kSinkMm;
-        if (r.attachment == Attachment::Pedunculated) {
+        if (r.attachment == clinical::PolypAttachment::Pedunculated) {
             spec.pedunculated = true;
             const double stalk = r.stalkLengthMm > 0.0 ? r.stalkLengthMm : 0.5 * r.sizeMm;
             spec.stalkRadius = std::clamp(0.18 * radius, 0.8, 3.0);
@@ -471,7 +422,7 @@ Result<ShapeSpec> planShape(const PathologyRequest& r, const OrganInfo& info, co
         }
         return spec;
     }
-    const Figo& f = r.figo;
+    const clinical::FigoType& f = r.figo;
     if (!f.isHybrid() && (f.type == 0 || f.type == 7)) {
         spec.pedunculated = true;
         spec.stalkRadius = std::clamp(0.3 * radius, 1.5, 5.0);
@@ -500,11 +451,11 @@ Result<SurfaceMesh> grow(const PathologyRequest& r, const ShapeSpec& spec, const
                          Progress& progress) {
     GrowthTuning tuning;
     switch (r.model) {
-    case GrowthModel::Skeleton:
+    case clinical::GrowthModel::Skeleton:
         return skeletonShape(spec, rng);
-    case GrowthModel::CellularAutomaton:
+    case clinical::GrowthModel::CellularAutomaton:
         return cellularAutomatonShape(spec, organ, tuning, rng, progress);
-    case GrowthModel::Particles:
+    case clinical::GrowthModel::Particles:
         return particleShape(spec, organ, tuning, rng, progress);
     }
     return fail(ErrorCode::Internal, "unknown growth model");
@@ -580,7 +531,7 @@ double hybridShift(const SurfaceMesh& mesh, const PathologyRequest& r, const Sea
 void refineHybrid(SurfaceMesh& mesh, const SurfaceMesh& organ, const PathologyRequest& r, const Seat& seat,
                   const PathologyParams& params) {
     for (int it = 0; it < 8; ++it) {
-        auto d = measure(organ, mesh, Kind::Myoma, params);
+        auto d = measure(organ, mesh, clinical::PathologyKind::Myoma, params);
         if (!d.ok() || d->figo == r.figo)
             return;
         const double cavity = d->cavityFraction / 0.01, outside = d->outsideFraction / 0.02;
@@ -588,7 +539,7 @@ void refineHybrid(SurfaceMesh& mesh, const SurfaceMesh& organ, const PathologyRe
         if (step == 0.0)
             return;
         translate(mesh, seat.intoWall * step);
-        auto after = measure(organ, mesh, Kind::Myoma, params);
+        auto after = measure(organ, mesh, clinical::PathologyKind::Myoma, params);
         if (!after.ok() || (step < 0.0 ? after->outsideFraction < 0.02 : after->cavityFraction < 0.01)) {
             translate(mesh, seat.intoWall * -step); // the other side would fall short: keep the balance
             return;
@@ -601,11 +552,11 @@ void refineHybrid(SurfaceMesh& mesh, const SurfaceMesh& organ, const PathologyRe
 /// 0.25 (types 1, 6) or 0.75 (types 2, 5), or a gap of half the contact tolerance to the endometrium (type 3).
 void fitDepth(SurfaceMesh& mesh, const SurfaceMesh& organ, const PathologyRequest& r, const Seat& seat,
               const PathologyParams& params) {
-    if (r.kind != Kind::Myoma)
+    if (r.kind != clinical::PathologyKind::Myoma)
         return;
     const int type = r.figo.type;
     if (r.figo.isHybrid()) {
-        if (r.figo == Figo{2, 5}) { // other hybrids keep the depth of the ideal sphere
+        if (r.figo == clinical::FigoType{2, 5}) { // other hybrids keep the depth of the ideal sphere
             translate(mesh, seat.intoWall * hybridShift(mesh, r, seat));
             refineHybrid(mesh, organ, r, seat, params);
         }
@@ -757,8 +708,8 @@ std::vector<Push> planPushes(const Planned& p, const OrganInfo& info, const Path
         deepest = std::max(deepest, t);
         lateral = std::max(lateral, norm((q - e) - u * t));
     }
-    const Figo& f = p.request->figo;
-    const bool polyp = p.request->kind == Kind::Polyp;
+    const clinical::FigoType& f = p.request->figo;
+    const bool polyp = p.request->kind == clinical::PathologyKind::Polyp;
     const bool intoCavity = polyp || f.isHybrid() || f.type <= 2;
     const bool clearOfCavity = !polyp && !f.isHybrid() && f.type >= 4;
     const bool clearOfSerosa = !polyp && !f.isHybrid() && f.type <= 4;
@@ -1077,7 +1028,7 @@ Result<PathologyResult> growPathologies(const SurfaceMesh& organ, const Patholog
         if (!d.ok())
             return fail(ErrorCode::Internal, who(r) + ": " + d.error().detail);
         g.descriptors = *d;
-        if (r.kind == Kind::Myoma && g.descriptors.figo != r.figo)
+        if (r.kind == clinical::PathologyKind::Myoma && g.descriptors.figo != r.figo)
             result.warnings.push_back(who(r) + ": requested FIGO " + r.figo.toString() + ", measured " +
                                       g.descriptors.figo.toString());
         if (std::fabs(g.descriptors.sizeMm - r.sizeMm) > 0.1 * r.sizeMm)

@@ -57,7 +57,7 @@ private:
     std::vector<CaseIssue>& m_issues;
 };
 
-void checkPatient(Checker& c, const PatientParams& p) {
+void checkPatient(Checker& c, const clinical::PatientParams& p) {
     c.range("/patient/ageYears", p.ageYears, limits::kAgeYears, "years");
     c.range("/patient/parity", p.parity, limits::kParity, "births");
     c.range("/patient/gravidity", p.gravidity, limits::kGravidity, "pregnancies");
@@ -125,8 +125,9 @@ void checkMyoma(Checker& c, const std::string& p, const PathologySpec& s) {
     if (s.stalkLengthMm)
         c.add(p + "/stalkLengthMm",
               formatNumber(*s.stalkLengthMm) + " is not allowed: a stalk applies to pedunculated polyps only");
-    if (const auto* clinical = std::get_if<ClinicalPlacement>(&s.placement); clinical && s.figo && s.figo->isValid()) {
-        const bool cervical = clinical->location == UterineLocation::Cervical;
+    if (const auto* described = std::get_if<clinical::ClinicalPlacement>(&s.placement);
+        described && s.figo && s.figo->isValid()) {
+        const bool cervical = described->location == clinical::UterineLocation::Cervical;
         const bool type8 = !s.figo->isHybrid() && s.figo->type == 8;
         if (cervical && !type8)
             c.add(p + "/figo", quoteText(s.figo->toString()) +
@@ -134,7 +135,7 @@ void checkMyoma(Checker& c, const std::string& p, const PathologySpec& s) {
                                    "FIGO type 8)");
         if (type8 && !cervical)
             c.add(p + "/placement/location",
-                  quoteText(toString(clinical->location)) +
+                  quoteText(toString(described->location)) +
                       " does not fit FIGO type 8 (allowed \"cervical\"; parasitic myomas lie outside the uterus)");
     }
 }
@@ -144,11 +145,11 @@ void checkPolyp(Checker& c, const std::string& p, const PathologySpec& s) {
     if (s.figo)
         c.add(p + "/figo",
               quoteText(s.figo->toString()) + " is not allowed: a polyp has no FIGO type (FIGO classifies myomas)");
-    if (s.growthModel == GrowthModel::CellularAutomaton)
+    if (s.growthModel == clinical::GrowthModel::CellularAutomaton)
         c.add(p + "/growthModel", "\"ca\" grows myomas only (allowed for polyps: \"skeleton\", \"particles\")");
     if (!s.attachment) {
         c.add(p + "/attachment", "a polyp needs an attachment (allowed: \"sessile\", \"pedunculated\")");
-    } else if (*s.attachment == PolypAttachment::Pedunculated) {
+    } else if (*s.attachment == clinical::PolypAttachment::Pedunculated) {
         if (!s.stalkLengthMm)
             c.add(p + "/stalkLengthMm",
                   "a pedunculated polyp needs a stalk length (allowed " + formatRange(limits::kStalkLengthMm) + " mm)");
@@ -158,13 +159,13 @@ void checkPolyp(Checker& c, const std::string& p, const PathologySpec& s) {
         c.add(p + "/stalkLengthMm",
               formatNumber(*s.stalkLengthMm) + " is not allowed: a sessile polyp has no stalk (write null)");
     }
-    if (const auto* clinical = std::get_if<ClinicalPlacement>(&s.placement);
-        clinical && clinical->location == UterineLocation::Cervical)
+    if (const auto* described = std::get_if<clinical::ClinicalPlacement>(&s.placement);
+        described && described->location == clinical::UterineLocation::Cervical)
         c.add(p + "/placement/location", "\"cervical\" is not allowed for a polyp (endometrial polyps grow in the "
                                          "uterine cavity)");
 }
 
-void checkSurfacePlacement(Checker& c, const std::string& p, const SurfacePlacement& s) {
+void checkSurfacePlacement(Checker& c, const std::string& p, const clinical::SurfacePlacement& s) {
     for (int i = 0; i < 3; ++i)
         c.range(p + "/pointMm/" + std::to_string(i), s.pointMm[i], limits::kSurfaceCoordinateMm, "mm");
     bool finite = true;
@@ -191,11 +192,11 @@ void checkPathologies(Checker& c, const std::vector<PathologySpec>& list) {
         if (!inserted)
             c.add(p + "/id", quoteText(s.id) + " repeats the id of /pathologies/" + std::to_string(it->second) +
                                  " (ids must be unique)");
-        if (s.kind == PathologyKind::Myoma)
+        if (s.kind == clinical::PathologyKind::Myoma)
             checkMyoma(c, p, s);
         else
             checkPolyp(c, p, s);
-        if (const auto* surface = std::get_if<SurfacePlacement>(&s.placement))
+        if (const auto* surface = std::get_if<clinical::SurfacePlacement>(&s.placement))
             checkSurfacePlacement(c, p + "/placement", *surface);
     }
 }
@@ -228,7 +229,7 @@ void checkTexture(Checker& c, const TextureParams& t) {
 
 void checkScene(Checker& c, const SceneParams& s) {
     c.range("/scene/hydrometraPressureKpa", s.hydrometraPressureKpa, limits::kHydrometraPressureKpa, "kPa");
-    for (const Tissue tissue : kTissues) {
+    for (const clinical::Tissue tissue : clinical::kTissues) {
         const MaterialOverride& m = s.materials[static_cast<std::size_t>(tissue)];
         const std::string p = "/scene/materials/" + std::string(toString(tissue)) + "/";
         c.range(p + "youngsModulusKpa", m.youngsModulusKpa, youngsModulusRangeKpa(tissue), "kPa");

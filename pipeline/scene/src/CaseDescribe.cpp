@@ -24,7 +24,7 @@ std::string rounded(double value) {
     return formatNumber(std::round(value * 10.0) / 10.0);
 }
 
-std::string describePatient(const PatientParams& p) {
+std::string describePatient(const clinical::PatientParams& p) {
     const double heightM = p.heightCm / 100.0;
     return rounded(p.ageYears) + " years, gravida " + std::to_string(p.gravidity) + " para " +
            std::to_string(p.parity) + ", " + rounded(p.heightCm) + " cm, " + rounded(p.weightKg) + " kg (BMI " +
@@ -54,10 +54,10 @@ std::string describeAnatomy(const AnatomyParams& a) {
     return text;
 }
 
-std::string describePlacement(const Placement& placement) {
-    if (const auto* clinical = std::get_if<ClinicalPlacement>(&placement))
-        return std::string(toString(clinical->location));
-    const auto& s = std::get<SurfacePlacement>(placement);
+std::string describePlacement(const clinical::Placement& placement) {
+    if (const auto* described = std::get_if<clinical::ClinicalPlacement>(&placement))
+        return std::string(toString(described->location));
+    const auto& s = std::get<clinical::SurfacePlacement>(placement);
     return "at (" + formatNumber(s.pointMm.x) + ", " + formatNumber(s.pointMm.y) + ", " + formatNumber(s.pointMm.z) +
            ") mm";
 }
@@ -66,8 +66,8 @@ std::string describePathology(const PathologySpec& s) {
     std::string text = s.id + ": " + std::string(toString(s.kind));
     if (s.figo) {
         text += " FIGO " + s.figo->toString();
-        if (!s.figo->isHybrid() && !figoDefinition(s.figo->type).empty())
-            text += " (" + std::string(figoDefinition(s.figo->type)) + ")";
+        if (!s.figo->isHybrid() && !clinical::figoDefinition(s.figo->type).empty())
+            text += " (" + std::string(clinical::figoDefinition(s.figo->type)) + ")";
     }
     if (s.attachment)
         text += " " + std::string(toString(*s.attachment));
@@ -98,7 +98,7 @@ std::string describeScene(const SceneParams& s) {
     std::string text = "hydrometra " + formatNumber(s.hydrometraPressureKpa) + " kPa (" +
                        rounded(s.hydrometraPressureKpa / units::kKpaPerMmHg) + " mmHg)";
     std::string overridden;
-    for (const Tissue tissue : kTissues) {
+    for (const clinical::Tissue tissue : clinical::kTissues) {
         const MaterialOverride& o = s.materials[static_cast<std::size_t>(tissue)];
         if (o.youngsModulusKpa || o.poissonRatio || o.densityKgPerM3)
             overridden += (overridden.empty() ? "" : ", ") + std::string(toString(tissue));

@@ -112,17 +112,17 @@ bool readEnum(const json& v, const std::string& path, E& out, const std::array<E
     return true;
 }
 
-bool readValue(const json& v, const std::string& path, PathologyKind& out, Issues& issues) {
-    return readEnum(v, path, out, kPathologyKinds, issues);
+bool readValue(const json& v, const std::string& path, clinical::PathologyKind& out, Issues& issues) {
+    return readEnum(v, path, out, clinical::kPathologyKinds, issues);
 }
-bool readValue(const json& v, const std::string& path, GrowthModel& out, Issues& issues) {
-    return readEnum(v, path, out, kGrowthModels, issues);
+bool readValue(const json& v, const std::string& path, clinical::GrowthModel& out, Issues& issues) {
+    return readEnum(v, path, out, clinical::kGrowthModels, issues);
 }
-bool readValue(const json& v, const std::string& path, UterineLocation& out, Issues& issues) {
-    return readEnum(v, path, out, kUterineLocations, issues);
+bool readValue(const json& v, const std::string& path, clinical::UterineLocation& out, Issues& issues) {
+    return readEnum(v, path, out, clinical::kUterineLocations, issues);
 }
-bool readValue(const json& v, const std::string& path, PolypAttachment& out, Issues& issues) {
-    return readEnum(v, path, out, kPolypAttachments, issues);
+bool readValue(const json& v, const std::string& path, clinical::PolypAttachment& out, Issues& issues) {
+    return readEnum(v, path, out, clinical::kPolypAttachments, issues);
 }
 bool readValue(const json& v, const std::string& path, ShapeMode& out, Issues& issues) {
     return readEnum(v, path, out, kShapeModes, issues);
@@ -132,17 +132,17 @@ bool readValue(const json& v, const std::string& path, MeshingMethod& out, Issue
 }
 
 /// A FIGO type: an integer (2) or a string ("2", "2-5"). Range rules are checkCase()'s.
-bool readValue(const json& v, const std::string& path, FigoType& out, Issues& issues) {
+bool readValue(const json& v, const std::string& path, clinical::FigoType& out, Issues& issues) {
     constexpr std::string_view kExpected = "a FIGO type: an integer 0..8 or a string such as \"2-5\"";
     if (v.is_number_integer()) {
         int type = 0;
         if (!readValue(v, path, type, issues))
             return false;
-        out = FigoType{type, -1};
+        out = clinical::FigoType{type, -1};
         return true;
     }
     if (v.is_string()) {
-        if (auto figo = FigoType::parse(v.get_ref<const std::string&>())) {
+        if (auto figo = clinical::FigoType::parse(v.get_ref<const std::string&>())) {
             out = *figo;
             return true;
         }
@@ -246,7 +246,7 @@ private:
     std::vector<std::string> m_known;
 };
 
-void readPatient(const json& v, const std::string& path, PatientParams& p, Issues& issues) {
+void readPatient(const json& v, const std::string& path, clinical::PatientParams& p, Issues& issues) {
     ObjectReader o(v, path, issues);
     o.read("ageYears", p.ageYears);
     o.read("parity", p.parity);
@@ -282,7 +282,7 @@ void readAnatomy(const json& v, const std::string& path, AnatomyParams& a, Issue
 }
 
 /// {"location": ...} or {"pointMm": [...], "normal": [...]}: exactly one form.
-void readPlacement(const json& v, const std::string& path, Placement& placement, Issues& issues) {
+void readPlacement(const json& v, const std::string& path, clinical::Placement& placement, Issues& issues) {
     ObjectReader o(v, path, issues);
     const json* location = o.member("location");
     const json* point = o.member("pointMm");
@@ -295,11 +295,11 @@ void readPlacement(const json& v, const std::string& path, Placement& placement,
         issues.push_back({path, "give either a clinical placement {\"location\"} or a surface placement "
                                 "{\"pointMm\", \"normal\"}, not both"});
     } else if (location) {
-        ClinicalPlacement clinical;
-        if (readValue(*location, o.pathOf("location"), clinical.location, issues))
-            placement = clinical;
+        clinical::ClinicalPlacement described;
+        if (readValue(*location, o.pathOf("location"), described.location, issues))
+            placement = described;
     } else if (surface) {
-        SurfacePlacement s;
+        clinical::SurfacePlacement s;
         if (!point)
             issues.push_back({o.pathOf("pointMm"), "required field is missing (a surface placement has pointMm and "
                                                    "normal)"});
@@ -310,7 +310,8 @@ void readPlacement(const json& v, const std::string& path, Placement& placement,
             readValue(*normal, o.pathOf("normal"), s.normal, issues))
             placement = s;
     } else {
-        issues.push_back({path, "empty placement: give {\"location\": one of " + choiceList(kUterineLocations) +
+        issues.push_back({path, "empty placement: give {\"location\": one of " +
+                                    choiceList(clinical::kUterineLocations) +
                                     "} or {\"pointMm\": [x, y, z], \"normal\": [x, y, z]}"});
     }
 }
@@ -382,7 +383,7 @@ void readScene(const json& v, const std::string& path, SceneParams& s, Issues& i
     o.read("hydrometraPressureKpa", s.hydrometraPressureKpa);
     if (const json* materials = o.member("materials")) {
         ObjectReader tissues(*materials, o.pathOf("materials"), issues);
-        for (const Tissue tissue : kTissues) {
+        for (const clinical::Tissue tissue : clinical::kTissues) {
             const std::string key(toString(tissue));
             if (const json* m = tissues.member(key)) {
                 MaterialOverride& out = s.materials[static_cast<std::size_t>(tissue)];
@@ -443,7 +444,7 @@ ojson writePathology(const PathologySpec& s) {
     j["growthModel"] = std::string(toString(s.growthModel));
     j["sizeMm"] = s.sizeMm;
     // Only the fields of the pathology's kind are written (the others must be unset in a valid spec).
-    if (s.kind == PathologyKind::Myoma || s.figo) {
+    if (s.kind == clinical::PathologyKind::Myoma || s.figo) {
         if (!s.figo)
             j["figo"] = nullptr;
         else if (s.figo->isHybrid())
@@ -451,14 +452,14 @@ ojson writePathology(const PathologySpec& s) {
         else
             j["figo"] = s.figo->type;
     }
-    if (s.kind == PathologyKind::Polyp || s.attachment)
+    if (s.kind == clinical::PathologyKind::Polyp || s.attachment)
         j["attachment"] = s.attachment ? ojson(std::string(toString(*s.attachment))) : ojson(nullptr);
-    if (s.kind == PathologyKind::Polyp || s.stalkLengthMm)
+    if (s.kind == clinical::PathologyKind::Polyp || s.stalkLengthMm)
         j["stalkLengthMm"] = optionalValue(s.stalkLengthMm);
-    if (const auto* clinical = std::get_if<ClinicalPlacement>(&s.placement)) {
-        j["placement"] = ojson{{"location", std::string(toString(clinical->location))}};
+    if (const auto* described = std::get_if<clinical::ClinicalPlacement>(&s.placement)) {
+        j["placement"] = ojson{{"location", std::string(toString(described->location))}};
     } else {
-        const auto& surface = std::get<SurfacePlacement>(s.placement);
+        const auto& surface = std::get<clinical::SurfacePlacement>(s.placement);
         ojson p;
         p["pointMm"] = vec3(surface.pointMm);
         p["normal"] = vec3(surface.normal);
@@ -476,7 +477,7 @@ ojson writeCase(const CaseSpec& spec) {
     j["title"] = spec.title;
     j["seed"] = spec.seed;
 
-    const PatientParams& p = spec.patient;
+    const clinical::PatientParams& p = spec.patient;
     j["patient"] = ojson{{"ageYears", p.ageYears}, {"parity", p.parity},     {"gravidity", p.gravidity},
                          {"heightCm", p.heightCm}, {"weightKg", p.weightKg}, {"menopausal", p.menopausal}};
 
@@ -525,7 +526,7 @@ ojson writeCase(const CaseSpec& spec) {
     ojson scene;
     scene["hydrometraPressureKpa"] = spec.scene.hydrometraPressureKpa;
     ojson materials;
-    for (const Tissue tissue : kTissues) {
+    for (const clinical::Tissue tissue : clinical::kTissues) {
         const MaterialOverride& o = spec.scene.materials[static_cast<std::size_t>(tissue)];
         materials[std::string(toString(tissue))] = ojson{{"youngsModulusKpa", optionalValue(o.youngsModulusKpa)},
                                                          {"poissonRatio", optionalValue(o.poissonRatio)},

@@ -157,7 +157,7 @@ void readMaterials(Reader& r, const json& j, Scene& scene) {
         out.id = r.int32(m, "id", path);
         out.regionId = r.int32(m, "regionId", path);
         out.name = r.text(m, "name", path);
-        out.tissue = r.choice<Tissue>(m, "tissue", path);
+        out.tissue = r.choice<clinical::Tissue>(m, "tissue", path);
         out.material.youngsModulusKpa = r.number(m, "youngsModulusKpa", path);
         out.material.poissonRatio = r.number(m, "poissonRatio", path);
         out.material.densityKgPerM3 = r.number(m, "densityKgPerM3", path);
@@ -181,7 +181,7 @@ void readRegions(Reader& r, const json& j, Scene& scene) {
         SceneRegion out;
         out.id = r.int32(g, "id", path);
         out.name = r.text(g, "name", path);
-        out.tissue = r.choice<Tissue>(g, "tissue", path);
+        out.tissue = r.choice<clinical::Tissue>(g, "tissue", path);
         out.pathologyId = r.text(g, "pathologyId", path);
         scene.regions.push_back(std::move(out));
     }
@@ -208,19 +208,19 @@ void readClinical(Reader& r, const json& j, Scene& scene) {
         const std::string path = "/clinical/pathologies/" + std::to_string(i);
         PathologyDescriptor out;
         out.id = r.text(p, "id", path);
-        out.kind = r.choice<PathologyKind>(p, "kind", path);
+        out.kind = r.choice<clinical::PathologyKind>(p, "kind", path);
         out.regionId = r.int32(p, "regionId", path);
         out.sizeMm = r.number(p, "sizeMm", path);
         out.volumeMl = r.number(p, "volumeMl", path);
         const json* figo = r.member(p, "figo", path);
         if (figo && !figo->is_null()) {
-            out.figo = figo->is_string() ? FigoType::parse(figo->get<std::string>()) : std::nullopt;
+            out.figo = figo->is_string() ? clinical::FigoType::parse(figo->get<std::string>()) : std::nullopt;
             if (!out.figo || !out.figo->isValid())
                 r.error = r.name + ": " + path + "/figo is not a FIGO type";
         }
         const json* lasmar = r.member(p, "lasmar", path);
         if (lasmar && !lasmar->is_null()) {
-            LasmarScore s;
+            clinical::LasmarScore s;
             s.size = r.int32(*lasmar, "size", path + "/lasmar");
             s.topography = r.int32(*lasmar, "topography", path + "/lasmar");
             s.extension = r.int32(*lasmar, "extension", path + "/lasmar");

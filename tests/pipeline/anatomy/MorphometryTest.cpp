@@ -13,6 +13,7 @@
 #include <sstream>
 
 using namespace hs::anatomy;
+using hs::clinical::PatientParams;
 
 namespace {
 

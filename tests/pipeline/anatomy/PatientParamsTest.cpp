@@ -5,8 +5,8 @@
 #include <cmath>
 #include <limits>
 
-using hs::anatomy::PatientParams;
 using hs::anatomy::validatePatient;
+using hs::clinical::PatientParams;
 
 namespace {
 

@@ -10,6 +10,7 @@
 #include <fstream>
 
 using namespace hs::anatomy;
+using hs::clinical::PatientParams;
 
 namespace {
 
@@ -107,6 +108,9 @@ TEST(ShapeModel, MeanOrganGrowsWithParityAndShrinksAfterMenopause) {
     auto dims = [&](const PatientParams& p) { return *measureUterus(*model.mean(p), layout); };
     PatientParams nulli;
     nulli.ageYears = 35.0;
+    nulli.parity = 0;
+    nulli.gravidity = 0;
+    nulli.heightCm = 164.0;
     PatientParams multi = nulli;
     multi.parity = multi.gravidity = 3;
     EXPECT_GT(dims(multi).lengthMm, dims(nulli).lengthMm + 1.0);
@@ -206,6 +210,7 @@ TEST(ShapeModel, MeetsRequestedDimensionsWithinOneMillimetre) {
     patient.ageYears = 35;
     patient.parity = 1;
     patient.gravidity = 1;
+    patient.heightCm = 164.0;
     DimensionTargets targets;
     targets.lengthMm = 80.0;
     targets.widthMm = 48.0;

@@ -61,10 +61,12 @@ TEST(UterusGenerator, EveryInstanceSharesTheTemplateTopology) {
 TEST(UterusGenerator, LabelsTheFiveTissues) {
     const auto organ = generateUterus(UterusShapeParams{});
     ASSERT_TRUE(organ.ok());
-    const auto& labels = organ->mesh.faceLabels.at(kTissueLabel);
+    const auto& labels = organ->mesh.faceLabels.at(hs::clinical::kSurfaceTissueLabel);
     const std::set<std::int32_t> found(labels.begin(), labels.end());
     EXPECT_EQ(found, (std::set<std::int32_t>{1, 2, 3, 4, 5}));
-    EXPECT_EQ(std::count(labels.begin(), labels.end(), static_cast<std::int32_t>(Tissue::TubalOstium)), 16);
+    EXPECT_EQ(
+        std::count(labels.begin(), labels.end(), hs::clinical::labelValue(hs::clinical::SurfaceTissue::TubalOstium)),
+        16);
 }
 
 TEST(UterusGenerator, RetroflexedRetrovertedOrganIsValid) {

@@ -33,13 +33,13 @@ TEST(Assembly, RegionsAreTheWallThenOnePerPathologyInCaseOrder) {
     ASSERT_EQ(regions.size(), 3u);
     EXPECT_EQ(regions[0].id, kWallRegion);
     EXPECT_EQ(regions[0].name, "myometrium");
-    EXPECT_EQ(regions[0].tissue, scene::Tissue::Myometrium);
+    EXPECT_EQ(regions[0].tissue, clinical::Tissue::Myometrium);
     EXPECT_EQ(regions[1].id, 2);
     EXPECT_EQ(regions[1].name, "myoma-1");
-    EXPECT_EQ(regions[1].tissue, scene::Tissue::Myoma);
+    EXPECT_EQ(regions[1].tissue, clinical::Tissue::Myoma);
     EXPECT_EQ(regions[1].pathologyId, "myoma-1");
     EXPECT_EQ(regions[2].id, 3);
-    EXPECT_EQ(regions[2].tissue, scene::Tissue::Polyp);
+    EXPECT_EQ(regions[2].tissue, clinical::Tissue::Polyp);
     EXPECT_EQ(pathologyRegion(1), 3);
 }
 
@@ -73,9 +73,9 @@ TEST(Assembly, LabelsComeInContactBaseOstiaCanalOrderAndEmptySetsAreLeftOut) {
     SurfaceMesh visual;
     visual.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     visual.triangles = {{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}};
-    const auto ostium = static_cast<std::int32_t>(anatomy::Tissue::TubalOstium);
-    const auto canal = static_cast<std::int32_t>(anatomy::Tissue::CervicalCanal);
-    visual.faceLabels[anatomy::kTissueLabel] = {ostium, 2, canal, canal};
+    const auto ostium = clinical::labelValue(clinical::SurfaceTissue::TubalOstium);
+    const auto canal = clinical::labelValue(clinical::SurfaceTissue::CervicalCanal);
+    visual.faceLabels[clinical::kSurfaceTissueLabel] = {ostium, 2, canal, canal};
     visual.faceLabels[merge::kPathologyLabel] = {0, 1, 1, 0}; // faces 1, 2 over the myoma; none over the polyp
     const auto labels = sceneLabels(spec, tets, visual);
     ASSERT_EQ(labels.size(), 4u);
@@ -97,12 +97,12 @@ TEST(Assembly, DescriptorsTakeTheMeasuredSizeAndTheMeshedVolume) {
     pathology::PathologyResult grown;
     grown.pathologies.resize(2);
     grown.pathologies[0].id = "myoma-1";
-    grown.pathologies[0].kind = pathology::Kind::Myoma;
+    grown.pathologies[0].kind = clinical::PathologyKind::Myoma;
     grown.pathologies[0].descriptors.sizeMm = 19.5;
-    grown.pathologies[0].descriptors.figo = pathology::Figo{2, -1};
-    grown.pathologies[0].descriptors.lasmar = pathology::LasmarScore{0, 1, 1, 2, 1};
+    grown.pathologies[0].descriptors.figo = clinical::FigoType{2, -1};
+    grown.pathologies[0].descriptors.lasmar = clinical::LasmarScore{0, 1, 1, 2, 1};
     grown.pathologies[1].id = "polyp-1";
-    grown.pathologies[1].kind = pathology::Kind::Polyp;
+    grown.pathologies[1].kind = clinical::PathologyKind::Polyp;
     grown.pathologies[1].descriptors.sizeMm = 9.8;
     anatomy::UterusDimensions organ;
     organ.lengthMm = 70.0;
@@ -121,7 +121,7 @@ TEST(Assembly, DescriptorsTakeTheMeasuredSizeAndTheMeshedVolume) {
     EXPECT_EQ(myoma.lasmar->total(), 5);
     EXPECT_EQ(myoma.location, "left-lateral");
     const auto& polyp = c.pathologies[1];
-    EXPECT_EQ(polyp.kind, scene::PathologyKind::Polyp);
+    EXPECT_EQ(polyp.kind, clinical::PathologyKind::Polyp);
     EXPECT_FALSE(polyp.figo.has_value());
     EXPECT_EQ(polyp.location, "cornual-right");
 }

@@ -110,7 +110,7 @@ TEST(Generate, RegeneratingTheTextureGivesTheBytesOfAFullRunOfTheEditedCase) {
 
 TEST(Generate, RegeneratingTheSceneAppliesAMaterialEdit) {
     scene::CaseSpec edited = lightCase();
-    edited.scene.materials[static_cast<std::size_t>(scene::Tissue::Myoma)].youngsModulusKpa = 100.0;
+    edited.scene.materials[static_cast<std::size_t>(clinical::Tissue::Myoma)].youngsModulusKpa = 100.0;
     edited.scene.hydrometraPressureKpa = 10.0;
     edited.title = "stiffer myoma";
     auto again = regenerateFrom(Stage::Scene, baseRun(), edited);
@@ -170,7 +170,7 @@ TEST(Generate, FirstChangedStageNamesTheEarliestStageAndField) {
 
 TEST(Generate, RefusesAnInvalidCaseNamingTheField) {
     scene::CaseSpec bad = lightCase();
-    bad.pathologies[0].figo = scene::FigoType{9, -1};
+    bad.pathologies[0].figo = clinical::FigoType{9, -1};
     GenerateParams params;
     params.caseFile = "bad.json";
     auto refused = generateScene(bad, params);

@@ -15,7 +15,7 @@ namespace {
 
 TEST(Merge, SubmucosalMyomaBecomesANestedRegionWithContactLabels) {
     pathology::PathologyParams params;
-    params.pathologies.push_back(test::myoma("m", pathology::GrowthModel::Skeleton, {2, -1}, 20.0));
+    params.pathologies.push_back(test::myoma("m", clinical::GrowthModel::Skeleton, {2, -1}, 20.0));
     auto grown = pathology::growPathologies(test::testOrgan(1), params);
     ASSERT_TRUE(grown.ok()) << grown.error().detail;
     auto merged = mergeBody(*grown);
@@ -38,17 +38,17 @@ TEST(Merge, SubmucosalMyomaBecomesANestedRegionWithContactLabels) {
 // The automaton's surfaces used to fold their 0.8 mm cover in voxel-scale creases (bench_pathology: 38 of 180 merged).
 // 3 organs per type here; bench_pathology sweeps 20 (ctest pathology_bars_20_organs). The hybrid 2-5 also runs in
 // organ 6, whose posterior wall (17 mm) is too thick for a 20 mm myoma to span: its seat slides to a thinner part.
-class AutomatonFigo : public testing::TestWithParam<pathology::Figo> {};
+class AutomatonFigo : public testing::TestWithParam<clinical::FigoType> {};
 
 TEST_P(AutomatonFigo, MyomaMatchesItsTypeAndSizeAndMergesIntoAValidBody) {
-    const pathology::Figo figo = GetParam();
+    const clinical::FigoType figo = GetParam();
     std::vector<std::uint64_t> seeds{1, 2, 3};
     if (figo.isHybrid())
         seeds.push_back(6);
     for (std::uint64_t seed : seeds) {
         pathology::PathologyParams params;
         params.seed = seed;
-        params.pathologies.push_back(test::myoma("m", pathology::GrowthModel::CellularAutomaton, figo, 20.0));
+        params.pathologies.push_back(test::myoma("m", clinical::GrowthModel::CellularAutomaton, figo, 20.0));
         auto grown = pathology::growPathologies(test::testOrgan(seed), params);
         ASSERT_TRUE(grown.ok()) << "seed " << seed << ": " << grown.error().detail;
         const pathology::Descriptors& d = grown->pathologies[0].descriptors;
@@ -60,10 +60,12 @@ TEST_P(AutomatonFigo, MyomaMatchesItsTypeAndSizeAndMergesIntoAValidBody) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Merge, AutomatonFigo,
-                         testing::Values(pathology::Figo{0, -1}, pathology::Figo{1, -1}, pathology::Figo{2, -1},
-                                         pathology::Figo{3, -1}, pathology::Figo{4, -1}, pathology::Figo{5, -1},
-                                         pathology::Figo{6, -1}, pathology::Figo{7, -1}, pathology::Figo{2, 5}),
-                         [](const testing::TestParamInfo<pathology::Figo>& p) {
+                         testing::Values(clinical::FigoType{0, -1}, clinical::FigoType{1, -1},
+                                         clinical::FigoType{2, -1}, clinical::FigoType{3, -1},
+                                         clinical::FigoType{4, -1}, clinical::FigoType{5, -1},
+                                         clinical::FigoType{6, -1}, clinical::FigoType{7, -1},
+                                         clinical::FigoType{2, 5}),
+                         [](const testing::TestParamInfo<clinical::FigoType>& p) {
                              std::string name = "figo" + p.param.toString();
                              std::replace(name.begin(), name.end(), '-', '_');
                              return name;
@@ -71,7 +73,7 @@ INSTANTIATE_TEST_SUITE_P(Merge, AutomatonFigo,
 
 TEST(Merge, SameInputGivesTheSameBody) {
     pathology::PathologyParams params;
-    params.pathologies.push_back(test::myoma("m", pathology::GrowthModel::CellularAutomaton, {2, -1}, 20.0));
+    params.pathologies.push_back(test::myoma("m", clinical::GrowthModel::CellularAutomaton, {2, -1}, 20.0));
     auto grown = pathology::growPathologies(test::testOrgan(1), params);
     ASSERT_TRUE(grown.ok()) << grown.error().detail;
     auto a = mergeBody(*grown);
@@ -86,7 +88,7 @@ TEST(Merge, SameInputGivesTheSameBody) {
 
 TEST(Merge, CoverKeepsItsThicknessAroundTheAutomatonsCreases) {
     pathology::PathologyParams params;
-    params.pathologies.push_back(test::myoma("m", pathology::GrowthModel::CellularAutomaton, {6, -1}, 20.0));
+    params.pathologies.push_back(test::myoma("m", clinical::GrowthModel::CellularAutomaton, {6, -1}, 20.0));
     auto grown = pathology::growPathologies(test::testOrgan(2), params);
     ASSERT_TRUE(grown.ok()) << grown.error().detail;
     auto merged = mergeBody(*grown);
@@ -109,16 +111,19 @@ TEST(Merge, CoverKeepsItsThicknessAroundTheAutomatonsCreases) {
 }
 
 TEST(Merge, PlacesAndMergesFiveAutomatonMyomasWithinTenSeconds) {
-    using pathology::GrowthModel;
-    using pathology::Location;
+    using clinical::GrowthModel;
+    using clinical::UterineLocation;
     pathology::PathologyParams params;
-    params.pathologies.push_back(test::myoma("a", GrowthModel::CellularAutomaton, {2, -1}, 15.0, Location::Posterior));
-    params.pathologies.push_back(test::myoma("b", GrowthModel::CellularAutomaton, {4, -1}, 12.0, Location::Anterior));
     params.pathologies.push_back(
-        test::myoma("c", GrowthModel::CellularAutomaton, {6, -1}, 15.0, Location::RightLateral));
+        test::myoma("a", GrowthModel::CellularAutomaton, {2, -1}, 15.0, UterineLocation::Posterior));
     params.pathologies.push_back(
-        test::myoma("d", GrowthModel::CellularAutomaton, {5, -1}, 12.0, Location::LeftLateral));
-    params.pathologies.push_back(test::myoma("e", GrowthModel::CellularAutomaton, {3, -1}, 10.0, Location::Fundal));
+        test::myoma("b", GrowthModel::CellularAutomaton, {4, -1}, 12.0, UterineLocation::Anterior));
+    params.pathologies.push_back(
+        test::myoma("c", GrowthModel::CellularAutomaton, {6, -1}, 15.0, UterineLocation::RightLateral));
+    params.pathologies.push_back(
+        test::myoma("d", GrowthModel::CellularAutomaton, {5, -1}, 12.0, UterineLocation::LeftLateral));
+    params.pathologies.push_back(
+        test::myoma("e", GrowthModel::CellularAutomaton, {3, -1}, 10.0, UterineLocation::Fundal));
     const auto start = std::chrono::steady_clock::now();
     auto grown = pathology::growPathologies(test::testOrgan(2), params);
     ASSERT_TRUE(grown.ok()) << grown.error().detail;

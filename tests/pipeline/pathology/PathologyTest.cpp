@@ -14,6 +14,11 @@
 namespace hs::pathology {
 namespace {
 
+using clinical::FigoType;
+using clinical::GrowthModel;
+using clinical::LasmarScore;
+using clinical::SurfacePlacement;
+using clinical::UterineLocation;
 using test::myoma;
 using test::polyp;
 
@@ -28,7 +33,7 @@ Creases cavityCreases(const SurfaceMesh& organ, const Vec3& centre, double reach
     std::map<std::pair<std::int32_t, std::int32_t>, std::size_t> firstFace;
     std::vector<double> angles;
     for (std::size_t f = 0; f < organ.triangles.size(); ++f) {
-        if (static_cast<anatomy::Tissue>(tissue[f]) != anatomy::Tissue::Endometrium)
+        if (static_cast<clinical::SurfaceTissue>(tissue[f]) != clinical::SurfaceTissue::Endometrium)
             continue;
         const Triangle& tri = organ.triangles[f];
         for (int k = 0; k < 3; ++k) {
@@ -62,7 +67,7 @@ double secondsOf(const std::chrono::steady_clock::time_point& start) {
 
 struct Case {
     GrowthModel model;
-    Figo figo;
+    FigoType figo;
 };
 
 std::string caseName(const testing::TestParamInfo<Case>& info) {
@@ -111,11 +116,11 @@ INSTANTIATE_TEST_SUITE_P(Pathology, FigoBar,
 struct PolypCase {
     GrowthModel model;
     bool pedunculated;
-    Location where;
+    UterineLocation where;
 };
 
 std::string polypName(const testing::TestParamInfo<PolypCase>& info) {
-    std::string where = toString(info.param.where);
+    std::string where(toString(info.param.where));
     for (char& c : where)
         if (c == '-')
             c = '_';
@@ -152,14 +157,14 @@ TEST_P(PolypBar, GrowsWithItsStalkAndSizeAndMergesIntoAValidBody) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Pathology, PolypBar,
-                         testing::Values(PolypCase{GrowthModel::Skeleton, false, Location::Fundal},
-                                         PolypCase{GrowthModel::Skeleton, true, Location::Fundal},
-                                         PolypCase{GrowthModel::Skeleton, false, Location::Posterior},
-                                         PolypCase{GrowthModel::Skeleton, true, Location::Posterior},
-                                         PolypCase{GrowthModel::Particles, false, Location::Fundal},
-                                         PolypCase{GrowthModel::Particles, true, Location::Fundal},
-                                         PolypCase{GrowthModel::Particles, false, Location::Posterior},
-                                         PolypCase{GrowthModel::Particles, true, Location::Posterior}),
+                         testing::Values(PolypCase{GrowthModel::Skeleton, false, UterineLocation::Fundal},
+                                         PolypCase{GrowthModel::Skeleton, true, UterineLocation::Fundal},
+                                         PolypCase{GrowthModel::Skeleton, false, UterineLocation::Posterior},
+                                         PolypCase{GrowthModel::Skeleton, true, UterineLocation::Posterior},
+                                         PolypCase{GrowthModel::Particles, false, UterineLocation::Fundal},
+                                         PolypCase{GrowthModel::Particles, true, UterineLocation::Fundal},
+                                         PolypCase{GrowthModel::Particles, false, UterineLocation::Posterior},
+                                         PolypCase{GrowthModel::Particles, true, UterineLocation::Posterior}),
                          polypName);
 
 // The former default case: a 25 mm FIGO 2 posterior myoma and a pedunculated fundal polyp (10 mm, stalk 8 mm) in the
@@ -168,13 +173,13 @@ INSTANTIATE_TEST_SUITE_P(Pathology, PolypBar,
 TEST(Pathology, PlacesAPosteriorMyomaBesideAPedunculatedFundalPolyp) {
     for (GrowthModel model : {GrowthModel::Skeleton, GrowthModel::CellularAutomaton}) {
         PathologyParams params;
-        params.pathologies.push_back(myoma("m", model, {2, -1}, 25.0, Location::Posterior));
-        params.pathologies.push_back(polyp("p", GrowthModel::Skeleton, 10.0, true, 8.0, Location::Fundal));
+        params.pathologies.push_back(myoma("m", model, {2, -1}, 25.0, UterineLocation::Posterior));
+        params.pathologies.push_back(polyp("p", GrowthModel::Skeleton, 10.0, true, 8.0, UterineLocation::Fundal));
         auto grown = growPathologies(test::testOrgan(1), params);
         ASSERT_TRUE(grown.ok()) << grown.error().detail;
         const Descriptors& m = grown->pathologies[0].descriptors;
         const Descriptors& p = grown->pathologies[1].descriptors;
-        EXPECT_EQ(m.figo, (Figo{2, -1})) << toString(model);
+        EXPECT_EQ(m.figo, (FigoType{2, -1})) << toString(model);
         EXPECT_NEAR(m.sizeMm, 25.0, 2.5) << toString(model);
         EXPECT_TRUE(p.pedunculated) << toString(model);
         EXPECT_NEAR(p.sizeMm, 10.0, 1.0) << toString(model);
@@ -218,7 +223,7 @@ TEST(Pathology, SlidesAHybridsSeatToWhereTheWallIsThinEnoughButKeepsAPointPlacem
     params.pathologies[0].figo = {2, 5};
     auto hybrid = growPathologies(organ, params);
     ASSERT_TRUE(hybrid.ok()) << hybrid.error().detail;
-    EXPECT_EQ(hybrid->pathologies[0].descriptors.figo, (Figo{2, 5}));
+    EXPECT_EQ(hybrid->pathologies[0].descriptors.figo, (FigoType{2, 5}));
     const double slid = distance(hybrid->pathologies[0].anchor, seat);
     EXPECT_GT(slid, 1.0);
     EXPECT_LT(slid, 0.4 * 50.0);
@@ -257,11 +262,11 @@ TEST(Pathology, GrowsOneThreeCentimetreMyomaWithAnyModelWithinTwoSeconds) {
 
 TEST(Pathology, PlacesAndMergesFivePathologiesWithinTenSeconds) {
     PathologyParams params;
-    params.pathologies.push_back(myoma("a", GrowthModel::Skeleton, {2, -1}, 15.0, Location::Posterior));
-    params.pathologies.push_back(myoma("b", GrowthModel::Particles, {4, -1}, 12.0, Location::Anterior));
-    params.pathologies.push_back(myoma("c", GrowthModel::Skeleton, {6, -1}, 15.0, Location::RightLateral));
-    params.pathologies.push_back(myoma("d", GrowthModel::Skeleton, {5, -1}, 12.0, Location::LeftLateral));
-    params.pathologies.push_back(polyp("e", GrowthModel::Skeleton, 8.0, false, 0.0, Location::Fundal));
+    params.pathologies.push_back(myoma("a", GrowthModel::Skeleton, {2, -1}, 15.0, UterineLocation::Posterior));
+    params.pathologies.push_back(myoma("b", GrowthModel::Particles, {4, -1}, 12.0, UterineLocation::Anterior));
+    params.pathologies.push_back(myoma("c", GrowthModel::Skeleton, {6, -1}, 15.0, UterineLocation::RightLateral));
+    params.pathologies.push_back(myoma("d", GrowthModel::Skeleton, {5, -1}, 12.0, UterineLocation::LeftLateral));
+    params.pathologies.push_back(polyp("e", GrowthModel::Skeleton, 8.0, false, 0.0, UterineLocation::Fundal));
     const auto start = std::chrono::steady_clock::now();
     auto grown = growPathologies(test::testOrgan(2), params);
     ASSERT_TRUE(grown.ok()) << grown.error().detail;

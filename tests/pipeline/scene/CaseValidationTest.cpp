@@ -322,7 +322,8 @@ TEST(CaseValidation, ManyProblemsAreCappedWithACount) {
 TEST(CaseValidation, CheckCaseRejectsNonFiniteValuesBuiltInCode) {
     CaseSpec spec = defaultCase();
     spec.patient.ageYears = std::numeric_limits<double>::quiet_NaN();
-    spec.pathologies[0].placement = SurfacePlacement{{0.0, std::numeric_limits<double>::infinity(), 0.0}, {0, 0, 1}};
+    spec.pathologies[0].placement =
+        clinical::SurfacePlacement{{0.0, std::numeric_limits<double>::infinity(), 0.0}, {0, 0, 1}};
     const auto issues = checkCase(spec);
     ASSERT_EQ(issues.size(), 2u);
     EXPECT_EQ(issues[0].text(), "/patient/ageYears: non-finite value nan (allowed 18..80 years)");

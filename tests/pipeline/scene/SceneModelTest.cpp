@@ -58,8 +58,9 @@ TEST(Hydrometra, FlagsVolumesOutsideTheMeasuredRangeAndRefusesBadInput) {
 TEST(AssignMaterials, GivesEachRegionItsTissueDefaultAndWritesTheMaterialArray) {
     const Scene scene = test::syntheticScene();
     ASSERT_EQ(scene.materials.size(), 2u);
-    EXPECT_EQ(scene.materials[0].material.youngsModulusKpa, defaultMaterial(Tissue::Myometrium).youngsModulusKpa);
-    EXPECT_EQ(scene.materials[1].material.youngsModulusKpa, defaultMaterial(Tissue::Myoma).youngsModulusKpa);
+    EXPECT_EQ(scene.materials[0].material.youngsModulusKpa,
+              defaultMaterial(clinical::Tissue::Myometrium).youngsModulusKpa);
+    EXPECT_EQ(scene.materials[1].material.youngsModulusKpa, defaultMaterial(clinical::Tissue::Myoma).youngsModulusKpa);
     const auto& ids = scene.tets.tetLabels.at(kMaterialLabel);
     for (std::size_t t = 0; t < scene.tets.tetCount(); ++t)
         EXPECT_EQ(ids[t], scene.tets.regionOf(t) == 1 ? 1 : 0);
@@ -70,7 +71,7 @@ TEST(AssignMaterials, GivesEachRegionItsTissueDefaultAndWritesTheMaterialArray) 
 TEST(AssignMaterials, AppliesTheCaseOverrides) {
     Scene scene = test::syntheticScene();
     SceneParams params;
-    params.materials[static_cast<std::size_t>(Tissue::Myoma)].youngsModulusKpa = 100.0;
+    params.materials[static_cast<std::size_t>(clinical::Tissue::Myoma)].youngsModulusKpa = 100.0;
     const auto materials = assignMaterials(scene.tets, scene.regions, params);
     ASSERT_TRUE(materials.ok());
     EXPECT_EQ((*materials)[1].material.youngsModulusKpa, 100.0);
@@ -89,7 +90,7 @@ TEST(AssignMaterials, DrawsSeededHeterogeneityInsideTheTissueRange) {
         const auto& m = a.materials[static_cast<std::size_t>(a.tets.tetLabels.at(kMaterialLabel)[t])];
         EXPECT_GE(e[t], m.youngsModulusRangeKpa.min * 1000.0 - 1);
         EXPECT_LE(e[t], m.youngsModulusRangeKpa.max * 1000.0 + 1);
-        if (m.tissue == Tissue::Myometrium) {
+        if (m.tissue == clinical::Tissue::Myometrium) {
             sum += e[t];
             ++count;
         }

@@ -109,7 +109,7 @@ TEST_F(ScenePackage, ReadsBackTheSceneItWasWrittenFrom) {
     EXPECT_EQ(read->surface.roughness.data(), original.surface.roughness.data());
     ASSERT_EQ(read->materials.size(), 2u);
     EXPECT_EQ(read->materials[1].material.youngsModulusKpa, 65.0);
-    EXPECT_EQ(read->materials[1].tissue, Tissue::Myoma);
+    EXPECT_EQ(read->materials[1].tissue, clinical::Tissue::Myoma);
     ASSERT_EQ(read->labels.size(), original.labels.size());
     EXPECT_EQ(read->labels[0].indices, original.labels[0].indices);
     EXPECT_EQ(read->caseSpec, original.caseSpec);

@@ -56,7 +56,8 @@ scene::Scene syntheticScene(const SyntheticSceneOptions& options) {
     s.caseSpec = scene::defaultCase();
     s.caseSpec.seed = options.seed;
     s.tets = blockMesh(options.cells, options.sizeMm);
-    s.regions = {{0, "myometrium", scene::Tissue::Myometrium, ""}, {1, "myoma-1", scene::Tissue::Myoma, "myoma-1"}};
+    s.regions = {{0, "myometrium", clinical::Tissue::Myometrium, ""},
+                 {1, "myoma-1", clinical::Tissue::Myoma, "myoma-1"}};
     scene::MaterialOptions materialOptions;
     materialOptions.heterogeneity = options.heterogeneity;
     materialOptions.seed = options.seed;
@@ -90,8 +91,8 @@ scene::Scene syntheticScene(const SyntheticSceneOptions& options) {
     myomaDescriptor.regionId = 1;
     myomaDescriptor.sizeMm = 20.0;
     myomaDescriptor.volumeMl = regionVolumes(s.tets)[1] / 1000.0;
-    myomaDescriptor.figo = scene::FigoType{2, -1};
-    myomaDescriptor.lasmar = scene::LasmarScore{1, 2, 1, 2, 0};
+    myomaDescriptor.figo = clinical::FigoType{2, -1};
+    myomaDescriptor.lasmar = clinical::LasmarScore{1, 2, 1, 2, 0};
     myomaDescriptor.location = "posterior";
     s.clinical.pathologies = {myomaDescriptor};
     s.hydrometra = scene::computeHydrometra(s.clinical.organ.uterineVolumeMl, 8.0).value();

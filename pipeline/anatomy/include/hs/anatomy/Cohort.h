@@ -24,7 +24,7 @@ struct CohortParams {
 };
 
 struct CohortMember {
-    PatientParams patient;
+    clinical::PatientParams patient;
     double menopauseAgeYears = 51.0; ///< years; the age at which this woman's menopause happens (hidden variable)
     UterusShapeParams shape;         ///< including version and flexion
 };
@@ -34,7 +34,7 @@ struct TrainingSet {
     SurfaceMesh reference;                ///< triangles and labels shared by all shapes (points: the first shape)
     std::optional<TemplateLayout> layout; ///< set when the shapes are instances of the uterus template
     std::vector<std::vector<Vec3>> shapes;
-    std::vector<PatientParams> patients;
+    std::vector<clinical::PatientParams> patients;
 };
 
 struct CohortResult {
@@ -48,18 +48,18 @@ struct CohortResult {
 
 /// A patient from the cohort's population (ages of women undergoing hysteroscopy, parity by age, height, weight).
 /// Also returns her age at menopause (the cohort decides menopausal status from it).
-PatientParams samplePatient(Rng& rng, double* menopauseAgeYears = nullptr);
+clinical::PatientParams samplePatient(Rng& rng, double* menopauseAgeYears = nullptr);
 
 /// A patient drawn uniformly over the supported ranges (menopausal status by age: never below 40, always above 60,
 /// in between with a probability rising linearly). For checks over the whole supported range.
-PatientParams sampleSupportedPatient(Rng& rng);
+clinical::PatientParams sampleSupportedPatient(Rng& rng);
 
 /// The expected shape for a patient by the published relations, without natural variation (version 0, the
 /// population's mean flexion; menopause assumed at 51 years). The reference of the conditioning error.
-UterusShapeParams expectedShape(const PatientParams& patient);
+UterusShapeParams expectedShape(const clinical::PatientParams& patient);
 
 /// A shape for a patient: the relations plus natural variation.
-UterusShapeParams sampleShape(const PatientParams& patient, double menopauseAgeYears, Rng& rng);
+UterusShapeParams sampleShape(const clinical::PatientParams& patient, double menopauseAgeYears, Rng& rng);
 
 /// Draws `params.size` members and builds their organs. Fails with InvalidInput for size < 10, Cancelled on
 /// request.

@@ -1,9 +1,11 @@
 #pragma once
-/// The patient parameters a gynaecologist knows, which decide the shape of a healthy uterus (Sierra et al. 2004).
-///
-/// The scene's CaseSpec maps its patient block onto this struct. Each field has a supported range: the range the
-/// default model's synthetic cohort covers. Values outside it are rejected, never extrapolated.
+/// The patients the shape model supports (clinical::PatientParams, hs/clinical/PatientParams.h): each field has a
+/// supported range, the range the default model's synthetic cohort covers: age [18, 85] years, parity [0, 6]
+/// births, gravidity [parity, 10] pregnancies, height [140, 195] cm, weight [35, 160] kg (no published effect on
+/// uterine size, Gao 2018); menopausal only from 40 years, premenopausal only up to 60. Values outside are
+/// rejected, never extrapolated.
 
+#include "hs/clinical/PatientParams.h"
 #include "hs/core/Result.h"
 
 #include <string>
@@ -11,18 +13,9 @@
 
 namespace hs::anatomy {
 
-struct PatientParams {
-    double ageYears = 35.0;  ///< years; supported [18, 85]
-    int parity = 0;          ///< births (>= 20 weeks of gestation); supported [0, 6]
-    int gravidity = 0;       ///< pregnancies, including the births; supported [parity, 10]
-    double heightCm = 164.0; ///< cm; supported [140, 195]
-    double weightKg = 65.0;  ///< kg; supported [35, 160]; no published effect on uterine size (Gao 2018)
-    bool menopausal = false; ///< postmenopausal; supported for ageYears >= 40 (premenopausal for ageYears <= 60)
-};
-
 /// One supported range, for error messages, help texts and the model file's metadata.
 struct ParamRange {
-    std::string name; ///< field name as in PatientParams ("ageYears")
+    std::string name; ///< field name as in clinical::PatientParams ("ageYears")
     double min = 0.0;
     double max = 0.0;
     std::string unit; ///< "years", "cm", ...
@@ -34,6 +27,6 @@ const std::vector<ParamRange>& supportedPatientRanges();
 /// Checks every field against its supported range (NaN and infinities included) and the cross-field rules
 /// (gravidity >= parity; menopausal only from 40 years, premenopausal only up to 60). Fails with InvalidInput
 /// naming the first offending parameter, its value and its range.
-Status validatePatient(const PatientParams& patient);
+Status validatePatient(const clinical::PatientParams& patient);
 
 } // namespace hs::anatomy

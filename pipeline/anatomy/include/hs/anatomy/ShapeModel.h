@@ -86,16 +86,17 @@ public:
     std::vector<double> project(const std::vector<Vec3>& shape) const;
 
     /// Expected coefficients for a patient; InvalidInput for parameters outside the supported ranges.
-    Result<std::vector<double>> conditionalCoefficients(const PatientParams& patient) const;
+    Result<std::vector<double>> conditionalCoefficients(const clinical::PatientParams& patient) const;
     /// The expected organ for a patient, in the anatomical frame with the most common (anteverted) version, or with
     /// `versionDeg` (degrees, + anteverted, - retroverted) when given.
-    Result<SurfaceMesh> mean(const PatientParams& patient, std::optional<double> versionDeg = std::nullopt) const;
+    Result<SurfaceMesh> mean(const clinical::PatientParams& patient,
+                             std::optional<double> versionDeg = std::nullopt) const;
     /// A plausible organ for a patient: conditional shape (each residual coefficient truncated at 2.5 SD) and a version
     /// drawn from the pose prior. Draws whose wall is below 5.25 mm or that self-intersect are rejected and redrawn
     /// (at most 16 draws, then the conditional mean), so the result is the conditional Gaussian restricted to valid
     /// organs. Deterministic in `seed`. A given `versionDeg` replaces the drawn version (the draw still happens, so
     /// the shape for a seed does not depend on it).
-    Result<SurfaceMesh> sample(const PatientParams& patient, std::uint64_t seed,
+    Result<SurfaceMesh> sample(const clinical::PatientParams& patient, std::uint64_t seed,
                                std::optional<double> versionDeg = std::nullopt) const;
     /// The organ for a patient that also has the requested dimensions: starting from the expected organ (or, with a
     /// seed, from a sample), the coefficients are moved by Gauss-Newton to the least change (in standard deviations)
@@ -103,7 +104,7 @@ public:
     /// the most common version). Fails with InvalidInput naming the dimension when the model cannot reach it for
     /// this patient without leaving the range of its training shapes (no silent extrapolation), or when the result
     /// would not be a valid organ (wall under 5 mm, self-intersection). Unsupported without a uterus template.
-    Result<SurfaceMesh> withDimensions(const PatientParams& patient, const DimensionTargets& targets,
+    Result<SurfaceMesh> withDimensions(const clinical::PatientParams& patient, const DimensionTargets& targets,
                                        std::optional<std::uint64_t> seed = std::nullopt,
                                        std::optional<double> versionDeg = std::nullopt) const;
     /// A sample of the unconditional model (model frame, no pose), for specificity.

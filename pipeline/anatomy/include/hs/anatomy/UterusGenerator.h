@@ -11,6 +11,7 @@
 /// (the cornu at ring index 0 lies on +x), +y anterior. Version then tilts the whole organ about the x axis through the
 /// external os, so after it +z is the vaginal axis, the direction in which the scope enters.
 
+#include "hs/clinical/Tissue.h"
 #include "hs/core/Result.h"
 #include "hs/core/SurfaceMesh.h"
 
@@ -19,16 +20,6 @@
 #include <vector>
 
 namespace hs::anatomy {
-
-/// Values of the face label "tissue".
-enum class Tissue : std::int32_t {
-    Serosa = 1,        ///< outer surface of corpus and cervix (perimetrium)
-    Endometrium = 2,   ///< the uterine cavity, internal os to fundus
-    CervicalCanal = 3, ///< endocervix, external to internal os
-    TubalOstium = 4,   ///< the two cornual recesses of the cavity where the tubes open
-    Ectocervix = 5,    ///< the rim around the external os that joins serosa and canal
-};
-inline constexpr const char* kTissueLabel = "tissue";
 
 /// Shape controls. Defaults: a nulliparous woman of about 30 (see docs/anatomy.md for the source of each figure).
 struct UterusShapeParams {
@@ -73,7 +64,7 @@ struct TemplateLayout {
 };
 
 struct UterusResult {
-    SurfaceMesh mesh;                  ///< face label "tissue" (see Tissue)
+    SurfaceMesh mesh;                  ///< face label clinical::kSurfaceTissueLabel (clinical::SurfaceTissue)
     TemplateLayout layout;             ///< how to find rings and landmarks in `mesh`
     std::vector<std::string> warnings; ///< e.g. a cavity narrowed to keep the minimum wall
 };

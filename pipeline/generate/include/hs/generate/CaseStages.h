@@ -16,15 +16,12 @@
 
 namespace hs::generate {
 
-/// The case's patient block as the shape model's parameters (same fields, same units).
-anatomy::PatientParams patientOf(const scene::CaseSpec& spec);
-
 /// The shape model file a case asks for: its anatomy.modelPath (relative paths are taken from the case file's
 /// folder), else the bundled default model.
 std::string modelPathFor(const scene::CaseSpec& spec, const std::string& caseFile);
 
 struct OrganRequest {
-    anatomy::PatientParams patient;
+    clinical::PatientParams patient;
     std::uint64_t seed = 1;
     bool mean = false;                    ///< the expected organ for the patient instead of a seeded sample
     std::optional<double> versionDeg;     ///< degrees; unset: drawn (sample) or the most common (mean)
@@ -45,7 +42,7 @@ struct OrganInstance {
 /// The case's pathologies as the pathology stage's requests (the case is already validated); `override` replaces
 /// every pathology's growth model. The stage's seed is the pathology stream of the case seed.
 pathology::PathologyParams pathologyParamsFor(const scene::CaseSpec& spec,
-                                              const std::optional<scene::GrowthModel>& override = std::nullopt);
+                                              const std::optional<clinical::GrowthModel>& override = std::nullopt);
 
 /// The meshing method the case asks for.
 meshing::MeshMethod meshMethodFor(const scene::CaseSpec& spec);

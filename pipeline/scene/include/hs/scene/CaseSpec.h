@@ -7,6 +7,11 @@
 /// Optional fields (std::optional) mean "not set": the stage derives the value itself (from the shape model or the
 /// tissue defaults below); they are written as JSON null.
 
+#include "hs/clinical/Clinical.h"
+#include "hs/clinical/Figo.h"
+#include "hs/clinical/PatientParams.h"
+#include "hs/clinical/Placement.h"
+#include "hs/clinical/Tissue.h"
 #include "hs/core/Result.h"
 #include "hs/core/Vec3.h"
 
@@ -89,97 +94,24 @@ constexpr Range kPoissonRatio{0.45, 0.49};         ///< nearly incompressible (l
 constexpr Range kDensityKgPerM3{1000.0, 1100.0};   ///< around the generic 1050 (line 59)
 } // namespace limits
 
-// ---- Enumerations. Each has a stable lower-case JSON key: toString() / fromString(). ----
+// ---- Enumerations of the case's own choices. Each has a stable lower-case JSON key: toString() / fromString().
+// The clinical ones (pathology kind, growth model, location, attachment, tissue) are in hs/clinical. ----
 
-enum class PathologyKind { Myoma, Polyp };
-enum class GrowthModel {
-    CellularAutomaton, ///< "ca": voxel automaton; myomas only (line 11)
-    Skeleton,          ///< "skeleton": skeleton + revolved contours; myomas and polyps (line 12)
-    Particles,         ///< "particles": particle growth inside the organ (line 13-14)
-};
-enum class UterineLocation {
-    Fundal,
-    Anterior,
-    Posterior,
-    LeftLateral,
-    RightLateral,
-    CornualLeft,
-    CornualRight,
-    Isthmic,
-    Cervical, ///< myomas of FIGO type 8 only
-};
-enum class PolypAttachment { Sessile, Pedunculated };
 /// Healthy organ: a random instance of the conditional shape model, or its mean for the patient.
 enum class ShapeMode { Sample, Mean };
 enum class MeshingMethod { Particle, TetGen, Cgal };
-enum class Tissue { Myometrium, Endometrium, Cervix, Myoma, Polyp };
 
-constexpr std::array<PathologyKind, 2> kPathologyKinds{PathologyKind::Myoma, PathologyKind::Polyp};
-constexpr std::array<GrowthModel, 3> kGrowthModels{GrowthModel::CellularAutomaton, GrowthModel::Skeleton,
-                                                   GrowthModel::Particles};
-constexpr std::array<UterineLocation, 9> kUterineLocations{
-    UterineLocation::Fundal,       UterineLocation::Anterior,     UterineLocation::Posterior,
-    UterineLocation::LeftLateral,  UterineLocation::RightLateral, UterineLocation::CornualLeft,
-    UterineLocation::CornualRight, UterineLocation::Isthmic,      UterineLocation::Cervical};
-constexpr std::array<PolypAttachment, 2> kPolypAttachments{PolypAttachment::Sessile, PolypAttachment::Pedunculated};
 constexpr std::array<ShapeMode, 2> kShapeModes{ShapeMode::Sample, ShapeMode::Mean};
 constexpr std::array<MeshingMethod, 3> kMeshingMethods{MeshingMethod::Particle, MeshingMethod::TetGen,
                                                        MeshingMethod::Cgal};
-constexpr std::array<Tissue, 5> kTissues{Tissue::Myometrium, Tissue::Endometrium, Tissue::Cervix, Tissue::Myoma,
-                                         Tissue::Polyp};
 
-std::string_view toString(PathologyKind value);
-std::string_view toString(GrowthModel value);     ///< "ca", "skeleton", "particles"
-std::string_view toString(UterineLocation value); ///< "fundal", ..., "left-lateral", "cornual-left", ...
-std::string_view toString(PolypAttachment value);
 std::string_view toString(ShapeMode value);
 std::string_view toString(MeshingMethod value); ///< "particle", "tetgen", "cgal"
-std::string_view toString(Tissue value);
 /// Sets `out` and returns true when `key` is one of the JSON keys above.
-bool fromString(std::string_view key, PathologyKind& out);
-bool fromString(std::string_view key, GrowthModel& out);
-bool fromString(std::string_view key, UterineLocation& out);
-bool fromString(std::string_view key, PolypAttachment& out);
 bool fromString(std::string_view key, ShapeMode& out);
 bool fromString(std::string_view key, MeshingMethod& out);
-bool fromString(std::string_view key, Tissue& out);
-
-// ---- FIGO leiomyoma classification (PALM-COEIN; UTERUS.md lines 62-66). ----
-
-/// A FIGO type 0..8, or a hybrid "X-Y" (X: relation to the endometrium, 1..3; Y: relation to the serosa, 5..6),
-/// the convention of Munro et al., Int J Gynaecol Obstet 2011.
-struct FigoType {
-    int type = 0;     ///< 0..8; for a hybrid, the endometrial part
-    int serosal = -1; ///< hybrid only: the serosal part; -1 when not a hybrid
-
-    constexpr bool isHybrid() const { return serosal >= 0; }
-    /// True for 0..8 and for hybrids X-Y with X in 1..3 and Y in 5..6.
-    constexpr bool isValid() const {
-        return isHybrid() ? (type >= 1 && type <= 3 && serosal >= 5 && serosal <= 6) : (type >= 0 && type <= 8);
-    }
-    /// Only types 0-2 are resectable hysteroscopically (line 66); a hybrid counts by its endometrial part.
-    constexpr bool isHysteroscopicallyResectable() const { return type >= 0 && type <= 2; }
-    /// "2" or "2-5".
-    std::string toString() const;
-    /// Parses "N" or "X-Y" (digits only, no spaces); std::nullopt on anything else. Does not check isValid().
-    static std::optional<FigoType> parse(std::string_view text);
-};
-bool operator==(const FigoType& a, const FigoType& b);
-bool operator!=(const FigoType& a, const FigoType& b);
-
-/// The FIGO definition of a plain type 0..8 (line 62-65), e.g. "submucosal, >= 50 % intramural"; "" otherwise.
-std::string_view figoDefinition(int type);
 
 // ---- The document. ----
-
-struct PatientParams {
-    double ageYears = 35.0;  ///< years; 35: the 35-45 band (line 41-42), uterine length near its peak at 40 (line 30)
-    int parity = 1;          ///< births; 1: primiparous, length 61.5 mm (line 34)
-    int gravidity = 1;       ///< pregnancies (>= parity); gravidity raises length, width and AP (line 31)
-    double heightCm = 165.0; ///< cm; dimensions correlate with height (line 32-33); a typical adult woman
-    double weightKg = 65.0;  ///< kg; no correlation with BMI (line 32-33); BMI 23.9 with the default height
-    bool menopausal = false; ///< AP shrinks ~22 % (line 43); true needs age >= 40, false needs age <= 60
-};
 
 /// Optional clinical measurements the shape model conditions on (mm, degrees); unset = derived from the patient.
 struct UterusDimensions {
@@ -201,28 +133,15 @@ struct AnatomyParams {
     UterusDimensions dimensions;
 };
 
-/// A point on the organ surface and its outward normal, as a click in the 3-D view gives (organ frame, mm). It
-/// refers to the organ generated from this case's patient, anatomy and seed.
-struct SurfacePlacement {
-    Vec3 pointMm;
-    Vec3 normal{0.0, 0.0, 1.0}; ///< need not be unit length; must not be zero
-};
-/// A clinical description: where in the uterus (the depth comes from the FIGO type for myomas).
-struct ClinicalPlacement {
-    UterineLocation location = UterineLocation::Fundal;
-};
-/// Exactly one placement form per pathology.
-using Placement = std::variant<ClinicalPlacement, SurfacePlacement>;
-
 struct PathologySpec {
     std::string id; ///< unique in the case; [A-Za-z0-9][A-Za-z0-9_-]*, <= 32 chars
-    PathologyKind kind = PathologyKind::Myoma;
-    GrowthModel growthModel = GrowthModel::Particles; ///< particles grow both kinds
-    double sizeMm = 20.0;                             ///< mm, largest diameter (polyps: of the head)
-    std::optional<FigoType> figo;                     ///< myomas: required; polyps: must be unset
-    std::optional<PolypAttachment> attachment;        ///< polyps: required; myomas: must be unset
-    std::optional<double> stalkLengthMm;              ///< mm; pedunculated polyps: required; otherwise unset
-    Placement placement = ClinicalPlacement{};
+    clinical::PathologyKind kind = clinical::PathologyKind::Myoma;
+    clinical::GrowthModel growthModel = clinical::GrowthModel::Particles; ///< particles grow both kinds
+    double sizeMm = 20.0;                                ///< mm, largest diameter (polyps: of the head)
+    std::optional<clinical::FigoType> figo;              ///< myomas: required; polyps: must be unset
+    std::optional<clinical::PolypAttachment> attachment; ///< polyps: required; myomas: must be unset
+    std::optional<double> stalkLengthMm;                 ///< mm; pedunculated polyps: required; otherwise unset
+    clinical::Placement placement = clinical::ClinicalPlacement{};
 };
 
 struct MeshingParams {
@@ -259,13 +178,13 @@ struct MaterialOverride {
 
 struct SceneParams {
     double hydrometraPressureKpa = 8.0; ///< kPa; 8 kPa = 60 mmHg, middle of the clinical 45-75 mmHg (line 47)
-    std::array<MaterialOverride, kTissues.size()> materials{}; ///< indexed by Tissue
+    std::array<MaterialOverride, clinical::kTissues.size()> materials{}; ///< indexed by clinical::Tissue
 };
 
 struct CaseSpec {
     std::string title;      ///< free text for lists and reports, <= 200 bytes
     std::uint64_t seed = 1; ///< every random choice of every stage derives from it
-    PatientParams patient;
+    clinical::PatientParams patient;
     AnatomyParams anatomy;
     std::vector<PathologySpec> pathologies;
     MeshingParams meshing;
@@ -273,11 +192,8 @@ struct CaseSpec {
     SceneParams scene;
 };
 
-bool operator==(const PatientParams& a, const PatientParams& b);
 bool operator==(const UterusDimensions& a, const UterusDimensions& b);
 bool operator==(const AnatomyParams& a, const AnatomyParams& b);
-bool operator==(const SurfacePlacement& a, const SurfacePlacement& b);
-bool operator==(const ClinicalPlacement& a, const ClinicalPlacement& b);
 bool operator==(const PathologySpec& a, const PathologySpec& b);
 bool operator==(const MeshingParams& a, const MeshingParams& b);
 bool operator==(const TextureExemplars& a, const TextureExemplars& b);
@@ -297,12 +213,12 @@ struct TissueMaterial {
 /// The default of each tissue: myometrium 30 kPa, endometrium 26.2 kPa (proliferative: hysteroscopy is done in
 /// the proliferative phase), cervix 30 kPa (no source: the myometrium's), myoma 65 kPa, polyp 15 kPa; Poisson
 /// ratio 0.47 (middle of 0.45-0.49); density 1050 kg/m^3.
-TissueMaterial defaultMaterial(Tissue tissue);
+TissueMaterial defaultMaterial(clinical::Tissue tissue);
 /// Allowed Young's modulus of each tissue (kPa): myometrium 6-90, endometrium 12.5-26.2, cervix 6-90,
 /// myoma 13-206 (ratio 2.17-2.29 applied to the myometrium's range), polyp 1-32 (15.7 +- 2 SD, at least 1).
-Range youngsModulusRangeKpa(Tissue tissue);
+Range youngsModulusRangeKpa(clinical::Tissue tissue);
 /// The tissue's default with the case's overrides applied.
-TissueMaterial effectiveMaterial(const SceneParams& scene, Tissue tissue);
+TissueMaterial effectiveMaterial(const SceneParams& scene, clinical::Tissue tissue);
 
 // ---- Validation, reading and writing. ----
 

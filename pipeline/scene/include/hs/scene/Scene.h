@@ -32,7 +32,7 @@ constexpr const char* kYoungsModulusLabel = "youngsModulusPa"; ///< per-tet E in
 struct SceneRegion {
     std::int32_t id = 0;
     std::string name; ///< "myometrium", "endometrium", or the pathology id ("myoma-1")
-    Tissue tissue = Tissue::Myometrium;
+    clinical::Tissue tissue = clinical::Tissue::Myometrium;
     std::string pathologyId; ///< the case's pathology id for pathology regions; empty otherwise
 };
 
@@ -41,7 +41,7 @@ struct SceneMaterial {
     std::int32_t id = 0; ///< index in Scene::materials; the value of the "material" tet array
     std::int32_t regionId = 0;
     std::string name; ///< the region's name
-    Tissue tissue = Tissue::Myometrium;
+    clinical::Tissue tissue = clinical::Tissue::Myometrium;
     TissueMaterial material;     ///< kPa, dimensionless, kg/m^3: the region's mean
     Range youngsModulusRangeKpa; ///< the tissue's allowed range; heterogeneous values stay inside it
     double heterogeneity = 0.0;  ///< coefficient of variation of E per tet (0: homogeneous)
@@ -83,26 +83,15 @@ struct VisualSurface {
     ImageU8 roughness;                     ///< 1 channel, linear perceptual roughness 0..255
 };
 
-/// Lasmar (STEPW) score components (UTERUS.md, "Lasmar"); each -1 when not computed.
-struct LasmarScore {
-    int size = -1;
-    int topography = -1;
-    int extension = -1;
-    int penetration = -1;
-    int wall = -1;
-    bool complete() const { return size >= 0 && topography >= 0 && extension >= 0 && penetration >= 0 && wall >= 0; }
-    int total() const { return complete() ? size + topography + extension + penetration + wall : -1; }
-};
-
 struct PathologyDescriptor {
     std::string id;
-    PathologyKind kind = PathologyKind::Myoma;
-    std::int32_t regionId = -1;        ///< its region in the tet mesh (-1: not meshed as a region)
-    double sizeMm = 0.0;               ///< mm, largest diameter as grown
-    double volumeMl = 0.0;             ///< mL, as meshed
-    std::optional<FigoType> figo;      ///< myomas
-    std::optional<LasmarScore> lasmar; ///< myomas
-    std::string location;              ///< a UterineLocation key ("fundal", ...) or empty
+    clinical::PathologyKind kind = clinical::PathologyKind::Myoma;
+    std::int32_t regionId = -1;                  ///< its region in the tet mesh (-1: not meshed as a region)
+    double sizeMm = 0.0;                         ///< mm, largest diameter as grown
+    double volumeMl = 0.0;                       ///< mL, as meshed
+    std::optional<clinical::FigoType> figo;      ///< myomas
+    std::optional<clinical::LasmarScore> lasmar; ///< myomas
+    std::string location;                        ///< a UterineLocation key ("fundal", ...) or empty
 };
 
 /// Organ dimensions as measured on the generated instance (mm, mL); 0 when not measured.
