@@ -7,6 +7,8 @@
 // normals VTK shades each facet flat, which is what a simulator that loads the package as-is would show.
 // --smooth computes vertex normals first (what smooth normals would give); --advance moves the camera that far
 // along the view direction (mm; negative: back down the canal).
+#include "hs/clinical/Tissue.h"
+
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCellData.h>
@@ -36,9 +38,9 @@
 
 namespace {
 
-// Values of the face label "tissue" (hs/anatomy/UterusGenerator.h).
-constexpr int kEndometrium = 2;
-constexpr int kCervicalCanal = 3;
+// Values of the organ's surface tissue label, carried onto the visual surface.
+constexpr int kEndometrium = hs::clinical::labelValue(hs::clinical::SurfaceTissue::Endometrium);
+constexpr int kCervicalCanal = hs::clinical::labelValue(hs::clinical::SurfaceTissue::CervicalCanal);
 
 struct Options {
     std::string scene;
@@ -94,7 +96,7 @@ double dist2(const P3& a, const P3& b) {
 
 /// Camera position (the internal os) and focal point (the cavity's centre) from the tissue labels.
 bool landmarks(vtkPolyData* poly, P3& internalOs, P3& cavityCentre) {
-    vtkDataArray* tissue = poly->GetCellData()->GetArray("tissue");
+    vtkDataArray* tissue = poly->GetCellData()->GetArray(hs::clinical::kSurfaceTissueLabel);
     if (!tissue)
         return false;
     std::vector<P3> canal;
