@@ -65,3 +65,16 @@ function(hs_qtest)
     set_tests_properties(${T_NAME} PROPERTIES LABELS gui TIMEOUT 300 RESOURCE_LOCK x_display
         ENVIRONMENT "QT_QPA_PLATFORM=xcb;HS_SHARED_DATA_DIR=${HS_SHARED_DATA_DIR};HS_TEST_DATA_DIR=${PROJECT_SOURCE_DIR}/tests/data")
 endfunction()
+
+# hs_header_version(OUT HEADER REGEX): the version a header states in its text, for libraries without a version macro
+# (tinygltf, minizip, TetGen). REGEX has one capture group, the version; OUT is empty when the header says nothing.
+function(hs_header_version out header regex)
+    set(version "")
+    if(EXISTS "${header}")
+        file(STRINGS "${header}" lines REGEX "${regex}" LIMIT_COUNT 1)
+        if(lines MATCHES "${regex}")
+            set(version "${CMAKE_MATCH_1}")
+        endif()
+    endif()
+    set(${out} "${version}" PARENT_SCOPE)
+endfunction()

@@ -1,10 +1,14 @@
 #include "hs/generate/Assembly.h"
 
+#include "hs/anatomy/LibraryVersions.h"
 #include "hs/anatomy/UterusGenerator.h"
 #include "hs/clinical/Tissue.h"
 #include "hs/core/LabelTransfer.h"
 #include "hs/core/Units.h"
 #include "hs/generate/Seeds.h"
+#include "hs/meshing/BaselineMeshers.h"
+#include "hs/meshing/LibraryVersions.h"
+#include "hs/texture/LibraryVersions.h"
 
 #include <algorithm>
 #include <array>
@@ -174,6 +178,15 @@ scene::ClinicalDescriptors clinicalDescriptors(const scene::CaseSpec& spec, cons
     return c;
 }
 
+LibraryVersions toolVersionsFor(const scene::CaseSpec& spec) {
+    LibraryVersions versions = scene::defaultToolVersions();
+    versions.merge(anatomy::libraryVersions());
+    versions.merge(meshing::libraryVersions());
+    versions.merge(meshing::methodLibraryVersions(meshMethodFor(spec)));
+    versions.merge(texture::libraryVersions());
+    return versions;
+}
+
 scene::MeshQuality qualityOf(const meshing::QualityReport& q) {
     scene::MeshQuality m;
     m.vertexCount = q.vertexCount;
@@ -219,7 +232,7 @@ Result<scene::Scene> assembleScene(const scene::CaseSpec& spec, const OrganInsta
     s.hydrometra = *hydrometra;
     s.quality = qualityOf(meshed.quality);
     s.caseSpec = spec;
-    s.toolVersions = scene::defaultToolVersions();
+    s.toolVersions = toolVersionsFor(spec);
     for (const auto& w : appearance.warnings)
         s.warnings.push_back("texture: " + w);
     for (const auto& w : grown.warnings)

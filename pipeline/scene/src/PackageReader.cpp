@@ -109,6 +109,23 @@ Result<PackageFile> parseFileEntry(const json& entry, std::size_t index) {
     return file;
 }
 
+/// The optional "toolVersions" object: at most 64 names and versions of 1-64 characters each (checkScene's bounds).
+Status parseToolVersions(const json& j, std::map<std::string, std::string>& out) {
+    const auto it = j.find("toolVersions");
+    if (it == j.end())
+        return {};
+    if (!it->is_object() || it->size() > 64)
+        return fail(ErrorCode::InvalidInput, "manifest.json: \"toolVersions\" must be an object of at most 64 entries");
+    for (const auto& [tool, version] : it->items()) {
+        if (!version.is_string() || tool.empty() || tool.size() > 64 || version.get<std::string>().empty() ||
+            version.get<std::string>().size() > 64)
+            return fail(ErrorCode::InvalidInput,
+                        "manifest.json: /toolVersions needs names and string versions of 1-64 characters");
+        out[tool] = version.get<std::string>();
+    }
+    return {};
+}
+
 Result<PackageManifest> parseManifest(const std::string& text, const PackageReadLimits& limits) {
     const json j = json::parse(text, nullptr, false);
     if (j.is_discarded() || !j.is_object())
@@ -131,6 +148,7 @@ Result<PackageManifest> parseManifest(const std::string& text, const PackageRead
     PackageManifest manifest;
     manifest.schemaVersion = static_cast<int>(version);
     manifest.toolVersion = j["toolVersion"].get<std::string>();
+    HS_TRY(parseToolVersions(j, manifest.toolVersions));
     std::set<std::string> seen;
     for (std::size_t i = 0; i < j["files"].size(); ++i) {
         auto file = parseFileEntry(j["files"][i], i);

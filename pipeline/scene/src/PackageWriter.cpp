@@ -166,6 +166,9 @@ std::string manifestJson(const PackageManifest& manifest) {
     j["format"] = manifest.format;
     j["schemaVersion"] = manifest.schemaVersion;
     j["toolVersion"] = manifest.toolVersion;
+    j["toolVersions"] = nlohmann::ordered_json::object();
+    for (const auto& [tool, version] : manifest.toolVersions)
+        j["toolVersions"][tool] = version;
     auto files = nlohmann::ordered_json::array();
     for (const auto& f : manifest.files)
         files.push_back({{"path", f.path}, {"bytes", f.bytes}, {"sha256", f.sha256}});
@@ -182,6 +185,7 @@ Result<PackageManifest> writeInto(const fs::path& tmp, const Scene& scene, const
     PackageManifest manifest;
     const auto tool = scene.toolVersions.find("hysteroscene");
     manifest.toolVersion = tool == scene.toolVersions.end() ? std::string(HS_VERSION) : tool->second;
+    manifest.toolVersions = scene.toolVersions;
     std::error_code ec;
     for (std::size_t i = 0; i < files->size(); ++i) {
         if (progress.cancelled())

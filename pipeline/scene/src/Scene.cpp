@@ -3,7 +3,9 @@
 #include "hs/scene/Scene.h"
 
 #include "Format.h"
+#include "hs/core/LibraryVersions.h"
 #include "hs/core/Rng.h"
+#include "hs/io/LibraryVersions.h"
 
 #include <nlohmann/json.hpp>
 #include <zlib.h>
@@ -213,13 +215,20 @@ Result<std::vector<SceneMaterial>> assignMaterials(TetMesh& tets, const std::vec
 }
 
 std::map<std::string, std::string> defaultToolVersions() {
-    return {
+    // HS_TINYGLTF_VERSION and HS_MINIZIP_VERSION come from the build (pipeline/scene/CMakeLists.txt): neither library
+    // has a version macro. hs::io reports VTK, which writes tets.vtu and surface.vtp.
+    LibraryVersions versions{
         {"hysteroscene", HS_VERSION},
+        {"compiler", compilerVersion()},
+        {"minizip", HS_MINIZIP_VERSION},
         {"nlohmann-json", std::to_string(NLOHMANN_JSON_VERSION_MAJOR) + "." +
                               std::to_string(NLOHMANN_JSON_VERSION_MINOR) + "." +
                               std::to_string(NLOHMANN_JSON_VERSION_PATCH)},
+        {"tinygltf", HS_TINYGLTF_VERSION},
         {"zlib", ZLIB_VERSION},
     };
+    versions.merge(io::libraryVersions());
+    return versions;
 }
 
 Status checkScene(const Scene& scene) {

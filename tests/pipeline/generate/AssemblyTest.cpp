@@ -1,6 +1,7 @@
 #include "hs/generate/Assembly.h"
 
 #include "hs/anatomy/UterusGenerator.h"
+#include "hs/meshing/BaselineMeshers.h"
 
 #include <gtest/gtest.h>
 
@@ -151,4 +152,28 @@ TEST(Assembly, QualityCarriesEveryFigureOfTheReport) {
     EXPECT_EQ(m.hausdorffDistanceMm, 0.5);
     EXPECT_EQ(m.hausdorffRelative, 0.01);
     EXPECT_EQ(m.volumeError, 0.002);
+}
+
+TEST(Assembly, ToolVersionsNameEveryLibraryThatShapesTheScene) {
+    const auto versions = toolVersionsFor(twoPathologyCase());
+    for (const char* library : {"hysteroscene", "compiler", "cgal", "eigen", "hdf5", "minizip", "nlohmann-json",
+                                "opencv", "openimageio", "tinygltf", "vtk", "zlib"}) {
+        const auto it = versions.find(library);
+        ASSERT_NE(it, versions.end()) << library;
+        EXPECT_FALSE(it->second.empty()) << library;
+        EXPECT_LE(it->second.size(), 64u) << library;
+    }
+    EXPECT_EQ(versions.at("hysteroscene"), HS_VERSION);
+    EXPECT_EQ(versions.count("tetgen"), 0u) << "the default case meshes with the particle mesher";
+    EXPECT_EQ(toolVersionsFor(twoPathologyCase()), versions) << "one build, the same versions every time";
+}
+
+TEST(Assembly, ToolVersionsNameTetGenWhenTheCaseMeshesWithIt) {
+    scene::CaseSpec spec = twoPathologyCase();
+    spec.meshing.method = scene::MeshingMethod::TetGen;
+    if (!meshing::methodAvailable(meshing::MeshMethod::TetGen))
+        GTEST_SKIP() << "this build has no TetGen";
+    const auto versions = toolVersionsFor(spec);
+    ASSERT_EQ(versions.count("tetgen"), 1u);
+    EXPECT_FALSE(versions.at("tetgen").empty());
 }

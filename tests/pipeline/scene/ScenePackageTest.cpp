@@ -77,7 +77,10 @@ TEST_F(ScenePackage, HoldsEveryDocumentedFileAndAManifestOfThem) {
     }
     EXPECT_EQ(m_manifest.schemaVersion, kPackageSchemaVersion);
     EXPECT_EQ(m_manifest.toolVersion, HS_VERSION);
-    EXPECT_TRUE(verifyScenePackage(package().string()).ok());
+    const auto verified = verifyScenePackage(package().string());
+    ASSERT_TRUE(verified.ok()) << verified.error().message();
+    EXPECT_EQ(verified->toolVersions, test::syntheticScene().toolVersions) << "the manifest carries every version";
+    EXPECT_FALSE(verified->toolVersions.empty());
 }
 
 TEST_F(ScenePackage, IsByteIdenticalWhenTheSameSceneIsWrittenAgain) {

@@ -21,6 +21,16 @@ bool methodAvailable(MeshMethod method) {
     }
 }
 
+LibraryVersions methodLibraryVersions(MeshMethod method) {
+#ifdef HS_HAVE_TETGEN
+    if (method == MeshMethod::TetGen)
+        return {{"tetgen", HS_TETGEN_VERSION}};
+#else
+    (void)method;
+#endif
+    return {};
+}
+
 Result<MeshResult> meshWith(MeshMethod method, const RegionModel& body, const MeshParams& params, Progress& progress) {
     switch (method) {
     case MeshMethod::Particle:

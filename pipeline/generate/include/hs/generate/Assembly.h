@@ -3,6 +3,7 @@
 /// sec. 5): region ids, the visual surface's labels, materials, named labels, clinical descriptors, hydrometra,
 /// quality and warnings. Each piece is its own function so it can be tested on small inputs.
 
+#include "hs/core/LibraryVersions.h"
 #include "hs/core/Result.h"
 #include "hs/core/SurfaceMesh.h"
 #include "hs/core/TetMesh.h"
@@ -60,6 +61,11 @@ std::vector<scene::SceneLabel> sceneLabels(const scene::CaseSpec& spec, const Te
 /// them, volume as meshed).
 scene::ClinicalDescriptors clinicalDescriptors(const scene::CaseSpec& spec, const anatomy::UterusDimensions& organ,
                                                const pathology::PathologyResult& grown, const TetMesh& tets);
+
+/// Versions of every library that shapes the scene of `spec` (scene.json's and manifest.json's "toolVersions"): the
+/// scene module's (scene::defaultToolVersions), each stage's (anatomy, meshing, texture) and the meshing method's.
+/// Taken from the libraries' version macros at build time, so one build writes the same bytes every time.
+LibraryVersions toolVersionsFor(const scene::CaseSpec& spec);
 
 /// The meshing stage's quality report as scene data.
 scene::MeshQuality qualityOf(const meshing::QualityReport& q);

@@ -3,6 +3,7 @@
 /// meshTetGen in hs_meshing_tetgen (TetGen 1.5 is AGPL), meshCgal in hs_meshing_cgal (CGAL Mesh_3). Link
 /// hs_meshing_methods and call meshWith() to choose at run time.
 
+#include "hs/core/LibraryVersions.h"
 #include "hs/core/Progress.h"
 #include "hs/meshing/MeshTypes.h"
 
@@ -20,6 +21,10 @@ namespace hs::meshing {
 
 /// Whether this build has `method`.
 bool methodAvailable(MeshMethod method);
+
+/// The libraries `method` adds to hs::meshing's own (meshing::libraryVersions): "tetgen" for TetGen (read from
+/// tetgen.h at build time, which has no version macro); nothing for the others or when this build lacks the method.
+LibraryVersions methodLibraryVersions(MeshMethod method);
 
 /// Runs `method` (Unsupported when this build lacks it).
 [[nodiscard]] Result<MeshResult> meshWith(MeshMethod method, const RegionModel& body, const MeshParams& params,

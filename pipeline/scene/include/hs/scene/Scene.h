@@ -159,7 +159,8 @@ struct MaterialOptions {
                                                                  const SceneParams& params,
                                                                  const MaterialOptions& options = {});
 
-/// The default tool versions: "hysteroscene" (this build) and the versions of the libraries the scene module uses.
+/// The default tool versions: "hysteroscene" (this build), "compiler", and the libraries the scene module and hs::io
+/// use (minizip, nlohmann-json, tinygltf, vtk, zlib). hs::generate adds those of the stages (generate/Assembly.h).
 std::map<std::string, std::string> defaultToolVersions();
 
 /// Consistency of a scene before it is written: valid meshes, regions cover the tet regions, materials and their

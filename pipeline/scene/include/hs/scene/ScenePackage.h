@@ -13,6 +13,7 @@
 #include "hs/scene/Scene.h"
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -45,7 +46,10 @@ struct PackageFile {
 struct PackageManifest {
     std::string format{kPackageFormat};
     int schemaVersion = kPackageSchemaVersion;
-    std::string toolVersion;        ///< the hysteroscene version that wrote it
+    std::string toolVersion; ///< the hysteroscene version that wrote it
+    /// Every library that shaped the package, name -> version (the scene's toolVersions; optional when read:
+    /// packages written before it was added have none).
+    std::map<std::string, std::string> toolVersions;
     std::vector<PackageFile> files; ///< sorted by path
 };
 
