@@ -178,6 +178,23 @@ scene::ClinicalDescriptors clinicalDescriptors(const scene::CaseSpec& spec, cons
     return c;
 }
 
+scene::SceneLabel supportLabel(const TetMesh& tets, double cervixLengthMm) {
+    scene::SceneLabel label;
+    label.name = scene::kSupportLabel;
+    label.kind = scene::LabelKind::Other;
+    label.element = scene::LabelElement::Tet;
+    const double reach2 = cervixLengthMm * cervixLengthMm;
+    for (std::size_t t = 0; t < tets.tetCount(); ++t) {
+        const auto& tet = tets.tets[t];
+        if (std::all_of(tet.begin(), tet.end(), [&](std::int32_t v) {
+                const Vec3& p = tets.points[static_cast<std::size_t>(v)];
+                return p.x * p.x + p.y * p.y + p.z * p.z <= reach2;
+            }))
+            label.indices.push_back(static_cast<std::int32_t>(t));
+    }
+    return label;
+}
+
 LibraryVersions toolVersionsFor(const scene::CaseSpec& spec) {
     LibraryVersions versions = scene::defaultToolVersions();
     versions.merge(anatomy::libraryVersions());
@@ -225,6 +242,7 @@ Result<scene::Scene> assembleScene(const scene::CaseSpec& spec, const OrganInsta
     s.materials = std::move(materials).value();
 
     s.labels = sceneLabels(spec, s.tets, s.surface.mesh);
+    s.labels.push_back(supportLabel(s.tets, organ.dimensions.cervixLengthMm));
     s.clinical = clinicalDescriptors(spec, organ.dimensions, grown, s.tets);
     auto hydrometra = scene::computeHydrometra(organ.dimensions.ellipsoidVolumeMl, spec.scene.hydrometraPressureKpa);
     if (!hydrometra)

@@ -9,9 +9,10 @@
 namespace hs::scene::detail {
 
 /// The SOFA scene (XML). Units: mm, kg, s, so stresses come out in kPa and the materials' Young's moduli are
-/// written unchanged; densities are converted to kg/mm^3. The volume comes from mesh.msh (MeshGmshLoader), each
-/// region gets its own TetrahedronFEMForceField on its tets, and surface.obj with the albedo map is an OglModel
-/// mapped onto the tets.
+/// written unchanged; densities are converted to kg/mm^3. The volume comes from mesh.msh (MeshGmshLoader) into one
+/// MechanicalObject; the vertices of the tets labelled kSupportLabel are held by a FixedProjectiveConstraint; each
+/// region gets its own TetrahedronFEMForceField on its tets, linked to that MechanicalObject; and surface.obj with the
+/// albedo map is an OglModel mapped onto the tets. See docs/scene-format.md for the SOFA sources relied on.
 std::string sofaScene(const Scene& scene, bool hasAlbedo);
 
 /// The visual surface as Wavefront OBJ with texture coordinates (v, vt, f v/vt), mm; V flipped to OBJ's

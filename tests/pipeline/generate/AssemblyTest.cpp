@@ -177,3 +177,13 @@ TEST(Assembly, ToolVersionsNameTetGenWhenTheCaseMeshesWithIt) {
     ASSERT_EQ(versions.count("tetgen"), 1u);
     EXPECT_FALSE(versions.at("tetgen").empty());
 }
+
+TEST(Assembly, SupportLabelMarksTheTetsWithinTheCervixLengthOfTheExternalOs) {
+    const auto label = supportLabel(threeTets(), 1.8); // tets 0 and 1 reach at most sqrt(3) from the origin
+    EXPECT_EQ(label.name, scene::kSupportLabel);
+    EXPECT_EQ(label.kind, scene::LabelKind::Other);
+    EXPECT_EQ(label.element, scene::LabelElement::Tet);
+    EXPECT_EQ(label.indices, (std::vector<std::int32_t>{0, 1}));
+    EXPECT_EQ(supportLabel(threeTets(), 1.0).indices, (std::vector<std::int32_t>{0}));
+    EXPECT_TRUE(supportLabel(threeTets(), 0.5).indices.empty());
+}

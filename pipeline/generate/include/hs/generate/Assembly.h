@@ -62,6 +62,14 @@ std::vector<scene::SceneLabel> sceneLabels(const scene::CaseSpec& spec, const Te
 scene::ClinicalDescriptors clinicalDescriptors(const scene::CaseSpec& spec, const anatomy::UterusDimensions& organ,
                                                const pathology::PathologyResult& grown, const TetMesh& tets);
 
+/// Where a real uterus is held, as the tet label scene::kSupportLabel: the cervix. The vagina grips the portio (in
+/// hysteroscopy a tenaculum holds it as well) and the cardinal and uterosacral ligaments insert on the supravaginal
+/// cervix up to the isthmus, the uterus's level I support (DeLancey, Am J Obstet Gynecol 1992;166:1717-28); the round
+/// and broad ligaments carry little load and are left free, as is the corpus the scope pushes against. Marked: the
+/// tets whose four vertices lie within `cervixLengthMm` (external to internal os) of the external os, which is the
+/// organ frame's origin (anatomy/UterusGenerator.h).
+scene::SceneLabel supportLabel(const TetMesh& tets, double cervixLengthMm);
+
 /// Versions of every library that shapes the scene of `spec` (scene.json's and manifest.json's "toolVersions"): the
 /// scene module's (scene::defaultToolVersions), each stage's (anatomy, meshing, texture) and the meshing method's.
 /// Taken from the libraries' version macros at build time, so one build writes the same bytes every time.

@@ -74,6 +74,11 @@ struct SceneLabel {
     std::vector<std::int32_t> indices; ///< ascending, unique, in range of the element array
 };
 
+/// The tet label (kind Other) that says where the body is held: the SOFA scene fixes every vertex of its tets
+/// (FixedProjectiveConstraint). hs::generate marks the cervix (generate/Assembly.h, supportLabel); a scene without
+/// it is written free.
+inline constexpr const char* kSupportLabel = "support:cervix";
+
 /// The visual surface: triangles in mm, a UV per vertex, and the baked maps (all share the UV atlas).
 struct VisualSurface {
     SurfaceMesh mesh;                      ///< with its face and vertex labels
