@@ -142,6 +142,18 @@ TEST_F(ScenePackage, RefusesAChangedByteWithAChecksumError) {
     expectRefused(package(), ErrorCode::InvalidInput, {"report.json", "checksum"});
 }
 
+TEST_F(ScenePackage, RefusesAManifestWhoseLibraryVersionsAreNotStrings) {
+    editManifest(package(), [](auto& j) { j["toolVersions"]["vtk"] = 9; });
+    expectRefused(package(), ErrorCode::InvalidInput, {"manifest.json", "toolVersions"});
+}
+
+TEST_F(ScenePackage, ReadsAManifestWrittenBeforeItNamedTheLibraryVersions) {
+    editManifest(package(), [](auto& j) { j.erase("toolVersions"); });
+    const auto verified = verifyScenePackage(package().string());
+    ASSERT_TRUE(verified.ok()) << verified.error().message();
+    EXPECT_TRUE(verified->toolVersions.empty());
+}
+
 TEST_F(ScenePackage, RefusesAPathThatLeavesTheFolder) {
     writeText(m_dir.path() / "outside.json", "{}");
     editManifest(package(), [](auto& j) {
