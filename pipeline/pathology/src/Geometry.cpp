@@ -1,5 +1,7 @@
 #include "Geometry.h"
 
+#include "hs/core/RegionModel.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -422,6 +424,20 @@ void orthonormalFrame(const Vec3& n, Vec3& e1, Vec3& e2) {
 double smoothstep(double e0, double e1, double x) {
     const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
     return t * t * (3.0 - 2.0 * t);
+}
+
+/// Signed distance from p to a closed surface (negative inside), capped at `cutoff`.
+double signedDistance(const SurfaceMesh& s, const Bounds& box, const Vec3& p, double cutoff) {
+    if (p.x < box.min.x - cutoff || p.y < box.min.y - cutoff || p.z < box.min.z - cutoff || p.x > box.max.x + cutoff ||
+        p.y > box.max.y + cutoff || p.z > box.max.z + cutoff)
+        return cutoff;
+    double best = cutoff * cutoff;
+    for (const Triangle& t : s.triangles)
+        best = std::min(best, pointTriangleDistance2(p, s.points[static_cast<std::size_t>(t[0])],
+                                                     s.points[static_cast<std::size_t>(t[1])],
+                                                     s.points[static_cast<std::size_t>(t[2])]));
+    const double d = std::sqrt(best);
+    return windingNumber(s, p) > 0.5 ? -d : d;
 }
 
 } // namespace hs::pathology::detail

@@ -42,6 +42,9 @@ void orientOutward(SurfaceMesh& mesh);
 /// Squared distance from p to triangle abc (Ericson, Real-Time Collision Detection, 5.1.5).
 double pointTriangleDistance2(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
+/// Signed distance from p to a closed surface (negative inside), capped at `cutoff`; `box` is the surface's bounds.
+double signedDistance(const SurfaceMesh& s, const Bounds& box, const Vec3& p, double cutoff);
+
 /// Ray-triangle intersection (Moeller-Trumbore); t along dir (unit), true on a hit with t > tMin.
 bool rayTriangle(const Vec3& origin, const Vec3& dir, const Vec3& a, const Vec3& b, const Vec3& c, double tMin,
                  double& t);
