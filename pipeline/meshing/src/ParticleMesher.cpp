@@ -129,8 +129,7 @@ Result<ParticleMeshResult> meshParticles(const RegionModel& input, const Particl
     if (!edge.ok())
         return edge.failure();
     result.targetEdgeLength = *edge;
-    if (progress.cancelled())
-        return fail(ErrorCode::Cancelled, "meshing cancelled");
+    HS_TRY(progress.check("meshing"));
 
     VoxelSpace voxels;
     {
@@ -182,8 +181,7 @@ Result<ParticleMeshResult> meshParticles(const RegionModel& input, const Particl
     std::int64_t interfaceParticles = 0;
     for (int pass = 0;; ++pass) {
         ScopedStepTimer timer(timings, "tetrahedralize");
-        if (progress.cancelled())
-            return fail(ErrorCode::Cancelled, "meshing cancelled");
+        HS_TRY(progress.check("meshing"));
         detail::SliverRepairParams repair;
         repair.minDihedralDeg = kRepairDihedralDeg;
         repair.step = kRepairStepPerEdge * *edge;
@@ -231,8 +229,7 @@ Result<ParticleMeshResult> meshParticles(const RegionModel& input, const Particl
             break;
     }
     timings.step("tetrahedralize").counts.emplace_back("interfaceParticles", interfaceParticles);
-    if (progress.cancelled())
-        return fail(ErrorCode::Cancelled, "meshing cancelled");
+    HS_TRY(progress.check("meshing"));
 
     std::vector<std::int32_t> region;
     {

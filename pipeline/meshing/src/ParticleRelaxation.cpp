@@ -131,8 +131,7 @@ Result<RelaxationStats> relaxParticles(Particles& ps, const RegionModel& body, c
     double motility = kInitialMotility;
 
     for (int it = 0; it < iterations; ++it) {
-        if (progress.cancelled())
-            return fail(ErrorCode::Cancelled, "meshing cancelled while relaxing particles");
+        HS_TRY(progress.check("meshing", "relaxing particles"));
         neighbours.build(ps.position, box, cutoff);
         const double stepScale = motility * r0;
         const double maxStep = kMaxStep * r0;

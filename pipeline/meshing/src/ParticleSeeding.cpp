@@ -229,17 +229,14 @@ Result<Particles> seedParticles(const SeedingInput& in, Progress& progress) {
     const Rng base(in.params->seed);
     for (std::size_t s = 0; s < in.body->surfaces.size(); ++s)
         seedFeatures(in, s, ps, index);
-    if (progress.cancelled())
-        return fail(ErrorCode::Cancelled, "meshing cancelled while seeding particles");
+    HS_TRY(progress.check("meshing", "seeding particles"));
     for (std::size_t s = 0; s < in.body->surfaces.size(); ++s) {
         seedSurface(in, s, base, ps, index);
-        if (progress.cancelled())
-            return fail(ErrorCode::Cancelled, "meshing cancelled while seeding particles");
+        HS_TRY(progress.check("meshing", "seeding particles"));
     }
     progress.report("meshing.seed", 0.5);
     seedInner(in, base, ps, index);
-    if (progress.cancelled())
-        return fail(ErrorCode::Cancelled, "meshing cancelled while seeding particles");
+    HS_TRY(progress.check("meshing", "seeding particles"));
     if (ps.size() > static_cast<std::size_t>(kMaxVertices))
         return fail(ErrorCode::LimitExceeded, std::to_string(ps.size()) + " particles exceed the limit of " +
                                                   std::to_string(kMaxVertices) + " vertices");

@@ -50,8 +50,7 @@ Status associateTriangles(const SurfaceMesh& mesh, const VoxelGrid<std::int32_t>
                         }
             }
         });
-    if (progress.cancelled())
-        return fail(ErrorCode::Cancelled, "meshing cancelled while voxelizing");
+    HS_TRY(progress.check("meshing", "voxelizing"));
     // Counting sort by voxel; chunks are in triangle order, so each voxel's list is ascending.
     const std::size_t n = grid.size();
     out.start.assign(n + 1, 0);
@@ -186,8 +185,7 @@ Result<VoxelSpace> buildVoxelSpace(const RegionModel& body, double voxelSize, in
         HS_TRY(associateTriangles(body.surfaces[s].surface, space.region, threads, progress, sv));
         labelOuterAndInner(sv);
         labelEnclosedOuter(body.surfaces[s].surface, sv);
-        if (progress.cancelled())
-            return fail(ErrorCode::Cancelled, "meshing cancelled while voxelizing");
+        HS_TRY(progress.check("meshing", "voxelizing"));
         progress.report("meshing.voxelize", double(s + 1) / double(body.surfaces.size()));
         space.surfaces.push_back(std::move(sv));
     }

@@ -123,8 +123,7 @@ Result<SurfaceMesh> cellularAutomatonShape(const ShapeSpec& spec, const SurfaceM
     // Bounding box of the tumour: only its neighbourhood is scanned each sweep.
     std::array<int, 3> lo{ci - 1, cj - 1, ck - 1}, hi{ci + 1, cj + 1, ck + 1};
     for (int sweep = 0; static_cast<double>(count) < target; ++sweep) {
-        if (progress.cancelled())
-            return fail(ErrorCode::Cancelled, "pathology growth cancelled");
+        HS_TRY(progress.check("pathology growth"));
         if (sweep > 4 * tuning.cellsPerDiameter * 10)
             break;
         born.clear();

@@ -48,8 +48,7 @@ Result<SurfaceMesh> particleShape(const ShapeSpec& spec, const SurfaceMesh& orga
         return (x * 73856093) ^ (y * 19349663) ^ (z * 83492791);
     };
     while (cells.size() < n) {
-        if (progress.cancelled())
-            return fail(ErrorCode::Cancelled, "pathology growth cancelled");
+        HS_TRY(progress.check("pathology growth"));
         // Division: faster where the surroundings yield (cavity, outside) than in the resisting wall.
         const std::size_t current = cells.size();
         for (std::size_t i = 0; i < current && cells.size() < n; ++i) {

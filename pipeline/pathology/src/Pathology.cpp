@@ -64,8 +64,7 @@ Result<PathologyResult> growPathologies(const SurfaceMesh& organ, const Patholog
     std::vector<Planned> plans(params.pathologies.size());
     const double n = static_cast<double>(std::max<std::size_t>(1, plans.size()));
     for (std::size_t i = 0; i < plans.size(); ++i) {
-        if (progress.cancelled())
-            return fail(ErrorCode::Cancelled, "pathology stage cancelled");
+        HS_TRY(progress.check("pathology stage"));
         const PathologyRequest& r = params.pathologies[i];
         Planned& p = plans[i];
         p.request = &r;

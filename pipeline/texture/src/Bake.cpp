@@ -120,8 +120,7 @@ Result<BakeResult> bakeAppearance(const SurfaceMesh& surface, const BakeParams& 
         result.stats.vesselSegments = static_cast<std::int64_t>(result.vessels.segments.size());
         result.timings.step("vessels").counts = {{"segments", result.stats.vesselSegments}};
     }
-    if (progress.cancelled())
-        return fail(ErrorCode::Cancelled, "bake cancelled");
+    HS_TRY(progress.check("bake"));
 
     const double texelMm = 1.0 / std::max(1e-9, result.atlas.stats.texelsPerMm);
     TexelMap map;
@@ -139,8 +138,7 @@ Result<BakeResult> bakeAppearance(const SurfaceMesh& surface, const BakeParams& 
         const VesselIndex vessels = indexVessels(result.vessels, texelMm);
         shading = shade(surface, map, normals, weights, tiles, vessels, params, texelMm, threads);
     }
-    if (progress.cancelled())
-        return fail(ErrorCode::Cancelled, "bake cancelled");
+    HS_TRY(progress.check("bake"));
     progress.report("texture.bake", 0.85);
     {
         ScopedStepTimer timer(result.timings, "normals");

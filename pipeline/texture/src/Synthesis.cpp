@@ -302,8 +302,7 @@ Result<SynthesisResult> synthesizeTexture(const ImageU8& exemplar, const Synthes
         }
         const int passes = params.correctionPasses + (l == 0 ? 2 : 0);
         for (int pass = 0; pass < passes; ++pass) {
-            if (progress.cancelled())
-                return fail(ErrorCode::Cancelled, "texture synthesis cancelled");
+            HS_TRY(progress.check("texture synthesis"));
             correct(map, ex, l, pass, params, threads, weights);
             progress.report("texture.synthesis", (l + (pass + 1.0) / passes) / result.levels);
         }
