@@ -4,10 +4,10 @@
 #include "InterfaceVolume.h"
 #include "MeshImprove.h"
 #include "MesherSteps.h"
-#include "Parallel.h"
 #include "Particles.h"
 #include "Pinches.h"
 #include "TriangleGrid.h"
+#include "hs/core/Parallel.h"
 #include "hs/core/Rng.h"
 #include "hs/meshing/Geometry.h"
 #include "hs/meshing/VoxelSpace.h"
@@ -111,7 +111,7 @@ Result<ParticleMeshResult> meshParticles(const RegionModel& input, const Particl
                                          Progress& progress) {
     ParticleMeshResult result;
     StageTimings& timings = result.timings;
-    const int threads = detail::resolveThreads(params.threads);
+    const int threads = resolveThreads(params.threads);
     if (params.relaxationIterations < 0 || params.relaxationIterations > 10000)
         return fail(ErrorCode::InvalidInput, "relaxation iterations must be in 0..10000");
     if (!(params.featureAngleDeg > 0.0 && params.featureAngleDeg <= 180.0))

@@ -1,7 +1,7 @@
 // Relaxation: particles pushed towards the rest distance by the interaction profile (Bossen & Heckbert 1996).
 #include "Particles.h"
 
-#include "Parallel.h"
+#include "hs/core/Parallel.h"
 #include "hs/meshing/Geometry.h"
 
 #include <algorithm>
@@ -135,7 +135,7 @@ Result<RelaxationStats> relaxParticles(Particles& ps, const RegionModel& body, c
         neighbours.build(ps.position, box, cutoff);
         const double stepScale = motility * r0;
         const double maxStep = kMaxStep * r0;
-        detail::parallelChunks(n, kParticleChunk, threads, [&](std::size_t c, std::size_t begin, std::size_t end) {
+        parallelChunks(n, kParticleChunk, threads, [&](std::size_t c, std::size_t begin, std::size_t end) {
             double energy = 0.0, maxMove = 0.0;
             for (std::size_t i = begin; i < end; ++i) {
                 const Vec3 xi = ps.position[i];

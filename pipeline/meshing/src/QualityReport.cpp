@@ -1,7 +1,7 @@
 #include "hs/meshing/QualityReport.h"
 
-#include "Parallel.h"
 #include "TriangleGrid.h"
+#include "hs/core/Parallel.h"
 #include "hs/meshing/Geometry.h"
 
 #include <algorithm>
@@ -42,8 +42,8 @@ double meanEdgeLength(const TetMesh& mesh) {
 void measureShapes(const TetMesh& mesh, int threads, QualityReport& report) {
     const double l = meanEdgeLength(mesh);
     const double degenerateVolume = 1e-12 * l * l * l;
-    std::vector<ShapeSums> partial(detail::chunkCount(mesh.tets.size(), kChunk));
-    detail::parallelChunks(mesh.tets.size(), kChunk, threads, [&](std::size_t c, std::size_t begin, std::size_t end) {
+    std::vector<ShapeSums> partial(chunkCount(mesh.tets.size(), kChunk));
+    parallelChunks(mesh.tets.size(), kChunk, threads, [&](std::size_t c, std::size_t begin, std::size_t end) {
         ShapeSums& s = partial[c];
         for (std::size_t t = begin; t < end; ++t) {
             const Tet& tet = mesh.tets[t];
@@ -114,8 +114,8 @@ std::vector<Vec3> samplePoints(const SurfaceMesh& mesh) {
 /// test).
 double oneSidedDistance(const std::vector<Vec3>& samples, const std::vector<const detail::TriangleGrid*>& targets,
                         int threads) {
-    std::vector<double> partial(detail::chunkCount(samples.size(), kChunk), 0.0);
-    detail::parallelChunks(samples.size(), kChunk, threads, [&](std::size_t c, std::size_t begin, std::size_t end) {
+    std::vector<double> partial(chunkCount(samples.size(), kChunk), 0.0);
+    parallelChunks(samples.size(), kChunk, threads, [&](std::size_t c, std::size_t begin, std::size_t end) {
         double worst = 0.0;
         std::vector<std::pair<double, std::size_t>> order(targets.size());
         for (std::size_t i = begin; i < end; ++i) {
@@ -227,7 +227,7 @@ QualityReport measureQuality(const TetMesh& mesh, const RegionModel* reference, 
     QualityReport report;
     report.vertexCount = mesh.points.size();
     report.tetCount = mesh.tets.size();
-    threads = detail::resolveThreads(threads);
+    threads = resolveThreads(threads);
     measureShapes(mesh, threads, report);
     if (reference)
         measureFidelity(mesh, *reference, threads, report);

@@ -1,7 +1,7 @@
 // The region of every tet: by its centroid, corrected in thin layers; boundary slivers peeled.
 #include "MesherSteps.h"
 
-#include "Parallel.h"
+#include "hs/core/Parallel.h"
 #include "hs/meshing/Geometry.h"
 
 #include <algorithm>
@@ -75,7 +75,7 @@ std::size_t peelBoundarySlivers(const RegionModel& body, const std::vector<Vec3>
 std::vector<std::int32_t> classifyTets(const std::vector<Vec3>& points, const RegionLocator& locator, int threads,
                                        const std::vector<Tet>& tets) {
     std::vector<std::int32_t> region(tets.size());
-    detail::parallelChunks(tets.size(), kTetChunk, threads, [&](std::size_t, std::size_t b, std::size_t e) {
+    parallelChunks(tets.size(), kTetChunk, threads, [&](std::size_t, std::size_t b, std::size_t e) {
         for (std::size_t t = b; t < e; ++t) {
             const Tet& tet = tets[t];
             const Vec3 c = (points[static_cast<std::size_t>(tet[0])] + points[static_cast<std::size_t>(tet[1])] +

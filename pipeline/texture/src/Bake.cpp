@@ -1,8 +1,8 @@
 #include "hs/texture/Bake.h"
 
 #include "BakeSteps.h"
-#include "Parallel.h"
 
+#include "hs/core/Parallel.h"
 #include "hs/core/Rng.h"
 #include "hs/texture/ImageFiles.h"
 #include "hs/texture/Synthesis.h"
@@ -68,7 +68,7 @@ Result<BakeResult> bakeAppearance(const SurfaceMesh& surface, const BakeParams& 
     HS_TRY(validate(surface));
     if (surface.triangles.empty())
         return fail(ErrorCode::InvalidInput, "bake: the surface has no triangles");
-    const int threads = detail::threadCount(params.threads);
+    const int threads = resolveThreads(params.threads);
     BakeResult result;
     result.faceAppearance = classifyFaces(surface, params.labels);
     for (Appearance a : result.faceAppearance)

@@ -1,7 +1,7 @@
 // Per-texel shading: base textures blended by class, vessels drawn over them, roughness and relief.
 #include "BakeSteps.h"
 
-#include "Parallel.h"
+#include "hs/core/Parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -116,56 +116,58 @@ Shading shade(const SurfaceMesh& mesh, const TexelMap& map, const std::vector<Ve
     out.height.assign(static_cast<std::size_t>(n) * n, 0.0f);
     out.covered.assign(static_cast<std::size_t>(n) * n, 0);
     const double cellHalf = vessels.query;
-    detail::parallelRanges(n, threads, [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y)
-            for (int x = 0; x < n; ++x) {
-                const std::size_t i = map.index(x, y);
-                const std::int32_t f = map.face[i];
-                if (f < 0)
-                    continue;
-                const auto& t = mesh.triangles[static_cast<std::size_t>(f)];
-                const float b1 = map.bary[i][0], b2 = map.bary[i][1], b0 = 1.0f - b1 - b2;
-                const std::array<float, 3> b{b0, b1, b2};
-                Vec3 p, nrm;
-                Weights3 w{};
-                for (std::size_t k = 0; k < 3; ++k) {
-                    const auto v = static_cast<std::size_t>(t[k]);
-                    p += mesh.points[v] * b[k];
-                    nrm += normals[v] * b[k];
-                    for (std::size_t c = 0; c < kAppearanceCount; ++c)
-                        w[c] += weights[v][c] * b[k];
-                }
-                nrm = normalized(nrm);
-                float rgb[3] = {0, 0, 0};
-                float rough = 0.0f, bump = 0.0f;
-                for (std::size_t c = 0; c < kAppearanceCount; ++c) {
-                    if (w[c] < 1e-3f || tiles[c].size == 0)
-                        continue;
-                    float s[3];
-                    triplanar(tiles[c], p, nrm, params.tileMm, s);
-                    const float lum = (s[0] + s[1] + s[2]) / 3.0f;
-                    for (int k = 0; k < 3; ++k)
-                        rgb[k] += w[c] * s[k];
-                    rough += w[c] * (kLooks[c].roughness + 0.25f * (tiles[c].meanLum - lum));
-                    bump += w[c] * kLooks[c].bump * (lum - tiles[c].meanLum);
-                }
-                const VesselSample v = sampleVessels(vessels, p, texelMm, cellHalf);
-                if (v.cover > 0.0f) {
-                    float vc[3];
-                    vesselColour(v.radius, vc);
-                    for (int k = 0; k < 3; ++k)
-                        rgb[k] += (vc[k] - rgb[k]) * v.cover;
-                    rough += (0.3f - rough) * v.cover;
-                }
-                for (int k = 0; k < 3; ++k)
-                    out.albedo.at(x, y, k) =
-                        static_cast<std::uint8_t>(std::lround(std::clamp(rgb[k], 0.0f, 1.0f) * 255.0f));
-                out.roughness.at(x, y) =
-                    static_cast<std::uint8_t>(std::lround(std::clamp(rough, 0.02f, 1.0f) * 255.0f));
-                out.height[i] = static_cast<float>(params.bumpMm) * bump + v.height;
-                out.covered[i] = 1;
-            }
-    });
+    parallelChunks(static_cast<std::size_t>(n), evenChunk(static_cast<std::size_t>(n), threads), threads,
+                   [&](std::size_t, std::size_t y0Chunk, std::size_t y1Chunk) {
+                       const int y0 = static_cast<int>(y0Chunk), y1 = static_cast<int>(y1Chunk);
+                       for (int y = y0; y < y1; ++y)
+                           for (int x = 0; x < n; ++x) {
+                               const std::size_t i = map.index(x, y);
+                               const std::int32_t f = map.face[i];
+                               if (f < 0)
+                                   continue;
+                               const auto& t = mesh.triangles[static_cast<std::size_t>(f)];
+                               const float b1 = map.bary[i][0], b2 = map.bary[i][1], b0 = 1.0f - b1 - b2;
+                               const std::array<float, 3> b{b0, b1, b2};
+                               Vec3 p, nrm;
+                               Weights3 w{};
+                               for (std::size_t k = 0; k < 3; ++k) {
+                                   const auto v = static_cast<std::size_t>(t[k]);
+                                   p += mesh.points[v] * b[k];
+                                   nrm += normals[v] * b[k];
+                                   for (std::size_t c = 0; c < kAppearanceCount; ++c)
+                                       w[c] += weights[v][c] * b[k];
+                               }
+                               nrm = normalized(nrm);
+                               float rgb[3] = {0, 0, 0};
+                               float rough = 0.0f, bump = 0.0f;
+                               for (std::size_t c = 0; c < kAppearanceCount; ++c) {
+                                   if (w[c] < 1e-3f || tiles[c].size == 0)
+                                       continue;
+                                   float s[3];
+                                   triplanar(tiles[c], p, nrm, params.tileMm, s);
+                                   const float lum = (s[0] + s[1] + s[2]) / 3.0f;
+                                   for (int k = 0; k < 3; ++k)
+                                       rgb[k] += w[c] * s[k];
+                                   rough += w[c] * (kLooks[c].roughness + 0.25f * (tiles[c].meanLum - lum));
+                                   bump += w[c] * kLooks[c].bump * (lum - tiles[c].meanLum);
+                               }
+                               const VesselSample v = sampleVessels(vessels, p, texelMm, cellHalf);
+                               if (v.cover > 0.0f) {
+                                   float vc[3];
+                                   vesselColour(v.radius, vc);
+                                   for (int k = 0; k < 3; ++k)
+                                       rgb[k] += (vc[k] - rgb[k]) * v.cover;
+                                   rough += (0.3f - rough) * v.cover;
+                               }
+                               for (int k = 0; k < 3; ++k)
+                                   out.albedo.at(x, y, k) =
+                                       static_cast<std::uint8_t>(std::lround(std::clamp(rgb[k], 0.0f, 1.0f) * 255.0f));
+                               out.roughness.at(x, y) =
+                                   static_cast<std::uint8_t>(std::lround(std::clamp(rough, 0.02f, 1.0f) * 255.0f));
+                               out.height[i] = static_cast<float>(params.bumpMm) * bump + v.height;
+                               out.covered[i] = 1;
+                           }
+                   });
     return out;
 }
 
