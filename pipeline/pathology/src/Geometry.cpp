@@ -1,6 +1,7 @@
 #include "Geometry.h"
 
 #include "hs/core/RegionModel.h"
+#include "hs/core/TriangleGeometry.h"
 
 #include <algorithm>
 #include <array>
@@ -242,32 +243,6 @@ void orientOutward(SurfaceMesh& mesh) {
             std::swap(t[1], t[2]);
 }
 
-double pointTriangleDistance2(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-    const Vec3 ab = b - a, ac = c - a, ap = p - a;
-    const double d1 = dot(ab, ap), d2 = dot(ac, ap);
-    if (d1 <= 0.0 && d2 <= 0.0)
-        return norm2(ap);
-    const Vec3 bp = p - b;
-    const double d3 = dot(ab, bp), d4 = dot(ac, bp);
-    if (d3 >= 0.0 && d4 <= d3)
-        return norm2(bp);
-    const double vc = d1 * d4 - d3 * d2;
-    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)
-        return norm2(p - (a + ab * (d1 / (d1 - d3))));
-    const Vec3 cp = p - c;
-    const double d5 = dot(ab, cp), d6 = dot(ac, cp);
-    if (d6 >= 0.0 && d5 <= d6)
-        return norm2(cp);
-    const double vb = d5 * d2 - d1 * d6;
-    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0)
-        return norm2(p - (a + ac * (d2 / (d2 - d6))));
-    const double va = d3 * d6 - d5 * d4;
-    if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0)
-        return norm2(p - (b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)))));
-    const double denom = 1.0 / (va + vb + vc);
-    return norm2(p - (a + ab * (vb * denom) + ac * (vc * denom)));
-}
-
 bool rayTriangle(const Vec3& origin, const Vec3& dir, const Vec3& a, const Vec3& b, const Vec3& c, double tMin,
                  double& t) {
     const Vec3 e1 = b - a, e2 = c - a;
@@ -378,9 +353,10 @@ double TriangleGrid::distance(const Vec3& p, double cutoff) const {
                 const std::size_t cell = grid_.index(i, j, k);
                 for (std::uint32_t e = start_[cell]; e < start_[cell + 1]; ++e) {
                     const Triangle& t = mesh_->triangles[triangles_[e]];
-                    best = std::min(best, pointTriangleDistance2(p, mesh_->points[static_cast<std::size_t>(t[0])],
+                    best = std::min(best, closestPointOnTriangle(p, mesh_->points[static_cast<std::size_t>(t[0])],
                                                                  mesh_->points[static_cast<std::size_t>(t[1])],
-                                                                 mesh_->points[static_cast<std::size_t>(t[2])]));
+                                                                 mesh_->points[static_cast<std::size_t>(t[2])])
+                                              .distance2);
                 }
             }
     return std::sqrt(best);
@@ -409,7 +385,7 @@ double surfaceDistance(const SurfaceMesh& a, const SurfaceMesh& b, double cutoff
             const double dz = std::max({bt.min.z - p.z, 0.0, p.z - bt.max.z});
             if (dx * dx + dy * dy + dz * dz >= best)
                 continue;
-            best = std::min(best, pointTriangleDistance2(p, p0, p1, p2));
+            best = std::min(best, closestPointOnTriangle(p, p0, p1, p2).distance2);
         }
     }
     return std::sqrt(best);
@@ -433,9 +409,10 @@ double signedDistance(const SurfaceMesh& s, const Bounds& box, const Vec3& p, do
         return cutoff;
     double best = cutoff * cutoff;
     for (const Triangle& t : s.triangles)
-        best = std::min(best, pointTriangleDistance2(p, s.points[static_cast<std::size_t>(t[0])],
+        best = std::min(best, closestPointOnTriangle(p, s.points[static_cast<std::size_t>(t[0])],
                                                      s.points[static_cast<std::size_t>(t[1])],
-                                                     s.points[static_cast<std::size_t>(t[2])]));
+                                                     s.points[static_cast<std::size_t>(t[2])])
+                                  .distance2);
     const double d = std::sqrt(best);
     return windingNumber(s, p) > 0.5 ? -d : d;
 }

@@ -1,6 +1,6 @@
 #pragma once
 /// Geometry helpers of the pathology stage: a regular grid, inside masks by column parity, marching tetrahedra,
-/// Taubin smoothing, distances and rays.
+/// Taubin smoothing, distances and rays. Closest points on triangles are hs::core's (closestPointOnTriangle).
 
 #include "hs/core/SurfaceMesh.h"
 
@@ -38,9 +38,6 @@ void taubinSmooth(SurfaceMesh& mesh, int iterations, double lambda = 0.5, double
 
 /// Flips every triangle when the enclosed volume is negative.
 void orientOutward(SurfaceMesh& mesh);
-
-/// Squared distance from p to triangle abc (Ericson, Real-Time Collision Detection, 5.1.5).
-double pointTriangleDistance2(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
 /// Signed distance from p to a closed surface (negative inside), capped at `cutoff`; `box` is the surface's bounds.
 double signedDistance(const SurfaceMesh& s, const Bounds& box, const Vec3& p, double cutoff);
