@@ -79,11 +79,11 @@ std::size_t addInterfaceParticles(const detail::DelaunayOutput& dt, const Region
     std::size_t added = 0;
     for (const auto& [a, b] : crossing) {
         const Vec3 mid = (ps.position[a] + ps.position[b]) * 0.5;
-        detail::SurfaceHit best;
+        SurfaceHit best;
         std::size_t bestSurface = 0;
         double bestD = 1e300;
         for (std::size_t s = 1; s < body.surfaces.size(); ++s) {
-            const detail::SurfaceHit hit = locator.surfaceGrid(s).closestWithin(mid, bestD);
+            const SurfaceHit hit = locator.surfaceGrid(s).closestWithin(mid, bestD);
             if (hit.triangle >= 0 && hit.closest.distance2 < bestD) {
                 bestD = hit.closest.distance2;
                 best = hit;

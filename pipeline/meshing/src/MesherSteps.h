@@ -5,10 +5,10 @@
 #include "Delaunay.h"
 #include "MeshImprove.h"
 #include "Particles.h"
-#include "TriangleGrid.h"
 #include "hs/core/Progress.h"
 #include "hs/core/RegionModel.h"
 #include "hs/core/Timings.h"
+#include "hs/core/TriangleGrid.h"
 #include "hs/meshing/VoxelSpace.h"
 
 #include <memory>
@@ -24,7 +24,7 @@ class RegionLocator {
 public:
     RegionLocator(const RegionModel& body, const VoxelSpace& voxels) : m_body(body), m_voxels(voxels) {
         for (const auto& rs : body.surfaces)
-            m_grids.push_back(std::make_unique<detail::TriangleGrid>(rs.surface, voxels.region.spacing()));
+            m_grids.push_back(std::make_unique<TriangleGrid>(rs.surface, voxels.region.spacing()));
     }
     std::int32_t regionAt(const Vec3& p) const {
         const auto& grid = m_voxels.region;
@@ -46,12 +46,12 @@ public:
         return region;
     }
 
-    const detail::TriangleGrid& surfaceGrid(std::size_t s) const { return *m_grids[s]; }
+    const TriangleGrid& surfaceGrid(std::size_t s) const { return *m_grids[s]; }
 
 private:
     const RegionModel& m_body;
     const VoxelSpace& m_voxels;
-    std::vector<std::unique_ptr<detail::TriangleGrid>> m_grids;
+    std::vector<std::unique_ptr<TriangleGrid>> m_grids;
 };
 
 // TetRegions.cpp

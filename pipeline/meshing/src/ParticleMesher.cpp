@@ -6,9 +6,9 @@
 #include "MesherSteps.h"
 #include "Particles.h"
 #include "Pinches.h"
-#include "TriangleGrid.h"
 #include "hs/core/Parallel.h"
 #include "hs/core/Rng.h"
+#include "hs/core/TriangleGrid.h"
 #include "hs/meshing/Geometry.h"
 #include "hs/meshing/VoxelSpace.h"
 

@@ -304,64 +304,6 @@ void translate(SurfaceMesh& mesh, const Vec3& by) {
         p += by;
 }
 
-TriangleGrid::TriangleGrid(const SurfaceMesh& mesh, double cellMm) : mesh_(&mesh) {
-    grid_ = Grid::covering(bounds(mesh), cellMm, 1);
-    // Cells are addressed by their index box; a triangle goes into every cell its bounding box overlaps.
-    auto cellBox = [&](std::size_t f, std::array<int, 3>& lo, std::array<int, 3>& hi) {
-        Bounds b;
-        for (std::int32_t v : mesh.triangles[f])
-            b.add(mesh.points[static_cast<std::size_t>(v)]);
-        const Vec3 l = (b.min - grid_.origin) / cellMm, h = (b.max - grid_.origin) / cellMm;
-        lo = {std::clamp(static_cast<int>(std::lround(l.x)), 0, grid_.nx - 1),
-              std::clamp(static_cast<int>(std::lround(l.y)), 0, grid_.ny - 1),
-              std::clamp(static_cast<int>(std::lround(l.z)), 0, grid_.nz - 1)};
-        hi = {std::clamp(static_cast<int>(std::lround(h.x)), 0, grid_.nx - 1),
-              std::clamp(static_cast<int>(std::lround(h.y)), 0, grid_.ny - 1),
-              std::clamp(static_cast<int>(std::lround(h.z)), 0, grid_.nz - 1)};
-    };
-    std::vector<std::uint32_t> count(grid_.size() + 1, 0);
-    std::array<int, 3> lo{}, hi{};
-    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-        cellBox(f, lo, hi);
-        for (int k = lo[2]; k <= hi[2]; ++k)
-            for (int j = lo[1]; j <= hi[1]; ++j)
-                for (int i = lo[0]; i <= hi[0]; ++i)
-                    ++count[grid_.index(i, j, k) + 1];
-    }
-    for (std::size_t c = 1; c < count.size(); ++c)
-        count[c] += count[c - 1];
-    start_ = count;
-    triangles_.resize(start_.back());
-    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-        cellBox(f, lo, hi);
-        for (int k = lo[2]; k <= hi[2]; ++k)
-            for (int j = lo[1]; j <= hi[1]; ++j)
-                for (int i = lo[0]; i <= hi[0]; ++i)
-                    triangles_[count[grid_.index(i, j, k)]++] = static_cast<std::uint32_t>(f);
-    }
-}
-
-double TriangleGrid::distance(const Vec3& p, double cutoff) const {
-    const Vec3 c = (p - grid_.origin) / grid_.h;
-    const int reach = static_cast<int>(std::ceil(cutoff / grid_.h + 0.5)); // cells reach +-h/2 past their centres
-    const int ci = static_cast<int>(std::lround(c.x)), cj = static_cast<int>(std::lround(c.y)),
-              ck = static_cast<int>(std::lround(c.z));
-    double best = cutoff * cutoff;
-    for (int k = std::max(0, ck - reach); k <= std::min(grid_.nz - 1, ck + reach); ++k)
-        for (int j = std::max(0, cj - reach); j <= std::min(grid_.ny - 1, cj + reach); ++j)
-            for (int i = std::max(0, ci - reach); i <= std::min(grid_.nx - 1, ci + reach); ++i) {
-                const std::size_t cell = grid_.index(i, j, k);
-                for (std::uint32_t e = start_[cell]; e < start_[cell + 1]; ++e) {
-                    const Triangle& t = mesh_->triangles[triangles_[e]];
-                    best = std::min(best, closestPointOnTriangle(p, mesh_->points[static_cast<std::size_t>(t[0])],
-                                                                 mesh_->points[static_cast<std::size_t>(t[1])],
-                                                                 mesh_->points[static_cast<std::size_t>(t[2])])
-                                              .distance2);
-                }
-            }
-    return std::sqrt(best);
-}
-
 double surfaceDistance(const SurfaceMesh& a, const SurfaceMesh& b, double cutoff) {
     Bounds ba = bounds(a);
     ba.add(ba.min - Vec3{cutoff, cutoff, cutoff});

@@ -1,6 +1,6 @@
 #pragma once
 /// Geometry helpers of the pathology stage: a regular grid, inside masks by column parity, marching tetrahedra,
-/// Taubin smoothing, distances and rays. Closest points on triangles are hs::core's (closestPointOnTriangle).
+/// Taubin smoothing, distances and rays. Closest points on triangles and the triangle grid are hs::core's.
 
 #include "hs/core/SurfaceMesh.h"
 
@@ -59,21 +59,6 @@ void translate(SurfaceMesh& mesh, const Vec3& by);
 
 /// Smallest distance from any vertex of a to the triangles of b (bounding-box filtered), mm.
 double surfaceDistance(const SurfaceMesh& a, const SurfaceMesh& b, double cutoff);
-
-/// Triangles of a surface binned in a regular grid of cells `cellMm` wide, for distances up to a cutoff near it.
-class TriangleGrid {
-public:
-    TriangleGrid(const SurfaceMesh& mesh, double cellMm);
-    /// Unsigned distance from p to the surface, or `cutoff` when it is at least that far (searches the cells within
-    /// cutoff + half a cell of p's cell: keep the cutoff to a few cells).
-    double distance(const Vec3& p, double cutoff) const;
-
-private:
-    const SurfaceMesh* mesh_;
-    Grid grid_;
-    std::vector<std::uint32_t> start_;     ///< cell -> first entry in triangles_ (size cells + 1)
-    std::vector<std::uint32_t> triangles_; ///< triangle ids, by cell
-};
 
 /// Two unit vectors completing `n` (unit) to an orthonormal frame.
 void orthonormalFrame(const Vec3& n, Vec3& e1, Vec3& e2);

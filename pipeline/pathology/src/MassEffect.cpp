@@ -5,6 +5,7 @@
 
 #include "hs/anatomy/OrganChecks.h"
 #include "hs/clinical/Tissue.h"
+#include "hs/core/TriangleGrid.h"
 
 #include <algorithm>
 #include <cmath>
@@ -296,7 +297,7 @@ void roundPockets(SurfaceMesh& adapted, const SurfaceMesh& original, const Organ
     const double reach = clearance + 1.0;
     std::vector<TriangleGrid> grids;
     for (const Planned& p : plans)
-        grids.emplace_back(p.surface, 2.0);
+        grids.emplace_back(p.surface, 2.0, /*insideTests=*/false);
     auto nearest = [&](const Vec3& x) {
         double d = reach;
         for (const TriangleGrid& g : grids)

@@ -1,11 +1,11 @@
-#include "TriangleGrid.h"
+#include "hs/core/TriangleGrid.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <unordered_map>
 
-namespace hs::meshing::detail {
+namespace hs {
 namespace {
 
 std::uint64_t edgeKey(std::int32_t a, std::int32_t b) {
@@ -16,7 +16,7 @@ std::uint64_t edgeKey(std::int32_t a, std::int32_t b) {
 
 } // namespace
 
-TriangleGrid::TriangleGrid(const SurfaceMesh& mesh, double cellSize) : m_mesh(&mesh) {
+TriangleGrid::TriangleGrid(const SurfaceMesh& mesh, double cellSize, bool insideTests) : m_mesh(&mesh) {
     const Bounds b = bounds(mesh);
     const Vec3 size = b.size();
     if (!(cellSize > 0.0)) {
@@ -69,6 +69,8 @@ TriangleGrid::TriangleGrid(const SurfaceMesh& mesh, double cellSize) : m_mesh(&m
         }
     }
 
+    if (!insideTests)
+        return;
     // Pseudo-normals: face normals, angle-weighted vertex normals, edge normals.
     const std::size_t nf = mesh.triangles.size();
     m_faceNormals.resize(nf);
@@ -108,6 +110,11 @@ double TriangleGrid::boxDistance2(const Vec3& p) const {
         outside2 += d * d;
     }
     return outside2;
+}
+
+double TriangleGrid::distance(const Vec3& p, double cutoff) const {
+    const SurfaceHit hit = closestWithin(p, cutoff * cutoff);
+    return std::sqrt(hit.triangle >= 0 ? hit.closest.distance2 : cutoff * cutoff);
 }
 
 SurfaceHit TriangleGrid::closest(const Vec3& p) const {
@@ -206,4 +213,4 @@ bool TriangleGrid::inside(const Vec3& p) const {
     return insideFromHit(p, closest(p));
 }
 
-} // namespace hs::meshing::detail
+} // namespace hs
