@@ -6,15 +6,6 @@
 #include <unordered_map>
 
 namespace hs {
-namespace {
-
-std::uint64_t edgeKey(std::int32_t a, std::int32_t b) {
-    const auto lo = static_cast<std::uint32_t>(std::min(a, b));
-    const auto hi = static_cast<std::uint32_t>(std::max(a, b));
-    return (static_cast<std::uint64_t>(lo) << 32) | hi;
-}
-
-} // namespace
 
 TriangleGrid::TriangleGrid(const SurfaceMesh& mesh, double cellSize, bool insideTests) : m_mesh(&mesh) {
     const Bounds b = bounds(mesh);

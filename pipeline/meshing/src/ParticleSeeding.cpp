@@ -22,12 +22,6 @@ constexpr double kInnerRadius = 0.6;       ///< inner candidates against surface
 constexpr double kRandomInnerRadius = 0.5; ///< Seeding::Random: inner candidates against everything
 constexpr int kSurfaceCandidatesPerVoxel = 3;
 
-std::uint64_t edgeKey(std::int32_t a, std::int32_t b) {
-    const auto lo = static_cast<std::uint32_t>(std::min(a, b));
-    const auto hi = static_cast<std::uint32_t>(std::max(a, b));
-    return (static_cast<std::uint64_t>(lo) << 32) | hi;
-}
-
 /// Accepted particles hashed by voxel (head/next lists) for the seeding radius checks.
 struct AcceptedIndex {
     const VoxelGrid<std::int32_t>* grid = nullptr;
