@@ -61,14 +61,15 @@ ScopeCheck checkScope(const scene::Scene& sc, double diameterMm) {
         check.warnings.push_back({"scope-passage-unchecked", check.passage.error().detail});
         return check;
     }
+    // The warnings are about the canal (external os to internal os): a cavity narrowed by a pathology is a scene
+    // to train in, and is reported without a warning.
     const auto& p = *check.passage;
-    if (!p.open)
-        check.warnings.push_back(
-            {"scope-passage-closed", "the passage from the external os to the fundus is closed at " +
-                                         where(p.narrowest) + " by " + mm(p.closedDepthMm) + " of tissue"});
-    else if (!p.ballPasses)
-        check.warnings.push_back({"scope-passage-narrow", "the passage is " + mm(p.narrowest.freeWidthMm) +
-                                                              " wide at " + where(p.narrowest) +
+    if (!p.canalOpen)
+        check.warnings.push_back({"scope-passage-closed", "the cervical canal is closed at " + where(p.narrowestCanal) +
+                                                              " by " + mm(p.canalClosedDepthMm) + " of tissue"});
+    else if (!p.canalPasses)
+        check.warnings.push_back({"scope-passage-narrow", "the cervical canal is " + mm(p.narrowestCanal.freeWidthMm) +
+                                                              " wide at " + where(p.narrowestCanal) +
                                                               ", narrower than the " + mm(diameterMm) + " scope"});
     for (const auto& w : p.warnings)
         check.warnings.push_back({"scope-passage-landmarks", w});
@@ -89,14 +90,16 @@ nlohmann::ordered_json scopeJson(const ScopeCheck& check, double diameterMm, dou
     if (!check.passage.ok())
         return j;
     const auto& p = *check.passage;
-    j["open"] = p.open;
-    j["passes"] = p.ballPasses;
-    j["narrowest"] = pointJson(p.narrowest);
+    j["passes"] = p.canalPasses;
+    j["canal"] = {{"open", p.canalOpen}, {"passes", p.canalPasses}, {"narrowest", pointJson(p.narrowestCanal)}};
+    j["toFundus"] = {{"open", p.open},
+                     {"passes", p.ballPasses},
+                     {"narrowest", pointJson(p.narrowest)},
+                     {"routeLengthMm", p.route.empty() ? 0.0 : p.route.back().arcLengthMm}};
     j["straightStretch"] = {{"lengthMm", straightLengthMm},
                             {"passes", p.straightPasses},
                             {"widthMm", p.straightWidthMm},
                             {"tip", pointJson(p.narrowestStraight)}};
-    j["routeLengthMm"] = p.route.empty() ? 0.0 : p.route.back().arcLengthMm;
     j["voxelMm"] = p.voxelSizeMm;
     return j;
 }
@@ -104,9 +107,12 @@ nlohmann::ordered_json scopeJson(const ScopeCheck& check, double diameterMm, dou
 void printScope(const ScopeCheck& check, double diameterMm, double straightLengthMm) {
     if (check.passage.ok()) {
         const auto& p = *check.passage;
-        std::cout << "scope       " << mm(diameterMm) << (p.ballPasses ? " passes" : " does not pass") << ": narrowest "
+        const auto verdict = [](bool passes) { return passes ? "passes" : "does not pass"; };
+        std::cout << "scope       " << mm(diameterMm) << " scope through the canal " << verdict(p.canalPasses)
+                  << ": narrowest " << mm(p.narrowestCanal.freeWidthMm) << " at " << where(p.narrowestCanal) << '\n'
+                  << "scope       to the fundus " << verdict(p.ballPasses) << ": narrowest "
                   << mm(p.narrowest.freeWidthMm) << " at " << where(p.narrowest) << "; route "
-                  << mm(p.route.back().arcLengthMm) << " to the fundus\n"
+                  << mm(p.route.back().arcLengthMm) << '\n'
                   << "scope       straight " << mm(straightLengthMm) << " ahead of the tip: " << mm(p.straightWidthMm)
                   << " free at the least, with the tip at " << where(p.narrowestStraight) << '\n';
     }

@@ -408,6 +408,14 @@ void summarise(ScopePassage& out, const std::vector<double>& clearanceMm, const 
     out.open = clearanceMm[narrowest] > 0.0;
     out.closedDepthMm = out.open ? 0.0 : -clearanceMm[narrowest];
     out.ballPasses = out.open && out.narrowest.freeWidthMm >= params.scopeDiameterMm;
+    std::size_t canal = 0;
+    for (std::size_t i = 1; i < clearanceMm.size() && out.route[i].part != PassagePart::Cavity; ++i)
+        if (clearanceMm[i] < clearanceMm[canal])
+            canal = i;
+    out.narrowestCanal = out.route[canal];
+    out.canalOpen = clearanceMm[canal] > 0.0;
+    out.canalClosedDepthMm = out.canalOpen ? 0.0 : -clearanceMm[canal];
+    out.canalPasses = out.canalOpen && out.narrowestCanal.freeWidthMm >= params.scopeDiameterMm;
 
     std::size_t tightest = 0;
     double tightestClearance = kInf;

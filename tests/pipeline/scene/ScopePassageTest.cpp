@@ -124,6 +124,9 @@ TEST(ScopePassage, ReportsAPinchedNeckAsTheNarrowestPointAtItsHeight) {
     EXPECT_NEAR(passage.narrowest.freeWidthMm, 2.0, 0.1);
     EXPECT_NEAR(passage.narrowest.positionMm.z, 12.25, passage.voxelSizeMm);
     EXPECT_EQ(passage.narrowest.part, PassagePart::Canal);
+    EXPECT_EQ(passage.narrowestCanal.positionMm, passage.narrowest.positionMm);
+    EXPECT_TRUE(passage.canalOpen);
+    EXPECT_FALSE(passage.canalPasses);
     // A 1.8 mm scope goes through the neck.
     EXPECT_TRUE(check(mesh, 1.8).ballPasses);
 }
@@ -137,6 +140,8 @@ TEST(ScopePassage, ReportsAClosedCanalWhereTissueClosesIt) {
     EXPECT_NEAR(passage.narrowest.positionMm.z, 8.5, passage.voxelSizeMm);
     EXPECT_GT(passage.closedDepthMm, 0.0);
     EXPECT_LT(passage.closedDepthMm, 1.0);
+    EXPECT_FALSE(passage.canalOpen);
+    EXPECT_EQ(passage.canalClosedDepthMm, passage.closedDepthMm);
 }
 
 TEST(ScopePassage, ReportsASolidBodyAsClosed) {
@@ -177,6 +182,28 @@ TEST(ScopePassage, FailsTheStraightStretchAtABendTheBallGetsThrough) {
     auto ball = checkScopePassage(mesh, {Vec3(-8, 0, 0), Vec3(-8, 0, 12), Vec3(8, 0, 18)}, params);
     ASSERT_TRUE(ball.ok());
     EXPECT_TRUE(ball->straightPasses);
+}
+
+TEST(ScopePassage, TellsANarrowCavityFromANarrowCanal) {
+    // A 5 mm canal into a chamber that a 2 mm slot at z = 24 narrows (a pathology in the cavity, say).
+    const auto mesh = latticeBody([](const Vec3& p) {
+        if (p.x * p.x + p.y * p.y > kOuterRadiusMm * kOuterRadiusMm)
+            return false;
+        if (p.z < kCanalTopMm + 1.0 && std::fabs(p.x) < 2.5 && std::fabs(p.y) < 2.5)
+            return false;
+        if (p.z > 24.0 && p.z < 25.0 && (std::fabs(p.x) > 1.0 || std::fabs(p.y) > 1.0))
+            return true;
+        return distance(p, Vec3(0, 0, kChamberCentreMm)) > kChamberRadiusMm;
+    });
+    ScopePassageParams params;
+    params.fundusReachMm = 1.0; // the fundus beyond the slot
+    auto r = checkScopePassage(mesh, tubeLandmarks(), params);
+    ASSERT_TRUE(r.ok()) << r.error().message();
+    EXPECT_FALSE(r->ballPasses);
+    EXPECT_NEAR(r->narrowest.freeWidthMm, 2.0, 0.1);
+    EXPECT_EQ(r->narrowest.part, PassagePart::Cavity);
+    EXPECT_TRUE(r->canalPasses);
+    EXPECT_GT(r->narrowestCanal.freeWidthMm, 4.0); // the canal's square meeting the chamber's sphere
 }
 
 TEST(ScopePassage, GivesTheSameReportEveryRun) {

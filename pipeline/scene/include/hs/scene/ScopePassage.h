@@ -67,7 +67,13 @@ struct ScopePassage {
     bool ballPasses = false;
     /// Also the straight stretch of `straightLengthMm` ahead of the tip fits everywhere along the route.
     bool straightPasses = false;
-    PassagePoint narrowest;          ///< the narrowest point of the route (first one from the start on a tie)
+    PassagePoint narrowest; ///< the narrowest point of the route (first one from the start on a tie)
+    /// The same for the route up to the cavity (outside, external os, canal, internal os): the canal alone, whatever
+    /// pathologies narrow the cavity. canalOpen and canalPasses are open and ballPasses for this part.
+    PassagePoint narrowestCanal;
+    bool canalOpen = false;
+    bool canalPasses = false;
+    double canalClosedDepthMm = 0.0; ///< mm, closedDepthMm of this part
     PassagePoint narrowestStraight;  ///< the tip position whose straight stretch ahead has the least room
     double straightWidthMm = 0.0;    ///< mm, free width along that stretch (twice its least clearance)
     std::vector<PassagePoint> route; ///< voxel centres from outside the external os to the fundus
