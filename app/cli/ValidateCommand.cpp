@@ -36,6 +36,13 @@ std::string mm(double value) {
     return out.str();
 }
 
+std::string at(const Vec3& p) {
+    std::ostringstream out;
+    out.precision(1);
+    out << std::fixed << "(" << p.x << ", " << p.y << ", " << p.z << " mm)";
+    return out.str();
+}
+
 std::string where(const scene::PassagePoint& p) {
     std::ostringstream out;
     out.precision(1);
@@ -66,11 +73,15 @@ ScopeCheck checkScope(const scene::Scene& sc, double diameterMm) {
     const auto& p = *check.passage;
     if (!p.canalOpen)
         check.warnings.push_back({"scope-passage-closed", "the cervical canal is closed at " + where(p.narrowestCanal) +
-                                                              " by " + mm(p.canalClosedDepthMm) + " of tissue"});
+                                                              " by about " + mm(p.canalClosedGapMm) + " of tissue"});
     else if (!p.canalPasses)
         check.warnings.push_back({"scope-passage-narrow", "the cervical canal is " + mm(p.narrowestCanal.freeWidthMm) +
                                                               " wide at " + where(p.narrowestCanal) +
                                                               ", narrower than the " + mm(diameterMm) + " scope"});
+    if (landmarks->ostiaFound < 2)
+        check.warnings.push_back({"scope-passage-landmarks", "one tubal ostium found (a pathology may cover the "
+                                                             "other); the route ends at its cornu " +
+                                                                 at(landmarks->fundusMm)});
     for (const auto& w : p.warnings)
         check.warnings.push_back({"scope-passage-landmarks", w});
     return check;
@@ -91,9 +102,13 @@ nlohmann::ordered_json scopeJson(const ScopeCheck& check, double diameterMm, dou
         return j;
     const auto& p = *check.passage;
     j["passes"] = p.canalPasses;
-    j["canal"] = {{"open", p.canalOpen}, {"passes", p.canalPasses}, {"narrowest", pointJson(p.narrowestCanal)}};
+    j["canal"] = {{"open", p.canalOpen},
+                  {"passes", p.canalPasses},
+                  {"closedGapMm", p.canalClosedGapMm},
+                  {"narrowest", pointJson(p.narrowestCanal)}};
     j["toFundus"] = {{"open", p.open},
                      {"passes", p.ballPasses},
+                     {"closedGapMm", p.closedGapMm},
                      {"narrowest", pointJson(p.narrowest)},
                      {"routeLengthMm", p.route.empty() ? 0.0 : p.route.back().arcLengthMm}};
     j["straightStretch"] = {{"lengthMm", straightLengthMm},
@@ -101,6 +116,10 @@ nlohmann::ordered_json scopeJson(const ScopeCheck& check, double diameterMm, dou
                             {"widthMm", p.straightWidthMm},
                             {"tip", pointJson(p.narrowestStraight)}};
     j["voxelMm"] = p.voxelSizeMm;
+    const auto vec = [](const Vec3& v) { return nlohmann::ordered_json::array({v.x, v.y, v.z}); };
+    j["landmarksMm"] = {{"externalOs", vec(p.landmarks.externalOsMm)},
+                        {"internalOs", vec(p.landmarks.internalOsMm)},
+                        {"fundus", vec(p.landmarks.fundusMm)}};
     return j;
 }
 
@@ -114,7 +133,9 @@ void printScope(const ScopeCheck& check, double diameterMm, double straightLengt
                   << mm(p.narrowest.freeWidthMm) << " at " << where(p.narrowest) << "; route "
                   << mm(p.route.back().arcLengthMm) << '\n'
                   << "scope       straight " << mm(straightLengthMm) << " ahead of the tip: " << mm(p.straightWidthMm)
-                  << " free at the least, with the tip at " << where(p.narrowestStraight) << '\n';
+                  << " free at the least, with the tip at " << where(p.narrowestStraight) << '\n'
+                  << "scope       landmarks: external os " << at(p.landmarks.externalOsMm) << ", internal os "
+                  << at(p.landmarks.internalOsMm) << ", fundus " << at(p.landmarks.fundusMm) << '\n';
     }
     for (const auto& w : check.warnings)
         std::cout << "warning     " << w.name << ": " << w.detail << '\n';

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -329,8 +330,10 @@ TEST(Cli, GenerateWritesAValidPackageForTheDefaultCase) {
     EXPECT_FALSE(wj["scopePassage"]["passes"].get<bool>());
     EXPECT_GT(wj["scopePassage"]["canal"]["narrowest"]["widthMm"].get<double>(), 0.0);
     EXPECT_LT(wj["scopePassage"]["canal"]["narrowest"]["widthMm"].get<double>(), 9.0);
-    ASSERT_EQ(wj["warnings"].size(), 1u);
-    EXPECT_EQ(wj["warnings"][0]["name"], "scope-passage-narrow");
+    std::vector<std::string> names;
+    for (const auto& w : wj["warnings"])
+        names.push_back(w["name"].get<std::string>());
+    EXPECT_NE(std::find(names.begin(), names.end(), "scope-passage-narrow"), names.end()) << wide.out;
     EXPECT_EQ(cli("validate --scope-diameter 11 " + quote(scene)).exitCode, 2);
     auto tets = hs::io::readTetMesh(scene + "/tets.vtu");
     ASSERT_TRUE(tets.ok()) << tets.error().message();

@@ -103,13 +103,13 @@ void distanceTransform1d(const std::vector<double>& f, std::vector<double>& d, s
     }
 }
 
-/// Squared distance, in voxels, from every voxel centre to the nearest centre where tissue == target.
-Result<std::vector<double>> squaredDistanceTo(const VoxelGrid<std::uint8_t>& tissue, std::uint8_t target,
-                                              Progress& progress) {
-    std::vector<double> dist2(tissue.size());
+} // namespace
+
+Result<std::vector<double>> squaredVoxelDistance(const Index3& n, const std::vector<std::uint8_t>& mask,
+                                                 std::uint8_t target, Progress& progress) {
+    std::vector<double> dist2(mask.size());
     for (std::size_t i = 0; i < dist2.size(); ++i)
-        dist2[i] = tissue[i] == target ? 0.0 : kFar;
-    const Index3& n = tissue.dims();
+        dist2[i] = mask[i] == target ? 0.0 : kFar;
     const auto longest = static_cast<std::size_t>(std::max({n[0], n[1], n[2]}));
     std::vector<double> f(longest), d(longest), z(longest + 1);
     std::vector<std::int64_t> v(longest);
@@ -133,8 +133,6 @@ Result<std::vector<double>> squaredDistanceTo(const VoxelGrid<std::uint8_t>& tis
     }
     return dist2;
 }
-
-} // namespace
 
 Result<ClearanceGrid> buildClearanceGrid(const TetMesh& tets, const Bounds& box, double voxelMm, std::int64_t maxVoxels,
                                          Progress& progress) {
@@ -160,11 +158,11 @@ Result<ClearanceGrid> buildClearanceGrid(const TetMesh& tets, const Bounds& box,
         return fail(ErrorCode::InvalidInput, "scope passage: no voxel centre of " + formatNumber(voxelMm) +
                                                  " mm lies in a tet; the mesh is empty or thinner than a voxel");
 
-    auto toTissue = squaredDistanceTo(*tissue, 1, progress);
+    auto toTissue = squaredVoxelDistance(dims, tissue->data(), 1, progress);
     if (!toTissue.ok())
         return toTissue.failure();
     progress.report("scope.distance", 0.75);
-    auto toFree = squaredDistanceTo(*tissue, 0, progress);
+    auto toFree = squaredVoxelDistance(dims, tissue->data(), 0, progress);
     if (!toFree.ok())
         return toFree.failure();
     auto clearance = VoxelGrid<float>::create(box.min, voxelMm, dims, 0.0f);

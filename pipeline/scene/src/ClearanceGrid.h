@@ -8,6 +8,7 @@
 #include "hs/core/VoxelGrid.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace hs::scene::detail {
 
@@ -18,6 +19,12 @@ struct ClearanceGrid {
     /// voxel of the true distance.
     VoxelGrid<float> clearanceMm;
 };
+
+/// Squared distance, in voxels, from every voxel centre of a grid of `dims` to the nearest centre where
+/// mask == target (infinite when there is none): exact, by Felzenszwalb and Huttenlocher's lower envelope of
+/// parabolas along each axis in turn. Cancelled on request.
+Result<std::vector<double>> squaredVoxelDistance(const Index3& dims, const std::vector<std::uint8_t>& mask,
+                                                 std::uint8_t target, Progress& progress);
 
 /// Rasterizes `tets` onto a grid of `voxelMm` over `box` (voxel centres tested against every tet whose box holds
 /// them), then the two distance transforms. Expects a valid mesh; fails with InvalidInput when no voxel centre lies

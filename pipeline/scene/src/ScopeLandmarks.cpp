@@ -94,9 +94,14 @@ std::vector<Vec3> faceVertices(const SurfaceMesh& surface, const std::vector<std
     return points;
 }
 
+/// Two halves of the ostium faces this close are one ostium: an ostium spans a few triangles, a millimetre or two,
+/// while the two lie 25-40 mm apart across the cavity (UTERUS.md, Chen et al.).
+constexpr double kMinOstiaDistanceMm = 5.0;
+
 /// Midpoint of the two ostia: the ostium faces split by the sign of their offset along their principal direction
-/// (one ostium left, one right); the mean of all of them when they do not spread.
-Vec3 ostiaMidpoint(const FacePoints& ostia) {
+/// (one ostium left, one right). When the two halves lie closer than kMinOstiaDistanceMm they are one ostium, and
+/// its centre is returned with count 1.
+Vec3 ostiaMidpoint(const FacePoints& ostia, int& count) {
     const Vec3 mean = weightedMean(ostia);
     const Vec3 across = principalDirection(ostia, mean);
     FacePoints sides[2];
@@ -105,9 +110,14 @@ Vec3 ostiaMidpoint(const FacePoints& ostia) {
         sides[side].centroids.push_back(ostia.centroids[i]);
         sides[side].weights.push_back(ostia.weights[i]);
     }
+    count = 1;
     if (sides[0].centroids.empty() || sides[1].centroids.empty())
         return mean;
-    return (weightedMean(sides[0]) + weightedMean(sides[1])) * 0.5;
+    const Vec3 a = weightedMean(sides[0]), b = weightedMean(sides[1]);
+    if (distance(a, b) < kMinOstiaDistanceMm)
+        return mean;
+    count = 2;
+    return (a + b) * 0.5;
 }
 
 } // namespace
@@ -137,10 +147,11 @@ Result<ScopeLandmarks> findScopeLandmarks(const SurfaceMesh& surface, const std:
     const double band = 0.05 * (hi - lo);
     Vec3 a = endCentre(vertices, mean, axis, lo, band);
     Vec3 b = endCentre(vertices, mean, axis, hi, band);
-    const Vec3 fundus = ostiaMidpoint(*ostia);
+    int ostiaFound = 0;
+    const Vec3 fundus = ostiaMidpoint(*ostia, ostiaFound);
     if (distance(a, fundus) < distance(b, fundus))
         std::swap(a, b);
-    return ScopeLandmarks{a, b, fundus};
+    return ScopeLandmarks{a, b, fundus, ostiaFound};
 }
 
 Result<ScopeLandmarks> findScopeLandmarks(const Scene& scene) {

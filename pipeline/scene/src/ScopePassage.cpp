@@ -11,6 +11,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <queue>
 #include <utility>
 
@@ -23,6 +24,9 @@ using detail::formatNumber;
 
 /// Half-width of each os zone along the canal axis, mm: an os is a short funnel, not a plane.
 constexpr double kOsBandMm = 2.0;
+/// Depth of the organ's outer tissue that the route may not cross, mm: a closure thinner than twice this is found
+/// where it is. The organ's walls are thicker (the generator keeps 6 mm, the organ checks 5 mm).
+constexpr double kSkinMm = 3.0;
 constexpr std::uint8_t kNoParent = 255;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -109,11 +113,52 @@ void forEachNeighbour(const VoxelGrid<float>& grid, const std::array<Step, 26>& 
     }
 }
 
+/// Where the route may not go: the free space outside the organ (free voxels connected, by 26 neighbours, to the
+/// grid's border without passing within `radiusMm` of the external os) and the tissue within kSkinMm of it.
+/// Without this a closed canal would let the widest route go round the organ, or creep along just under its
+/// serosa, and enter the cavity through its thinnest wall instead of crossing the closure.
+Result<std::vector<std::uint8_t>> blockedVoxels(const ClearanceGrid& grid, const Vec3& externalOs, double radiusMm,
+                                                Progress& progress) {
+    const auto& g = grid.clearanceMm;
+    std::vector<std::uint8_t> exterior(g.size(), 0);
+    const auto open = [&](std::size_t v) {
+        return !exterior[v] && !grid.tissue[v] && distance(g.center(g.unlinear(v)), externalOs) > radiusMm;
+    };
+    std::vector<std::int64_t> queue;
+    const Index3& n = g.dims();
+    for (std::size_t v = 0; v < g.size(); ++v) {
+        const Index3 ijk = g.unlinear(v);
+        const bool border =
+            ijk[0] == 0 || ijk[1] == 0 || ijk[2] == 0 || ijk[0] == n[0] - 1 || ijk[1] == n[1] - 1 || ijk[2] == n[2] - 1;
+        if (border && open(v)) {
+            exterior[v] = 1;
+            queue.push_back(std::int64_t(v));
+        }
+    }
+    const auto steps = neighbourSteps();
+    for (std::size_t head = 0; head < queue.size(); ++head)
+        forEachNeighbour(g, steps, queue[head], [&](std::int64_t m, std::size_t) {
+            if (open(std::size_t(m))) {
+                exterior[std::size_t(m)] = 1;
+                queue.push_back(m);
+            }
+        });
+    auto toExterior = detail::squaredVoxelDistance(n, exterior, 1, progress);
+    if (!toExterior.ok())
+        return toExterior.failure();
+    const double skinVoxels2 = (kSkinMm / g.spacing()) * (kSkinMm / g.spacing());
+    for (std::size_t v = 0; v < g.size(); ++v)
+        if (grid.tissue[v] && (*toExterior)[v] <= skinVoxels2)
+            exterior[v] = 1;
+    return exterior;
+}
+
 /// The largest clearance c such that some voxel path from a start to a target keeps clearance >= c everywhere: the
 /// maximin (bottleneck) path problem, solved by Dijkstra's algorithm with min() in place of + (Pollack, "The
 /// maximum capacity through a network", Operations Research 8, 1960).
-Result<float> widestBottleneck(const VoxelGrid<float>& clearance, const std::vector<std::int64_t>& starts,
-                               const std::vector<std::int64_t>& targets, Progress& progress) {
+Result<float> widestBottleneck(const VoxelGrid<float>& clearance, const std::vector<std::uint8_t>& exterior,
+                               const std::vector<std::int64_t>& starts, const std::vector<std::int64_t>& targets,
+                               Progress& progress) {
     const auto steps = neighbourSteps();
     std::vector<float> best(clearance.size(), -std::numeric_limits<float>::infinity());
     std::priority_queue<std::pair<float, std::int64_t>> heap;
@@ -132,6 +177,8 @@ Result<float> widestBottleneck(const VoxelGrid<float>& clearance, const std::vec
         if ((++pops & 65535) == 0 && progress.cancelled())
             return fail(ErrorCode::Cancelled, "scope passage cancelled while searching the widest route");
         forEachNeighbour(clearance, steps, v, [&](std::int64_t n, std::size_t) {
+            if (exterior[std::size_t(n)])
+                return;
             const float through = std::min(value, clearance[std::size_t(n)]);
             if (through > best[std::size_t(n)]) {
                 best[std::size_t(n)] = through;
@@ -148,6 +195,7 @@ Result<float> widestBottleneck(const VoxelGrid<float>& clearance, const std::vec
 /// inscribed-sphere radius (Antiga et al., "Robust and objective decomposition and mapping of bifurcating vessels",
 /// IEEE TMI 27(6), 2008). A merely shortest route would hug the walls, and every point of it would look narrow.
 Result<std::vector<std::int64_t>> centredWideRoute(const VoxelGrid<float>& clearance,
+                                                   const std::vector<std::uint8_t>& exterior,
                                                    const std::vector<std::int64_t>& starts,
                                                    const std::vector<std::int64_t>& targets, float bottleneck,
                                                    Progress& progress) {
@@ -182,7 +230,7 @@ Result<std::vector<std::int64_t>> centredWideRoute(const VoxelGrid<float>& clear
         if ((++pops & 65535) == 0 && progress.cancelled())
             return fail(ErrorCode::Cancelled, "scope passage cancelled while tracing the route");
         forEachNeighbour(clearance, steps, v, [&](std::int64_t n, std::size_t k) {
-            if (clearance[std::size_t(n)] < bottleneck)
+            if (exterior[std::size_t(n)] || clearance[std::size_t(n)] < bottleneck)
                 return;
             const double room = double(clearance[std::size_t(n)]) - double(bottleneck) + h;
             const double through = d + steps[k].lengthVoxels * h / room;
@@ -194,6 +242,62 @@ Result<std::vector<std::int64_t>> centredWideRoute(const VoxelGrid<float>& clear
         });
     }
     return fail(ErrorCode::Internal, "scope passage: the widest route's bottleneck has no path");
+}
+
+/// Free, unblocked voxels reachable from the free ones of `seeds` (26 neighbours), as a mask.
+std::vector<std::uint8_t> reachableFree(const ClearanceGrid& grid, const std::vector<std::uint8_t>& blocked,
+                                        const std::vector<std::int64_t>& seeds) {
+    const auto& g = grid.clearanceMm;
+    std::vector<std::uint8_t> reached(g.size(), 0);
+    const auto open = [&](std::size_t v) { return !reached[v] && !grid.tissue[v] && !blocked[v]; };
+    std::vector<std::int64_t> queue;
+    for (std::int64_t s : seeds)
+        if (open(std::size_t(s))) {
+            reached[std::size_t(s)] = 1;
+            queue.push_back(s);
+        }
+    const auto steps = neighbourSteps();
+    for (std::size_t head = 0; head < queue.size(); ++head)
+        forEachNeighbour(g, steps, queue[head], [&](std::int64_t m, std::size_t) {
+            if (open(std::size_t(m))) {
+                reached[std::size_t(m)] = 1;
+                queue.push_back(m);
+            }
+        });
+    return reached;
+}
+
+/// Where a closed passage ends: the point of the free space reachable from the start that comes nearest to the free
+/// space around the fundus (or to the fundus voxels, when they have none), and the gap between the two, mm: the
+/// thinnest closure. Measuring the closure by its thickness rather than by how deep a route through it runs keeps
+/// a thick closure (a myoma filling the cavity) from being found along a thin outer wall instead.
+struct Closure {
+    std::int64_t deadEnd = -1; ///< -1: no free voxel at the start
+    double gapMm = 0.0;
+};
+
+Result<Closure> closureOf(const ClearanceGrid& grid, const std::vector<std::uint8_t>& blocked,
+                          const std::vector<std::int64_t>& starts, const std::vector<std::int64_t>& targets,
+                          Progress& progress) {
+    const auto fromStart = reachableFree(grid, blocked, starts);
+    auto nearFundus = reachableFree(grid, blocked, targets);
+    if (std::none_of(nearFundus.begin(), nearFundus.end(), [](std::uint8_t r) { return r != 0; }))
+        for (std::int64_t t : targets)
+            nearFundus[std::size_t(t)] = 1;
+    auto toFundus = detail::squaredVoxelDistance(grid.clearanceMm.dims(), nearFundus, 1, progress);
+    if (!toFundus.ok())
+        return toFundus.failure();
+    Closure closure;
+    double best = kInf;
+    for (std::size_t v = 0; v < fromStart.size(); ++v)
+        if (fromStart[v] && (*toFundus)[v] < best) {
+            best = (*toFundus)[v];
+            closure.deadEnd = std::int64_t(v);
+        }
+    // Centre to centre, less the voxel the two free points stand in: the tissue between them.
+    const double h = grid.clearanceMm.spacing();
+    closure.gapMm = closure.deadEnd < 0 ? 0.0 : std::max(0.0, (std::sqrt(best) - 1.0) * h);
+    return closure;
 }
 
 /// The tissue boundary as triangles with their boxes, for exact distances along the route.
@@ -398,23 +502,33 @@ double straightClearance(const std::vector<PassagePoint>& route, const std::vect
     return least;
 }
 
-void summarise(ScopePassage& out, const std::vector<double>& clearanceMm, const ScopePassageParams& params,
-               const ClearanceGrid& grid, const BoundaryTriangles& boundary) {
+/// Narrowest points and verdicts. `closure`: the passage is closed at the route's last point (its dead end).
+void summarise(ScopePassage& out, std::vector<double> clearanceMm, const ScopePassageParams& params,
+               const ClearanceGrid& grid, const BoundaryTriangles& boundary, const std::optional<Closure>& closure) {
+    if (closure) {
+        clearanceMm.back() = 0.0;
+        out.route.back().freeWidthMm = 0.0;
+    }
     std::size_t narrowest = 0;
     for (std::size_t i = 1; i < clearanceMm.size(); ++i)
         if (clearanceMm[i] < clearanceMm[narrowest])
             narrowest = i;
+    if (closure)
+        narrowest = clearanceMm.size() - 1;
     out.narrowest = out.route[narrowest];
-    out.open = clearanceMm[narrowest] > 0.0;
-    out.closedDepthMm = out.open ? 0.0 : -clearanceMm[narrowest];
+    out.open = !closure;
+    out.closedGapMm = closure ? closure->gapMm : 0.0;
     out.ballPasses = out.open && out.narrowest.freeWidthMm >= params.scopeDiameterMm;
     std::size_t canal = 0;
     for (std::size_t i = 1; i < clearanceMm.size() && out.route[i].part != PassagePart::Cavity; ++i)
         if (clearanceMm[i] < clearanceMm[canal])
             canal = i;
+    const bool closedInCanal = closure && out.route.back().part != PassagePart::Cavity;
+    if (closedInCanal)
+        canal = clearanceMm.size() - 1;
     out.narrowestCanal = out.route[canal];
-    out.canalOpen = clearanceMm[canal] > 0.0;
-    out.canalClosedDepthMm = out.canalOpen ? 0.0 : -clearanceMm[canal];
+    out.canalOpen = !closedInCanal;
+    out.canalClosedGapMm = closedInCanal ? closure->gapMm : 0.0;
     out.canalPasses = out.canalOpen && out.narrowestCanal.freeWidthMm >= params.scopeDiameterMm;
 
     std::size_t tightest = 0;
@@ -479,20 +593,27 @@ Result<ScopePassage> checkScopePassage(const TetMesh& tets, const ScopeLandmarks
 
     ScopePassage out;
     out.scopeDiameterMm = params.scopeDiameterMm;
+    out.landmarks = landmarks;
     out.voxelSizeMm = h;
     out.gridDims = clearance.dims();
     const auto starts = voxelsNear(clearance, start, startRadiusMm);
+    auto blocked = blockedVoxels(*grid, landmarks.externalOsMm, params.startOffsetMm + startRadiusMm + h, progress);
+    if (!blocked.ok())
+        return blocked.failure();
+    const std::vector<std::uint8_t>& exterior = *blocked;
     // The route ends in the cavity: fundus voxels beyond the internal os, not the top of the canal.
     auto targets = voxelsNear(clearance, landmarks.fundusMm, std::max(params.fundusReachMm, h));
     targets.erase(std::remove_if(targets.begin(), targets.end(),
                                  [&](std::int64_t v) {
-                                     return partOf(clearance.center(clearance.unlinear(std::size_t(v))), landmarks) !=
-                                            PassagePart::Cavity;
+                                     return exterior[std::size_t(v)] ||
+                                            partOf(clearance.center(clearance.unlinear(std::size_t(v))), landmarks) !=
+                                                PassagePart::Cavity;
                                  }),
                   targets.end());
     if (targets.empty())
-        return fail(ErrorCode::InvalidInput, "scope passage: no point within " + formatNumber(params.fundusReachMm) +
-                                                 " mm of the fundus landmark lies beyond the internal os");
+        return fail(ErrorCode::InvalidInput,
+                    "scope passage: no point within " + formatNumber(params.fundusReachMm) +
+                        " mm of the fundus landmark lies beyond the internal os and inside the organ");
     if (std::all_of(starts.begin(), starts.end(), [&](std::int64_t v) { return grid->tissue[std::size_t(v)]; }))
         out.warnings.push_back("the start outside the external os lies in tissue; check the landmarks");
     if (std::all_of(targets.begin(), targets.end(), [&](std::int64_t v) { return grid->tissue[std::size_t(v)]; }))
@@ -500,11 +621,24 @@ Result<ScopePassage> checkScopePassage(const TetMesh& tets, const ScopeLandmarks
                                " mm of the fundus point; a pathology may fill the fundus");
 
     progress.report("scope.route", 0.6);
-    auto bottleneck = widestBottleneck(clearance, starts, targets, progress);
+    auto bottleneck = widestBottleneck(clearance, exterior, starts, targets, progress);
     if (!bottleneck.ok())
         return bottleneck.failure();
+    // No free route: the route goes as far as the free space from the start allows, to where it ends.
+    std::optional<Closure> closure;
+    std::vector<std::int64_t> routeEnds = targets;
+    if (!(*bottleneck > 0.0f)) {
+        auto c = closureOf(*grid, exterior, starts, targets, progress);
+        if (!c.ok())
+            return c.failure();
+        closure = *c;
+        routeEnds = {closure->deadEnd >= 0 ? closure->deadEnd : starts.front()};
+        bottleneck = widestBottleneck(clearance, exterior, starts, routeEnds, progress);
+        if (!bottleneck.ok())
+            return bottleneck.failure();
+    }
     progress.report("scope.route", 0.75);
-    auto voxels = centredWideRoute(clearance, starts, targets, *bottleneck, progress);
+    auto voxels = centredWideRoute(clearance, exterior, starts, routeEnds, *bottleneck, progress);
     if (!voxels.ok())
         return voxels.failure();
     progress.report("scope.route", 0.9);
@@ -515,7 +649,7 @@ Result<ScopePassage> checkScopePassage(const TetMesh& tets, const ScopeLandmarks
     if (!route.ok())
         return route.failure();
     out.route = std::move(route).value();
-    summarise(out, clearanceMm, params, *grid, boundary);
+    summarise(out, std::move(clearanceMm), params, *grid, boundary, closure);
     progress.report("scope.route", 1.0);
     return out;
 }

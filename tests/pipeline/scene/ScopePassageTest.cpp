@@ -137,11 +137,12 @@ TEST(ScopePassage, ReportsAClosedCanalWhereTissueClosesIt) {
     EXPECT_FALSE(passage.open);
     EXPECT_FALSE(passage.ballPasses);
     EXPECT_EQ(passage.narrowest.freeWidthMm, 0.0);
-    EXPECT_NEAR(passage.narrowest.positionMm.z, 8.5, passage.voxelSizeMm);
-    EXPECT_GT(passage.closedDepthMm, 0.0);
-    EXPECT_LT(passage.closedDepthMm, 1.0);
+    // The route ends below the 1 mm closure (its lower face at z = 8).
+    EXPECT_NEAR(passage.narrowest.positionMm.z, 8.0, passage.voxelSizeMm);
+    EXPECT_EQ(passage.route.back().positionMm, passage.narrowest.positionMm);
+    EXPECT_NEAR(passage.closedGapMm, 1.0, passage.voxelSizeMm);
     EXPECT_FALSE(passage.canalOpen);
-    EXPECT_EQ(passage.canalClosedDepthMm, passage.closedDepthMm);
+    EXPECT_EQ(passage.canalClosedGapMm, passage.closedGapMm);
 }
 
 TEST(ScopePassage, ReportsASolidBodyAsClosed) {
@@ -320,9 +321,31 @@ TEST(ScopeLandmarks, FindsBothOsAndTheFundusFromLabelledFaces) {
     EXPECT_NEAR(distance(l->internalOsMm, Vec3(0, 0, kCanalTopMm)), 0.0, 1.5);
     EXPECT_NEAR(l->fundusMm.x, 0.0, 0.5);
     EXPECT_GT(l->fundusMm.z, kChamberCentreMm);
+    EXPECT_EQ(l->ostiaFound, 2);
     auto passage = checkScopePassage(body, *l);
     ASSERT_TRUE(passage.ok()) << passage.error().message();
     EXPECT_TRUE(passage->ballPasses);
+}
+
+TEST(ScopeLandmarks, TakesASingleOstiumForTheFundusAndSaysSo) {
+    const auto body = tubeWithChamber([](double) { return 2.5; });
+    const SurfaceMesh surface = extractBoundary(body);
+    std::vector<std::int32_t> canal, ostium;
+    for (std::size_t f = 0; f < surface.faceCount(); ++f) {
+        const auto& t = surface.triangles[f];
+        const Vec3 c = (surface.points[std::size_t(t[0])] + surface.points[std::size_t(t[1])] +
+                        surface.points[std::size_t(t[2])]) /
+                       3.0;
+        if (std::fabs(c.x) <= 2.5 && std::fabs(c.y) <= 2.5 && c.z > 0.0 && c.z < kCanalTopMm)
+            canal.push_back(std::int32_t(f));
+        if (distance(c, Vec3(3.0, 0, kChamberCentreMm + 2.0)) < 1.5)
+            ostium.push_back(std::int32_t(f));
+    }
+    ASSERT_FALSE(ostium.empty());
+    auto l = findScopeLandmarks(surface, canal, ostium);
+    ASSERT_TRUE(l.ok()) << l.error().message();
+    EXPECT_EQ(l->ostiaFound, 1);
+    EXPECT_LT(distance(l->fundusMm, Vec3(3.0, 0, kChamberCentreMm + 2.0)), 1.5);
 }
 
 TEST(ScopeLandmarks, RefusesMissingOrOutOfRangeFaces) {

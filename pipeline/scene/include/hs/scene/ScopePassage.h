@@ -26,6 +26,9 @@ struct ScopeLandmarks {
     Vec3 externalOsMm; ///< centre of the external os (the canal's outer opening)
     Vec3 internalOsMm; ///< centre of the internal os (where the canal opens into the cavity)
     Vec3 fundusMm;     ///< a point of the cavity near its fundus (between the tubal ostia)
+    /// findScopeLandmarks: 2, or 1 when the ostium faces form a single cluster (a pathology covers the other
+    /// ostium), and the fundus point is then that ostium's cornu. Not read by checkScopePassage.
+    int ostiaFound = 2;
 };
 
 struct ScopePassageParams {
@@ -59,33 +62,39 @@ struct PassagePoint {
 
 struct ScopePassage {
     double scopeDiameterMm = 0.0;
-    /// True when the route is open everywhere (no point of it lies in tissue). False: the canal is closed at
-    /// `narrowest`, and `closedDepthMm` says how much tissue the best route has to cross there.
+    ScopeLandmarks landmarks; ///< as given
+    /// True when a free route reaches the fundus. False: the route ends where the free space reachable from the
+    /// start comes nearest to the free space around the fundus; `narrowest` is that dead end (width 0) and
+    /// `closedGapMm` the tissue between the two, about the thickness of the closure.
     bool open = false;
-    double closedDepthMm = 0.0; ///< mm, largest depth of the route inside tissue (0 when open)
+    double closedGapMm = 0.0; ///< mm (0 when open)
     /// A ball of the scope's diameter can be swept along the route: the narrowest free width >= the diameter.
     bool ballPasses = false;
     /// Also the straight stretch of `straightLengthMm` ahead of the tip fits everywhere along the route.
     bool straightPasses = false;
     PassagePoint narrowest; ///< the narrowest point of the route (first one from the start on a tie)
     /// The same for the route up to the cavity (outside, external os, canal, internal os): the canal alone, whatever
-    /// pathologies narrow the cavity. canalOpen and canalPasses are open and ballPasses for this part.
+    /// pathologies narrow the cavity. canalOpen and canalPasses are open and ballPasses for this part; the canal is
+    /// closed when the route's dead end lies before the cavity.
     PassagePoint narrowestCanal;
     bool canalOpen = false;
     bool canalPasses = false;
-    double canalClosedDepthMm = 0.0; ///< mm, closedDepthMm of this part
-    PassagePoint narrowestStraight;  ///< the tip position whose straight stretch ahead has the least room
-    double straightWidthMm = 0.0;    ///< mm, free width along that stretch (twice its least clearance)
-    std::vector<PassagePoint> route; ///< voxel centres from outside the external os to the fundus
+    double canalClosedGapMm = 0.0;  ///< mm, closedGapMm when the dead end is before the cavity
+    PassagePoint narrowestStraight; ///< the tip position whose straight stretch ahead has the least room
+    double straightWidthMm = 0.0;   ///< mm, free width along that stretch (twice its least clearance)
+    /// From outside the external os to the fundus: voxel centres, each moved within a voxel across the route to
+    /// where it has the most room.
+    std::vector<PassagePoint> route;
     double voxelSizeMm = 0.0;
     Index3 gridDims{0, 0, 0};
-    std::vector<std::string> warnings;
+    std::vector<std::string> warnings; ///< the start or the fundus point lies in tissue
 };
 
 /// Sweeps a rigid scope of `params.scopeDiameterMm` through the free space of `tets` from `startOffsetMm` outside
-/// the external os to the fundus. Fails with InvalidInput for an invalid or empty mesh, landmarks that are not
-/// finite, coincide or lie outside the mesh's box, or a parameter out of range (the detail names it and its range);
-/// LimitExceeded when the voxel grid would be larger than `maxVoxels`; Cancelled on request.
+/// the external os to the fundus (docs/scene-format.md, "Scope passage"). Fails with InvalidInput for an invalid or
+/// empty mesh, landmarks that are not finite, coincide or lie outside the mesh's box, or a parameter out of range (the
+/// detail names it and its range); LimitExceeded when the voxel grid would be larger than `maxVoxels`; Cancelled on
+/// request.
 [[nodiscard]] Result<ScopePassage> checkScopePassage(const TetMesh& tets, const ScopeLandmarks& landmarks,
                                                      const ScopePassageParams& params = {},
                                                      Progress& progress = Progress::none());
