@@ -186,7 +186,8 @@ Result<float> widestBottleneck(const VoxelGrid<float>& clearance, const std::vec
             }
         });
     }
-    return fail(ErrorCode::Internal, "scope passage: no voxel path from the start to the fundus in a connected grid");
+    return fail(ErrorCode::InvalidInput, "scope passage: no route from outside the external os to the fundus "
+                                         "inside the organ; the landmarks may not belong to this mesh");
 }
 
 /// Of all the widest routes, the one that keeps to the middle of the free space: the path through voxels of
