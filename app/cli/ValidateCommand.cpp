@@ -4,20 +4,142 @@
 
 #include "hs/scene/CaseSpec.h"
 #include "hs/scene/ScenePackage.h"
+#include "hs/scene/ScopePassage.h"
 
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <sstream>
+#include <vector>
 
 namespace hs::cli {
 namespace {
 
 struct ValidateOptions {
     std::string path;
+    double scopeDiameterMm = 2.9; ///< mm, 1-10: the thinnest rigid office hysteroscope by default
     CommonOptions common;
 };
+
+/// A named warning: it never changes the exit code of an otherwise valid package.
+struct Warning {
+    std::string name;
+    std::string detail;
+};
+
+std::string mm(double value) {
+    std::ostringstream out;
+    out.precision(2);
+    out << std::fixed << value << " mm";
+    return out.str();
+}
+
+std::string at(const Vec3& p) {
+    std::ostringstream out;
+    out.precision(1);
+    out << std::fixed << "(" << p.x << ", " << p.y << ", " << p.z << " mm)";
+    return out.str();
+}
+
+std::string where(const scene::PassagePoint& p) {
+    std::ostringstream out;
+    out.precision(1);
+    out << std::fixed << "the " << scene::toString(p.part) << " (" << p.positionMm.x << ", " << p.positionMm.y << ", "
+        << p.positionMm.z << " mm, " << p.arcLengthMm << " mm along the route)";
+    return out.str();
+}
+
+/// The scope passage of a package: the measurement, or why it could not be made.
+struct ScopeCheck {
+    Result<scene::ScopePassage> passage;
+    std::vector<Warning> warnings;
+};
+
+ScopeCheck checkScope(const scene::Scene& sc, double diameterMm) {
+    scene::ScopePassageParams params;
+    params.scopeDiameterMm = diameterMm;
+    auto landmarks = scene::findScopeLandmarks(sc);
+    ScopeCheck check{landmarks.ok() ? scene::checkScopePassage(sc.tets, *landmarks, params)
+                                    : Result<scene::ScopePassage>(landmarks.failure()),
+                     {}};
+    if (!check.passage.ok()) {
+        check.warnings.push_back({"scope-passage-unchecked", check.passage.error().detail});
+        return check;
+    }
+    // The warnings are about the canal (external os to internal os): a cavity narrowed by a pathology is a scene
+    // to train in, and is reported without a warning.
+    const auto& p = *check.passage;
+    if (!p.canalOpen)
+        check.warnings.push_back({"scope-passage-closed", "the cervical canal is closed at " + where(p.narrowestCanal) +
+                                                              " by about " + mm(p.canalClosedGapMm) + " of tissue"});
+    else if (!p.canalPasses)
+        check.warnings.push_back({"scope-passage-narrow", "the cervical canal is " + mm(p.narrowestCanal.freeWidthMm) +
+                                                              " wide at " + where(p.narrowestCanal) +
+                                                              ", narrower than the " + mm(diameterMm) + " scope"});
+    if (landmarks->ostiaFound < 2)
+        check.warnings.push_back({"scope-passage-landmarks", "one tubal ostium found (a pathology may cover the "
+                                                             "other); the route ends at its cornu " +
+                                                                 at(landmarks->fundusMm)});
+    for (const auto& w : p.warnings)
+        check.warnings.push_back({"scope-passage-landmarks", w});
+    return check;
+}
+
+nlohmann::ordered_json pointJson(const scene::PassagePoint& p) {
+    return {{"widthMm", p.freeWidthMm},
+            {"part", std::string(scene::toString(p.part))},
+            {"positionMm", {p.positionMm.x, p.positionMm.y, p.positionMm.z}},
+            {"arcLengthMm", p.arcLengthMm}};
+}
+
+nlohmann::ordered_json scopeJson(const ScopeCheck& check, double diameterMm, double straightLengthMm) {
+    nlohmann::ordered_json j;
+    j["scopeDiameterMm"] = diameterMm;
+    j["checked"] = check.passage.ok();
+    if (!check.passage.ok())
+        return j;
+    const auto& p = *check.passage;
+    j["passes"] = p.canalPasses;
+    j["canal"] = {{"open", p.canalOpen},
+                  {"passes", p.canalPasses},
+                  {"closedGapMm", p.canalClosedGapMm},
+                  {"narrowest", pointJson(p.narrowestCanal)}};
+    j["toFundus"] = {{"open", p.open},
+                     {"passes", p.ballPasses},
+                     {"closedGapMm", p.closedGapMm},
+                     {"narrowest", pointJson(p.narrowest)},
+                     {"routeLengthMm", p.route.empty() ? 0.0 : p.route.back().arcLengthMm}};
+    j["straightStretch"] = {{"lengthMm", straightLengthMm},
+                            {"passes", p.straightPasses},
+                            {"widthMm", p.straightWidthMm},
+                            {"tip", pointJson(p.narrowestStraight)}};
+    j["voxelMm"] = p.voxelSizeMm;
+    const auto vec = [](const Vec3& v) { return nlohmann::ordered_json::array({v.x, v.y, v.z}); };
+    j["landmarksMm"] = {{"externalOs", vec(p.landmarks.externalOsMm)},
+                        {"internalOs", vec(p.landmarks.internalOsMm)},
+                        {"fundus", vec(p.landmarks.fundusMm)}};
+    return j;
+}
+
+void printScope(const ScopeCheck& check, double diameterMm, double straightLengthMm) {
+    if (check.passage.ok()) {
+        const auto& p = *check.passage;
+        const auto verdict = [](bool passes) { return passes ? "passes" : "does not pass"; };
+        std::cout << "scope       " << mm(diameterMm) << " scope through the canal " << verdict(p.canalPasses)
+                  << ": narrowest " << mm(p.narrowestCanal.freeWidthMm) << " at " << where(p.narrowestCanal) << '\n'
+                  << "scope       to the fundus " << verdict(p.ballPasses) << ": narrowest "
+                  << mm(p.narrowest.freeWidthMm) << " at " << where(p.narrowest) << "; route "
+                  << mm(p.route.back().arcLengthMm) << '\n'
+                  << "scope       straight " << mm(straightLengthMm) << " ahead of the tip: " << mm(p.straightWidthMm)
+                  << " free at the least, with the tip at " << where(p.narrowestStraight) << '\n'
+                  << "scope       landmarks: external os " << at(p.landmarks.externalOsMm) << ", internal os "
+                  << at(p.landmarks.internalOsMm) << ", fundus " << at(p.landmarks.fundusMm) << '\n';
+    }
+    for (const auto& w : check.warnings)
+        std::cout << "warning     " << w.name << ": " << w.detail << '\n';
+}
 
 int runValidateCase(const ValidateOptions& options) {
     auto spec = scene::loadCase(options.path);
@@ -59,6 +181,11 @@ int runValidatePackage(const ValidateOptions& options, const std::string& folder
             j["tets"] = scene->tets.tetCount();
             j["regions"] = scene->regions.size();
             j["labels"] = scene->labels.size();
+            const auto scope = checkScope(*scene, options.scopeDiameterMm);
+            j["scopePassage"] = scopeJson(scope, options.scopeDiameterMm, scene::ScopePassageParams{}.straightLengthMm);
+            j["warnings"] = nlohmann::ordered_json::array();
+            for (const auto& w : scope.warnings)
+                j["warnings"].push_back({{"name", w.name}, {"detail", w.detail}});
         } else {
             j["error"] = {{"code", std::string(errorCodeKey(scene.error().code))}, {"detail", scene.error().detail}};
         }
@@ -83,6 +210,8 @@ int runValidatePackage(const ValidateOptions& options, const std::string& folder
     std::cout << "labels      " << scene->labels.size() << '\n'
               << "hydrometra  " << scene->hydrometra.cavityVolumeMl << " mL at " << scene->hydrometra.pressureKpa
               << " kPa\n";
+    printScope(checkScope(*scene, options.scopeDiameterMm), options.scopeDiameterMm,
+               scene::ScopePassageParams{}.straightLengthMm);
     return kExitOk;
 }
 
@@ -104,6 +233,10 @@ void addValidateCommand(CLI::App& app, int& exitCode) {
     auto* sub = app.add_subcommand("validate", "Check a case file (every error names the field and its allowed range) "
                                                "or a scene package folder (paths, sizes, checksums, contents)");
     sub->add_option("PATH", options->path, "case .json, or a scene package folder or its manifest.json")->required();
+    sub->add_option("--scope-diameter", options->scopeDiameterMm,
+                    "scene packages: rigid hysteroscope diameter in mm whose passage from the external os to the "
+                    "fundus is checked (a warning when it does not fit); default 2.9")
+        ->check(CLI::Range(1.0, 10.0));
     sub->add_flag("--json", options->common.json, "print JSON for scripts");
     sub->callback([options, &exitCode] { exitCode = runValidate(*options); });
 }

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -318,6 +319,22 @@ TEST(Cli, GenerateWritesAValidPackageForTheDefaultCase) {
               (std::vector<std::string>{"organ", "pathology", "merge", "meshing", "texture", "scene", "package"}));
     auto validate = cli("validate " + quote(scene));
     EXPECT_EQ(validate.exitCode, 0) << validate.out;
+    // The scope passage is measured and printed whether or not the 2.9 mm scope fits.
+    EXPECT_NE(validate.out.find("scope       2.90 mm scope through the canal"), std::string::npos) << validate.out;
+    EXPECT_NE(validate.out.find("narrowest "), std::string::npos) << validate.out;
+    // A scope wider than any canal of the scene: a named warning, and still exit 0 for a valid package.
+    auto wide = cli("validate --json --scope-diameter 9 " + quote(scene));
+    EXPECT_EQ(wide.exitCode, 0) << wide.out;
+    const auto wj = nlohmann::json::parse(wide.out);
+    EXPECT_TRUE(wj["valid"].get<bool>());
+    EXPECT_FALSE(wj["scopePassage"]["passes"].get<bool>());
+    EXPECT_GT(wj["scopePassage"]["canal"]["narrowest"]["widthMm"].get<double>(), 0.0);
+    EXPECT_LT(wj["scopePassage"]["canal"]["narrowest"]["widthMm"].get<double>(), 9.0);
+    std::vector<std::string> names;
+    for (const auto& w : wj["warnings"])
+        names.push_back(w["name"].get<std::string>());
+    EXPECT_NE(std::find(names.begin(), names.end(), "scope-passage-narrow"), names.end()) << wide.out;
+    EXPECT_EQ(cli("validate --scope-diameter 11 " + quote(scene)).exitCode, 2);
     auto tets = hs::io::readTetMesh(scene + "/tets.vtu");
     ASSERT_TRUE(tets.ok()) << tets.error().message();
     const auto volumes = hs::regionVolumes(*tets);

@@ -197,8 +197,7 @@ Result<CohortResult> generateCohort(const CohortParams& params, Progress& progre
         result.training.layout = params.layout;
         result.training.reference = uterusTemplate(params.layout);
         for (int i = 0; i < params.size; ++i) {
-            if (progress.cancelled())
-                return fail(ErrorCode::Cancelled, "cohort generation cancelled");
+            HS_TRY(progress.check("cohort generation"));
             // One generator per member: member i does not depend on how many numbers member i-1 drew.
             Rng rng = root.derive(static_cast<std::uint64_t>(i));
             CohortMember member;

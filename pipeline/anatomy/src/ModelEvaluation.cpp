@@ -40,8 +40,7 @@ Status generalization(const Eigen::MatrixXd& x, int modes, int folds, Progress& 
     std::vector<double> errors;
     const int count = folds <= 0 ? static_cast<int>(n) : std::min<int>(folds, static_cast<int>(n));
     for (int f = 0; f < count; ++f) {
-        if (progress.cancelled())
-            return fail(ErrorCode::Cancelled, "model evaluation cancelled");
+        HS_TRY(progress.check("model evaluation"));
         const Eigen::Index left = static_cast<Eigen::Index>(f) * n / count;
         std::vector<Eigen::Index> keep;
         for (Eigen::Index i = 0; i < n; ++i)
@@ -86,8 +85,7 @@ Status specificity(const ShapeModel& model, const Eigen::MatrixXd& x, const Mode
                    Progress& progress, ModelEvaluation& out) {
     std::vector<double> nearest;
     for (int s = 0; s < params.specificitySamples; ++s) {
-        if (progress.cancelled())
-            return fail(ErrorCode::Cancelled, "model evaluation cancelled");
+        HS_TRY(progress.check("model evaluation"));
         const SurfaceMesh sample =
             model.sampleUnconditional(Rng::deriveSeed(params.seed, static_cast<std::uint64_t>(s)));
         Eigen::VectorXd v(x.cols());

@@ -284,8 +284,7 @@ Result<ShapeModelBuildResult> buildShapeModel(const TrainingSet& training, const
         result.procrustesChangeMm = gpa.changeMm;
     }
     progress.report("anatomy.model.align", 0.3);
-    if (progress.cancelled())
-        return fail(ErrorCode::Cancelled, "shape model build cancelled");
+    HS_TRY(progress.check("shape model build"));
 
     Eigen::MatrixXd scores;
     {

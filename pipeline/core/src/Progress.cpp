@@ -31,4 +31,13 @@ bool Progress::cancelled() const noexcept {
     return m_parent != nullptr && m_parent->cancelled();
 }
 
+Status Progress::check(std::string_view what, std::string_view during) const {
+    if (!cancelled())
+        return {};
+    std::string detail = std::string(what) + " cancelled";
+    if (!during.empty())
+        detail += " while " + std::string(during);
+    return fail(ErrorCode::Cancelled, std::move(detail));
+}
+
 } // namespace hs

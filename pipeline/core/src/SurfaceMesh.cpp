@@ -7,12 +7,6 @@
 namespace hs {
 namespace {
 
-std::uint64_t edgeKey(std::int32_t a, std::int32_t b) {
-    const auto lo = static_cast<std::uint32_t>(std::min(a, b));
-    const auto hi = static_cast<std::uint32_t>(std::max(a, b));
-    return (static_cast<std::uint64_t>(lo) << 32) | hi;
-}
-
 Status validateLabels(const LabelMap& labels, std::size_t expected, const char* what) {
     for (const auto& [name, values] : labels) {
         if (!values.empty() && values.size() != expected)

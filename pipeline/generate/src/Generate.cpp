@@ -26,12 +26,6 @@ Error inCase(const GenerateParams& params, Error error) {
     return error;
 }
 
-Status checkCancel(const Progress& progress) {
-    if (progress.cancelled())
-        return fail(ErrorCode::Cancelled, "generation cancelled");
-    return {};
-}
-
 Status runOrgan(Generated& g, const GenerateParams& params) {
     auto request = organRequestFor(g.spec, params.caseFile);
     if (!request)
@@ -147,7 +141,7 @@ Status runFrom(Stage from, Generated& g, const GenerateParams& params, Progress&
     g.timings = {};
     for (auto i = indexOf(from); i < static_cast<std::size_t>(kStageCount); ++i) {
         const auto stage = static_cast<Stage>(i);
-        HS_TRY(checkCancel(progress));
+        HS_TRY(progress.check("generation"));
         auto sub = progress.sub(kStageStart[i], kStageStart[i + 1]);
         {
             ScopedStepTimer timer(g.timings, std::string(toString(stage)));

@@ -27,7 +27,8 @@ Status writeStl(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary
 
 Result<SurfaceMesh> readVtp(const std::string& path, const ReadLimits& limits);
 Status writeVtp(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary,
-                const std::vector<std::array<float, 2>>* textureCoordinates = nullptr);
+                const std::vector<std::array<float, 2>>* textureCoordinates = nullptr,
+                const std::vector<Vec3>* normals = nullptr);
 
 /// A VTU with tetrahedra gives a TetMesh; one with only surface cells a SurfaceMesh.
 Result<AnyMesh> readVtu(const std::string& path, const ReadLimits& limits);

@@ -138,6 +138,15 @@ Status writeSurface(const SurfaceMesh& mesh, const std::string& path, const Writ
         return fail(ErrorCode::InvalidInput, path + ": " + std::to_string(options.textureCoordinates->size()) +
                                                  " texture coordinates for " + std::to_string(mesh.points.size()) +
                                                  " points");
+    if (options.normals && options.normals->size() != mesh.points.size())
+        return fail(ErrorCode::InvalidInput, path + ": " + std::to_string(options.normals->size()) + " normals for " +
+                                                 std::to_string(mesh.points.size()) + " points");
+    if (options.textureCoordinates || options.normals)
+        for (const auto* labels : {&mesh.faceLabels, &mesh.vertexLabels})
+            for (const char* reserved : {"uv", "normals"})
+                if (labels->count(reserved))
+                    return fail(ErrorCode::InvalidInput, path + ": label name '" + reserved +
+                                                             "' is taken by the texture coordinates and normals");
     const MeshFormat f = *format;
     return writeAtomically(path, [&](const std::string& tmpPath) -> Status {
         switch (f) {
@@ -150,7 +159,7 @@ Status writeSurface(const SurfaceMesh& mesh, const std::string& path, const Writ
         case MeshFormat::Off:
             return detail::writeOff(mesh, tmpPath);
         case MeshFormat::Vtp:
-            return detail::writeVtp(mesh, tmpPath, options.binary, options.textureCoordinates);
+            return detail::writeVtp(mesh, tmpPath, options.binary, options.textureCoordinates, options.normals);
         case MeshFormat::Vtu:
             return detail::writeVtuSurface(mesh, tmpPath, options.binary);
         case MeshFormat::GmshMsh:

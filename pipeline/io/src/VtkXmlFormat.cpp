@@ -498,7 +498,7 @@ Status writeXml(vtkDataObject* data, const std::string& tmpPath, bool binary, co
 } // namespace
 
 Status writeVtp(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary,
-                const std::vector<std::array<float, 2>>* textureCoordinates) {
+                const std::vector<std::array<float, 2>>* textureCoordinates, const std::vector<Vec3>* normals) {
     auto poly = toPolyData(mesh, true);
     if (textureCoordinates) {
         vtkNew<vtkFloatArray> uv;
@@ -508,6 +508,18 @@ Status writeVtp(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary
         for (std::size_t i = 0; i < textureCoordinates->size(); ++i)
             uv->SetTypedTuple(static_cast<vtkIdType>(i), (*textureCoordinates)[i].data());
         poly->GetPointData()->SetTCoords(uv);
+    }
+    if (normals) {
+        vtkNew<vtkFloatArray> n;
+        n->SetName("normals");
+        n->SetNumberOfComponents(3);
+        n->SetNumberOfTuples(static_cast<vtkIdType>(normals->size()));
+        for (std::size_t i = 0; i < normals->size(); ++i) {
+            const Vec3& v = (*normals)[i];
+            const float tuple[3] = {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z)};
+            n->SetTypedTuple(static_cast<vtkIdType>(i), tuple);
+        }
+        poly->GetPointData()->SetNormals(n);
     }
     return writeXml<vtkXMLPolyDataWriter>(poly, tmpPath, binary, "writing VTP");
 }

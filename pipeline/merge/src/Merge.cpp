@@ -106,8 +106,7 @@ Result<MergeResult> mergeBody(const pathology::PathologyResult& grown, const Mer
                         "merge: the organ, displaced to make room for the pathologies, intersects itself (" +
                             std::to_string(n) + " triangle pairs): the pathologies push the wall too far");
         for (const auto& p : grown.pathologies) {
-            if (progress.cancelled())
-                return fail(ErrorCode::Cancelled, "merge cancelled");
+            HS_TRY(progress.check("merge"));
             if (!analyzeTopology(p.surface).isWatertight())
                 return fail(ErrorCode::InvalidInput, "merge: pathology '" + p.id + "' is not closed and manifold");
             if (const std::size_t n = detail::selfIntersections(p.surface); n > 0)
@@ -133,8 +132,7 @@ Result<MergeResult> mergeBody(const pathology::PathologyResult& grown, const Mer
         result.timings.step("union").counts.emplace_back("triangles",
                                                          static_cast<std::int64_t>(outline.triangles.size()));
     }
-    if (progress.cancelled())
-        return fail(ErrorCode::Cancelled, "merge cancelled");
+    HS_TRY(progress.check("merge"));
     progress.report("merge.union", 0.6);
     {
         ScopedStepTimer timer(result.timings, "labels");

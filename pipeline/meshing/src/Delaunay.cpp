@@ -181,8 +181,7 @@ public:
         for (int round = 0; round < m_params.rounds && !bad.empty(); ++round) {
             std::vector<std::uint32_t> touched;
             for (const auto& ids : bad) {
-                if (progress.cancelled())
-                    return fail(ErrorCode::Cancelled, "meshing cancelled while removing slivers");
+                HS_TRY(progress.check("meshing", "removing slivers"));
                 CellHandle c;
                 int i0, i1, i2, i3;
                 if (!m_dt.is_cell(m_handles[ids[0]], m_handles[ids[1]], m_handles[ids[2]], m_handles[ids[3]], c, i0, i1,
@@ -237,8 +236,7 @@ Result<DelaunayOutput> delaunayTetrahedra(std::vector<Vec3>& points, const Slive
         Delaunay dt(input.begin(), input.end());
         if (dt.number_of_vertices() != points.size())
             return fail(ErrorCode::Internal, "Delaunay tetrahedralization merged duplicate points");
-        if (progress.cancelled())
-            return fail(ErrorCode::Cancelled, "meshing cancelled");
+        HS_TRY(progress.check("meshing"));
         std::vector<VertexHandle> handles(points.size());
         for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
             handles[v->info()] = v;

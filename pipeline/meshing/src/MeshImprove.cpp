@@ -89,8 +89,8 @@ public:
                 break;
             std::size_t changed = 0;
             for (std::size_t i = 0; i < bad.size(); ++i) {
-                if (i % kCancelEvery == 0 && progress.cancelled())
-                    return fail(ErrorCode::Cancelled, "meshing cancelled while improving the mesh");
+                if (i % kCancelEvery == 0)
+                    HS_TRY(progress.check("meshing", "improving the mesh"));
                 const TetId t = findTet(bad[i].second);
                 if (t != kNoTet && m_quality[t] < m_params.targetDihedralDeg && improveTet(t))
                     ++changed;

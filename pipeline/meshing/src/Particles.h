@@ -44,6 +44,21 @@ struct SurfaceAdjacency {
 };
 SurfaceAdjacency buildAdjacency(const SurfaceMesh& mesh);
 
+/// Two boundary particles of one surface whose normals differ by more (cosine below this) lie on opposite sides
+/// of a slit: different sheets.
+constexpr double kSheetCos = -0.5;
+/// Surface candidates against accepted particles of other sheets (other surfaces, the far side of a slit). Much
+/// smaller than kSurfaceRadius: where two nested surfaces come closer than one edge (the 0.8 mm cover over a
+/// pathology at a 2 mm edge), each keeps its own particles, so the layer between them is resolved instead of the
+/// later surface losing its particles there.
+constexpr double kCrossSurfaceRadius = 0.25;
+
+/// Whether boundary particle u lies on the same sheet as a point of surface s with normal n: the same surface, with
+/// normals less than about 120 degrees apart. Opposite sides of a slit or of a layer thinner than one edge (the
+/// uterine cavity, the cover over a pathology) are different sheets and must keep their own particles.
+bool sameSheet(const Particles& ps, const std::vector<SurfaceAdjacency>& adjacency, std::size_t u, std::int32_t s,
+               const Vec3& n);
+
 /// Projects p onto the surface, starting from triangle `start` and walking over vertex fans while the closest
 /// point improves. Returns the triangle and writes the projected point.
 std::int32_t projectByWalk(const SurfaceMesh& mesh, const SurfaceAdjacency& adj, std::int32_t start, const Vec3& p,

@@ -1,7 +1,7 @@
 #include "hs/meshing/QualityReport.h"
 
-#include "Parallel.h"
-#include "TriangleGrid.h"
+#include "hs/core/Parallel.h"
+#include "hs/core/TriangleGrid.h"
 #include "hs/meshing/Geometry.h"
 
 #include <algorithm>
@@ -42,8 +42,8 @@ double meanEdgeLength(const TetMesh& mesh) {
 void measureShapes(const TetMesh& mesh, int threads, QualityReport& report) {
     const double l = meanEdgeLength(mesh);
     const double degenerateVolume = 1e-12 * l * l * l;
-    std::vector<ShapeSums> partial(detail::chunkCount(mesh.tets.size(), kChunk));
-    detail::parallelChunks(mesh.tets.size(), kChunk, threads, [&](std::size_t c, std::size_t begin, std::size_t end) {
+    std::vector<ShapeSums> partial(chunkCount(mesh.tets.size(), kChunk));
+    parallelChunks(mesh.tets.size(), kChunk, threads, [&](std::size_t c, std::size_t begin, std::size_t end) {
         ShapeSums& s = partial[c];
         for (std::size_t t = begin; t < end; ++t) {
             const Tet& tet = mesh.tets[t];
@@ -112,10 +112,10 @@ std::vector<Vec3> samplePoints(const SurfaceMesh& mesh) {
 /// largest distance found so far (it cannot raise the maximum). A multi-region body has a small grid per pathology;
 /// searched without a bound, a far-away grid was scanned cell by cell for every sample (18 of 21 s of the merged-body
 /// test).
-double oneSidedDistance(const std::vector<Vec3>& samples, const std::vector<const detail::TriangleGrid*>& targets,
+double oneSidedDistance(const std::vector<Vec3>& samples, const std::vector<const TriangleGrid*>& targets,
                         int threads) {
-    std::vector<double> partial(detail::chunkCount(samples.size(), kChunk), 0.0);
-    detail::parallelChunks(samples.size(), kChunk, threads, [&](std::size_t c, std::size_t begin, std::size_t end) {
+    std::vector<double> partial(chunkCount(samples.size(), kChunk), 0.0);
+    parallelChunks(samples.size(), kChunk, threads, [&](std::size_t c, std::size_t begin, std::size_t end) {
         double worst = 0.0;
         std::vector<std::pair<double, std::size_t>> order(targets.size());
         for (std::size_t i = begin; i < end; ++i) {
@@ -126,7 +126,7 @@ double oneSidedDistance(const std::vector<Vec3>& samples, const std::vector<cons
             for (const auto& [box2, g] : order) {
                 if (!(box2 < best) || best <= worst)
                     break;
-                const detail::SurfaceHit hit = targets[g]->closestWithin(samples[i], best);
+                const SurfaceHit hit = targets[g]->closestWithin(samples[i], best);
                 if (hit.triangle >= 0)
                     best = std::min(best, hit.closest.distance2);
             }
@@ -151,18 +151,18 @@ void measureFidelity(const TetMesh& mesh, const RegionModel& reference, int thre
     // Hausdorff distance between the mesh's boundary and interfaces and the input surfaces (void surfaces are
     // boundaries too), both ways, sampled at vertices and face centroids.
     const SurfaceMesh boundary = extractBoundary(mesh, true);
-    std::vector<std::unique_ptr<detail::TriangleGrid>> inputGrids;
-    std::vector<const detail::TriangleGrid*> inputTargets;
+    std::vector<std::unique_ptr<TriangleGrid>> inputGrids;
+    std::vector<const TriangleGrid*> inputTargets;
     for (const auto& rs : reference.surfaces) {
         if (rs.surface.triangles.empty())
             continue;
-        inputGrids.push_back(std::make_unique<detail::TriangleGrid>(rs.surface));
+        inputGrids.push_back(std::make_unique<TriangleGrid>(rs.surface));
         inputTargets.push_back(inputGrids.back().get());
     }
     double hausdorff = 0.0;
     if (!boundary.triangles.empty() && !inputTargets.empty()) {
         hausdorff = oneSidedDistance(samplePoints(boundary), inputTargets, threads);
-        const detail::TriangleGrid boundaryGrid(boundary);
+        const TriangleGrid boundaryGrid(boundary);
         for (const auto& rs : reference.surfaces)
             hausdorff = std::max(hausdorff, oneSidedDistance(samplePoints(rs.surface), {&boundaryGrid}, threads));
     } else if (!inputTargets.empty()) {
@@ -227,7 +227,7 @@ QualityReport measureQuality(const TetMesh& mesh, const RegionModel* reference, 
     QualityReport report;
     report.vertexCount = mesh.points.size();
     report.tetCount = mesh.tets.size();
-    threads = detail::resolveThreads(threads);
+    threads = resolveThreads(threads);
     measureShapes(mesh, threads, report);
     if (reference)
         measureFidelity(mesh, *reference, threads, report);

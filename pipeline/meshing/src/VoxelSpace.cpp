@@ -1,6 +1,6 @@
 #include "hs/meshing/VoxelSpace.h"
 
-#include "Parallel.h"
+#include "hs/core/Parallel.h"
 #include "hs/meshing/Geometry.h"
 
 #include <algorithm>
@@ -20,38 +20,36 @@ Status associateTriangles(const SurfaceMesh& mesh, const VoxelGrid<std::int32_t>
     const double h = grid.spacing();
     const Vec3 half(0.5 * h, 0.5 * h, 0.5 * h);
     const Index3 dims = grid.dims();
-    std::vector<std::vector<Pair>> chunks(detail::chunkCount(mesh.triangles.size(), kTriangleChunk));
-    detail::parallelChunks(
-        mesh.triangles.size(), kTriangleChunk, threads, [&](std::size_t c, std::size_t b, std::size_t e) {
-            if (progress.cancelled())
-                return;
-            std::vector<Pair>& pairs = chunks[c];
-            for (std::size_t f = b; f < e; ++f) {
-                const Triangle& t = mesh.triangles[f];
-                const Vec3& p0 = mesh.points[static_cast<std::size_t>(t[0])];
-                const Vec3& p1 = mesh.points[static_cast<std::size_t>(t[1])];
-                const Vec3& p2 = mesh.points[static_cast<std::size_t>(t[2])];
-                Index3 lo, hi;
-                for (int q = 0; q < 3; ++q) {
-                    const double mn = std::min({p0[q], p1[q], p2[q]}), mx = std::max({p0[q], p1[q], p2[q]});
-                    // A triangle on a voxel face touches the voxels on both sides (closed boxes): widen by a hair.
-                    lo[q] = std::clamp<std::int64_t>(
-                        static_cast<std::int64_t>(std::floor((mn - grid.origin()[q]) / h - 1e-9)), 0, dims[q] - 1);
-                    hi[q] = std::clamp<std::int64_t>(
-                        static_cast<std::int64_t>(std::floor((mx - grid.origin()[q]) / h + 1e-9)), 0, dims[q] - 1);
-                }
-                for (std::int64_t k = lo[2]; k <= hi[2]; ++k)
-                    for (std::int64_t j = lo[1]; j <= hi[1]; ++j)
-                        for (std::int64_t i = lo[0]; i <= hi[0]; ++i) {
-                            const Index3 ijk{i, j, k};
-                            if (triangleBoxOverlap(grid.center(ijk), half, p0, p1, p2))
-                                pairs.emplace_back(static_cast<std::uint32_t>(grid.linear(ijk)),
-                                                   static_cast<std::int32_t>(f));
-                        }
+    std::vector<std::vector<Pair>> chunks(chunkCount(mesh.triangles.size(), kTriangleChunk));
+    parallelChunks(mesh.triangles.size(), kTriangleChunk, threads, [&](std::size_t c, std::size_t b, std::size_t e) {
+        if (progress.cancelled())
+            return;
+        std::vector<Pair>& pairs = chunks[c];
+        for (std::size_t f = b; f < e; ++f) {
+            const Triangle& t = mesh.triangles[f];
+            const Vec3& p0 = mesh.points[static_cast<std::size_t>(t[0])];
+            const Vec3& p1 = mesh.points[static_cast<std::size_t>(t[1])];
+            const Vec3& p2 = mesh.points[static_cast<std::size_t>(t[2])];
+            Index3 lo, hi;
+            for (int q = 0; q < 3; ++q) {
+                const double mn = std::min({p0[q], p1[q], p2[q]}), mx = std::max({p0[q], p1[q], p2[q]});
+                // A triangle on a voxel face touches the voxels on both sides (closed boxes): widen by a hair.
+                lo[q] = std::clamp<std::int64_t>(
+                    static_cast<std::int64_t>(std::floor((mn - grid.origin()[q]) / h - 1e-9)), 0, dims[q] - 1);
+                hi[q] = std::clamp<std::int64_t>(
+                    static_cast<std::int64_t>(std::floor((mx - grid.origin()[q]) / h + 1e-9)), 0, dims[q] - 1);
             }
-        });
-    if (progress.cancelled())
-        return fail(ErrorCode::Cancelled, "meshing cancelled while voxelizing");
+            for (std::int64_t k = lo[2]; k <= hi[2]; ++k)
+                for (std::int64_t j = lo[1]; j <= hi[1]; ++j)
+                    for (std::int64_t i = lo[0]; i <= hi[0]; ++i) {
+                        const Index3 ijk{i, j, k};
+                        if (triangleBoxOverlap(grid.center(ijk), half, p0, p1, p2))
+                            pairs.emplace_back(static_cast<std::uint32_t>(grid.linear(ijk)),
+                                               static_cast<std::int32_t>(f));
+                    }
+        }
+    });
+    HS_TRY(progress.check("meshing", "voxelizing"));
     // Counting sort by voxel; chunks are in triangle order, so each voxel's list is ascending.
     const std::size_t n = grid.size();
     out.start.assign(n + 1, 0);
@@ -150,7 +148,7 @@ Result<VoxelSpace> buildVoxelSpace(const RegionModel& body, double voxelSize, in
         return fail(ErrorCode::InvalidInput, "voxel size must be a finite positive length in mm");
     if (body.surfaces.empty())
         return fail(ErrorCode::InvalidInput, "region model has no surface");
-    threads = detail::resolveThreads(threads);
+    threads = resolveThreads(threads);
     Bounds box;
     for (const auto& rs : body.surfaces)
         for (const Vec3& p : rs.surface.points)
@@ -186,8 +184,7 @@ Result<VoxelSpace> buildVoxelSpace(const RegionModel& body, double voxelSize, in
         HS_TRY(associateTriangles(body.surfaces[s].surface, space.region, threads, progress, sv));
         labelOuterAndInner(sv);
         labelEnclosedOuter(body.surfaces[s].surface, sv);
-        if (progress.cancelled())
-            return fail(ErrorCode::Cancelled, "meshing cancelled while voxelizing");
+        HS_TRY(progress.check("meshing", "voxelizing"));
         progress.report("meshing.voxelize", double(s + 1) / double(body.surfaces.size()));
         space.surfaces.push_back(std::move(sv));
     }

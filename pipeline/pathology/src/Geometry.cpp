@@ -1,5 +1,8 @@
 #include "Geometry.h"
 
+#include "hs/core/RegionModel.h"
+#include "hs/core/TriangleGeometry.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -240,32 +243,6 @@ void orientOutward(SurfaceMesh& mesh) {
             std::swap(t[1], t[2]);
 }
 
-double pointTriangleDistance2(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-    const Vec3 ab = b - a, ac = c - a, ap = p - a;
-    const double d1 = dot(ab, ap), d2 = dot(ac, ap);
-    if (d1 <= 0.0 && d2 <= 0.0)
-        return norm2(ap);
-    const Vec3 bp = p - b;
-    const double d3 = dot(ab, bp), d4 = dot(ac, bp);
-    if (d3 >= 0.0 && d4 <= d3)
-        return norm2(bp);
-    const double vc = d1 * d4 - d3 * d2;
-    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)
-        return norm2(p - (a + ab * (d1 / (d1 - d3))));
-    const Vec3 cp = p - c;
-    const double d5 = dot(ab, cp), d6 = dot(ac, cp);
-    if (d6 >= 0.0 && d5 <= d6)
-        return norm2(cp);
-    const double vb = d5 * d2 - d1 * d6;
-    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0)
-        return norm2(p - (a + ac * (d2 / (d2 - d6))));
-    const double va = d3 * d6 - d5 * d4;
-    if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0)
-        return norm2(p - (b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)))));
-    const double denom = 1.0 / (va + vb + vc);
-    return norm2(p - (a + ab * (vb * denom) + ac * (vc * denom)));
-}
-
 bool rayTriangle(const Vec3& origin, const Vec3& dir, const Vec3& a, const Vec3& b, const Vec3& c, double tMin,
                  double& t) {
     const Vec3 e1 = b - a, e2 = c - a;
@@ -327,63 +304,6 @@ void translate(SurfaceMesh& mesh, const Vec3& by) {
         p += by;
 }
 
-TriangleGrid::TriangleGrid(const SurfaceMesh& mesh, double cellMm) : mesh_(&mesh) {
-    grid_ = Grid::covering(bounds(mesh), cellMm, 1);
-    // Cells are addressed by their index box; a triangle goes into every cell its bounding box overlaps.
-    auto cellBox = [&](std::size_t f, std::array<int, 3>& lo, std::array<int, 3>& hi) {
-        Bounds b;
-        for (std::int32_t v : mesh.triangles[f])
-            b.add(mesh.points[static_cast<std::size_t>(v)]);
-        const Vec3 l = (b.min - grid_.origin) / cellMm, h = (b.max - grid_.origin) / cellMm;
-        lo = {std::clamp(static_cast<int>(std::lround(l.x)), 0, grid_.nx - 1),
-              std::clamp(static_cast<int>(std::lround(l.y)), 0, grid_.ny - 1),
-              std::clamp(static_cast<int>(std::lround(l.z)), 0, grid_.nz - 1)};
-        hi = {std::clamp(static_cast<int>(std::lround(h.x)), 0, grid_.nx - 1),
-              std::clamp(static_cast<int>(std::lround(h.y)), 0, grid_.ny - 1),
-              std::clamp(static_cast<int>(std::lround(h.z)), 0, grid_.nz - 1)};
-    };
-    std::vector<std::uint32_t> count(grid_.size() + 1, 0);
-    std::array<int, 3> lo{}, hi{};
-    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-        cellBox(f, lo, hi);
-        for (int k = lo[2]; k <= hi[2]; ++k)
-            for (int j = lo[1]; j <= hi[1]; ++j)
-                for (int i = lo[0]; i <= hi[0]; ++i)
-                    ++count[grid_.index(i, j, k) + 1];
-    }
-    for (std::size_t c = 1; c < count.size(); ++c)
-        count[c] += count[c - 1];
-    start_ = count;
-    triangles_.resize(start_.back());
-    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-        cellBox(f, lo, hi);
-        for (int k = lo[2]; k <= hi[2]; ++k)
-            for (int j = lo[1]; j <= hi[1]; ++j)
-                for (int i = lo[0]; i <= hi[0]; ++i)
-                    triangles_[count[grid_.index(i, j, k)]++] = static_cast<std::uint32_t>(f);
-    }
-}
-
-double TriangleGrid::distance(const Vec3& p, double cutoff) const {
-    const Vec3 c = (p - grid_.origin) / grid_.h;
-    const int reach = static_cast<int>(std::ceil(cutoff / grid_.h + 0.5)); // cells reach +-h/2 past their centres
-    const int ci = static_cast<int>(std::lround(c.x)), cj = static_cast<int>(std::lround(c.y)),
-              ck = static_cast<int>(std::lround(c.z));
-    double best = cutoff * cutoff;
-    for (int k = std::max(0, ck - reach); k <= std::min(grid_.nz - 1, ck + reach); ++k)
-        for (int j = std::max(0, cj - reach); j <= std::min(grid_.ny - 1, cj + reach); ++j)
-            for (int i = std::max(0, ci - reach); i <= std::min(grid_.nx - 1, ci + reach); ++i) {
-                const std::size_t cell = grid_.index(i, j, k);
-                for (std::uint32_t e = start_[cell]; e < start_[cell + 1]; ++e) {
-                    const Triangle& t = mesh_->triangles[triangles_[e]];
-                    best = std::min(best, pointTriangleDistance2(p, mesh_->points[static_cast<std::size_t>(t[0])],
-                                                                 mesh_->points[static_cast<std::size_t>(t[1])],
-                                                                 mesh_->points[static_cast<std::size_t>(t[2])]));
-                }
-            }
-    return std::sqrt(best);
-}
-
 double surfaceDistance(const SurfaceMesh& a, const SurfaceMesh& b, double cutoff) {
     Bounds ba = bounds(a);
     ba.add(ba.min - Vec3{cutoff, cutoff, cutoff});
@@ -407,7 +327,7 @@ double surfaceDistance(const SurfaceMesh& a, const SurfaceMesh& b, double cutoff
             const double dz = std::max({bt.min.z - p.z, 0.0, p.z - bt.max.z});
             if (dx * dx + dy * dy + dz * dz >= best)
                 continue;
-            best = std::min(best, pointTriangleDistance2(p, p0, p1, p2));
+            best = std::min(best, closestPointOnTriangle(p, p0, p1, p2).distance2);
         }
     }
     return std::sqrt(best);
@@ -422,6 +342,21 @@ void orthonormalFrame(const Vec3& n, Vec3& e1, Vec3& e2) {
 double smoothstep(double e0, double e1, double x) {
     const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
     return t * t * (3.0 - 2.0 * t);
+}
+
+/// Signed distance from p to a closed surface (negative inside), capped at `cutoff`.
+double signedDistance(const SurfaceMesh& s, const Bounds& box, const Vec3& p, double cutoff) {
+    if (p.x < box.min.x - cutoff || p.y < box.min.y - cutoff || p.z < box.min.z - cutoff || p.x > box.max.x + cutoff ||
+        p.y > box.max.y + cutoff || p.z > box.max.z + cutoff)
+        return cutoff;
+    double best = cutoff * cutoff;
+    for (const Triangle& t : s.triangles)
+        best = std::min(best, closestPointOnTriangle(p, s.points[static_cast<std::size_t>(t[0])],
+                                                     s.points[static_cast<std::size_t>(t[1])],
+                                                     s.points[static_cast<std::size_t>(t[2])])
+                                  .distance2);
+    const double d = std::sqrt(best);
+    return windingNumber(s, p) > 0.5 ? -d : d;
 }
 
 } // namespace hs::pathology::detail

@@ -1,6 +1,6 @@
 #pragma once
 /// Geometry helpers of the pathology stage: a regular grid, inside masks by column parity, marching tetrahedra,
-/// Taubin smoothing, distances and rays.
+/// Taubin smoothing, distances and rays. Closest points on triangles and the triangle grid are hs::core's.
 
 #include "hs/core/SurfaceMesh.h"
 
@@ -39,8 +39,8 @@ void taubinSmooth(SurfaceMesh& mesh, int iterations, double lambda = 0.5, double
 /// Flips every triangle when the enclosed volume is negative.
 void orientOutward(SurfaceMesh& mesh);
 
-/// Squared distance from p to triangle abc (Ericson, Real-Time Collision Detection, 5.1.5).
-double pointTriangleDistance2(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
+/// Signed distance from p to a closed surface (negative inside), capped at `cutoff`; `box` is the surface's bounds.
+double signedDistance(const SurfaceMesh& s, const Bounds& box, const Vec3& p, double cutoff);
 
 /// Ray-triangle intersection (Moeller-Trumbore); t along dir (unit), true on a hit with t > tMin.
 bool rayTriangle(const Vec3& origin, const Vec3& dir, const Vec3& a, const Vec3& b, const Vec3& c, double tMin,
@@ -59,21 +59,6 @@ void translate(SurfaceMesh& mesh, const Vec3& by);
 
 /// Smallest distance from any vertex of a to the triangles of b (bounding-box filtered), mm.
 double surfaceDistance(const SurfaceMesh& a, const SurfaceMesh& b, double cutoff);
-
-/// Triangles of a surface binned in a regular grid of cells `cellMm` wide, for distances up to a cutoff near it.
-class TriangleGrid {
-public:
-    TriangleGrid(const SurfaceMesh& mesh, double cellMm);
-    /// Unsigned distance from p to the surface, or `cutoff` when it is at least that far (searches the cells within
-    /// cutoff + half a cell of p's cell: keep the cutoff to a few cells).
-    double distance(const Vec3& p, double cutoff) const;
-
-private:
-    const SurfaceMesh* mesh_;
-    Grid grid_;
-    std::vector<std::uint32_t> start_;     ///< cell -> first entry in triangles_ (size cells + 1)
-    std::vector<std::uint32_t> triangles_; ///< triangle ids, by cell
-};
 
 /// Two unit vectors completing `n` (unit) to an orthonormal frame.
 void orthonormalFrame(const Vec3& n, Vec3& e1, Vec3& e2);

@@ -3,6 +3,7 @@
 #include "Geometry.h"
 
 #include "hs/clinical/Tissue.h"
+#include "hs/core/TriangleGeometry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,9 +33,10 @@ std::pair<std::size_t, double> OrganInfo::nearestFace(const Vec3& p, std::option
         if (side && faceSide[f] != *side)
             continue;
         const Triangle& tr = mesh->triangles[f];
-        const double d2 = pointTriangleDistance2(p, mesh->points[static_cast<std::size_t>(tr[0])],
+        const double d2 = closestPointOnTriangle(p, mesh->points[static_cast<std::size_t>(tr[0])],
                                                  mesh->points[static_cast<std::size_t>(tr[1])],
-                                                 mesh->points[static_cast<std::size_t>(tr[2])]);
+                                                 mesh->points[static_cast<std::size_t>(tr[2])])
+                              .distance2;
         if (d2 < bestD2) {
             bestD2 = d2;
             best = f;

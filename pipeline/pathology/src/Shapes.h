@@ -9,6 +9,8 @@
 
 namespace hs::pathology::detail {
 
+constexpr double kPi = 3.14159265358979323846;
+
 /// Where and how big, in the organ frame (mm).
 struct ShapeSpec {
     bool polyp = false;

@@ -2,6 +2,7 @@
 
 #include "CaseReader.h"
 #include "CaseUpgrade.h"
+#include "CaseWriter.h"
 #include "Format.h"
 #include "hs/io/AtomicFile.h"
 #include "hs/scene/CaseSpec.h"

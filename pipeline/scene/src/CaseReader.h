@@ -14,7 +14,4 @@ namespace hs::scene::detail {
 /// document order, and the field keeps its default.
 void readCase(const nlohmann::json& root, CaseSpec& spec, std::vector<CaseIssue>& issues);
 
-/// The document for `spec`, fields in schema order.
-nlohmann::ordered_json writeCase(const CaseSpec& spec);
-
 } // namespace hs::scene::detail

@@ -188,8 +188,7 @@ Result<PackageManifest> writeInto(const fs::path& tmp, const Scene& scene, const
     manifest.toolVersions = scene.toolVersions;
     std::error_code ec;
     for (std::size_t i = 0; i < files->size(); ++i) {
-        if (progress.cancelled())
-            return fail(ErrorCode::Cancelled, "scene package export cancelled");
+        HS_TRY(progress.check("scene package export"));
         const PendingFile& file = (*files)[i];
         const fs::path path = tmp / file.path;
         if (!fs::exists(path.parent_path(), ec)) {

@@ -5,6 +5,7 @@
 #include "Format.h"
 
 #include "hs/core/Units.h"
+#include "hs/io/TexturedSurface.h"
 
 #include <algorithm>
 #include <iomanip>
@@ -138,19 +139,14 @@ std::string sofaScene(const Scene& scene, bool hasAlbedo) {
 }
 
 std::string visualObj(const Scene& scene) {
-    const auto& mesh = scene.surface.mesh;
-    std::ostringstream s;
-    s.imbue(std::locale::classic());
-    s << "# hysteroscene visual surface, mm\n" << std::setprecision(17);
-    for (const Vec3& p : mesh.points)
-        s << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
-    s << std::setprecision(9);
-    for (const auto& uv : scene.surface.uvs)
-        s << "vt " << uv[0] << ' ' << 1.0f - uv[1] << '\n';
-    for (const auto& t : mesh.triangles)
-        s << "f " << t[0] + 1 << '/' << t[0] + 1 << ' ' << t[1] + 1 << '/' << t[1] + 1 << ' ' << t[2] + 1 << '/'
-          << t[2] + 1 << '\n';
-    return s.str();
+    // The scene's uvs have their origin at the image's top left, OBJ's at its bottom left.
+    std::vector<std::array<float, 2>> uv;
+    uv.reserve(scene.surface.uvs.size());
+    for (const auto& q : scene.surface.uvs)
+        uv.push_back({q[0], 1.0f - q[1]});
+    io::TexturedObjOptions options;
+    options.comment = "hysteroscene visual surface, mm";
+    return io::texturedObjText(scene.surface.mesh, uv, options);
 }
 
 } // namespace hs::scene::detail

@@ -322,8 +322,7 @@ Result<Atlas> buildAtlas(const SurfaceMesh& surface, const AtlasParams& params, 
     const std::vector<std::int32_t> label = directionLabels(normals, adj, params);
     int count = 0;
     const std::vector<std::int32_t> comp = components(label, adj, count);
-    if (progress.cancelled())
-        return fail(ErrorCode::Cancelled, "atlas cancelled");
+    HS_TRY(progress.check("atlas"));
     progress.report("texture.atlas", 0.3);
 
     // Project each component; split off what would fold, until everything is accepted.

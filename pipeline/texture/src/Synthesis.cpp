@@ -1,7 +1,6 @@
 #include "hs/texture/Synthesis.h"
 
-#include "Parallel.h"
-
+#include "hs/core/Parallel.h"
 #include "hs/core/Rng.h"
 
 #include <algorithm>
@@ -154,20 +153,23 @@ CoordMap upsample(const CoordMap& coarse, int w, int h, const ExemplarLevel& ex,
     fine.c.resize(static_cast<std::size_t>(w) * h);
     const int lo = kRadius, hiX = ex.w - 1 - kRadius, hiY = ex.h - 1 - kRadius;
     const bool jitter = p.jitter > 0.0 && level < kMaxLevels; // every level; corrections restore coherence
-    detail::parallelRanges(h, threads, [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y) {
-            Rng rng = rowRng(p.seed, level, 62, y);
-            for (int x = 0; x < w; ++x) {
-                const Coord& parent = coarse.at(std::min(x / 2, coarse.w - 1), std::min(y / 2, coarse.h - 1));
-                int cx = 2 * parent.x + (x & 1), cy = 2 * parent.y + (y & 1);
-                if (jitter) {
-                    cx += static_cast<int>(std::lround(p.jitter * rng.uniform(-1.0, 1.0)));
-                    cy += static_cast<int>(std::lround(p.jitter * rng.uniform(-1.0, 1.0)));
-                }
-                fine.at(x, y) = {clampTo(cx, lo, hiX), clampTo(cy, lo, hiY)};
-            }
-        }
-    });
+    parallelChunks(static_cast<std::size_t>(h), evenChunk(static_cast<std::size_t>(h), threads), threads,
+                   [&](std::size_t, std::size_t y0Chunk, std::size_t y1Chunk) {
+                       const int y0 = static_cast<int>(y0Chunk), y1 = static_cast<int>(y1Chunk);
+                       for (int y = y0; y < y1; ++y) {
+                           Rng rng = rowRng(p.seed, level, 62, y);
+                           for (int x = 0; x < w; ++x) {
+                               const Coord& parent =
+                                   coarse.at(std::min(x / 2, coarse.w - 1), std::min(y / 2, coarse.h - 1));
+                               int cx = 2 * parent.x + (x & 1), cy = 2 * parent.y + (y & 1);
+                               if (jitter) {
+                                   cx += static_cast<int>(std::lround(p.jitter * rng.uniform(-1.0, 1.0)));
+                                   cy += static_cast<int>(std::lround(p.jitter * rng.uniform(-1.0, 1.0)));
+                               }
+                               fine.at(x, y) = {clampTo(cx, lo, hiX), clampTo(cy, lo, hiY)};
+                           }
+                       }
+                   });
     return fine;
 }
 
@@ -258,14 +260,16 @@ void correct(CoordMap& map, const ExemplarLevel& ex, int level, int pass, const 
         const int ox = kOrder[static_cast<std::size_t>(sub)][0], oy = kOrder[static_cast<std::size_t>(sub)][1];
         CoordMap next = map;
         const int rows = (map.h - oy + 1) / 2;
-        detail::parallelRanges(rows, threads, [&](int r0, int r1) {
-            for (int r = r0; r < r1; ++r) {
-                const int y = 2 * r + oy;
-                Rng rng = rowRng(p.seed, level, pass * 4 + sub, y);
-                for (int x = ox; x < map.w; x += 2)
-                    next.at(x, y) = correctPixel(map, ex, x, y, rng, p.randomCandidates, weights);
-            }
-        });
+        parallelChunks(static_cast<std::size_t>(rows), evenChunk(static_cast<std::size_t>(rows), threads), threads,
+                       [&](std::size_t, std::size_t r0Chunk, std::size_t r1Chunk) {
+                           const int r0 = static_cast<int>(r0Chunk), r1 = static_cast<int>(r1Chunk);
+                           for (int r = r0; r < r1; ++r) {
+                               const int y = 2 * r + oy;
+                               Rng rng = rowRng(p.seed, level, pass * 4 + sub, y);
+                               for (int x = ox; x < map.w; x += 2)
+                                   next.at(x, y) = correctPixel(map, ex, x, y, rng, p.randomCandidates, weights);
+                           }
+                       });
         map = std::move(next);
     }
 }
@@ -276,7 +280,7 @@ Result<SynthesisResult> synthesizeTexture(const ImageU8& exemplar, const Synthes
     HS_TRY(checkParams(exemplar, params));
     SynthesisResult result;
     result.levels = levelCount(exemplar, params);
-    const int threads = detail::threadCount(params.threads);
+    const int threads = resolveThreads(params.threads);
     const std::vector<ExemplarLevel> pyramid = buildPyramid(exemplar, result.levels);
     const Weights weights;
 
@@ -302,8 +306,7 @@ Result<SynthesisResult> synthesizeTexture(const ImageU8& exemplar, const Synthes
         }
         const int passes = params.correctionPasses + (l == 0 ? 2 : 0);
         for (int pass = 0; pass < passes; ++pass) {
-            if (progress.cancelled())
-                return fail(ErrorCode::Cancelled, "texture synthesis cancelled");
+            HS_TRY(progress.check("texture synthesis"));
             correct(map, ex, l, pass, params, threads, weights);
             progress.report("texture.synthesis", (l + (pass + 1.0) / passes) / result.levels);
         }

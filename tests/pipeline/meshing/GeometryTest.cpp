@@ -1,5 +1,5 @@
 #include "MeshingTestShapes.h"
-#include "TriangleGrid.h"
+#include "hs/core/TriangleGrid.h"
 
 #include "hs/core/Rng.h"
 #include "hs/meshing/Geometry.h"
@@ -79,7 +79,7 @@ TEST(QualityReport, CountsSliversInvertedTetsAndHistogramBuckets) {
 TEST(TriangleGrid, BoundedSearchFindsTheClosestTriangleOrNothingWithinTheBound) {
     // A small sphere far from most query points, as a pathology's grid is from most samples of a merged body.
     const SurfaceMesh sphere = test::icosphere(3.0, 3, {20.0, 0.0, 0.0});
-    const detail::TriangleGrid grid(sphere);
+    const TriangleGrid grid(sphere);
     Rng rng(7);
     for (int i = 0; i < 300; ++i) {
         const Vec3 p{rng.uniform(-40.0, 40.0), rng.uniform(-40.0, 40.0), rng.uniform(-40.0, 40.0)};
@@ -90,7 +90,7 @@ TEST(TriangleGrid, BoundedSearchFindsTheClosestTriangleOrNothingWithinTheBound) 
                                                     sphere.points[std::size_t(t[1])], sphere.points[std::size_t(t[2])])
                                  .distance2);
         EXPECT_EQ(grid.closest(p).closest.distance2, brute);
-        const detail::SurfaceHit within = grid.closestWithin(p, brute * 1.01 + 1e-12);
+        const SurfaceHit within = grid.closestWithin(p, brute * 1.01 + 1e-12);
         ASSERT_GE(within.triangle, 0);
         EXPECT_EQ(within.closest.distance2, brute);
         EXPECT_LT(grid.closestWithin(p, brute * 0.99).triangle, 0);

@@ -59,8 +59,7 @@ Result<MeshResult> meshCgal(const RegionModel& body, const MeshParams& params, P
     if (!edge.ok())
         return edge.failure();
     result.targetEdgeLength = *edge;
-    if (progress.cancelled())
-        return fail(ErrorCode::Cancelled, "meshing cancelled");
+    HS_TRY(progress.check("meshing"));
     try {
         ScopedStepTimer timer(result.timings, "tetrahedralize");
         // Subdomain of surface s's inside = s + 1; its outside = its parent's inside (0 outside the body). Void
@@ -89,8 +88,7 @@ Result<MeshResult> meshCgal(const RegionModel& body, const MeshParams& params, P
                                             P::lloyd(P::time_limit = kOptimiserTimeLimit),
                                             P::perturb(P::time_limit = kOptimiserTimeLimit),
                                             P::exude(P::time_limit = kOptimiserTimeLimit));
-        if (progress.cancelled())
-            return fail(ErrorCode::Cancelled, "meshing cancelled");
+        HS_TRY(progress.check("meshing"));
         // Export the cells of the complex.
         std::map<Tr::Vertex_handle, std::int32_t> index;
         TetMesh& mesh = result.mesh;

@@ -99,8 +99,7 @@ Result<MeshResult> meshTetGen(const RegionModel& body, const MeshParams& params,
     if (!edge.ok())
         return edge.failure();
     result.targetEdgeLength = *edge;
-    if (progress.cancelled())
-        return fail(ErrorCode::Cancelled, "meshing cancelled");
+    HS_TRY(progress.check("meshing"));
     tetgenio in, out;
     {
         ScopedStepTimer timer(result.timings, "tetrahedralize");
@@ -116,8 +115,7 @@ Result<MeshResult> meshTetGen(const RegionModel& body, const MeshParams& params,
             return fail(ErrorCode::BackendFailure, "TetGen failed");
         }
     }
-    if (progress.cancelled())
-        return fail(ErrorCode::Cancelled, "meshing cancelled");
+    HS_TRY(progress.check("meshing"));
     {
         ScopedStepTimer timer(result.timings, "clean");
         TetMesh& mesh = result.mesh;

@@ -1,6 +1,8 @@
 #pragma once
 /// Progress reporting and cooperative cancellation for long stages.
 
+#include "hs/core/Result.h"
+
 #include <atomic>
 #include <functional>
 #include <string>
@@ -30,6 +32,9 @@ public:
     /// Asks the running stage to stop; it returns ErrorCode::Cancelled at its next check.
     void requestCancel() noexcept;
     bool cancelled() const noexcept;
+    /// Ok, or ErrorCode::Cancelled with "<what> cancelled" (+ " while <during>" when given) once cancelled:
+    /// `HS_TRY(progress.check("meshing", "relaxing particles"));`.
+    [[nodiscard]] Status check(std::string_view what, std::string_view during = {}) const;
 
     /// The last fraction reported (in this object's own [0, 1] scale).
     double fraction() const noexcept { return m_last.load(std::memory_order_relaxed); }

@@ -55,6 +55,13 @@ double surfaceArea(const SurfaceMesh& mesh);
 double enclosedVolume(const SurfaceMesh& mesh);
 /// Unit normal of triangle `face` (zero for a degenerate one).
 Vec3 faceNormal(const SurfaceMesh& mesh, std::size_t face);
+
+/// The key of the undirected edge between vertices a and b (either order): the smaller id in the high 32 bits.
+inline std::uint64_t edgeKey(std::int32_t a, std::int32_t b) {
+    const auto lo = static_cast<std::uint32_t>(a < b ? a : b);
+    const auto hi = static_cast<std::uint32_t>(a < b ? b : a);
+    return (static_cast<std::uint64_t>(lo) << 32) | hi;
+}
 /// Area-weighted vertex normals.
 std::vector<Vec3> vertexNormals(const SurfaceMesh& mesh);
 

@@ -47,6 +47,9 @@ struct WriteOptions {
     /// VTP only: one (u, v) per point, written as the active texture coordinates "uv" (the other formats ignore it).
     /// A count other than the point count is an InvalidInput error.
     const std::vector<std::array<float, 2>>* textureCoordinates = nullptr;
+    /// VTP only: one normal per point, written as the active normals "normals" (Float32). A count other than the
+    /// point count is an InvalidInput error, and so is a label named "uv" or "normals" next to either array.
+    const std::vector<Vec3>* normals = nullptr;
 };
 
 /// Reads a surface in any surface format (chosen by extension). Polygons are fan-triangulated. Labels read where the

@@ -83,9 +83,9 @@ std::vector<Appearance> classifyFaces(const SurfaceMesh& surface, const Appearan
 [[nodiscard]] Result<BakeResult> bakeAppearance(const SurfaceMesh& surface, const BakeParams& params,
                                                 Progress& progress = Progress::none());
 
-/// Writes albedo.png, normal.png, roughness.png, surface.vtp (points split along chart seams, point data "uv" as
-/// texture coordinates, the face labels and "chart" as cell data) and surface.obj + surface.mtl into `dir`
-/// (created if missing), every file atomically.
+/// Writes albedo.png, normal.png, roughness.png, surface.vtp (ASCII; points split along chart seams, point data
+/// "uv" and "normals" as the active texture coordinates and normals, the face labels and "chart" as cell data) and
+/// surface.obj + surface.mtl into `dir` (created if missing), every file atomically, through hs::io's writers.
 Status writeBakeOutputs(const SurfaceMesh& surface, const BakeResult& result, const std::string& dir);
 
 /// The surface split along chart seams, one point per UV vertex, with the UVs; labels carried over (vertex labels
@@ -96,12 +96,5 @@ struct TexturedSurface {
     std::vector<Vec3> normals;            ///< per point, of the unsplit surface, so shading stays smooth across seams
 };
 TexturedSurface makeTexturedSurface(const SurfaceMesh& surface, const Atlas& atlas);
-
-/// VTK XML PolyData (ASCII) with the UVs as the active texture coordinates ("uv"), the normals as active normals
-/// ("normals") and integer labels as cell and point data; hs::io's writer carries no texture coordinates, so this
-/// module writes its own.
-Status writeTexturedVtp(const TexturedSurface& surface, const std::string& path);
-/// Wavefront OBJ with vt and a material library line `mtllib <mtlName>` / `usemtl organ`.
-Status writeTexturedObj(const TexturedSurface& surface, const std::string& path, const std::string& mtlName);
 
 } // namespace hs::texture

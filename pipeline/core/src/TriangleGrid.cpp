@@ -1,22 +1,13 @@
-#include "TriangleGrid.h"
+#include "hs/core/TriangleGrid.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <unordered_map>
 
-namespace hs::meshing::detail {
-namespace {
+namespace hs {
 
-std::uint64_t edgeKey(std::int32_t a, std::int32_t b) {
-    const auto lo = static_cast<std::uint32_t>(std::min(a, b));
-    const auto hi = static_cast<std::uint32_t>(std::max(a, b));
-    return (static_cast<std::uint64_t>(lo) << 32) | hi;
-}
-
-} // namespace
-
-TriangleGrid::TriangleGrid(const SurfaceMesh& mesh, double cellSize) : m_mesh(&mesh) {
+TriangleGrid::TriangleGrid(const SurfaceMesh& mesh, double cellSize, bool insideTests) : m_mesh(&mesh) {
     const Bounds b = bounds(mesh);
     const Vec3 size = b.size();
     if (!(cellSize > 0.0)) {
@@ -69,6 +60,8 @@ TriangleGrid::TriangleGrid(const SurfaceMesh& mesh, double cellSize) : m_mesh(&m
         }
     }
 
+    if (!insideTests)
+        return;
     // Pseudo-normals: face normals, angle-weighted vertex normals, edge normals.
     const std::size_t nf = mesh.triangles.size();
     m_faceNormals.resize(nf);
@@ -108,6 +101,11 @@ double TriangleGrid::boxDistance2(const Vec3& p) const {
         outside2 += d * d;
     }
     return outside2;
+}
+
+double TriangleGrid::distance(const Vec3& p, double cutoff) const {
+    const SurfaceHit hit = closestWithin(p, cutoff * cutoff);
+    return std::sqrt(hit.triangle >= 0 ? hit.closest.distance2 : cutoff * cutoff);
 }
 
 SurfaceHit TriangleGrid::closest(const Vec3& p) const {
@@ -206,4 +204,4 @@ bool TriangleGrid::inside(const Vec3& p) const {
     return insideFromHit(p, closest(p));
 }
 
-} // namespace hs::meshing::detail
+} // namespace hs

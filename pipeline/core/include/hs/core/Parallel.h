@@ -1,6 +1,7 @@
 #pragma once
-// Deterministic parallel loops: work is cut into fixed-size chunks that do not depend on the thread count, so
-// per-chunk results combined in chunk order give the same bits with 1 or N threads.
+/// Deterministic parallel loops: [0, n) is cut into chunks whose size the caller fixes, so per-chunk results
+/// combined in chunk order give the same bits with 1 or N threads. Loops whose items are independent of each
+/// other may size the chunks by the thread count (evenChunk).
 
 #include <algorithm>
 #include <atomic>
@@ -8,11 +9,12 @@
 #include <thread>
 #include <vector>
 
-namespace hs::meshing::detail {
+namespace hs {
 
-inline int resolveThreads(int threads) {
-    if (threads > 0)
-        return std::min(threads, 256);
+/// Worker threads for `requested` (<= 0: hardware concurrency), 1..256.
+inline int resolveThreads(int requested) {
+    if (requested > 0)
+        return std::min(requested, 256);
     const unsigned hw = std::thread::hardware_concurrency();
     return hw == 0 ? 1 : static_cast<int>(std::min(hw, 256u));
 }
@@ -21,7 +23,15 @@ inline std::size_t chunkCount(std::size_t n, std::size_t chunk) {
     return (n + chunk - 1) / chunk;
 }
 
-/// Calls fn(chunkIndex, begin, end) for every chunk of [0, n), on up to `threads` threads.
+/// The chunk size that cuts [0, n) into at most `threads` near-equal chunks (for loops whose items are independent,
+/// so the cut does not change the result; each chunk then costs one pass of any per-chunk setup).
+inline std::size_t evenChunk(std::size_t n, int threads) {
+    const auto t = static_cast<std::size_t>(std::max(threads, 1));
+    return std::max<std::size_t>(1, (n + t - 1) / t);
+}
+
+/// Calls fn(chunkIndex, begin, end) for every chunk of [0, n), on up to `threads` threads; returns when all are
+/// done. Exceptions must not escape `fn`.
 template <class Fn>
 void parallelChunks(std::size_t n, std::size_t chunk, int threads, Fn&& fn) {
     const std::size_t chunks = chunkCount(n, chunk);
@@ -49,4 +59,4 @@ void parallelChunks(std::size_t n, std::size_t chunk, int threads, Fn&& fn) {
         th.join();
 }
 
-} // namespace hs::meshing::detail
+} // namespace hs

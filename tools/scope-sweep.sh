@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Generates the default case and the 20-case sweep (tools/sweep-cases.py) with a hysteroscene-cli and prints, per
+# scene, the scope passage that `validate` measures (docs/scene-format.md, "Scope passage"):
+#     bash tools/scope-sweep.sh build/ci/bin/hysteroscene-cli /tmp/scope-sweep [SCOPE_DIAMETER_MM]
+# OUT/table.txt has the table; OUT/<case>.gen.log and OUT/<case>.validate.json the reports. A case that fails to
+# generate is listed with its exit code.
+set -uo pipefail
+if [ $# -lt 2 ] || [ $# -gt 3 ]; then
+    echo "usage: $0 HYSTEROSCENE_CLI OUT_DIR [SCOPE_DIAMETER_MM]" >&2
+    exit 2
+fi
+cli=$(realpath "$1")
+out=$2
+diameter=${3:-2.9}
+here=$(cd "$(dirname "$0")/.." && pwd)
+rm -rf "$out"
+mkdir -p "$out/cases"
+python3 "$here/tools/sweep-cases.py" "$out/cases"
+cp "$here/resources/cases/default.json" "$out/cases/default.json"
+printf '%-10s %8s %-12s %8s %6s %9s %-12s %6s %9s\n' case canal-mm part along-mm fits fundus-mm part fits \
+    straight-mm > "$out/table.txt"
+for c in "$out"/cases/*.json; do
+    n=$(basename "$c" .json)
+    "$cli" generate "$c" -o "$out/scenes/$n" --threads 2 > "$out/$n.gen.log" 2>&1
+    rc=$?
+    if [ $rc -ne 0 ]; then
+        printf '%-10s generate failed (exit %s): %s\n' "$n" "$rc" "$(tail -1 "$out/$n.gen.log" | cut -c1-100)" \
+            >> "$out/table.txt"
+        continue
+    fi
+    "$cli" validate --json --scope-diameter "$diameter" "$out/scenes/$n" > "$out/$n.validate.json" 2>&1
+    python3 - "$n" "$out/$n.validate.json" >> "$out/table.txt" <<'PY'
+import json, sys
+name, path = sys.argv[1], sys.argv[2]
+j = json.load(open(path))
+s = j.get("scopePassage", {})
+if not s.get("checked"):
+    print(f"{name:<10} not checked: {j.get('warnings', [{}])[0].get('detail', j.get('error'))}")
+    sys.exit()
+c, f, t = s["canal"], s["toFundus"], s["straightStretch"]
+yes = lambda b: "yes" if b else "no"
+print(f"{name:<10} {c['narrowest']['widthMm']:8.2f} {c['narrowest']['part']:<12} {c['narrowest']['arcLengthMm']:8.1f} "
+      f"{yes(c['passes']):>6} {f['narrowest']['widthMm']:9.2f} {f['narrowest']['part']:<12} {yes(f['passes']):>6} "
+      f"{t['widthMm']:9.2f}")
+PY
+done
+cat "$out/table.txt"
