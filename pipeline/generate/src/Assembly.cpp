@@ -55,12 +55,21 @@ clinical::Tissue tissueOf(clinical::PathologyKind kind) {
 } // namespace
 
 std::int32_t pathologyRegion(std::size_t pathologyIndex) {
-    return static_cast<std::int32_t>(pathologyIndex) + kWallRegion + 1;
+    return static_cast<std::int32_t>(pathologyIndex) + kCervixRegion + 1;
 }
 
-std::vector<scene::SceneRegion> sceneRegions(const scene::CaseSpec& spec) {
+std::vector<scene::SceneRegion> sceneRegions(const scene::CaseSpec& spec, const TetMesh& tets) {
+    std::array<bool, 3> present{};
+    for (std::size_t t = 0; t < tets.tets.size(); ++t)
+        if (const auto r = tets.regionOf(t); isWallRegion(r))
+            present[static_cast<std::size_t>(r - kMyometriumRegion)] = true;
     std::vector<scene::SceneRegion> regions;
-    regions.push_back({kWallRegion, "myometrium", clinical::Tissue::Myometrium, ""});
+    const std::array<clinical::Tissue, 3> wall{clinical::Tissue::Myometrium, clinical::Tissue::Endometrium,
+                                               clinical::Tissue::Cervix};
+    for (std::size_t k = 0; k < wall.size(); ++k)
+        if (present[k])
+            regions.push_back({kMyometriumRegion + static_cast<std::int32_t>(k),
+                               std::string(clinical::toString(wall[k])), wall[k], ""});
     for (std::size_t i = 0; i < spec.pathologies.size(); ++i) {
         const auto& p = spec.pathologies[i];
         regions.push_back({pathologyRegion(i), p.id, tissueOf(p.kind), p.id});
@@ -68,10 +77,19 @@ std::vector<scene::SceneRegion> sceneRegions(const scene::CaseSpec& spec) {
     return regions;
 }
 
-TetMesh sceneTets(const TetMesh& meshed) {
+TetMesh sceneTets(const TetMesh& meshed, const std::vector<WallLayer>& layers) {
     TetMesh tets = meshed;
-    for (auto& r : tets.regions)
-        r += kSceneRegionOffset;
+    tets.regions.resize(tets.tets.size(), kBodyWallRegion);
+    for (std::size_t t = 0; t < tets.tets.size(); ++t) {
+        const WallLayer layer = layers.empty() ? WallLayer::Myometrium : layers[t];
+        auto& r = tets.regions[t];
+        if (layer == WallLayer::Endometrium)
+            r = kEndometriumRegion; // the wall's lining, or the cover of a pathology in the cavity
+        else if (r == kBodyWallRegion)
+            r = layer == WallLayer::Cervix ? kCervixRegion : kMyometriumRegion;
+        else
+            r = pathologyRegion(static_cast<std::size_t>(r - 1));
+    }
     return tets;
 }
 
@@ -140,7 +158,13 @@ std::vector<scene::SceneLabel> sceneLabels(const scene::CaseSpec& spec, const Te
                               scene::LabelElement::SurfaceFace, spec.pathologies[i].id, std::move(faces)});
     }
     for (std::size_t i = 0; i < spec.pathologies.size(); ++i) {
-        auto base = tetsTouching(tets, pathologyRegion(i), kWallRegion);
+        std::vector<std::int32_t> base;
+        for (const auto wall : {kMyometriumRegion, kEndometriumRegion, kCervixRegion}) {
+            const auto touching = tetsTouching(tets, pathologyRegion(i), wall);
+            base.insert(base.end(), touching.begin(), touching.end());
+        }
+        std::sort(base.begin(), base.end());
+        base.erase(std::unique(base.begin(), base.end()), base.end());
         if (!base.empty())
             labels.push_back({"base:" + spec.pathologies[i].id, scene::LabelKind::PathologyBase,
                               scene::LabelElement::Tet, spec.pathologies[i].id, std::move(base)});
@@ -154,11 +178,11 @@ std::vector<scene::SceneLabel> sceneLabels(const scene::CaseSpec& spec, const Te
 }
 
 scene::ClinicalDescriptors clinicalDescriptors(const scene::CaseSpec& spec, const anatomy::UterusDimensions& organ,
-                                               const pathology::PathologyResult& grown, const TetMesh& tets) {
+                                               const pathology::PathologyResult& grown, const TetMesh& bodyTets) {
     scene::ClinicalDescriptors c;
     c.organ = {organ.lengthMm,       organ.widthMm,       organ.apDepthMm,
                organ.cavityLengthMm, organ.cavityWidthMm, organ.ellipsoidVolumeMl};
-    const auto volumes = regionVolumes(tets);
+    const auto volumes = regionVolumes(bodyTets);
     for (std::size_t i = 0; i < grown.pathologies.size() && i < spec.pathologies.size(); ++i) {
         const auto& g = grown.pathologies[i];
         scene::PathologyDescriptor pd;
@@ -166,7 +190,7 @@ scene::ClinicalDescriptors clinicalDescriptors(const scene::CaseSpec& spec, cons
         pd.kind = spec.pathologies[i].kind;
         pd.regionId = pathologyRegion(i);
         pd.sizeMm = g.descriptors.sizeMm;
-        const auto v = volumes.find(pd.regionId);
+        const auto v = volumes.find(static_cast<std::int32_t>(i + 1)); // body region of pathology i
         pd.volumeMl = v == volumes.end() ? 0.0 : units::mlFromMm3(v->second);
         if (g.kind == clinical::PathologyKind::Myoma) {
             pd.figo = g.descriptors.figo;
@@ -226,12 +250,30 @@ scene::MeshQuality qualityOf(const meshing::QualityReport& q) {
     return m;
 }
 
+Result<TissueStage> tissueStage(const scene::CaseSpec& spec, const merge::MergeResult& merged,
+                                const meshing::MeshResult& meshed, const TissueLayerParams& params) {
+    const double reach = 3.0 * std::max(meshed.targetEdgeLength, 0.5);
+    auto boundary = labelledBoundary(meshed.mesh, merged.body.surfaces.front().surface, spec, reach);
+    if (!boundary)
+        return boundary.failure();
+    TissueStage out;
+    out.layers = tissueLayers(meshed.mesh, kBodyWallRegion, *boundary, params);
+    out.tets = sceneTets(meshed.mesh, out.layers.layer);
+    out.regions = sceneRegions(spec, out.tets);
+    // The boundary's faces do not depend on the region ids (no interfaces): take the scene's ids from the same
+    // extraction of the relabelled mesh.
+    out.boundary = std::move(boundary).value();
+    out.boundary.faceLabels["region"] = extractBoundary(out.tets).faceLabels.at("region");
+    return out;
+}
+
 Result<scene::Scene> assembleScene(const scene::CaseSpec& spec, const OrganInstance& organ,
                                    const pathology::PathologyResult& grown, const merge::MergeResult& merged,
-                                   const meshing::MeshResult& meshed, const Appearance& appearance) {
+                                   const meshing::MeshResult& meshed, const TissueStage& tissue,
+                                   const Appearance& appearance) {
     scene::Scene s;
-    s.tets = sceneTets(meshed.mesh);
-    s.regions = sceneRegions(spec);
+    s.tets = tissue.tets;
+    s.regions = tissue.regions;
     s.surface = appearance.surface;
 
     scene::MaterialOptions materialOptions;
@@ -243,7 +285,7 @@ Result<scene::Scene> assembleScene(const scene::CaseSpec& spec, const OrganInsta
 
     s.labels = sceneLabels(spec, s.tets, s.surface.mesh);
     s.labels.push_back(supportLabel(s.tets, organ.dimensions.cervixLengthMm));
-    s.clinical = clinicalDescriptors(spec, organ.dimensions, grown, s.tets);
+    s.clinical = clinicalDescriptors(spec, organ.dimensions, grown, meshed.mesh);
     auto hydrometra = scene::computeHydrometra(organ.dimensions.ellipsoidVolumeMl, spec.scene.hydrometraPressureKpa);
     if (!hydrometra)
         return hydrometra.failure();

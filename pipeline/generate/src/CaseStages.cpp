@@ -118,4 +118,9 @@ texture::BakeParams bakeParamsFor(const scene::CaseSpec& spec, std::optional<int
     return p;
 }
 
+TissueLayerParams tissueLayerParamsFor(const scene::CaseSpec& spec) {
+    (void)spec;
+    return TissueLayerParams{};
+}
+
 } // namespace hs::generate

@@ -13,7 +13,7 @@ namespace {
 
 /// Where each stage starts in generateScene's progress range, by cost on the default case (the mesh takes about
 /// half the time, the texture a quarter); the last entry closes the range.
-constexpr std::array<double, kStageCount + 1> kStageStart{0.0, 0.06, 0.18, 0.29, 0.76, 1.0, 1.0};
+constexpr std::array<double, kStageCount + 1> kStageStart{0.0, 0.06, 0.18, 0.29, 0.74, 0.76, 1.0, 1.0};
 
 std::size_t indexOf(Stage stage) {
     return static_cast<std::size_t>(stage);
@@ -65,16 +65,21 @@ Status runMeshing(Generated& g, const GenerateParams& params, Progress& progress
     return {};
 }
 
-/// The visual surface: the mesh's boundary with the body outline's labels, baked and split along chart seams.
+Status runTissue(Generated& g) {
+    auto tissue = tissueStage(g.spec, *g.body, *g.mesh, tissueLayerParamsFor(g.spec));
+    if (!tissue)
+        return tissue.failure();
+    g.tissue = std::move(tissue).value();
+    return {};
+}
+
+/// The visual surface: the mesh's labelled boundary, baked and split along chart seams.
 Status runTexture(Generated& g, const GenerateParams& params, Progress& progress) {
-    const double reach = 3.0 * std::max(g.mesh->targetEdgeLength, 0.5);
-    auto boundary = labelledBoundary(sceneTets(g.mesh->mesh), g.body->body.surfaces.front().surface, g.spec, reach);
-    if (!boundary)
-        return boundary.failure();
-    auto baked = texture::bakeAppearance(*boundary, bakeParamsFor(g.spec, params.threads), progress);
+    const SurfaceMesh& boundary = g.tissue->boundary;
+    auto baked = texture::bakeAppearance(boundary, bakeParamsFor(g.spec, params.threads), progress);
     if (!baked)
         return baked.failure();
-    texture::TexturedSurface textured = texture::makeTexturedSurface(*boundary, baked->atlas);
+    texture::TexturedSurface textured = texture::makeTexturedSurface(boundary, baked->atlas);
     Appearance a;
     a.surface.mesh = std::move(textured.mesh);
     a.surface.uvs = std::move(textured.uv);
@@ -88,7 +93,7 @@ Status runTexture(Generated& g, const GenerateParams& params, Progress& progress
 }
 
 Status runScene(Generated& g) {
-    auto s = assembleScene(g.spec, *g.organ, *g.pathologies, *g.body, *g.mesh, *g.appearance);
+    auto s = assembleScene(g.spec, *g.organ, *g.pathologies, *g.body, *g.mesh, *g.tissue, *g.appearance);
     if (!s)
         return s.failure();
     g.scene = std::move(s).value();
@@ -105,6 +110,8 @@ Status runStage(Stage stage, Generated& g, const GenerateParams& params, Progres
         return runMerge(g, params, progress);
     case Stage::Meshing:
         return runMeshing(g, params, progress);
+    case Stage::Tissue:
+        return runTissue(g);
     case Stage::Texture:
         return runTexture(g, params, progress);
     case Stage::Scene:
@@ -123,6 +130,8 @@ void clearFrom(Stage from, Generated& g) {
         g.body.reset();
     if (i <= indexOf(Stage::Meshing))
         g.mesh.reset();
+    if (i <= indexOf(Stage::Tissue))
+        g.tissue.reset();
     if (i <= indexOf(Stage::Texture))
         g.appearance.reset();
     g.scene.reset();
@@ -164,6 +173,8 @@ bool Generated::has(Stage stage) const {
         return body.has_value();
     case Stage::Meshing:
         return mesh.has_value();
+    case Stage::Tissue:
+        return tissue.has_value();
     case Stage::Texture:
         return appearance.has_value();
     case Stage::Scene:

@@ -7,8 +7,8 @@
 namespace hs::generate {
 namespace {
 
-constexpr std::array<std::string_view, kStageCount> kStageKeys{"organ",   "pathology", "merge",
-                                                               "meshing", "texture",   "scene"};
+constexpr std::array<std::string_view, kStageCount> kStageKeys{"organ",  "pathology", "merge", "meshing",
+                                                               "tissue", "texture",   "scene"};
 
 } // namespace
 

@@ -29,33 +29,39 @@ TetMesh threeTets() {
 
 } // namespace
 
-TEST(Assembly, RegionsAreTheWallThenOnePerPathologyInCaseOrder) {
-    const auto regions = sceneRegions(twoPathologyCase());
-    ASSERT_EQ(regions.size(), 3u);
-    EXPECT_EQ(regions[0].id, kWallRegion);
+TEST(Assembly, RegionsAreTheWallTissuesPresentThenOnePerPathologyInCaseOrder) {
+    TetMesh tets = threeTets();
+    tets.regions = {kMyometriumRegion, kCervixRegion, pathologyRegion(0)};
+    const auto regions = sceneRegions(twoPathologyCase(), tets);
+    ASSERT_EQ(regions.size(), 4u);
+    EXPECT_EQ(regions[0].id, kMyometriumRegion);
     EXPECT_EQ(regions[0].name, "myometrium");
     EXPECT_EQ(regions[0].tissue, clinical::Tissue::Myometrium);
-    EXPECT_EQ(regions[1].id, 2);
-    EXPECT_EQ(regions[1].name, "myoma-1");
-    EXPECT_EQ(regions[1].tissue, clinical::Tissue::Myoma);
-    EXPECT_EQ(regions[1].pathologyId, "myoma-1");
-    EXPECT_EQ(regions[2].id, 3);
-    EXPECT_EQ(regions[2].tissue, clinical::Tissue::Polyp);
-    EXPECT_EQ(pathologyRegion(1), 3);
+    EXPECT_EQ(regions[1].id, kCervixRegion); // no endometrium tet: no endometrium region
+    EXPECT_EQ(regions[1].tissue, clinical::Tissue::Cervix);
+    EXPECT_EQ(regions[2].id, 4);
+    EXPECT_EQ(regions[2].name, "myoma-1");
+    EXPECT_EQ(regions[2].tissue, clinical::Tissue::Myoma);
+    EXPECT_EQ(regions[2].pathologyId, "myoma-1");
+    EXPECT_EQ(regions[3].id, 5);
+    EXPECT_EQ(regions[3].tissue, clinical::Tissue::Polyp);
+    EXPECT_EQ(pathologyRegion(1), 5);
 }
 
-TEST(Assembly, SceneTetsShiftEveryBodyRegionByOneSoGmshTagsArePositive) {
-    const TetMesh shifted = sceneTets(threeTets());
-    EXPECT_EQ(shifted.regions, (std::vector<std::int32_t>{1, 2, 3}));
-    EXPECT_EQ(shifted.tets, threeTets().tets);
+TEST(Assembly, SceneTetsGiveTheWallItsLayersAndThePathologiesTheirOwnIds) {
+    const TetMesh plain = sceneTets(threeTets());
+    EXPECT_EQ(plain.regions, (std::vector<std::int32_t>{1, 4, 5}));
+    EXPECT_EQ(plain.tets, threeTets().tets);
+    const TetMesh layered = sceneTets(threeTets(), {WallLayer::Cervix, WallLayer::Endometrium, WallLayer::Myometrium});
+    EXPECT_EQ(layered.regions, (std::vector<std::int32_t>{kCervixRegion, kEndometriumRegion, 5}));
 }
 
 TEST(Assembly, TetsTouchingFindsOnlyTetsSharingAFace) {
     const TetMesh m = sceneTets(threeTets());
-    EXPECT_EQ(tetsTouching(m, 2, 1), (std::vector<std::int32_t>{1}));
-    EXPECT_EQ(tetsTouching(m, 1, 2), (std::vector<std::int32_t>{0}));
-    EXPECT_TRUE(tetsTouching(m, 3, 2).empty()); // shares a vertex only
-    EXPECT_TRUE(tetsTouching(m, 4, 1).empty()); // no such region
+    EXPECT_EQ(tetsTouching(m, 4, 1), (std::vector<std::int32_t>{1}));
+    EXPECT_EQ(tetsTouching(m, 1, 4), (std::vector<std::int32_t>{0}));
+    EXPECT_TRUE(tetsTouching(m, 5, 4).empty()); // shares a vertex only
+    EXPECT_TRUE(tetsTouching(m, 6, 1).empty()); // no such region
 }
 
 TEST(Assembly, FacesWithListsMatchingFacesAscendingAndNothingForAMissingLabel) {
@@ -84,7 +90,7 @@ TEST(Assembly, LabelsComeInContactBaseOstiaCanalOrderAndEmptySetsAreLeftOut) {
     EXPECT_EQ(labels[0].kind, scene::LabelKind::Contact);
     EXPECT_EQ(labels[0].element, scene::LabelElement::SurfaceFace);
     EXPECT_EQ(labels[0].indices, (std::vector<std::int32_t>{1, 2}));
-    EXPECT_EQ(labels[1].name, "base:myoma-1"); // the polyp's region (3) shares no face with the wall
+    EXPECT_EQ(labels[1].name, "base:myoma-1"); // the polyp's region (5) shares no face with the wall
     EXPECT_EQ(labels[1].element, scene::LabelElement::Tet);
     EXPECT_EQ(labels[1].indices, (std::vector<std::int32_t>{1}));
     EXPECT_EQ(labels[2].name, "ostia");
@@ -108,13 +114,13 @@ TEST(Assembly, DescriptorsTakeTheMeasuredSizeAndTheMeshedVolume) {
     anatomy::UterusDimensions organ;
     organ.lengthMm = 70.0;
     organ.ellipsoidVolumeMl = 80.0;
-    const TetMesh tets = sceneTets(threeTets());
+    const TetMesh tets = threeTets(); // body region ids
     const auto c = clinicalDescriptors(spec, organ, grown, tets);
     EXPECT_EQ(c.organ.lengthMm, 70.0);
     EXPECT_EQ(c.organ.uterineVolumeMl, 80.0);
     ASSERT_EQ(c.pathologies.size(), 2u);
     const auto& myoma = c.pathologies[0];
-    EXPECT_EQ(myoma.regionId, 2);
+    EXPECT_EQ(myoma.regionId, 4);
     EXPECT_EQ(myoma.sizeMm, 19.5);
     EXPECT_NEAR(myoma.volumeMl, std::abs(signedVolume(tets, 1)) / 1000.0, 1e-12);
     ASSERT_TRUE(myoma.figo && myoma.lasmar);

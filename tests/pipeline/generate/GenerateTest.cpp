@@ -1,6 +1,7 @@
 // The chain on a light version of the default case: every stage's result is kept, an edit reruns only the stages
 // it touches and gives the same package bytes as a full run, edits that reach back are refused.
 #include "hs/generate/Generate.h"
+#include "hs/generate/TissueLayers.h"
 
 #include "TestSupport.h"
 
@@ -77,13 +78,14 @@ TEST(Generate, KeepsEveryStageResultAndTimesEachStage) {
     for (int i = 0; i < kStageCount; ++i)
         EXPECT_TRUE(g.has(static_cast<Stage>(i))) << toString(static_cast<Stage>(i));
     ASSERT_TRUE(g.scene.has_value());
-    EXPECT_EQ(g.scene->regions.size(), 3u);
+    EXPECT_EQ(g.scene->regions.size(), 5u);
     EXPECT_EQ(g.scene->tets.tets.size(), g.mesh->mesh.tets.size());
     EXPECT_EQ(g.scene->caseSpec, lightCase());
     std::vector<std::string> steps;
     for (const auto& s : g.timings.steps)
         steps.push_back(s.name);
-    EXPECT_EQ(steps, (std::vector<std::string>{"organ", "pathology", "merge", "meshing", "texture", "scene"}));
+    EXPECT_EQ(steps,
+              (std::vector<std::string>{"organ", "pathology", "merge", "meshing", "tissue", "texture", "scene"}));
 }
 
 TEST(Generate, RegeneratingTheTextureGivesTheBytesOfAFullRunOfTheEditedCase) {
@@ -117,8 +119,8 @@ TEST(Generate, RegeneratingTheSceneAppliesAMaterialEdit) {
     ASSERT_TRUE(again.ok()) << again.error().message();
     ASSERT_EQ(again->timings.steps.size(), 1u);
     const auto& materials = again->scene->materials;
-    ASSERT_EQ(materials.size(), 3u);
-    EXPECT_EQ(materials[1].material.youngsModulusKpa, 100.0);
+    ASSERT_EQ(materials.size(), 5u);
+    EXPECT_EQ(materials[3].material.youngsModulusKpa, 100.0);
     EXPECT_EQ(again->scene->caseSpec.title, "stiffer myoma");
     EXPECT_NE(again->scene->hydrometra.pressureKpa, baseRun().scene->hydrometra.pressureKpa);
 }
@@ -186,4 +188,44 @@ TEST(Generate, StopsWhenCancelled) {
     auto cancelled = generateScene(lightCase(), {}, progress);
     ASSERT_FALSE(cancelled.ok());
     EXPECT_EQ(cancelled.error().code, ErrorCode::Cancelled);
+}
+
+TEST(Generate, SplitsTheWallIntoMyometriumEndometriumAndCervixWithTheirOwnMaterials) {
+    const Generated& g = baseRun();
+    const auto& tissue = *g.tissue;
+    const auto& regions = g.scene->regions;
+    ASSERT_EQ(regions.size(), 5u);
+    EXPECT_EQ(regions[0].tissue, clinical::Tissue::Myometrium);
+    EXPECT_EQ(regions[1].tissue, clinical::Tissue::Endometrium);
+    EXPECT_EQ(regions[2].tissue, clinical::Tissue::Cervix);
+    EXPECT_EQ(regions[3].tissue, clinical::Tissue::Myoma);
+    EXPECT_EQ(regions[4].tissue, clinical::Tissue::Polyp);
+    const auto volumes = regionVolumes(g.scene->tets);
+    for (const auto& r : regions)
+        EXPECT_GT(volumes.at(r.id), 0.0) << r.name;
+    // The lining reaches its thickness to within about an edge length.
+    const double edge = g.mesh->targetEdgeLength;
+    const double asked = tissueLayerParamsFor(g.spec).endometriumThicknessMm;
+    EXPECT_NEAR(tissue.layers.meanEndometriumThicknessMm(), asked, edge);
+    // The merged body drapes the wall over what reaches into the cavity (the FIGO 2 myoma, the sessile polyp), so the
+    // lining covers them.
+    EXPECT_FALSE(tetsTouching(g.scene->tets, pathologyRegion(0), kEndometriumRegion).empty());
+    EXPECT_FALSE(tetsTouching(g.scene->tets, pathologyRegion(1), kEndometriumRegion).empty());
+    // The cervix: about the volume of a cylinder of the organ's cervix (30 mm x 28.5 mm), less the canal.
+    EXPECT_GT(tissue.layers.cervixVolumeMm3, 5000.0);
+    EXPECT_LT(tissue.layers.cervixVolumeMm3, 25000.0);
+    // Each tissue region gets its tissue's material.
+    const auto& materials = g.scene->materials;
+    ASSERT_EQ(materials.size(), regions.size());
+    EXPECT_EQ(materials[1].material.youngsModulusKpa,
+              scene::defaultMaterial(clinical::Tissue::Endometrium).youngsModulusKpa);
+    EXPECT_EQ(materials[2].material.youngsModulusKpa,
+              scene::defaultMaterial(clinical::Tissue::Cervix).youngsModulusKpa);
+    // Every tet is in exactly one region, and the pathologies keep their meshed volume (cover included).
+    EXPECT_EQ(g.scene->tets.tets.size(), g.mesh->mesh.tets.size());
+    std::printf("layers: endometrium %zu tets (%.0f mm3, %.2f mm thick for %.2f asked, edge %.2f mm), cover %zu tets, "
+                "cervix %zu tets (%.0f mm3)\n",
+                tissue.layers.endometriumTets, tissue.layers.endometriumVolumeMm3,
+                tissue.layers.meanEndometriumThicknessMm(), asked, edge, tissue.layers.coverTets,
+                tissue.layers.cervixTets, tissue.layers.cervixVolumeMm3);
 }

@@ -8,6 +8,7 @@
 #include "hs/core/SurfaceMesh.h"
 #include "hs/core/TetMesh.h"
 #include "hs/generate/CaseStages.h"
+#include "hs/generate/TissueLayers.h"
 #include "hs/merge/Merge.h"
 #include "hs/meshing/MeshTypes.h"
 #include "hs/pathology/Pathology.h"
@@ -20,17 +21,25 @@
 
 namespace hs::generate {
 
-/// Scene region ids: the merged body's region r becomes r + 1 (Gmsh physical tags must be positive). Region 1 is
-/// the wall (myometrium); region 2 + i is the case's pathology i.
-inline constexpr std::int32_t kSceneRegionOffset = 1;
-inline constexpr std::int32_t kWallRegion = 1;
+/// Scene region ids (positive: they are also Gmsh physical tags). The merged body's wall (body region 0) is split
+/// into its tissue layers, regions 1-3; the body's pathology i (body region i + 1) becomes region 4 + i.
+inline constexpr std::int32_t kMyometriumRegion = 1;
+inline constexpr std::int32_t kEndometriumRegion = 2;
+inline constexpr std::int32_t kCervixRegion = 3;
+inline constexpr std::int32_t kBodyWallRegion = 0; ///< the wall in the merged body and its mesh
 std::int32_t pathologyRegion(std::size_t pathologyIndex);
+/// Whether scene region `id` is one of the wall's tissues (myometrium, endometrium, cervix).
+constexpr bool isWallRegion(std::int32_t id) {
+    return id >= kMyometriumRegion && id <= kCervixRegion;
+}
 
-/// The regions of a case's scene, ascending id: the wall, then one per pathology named by its id.
-std::vector<scene::SceneRegion> sceneRegions(const scene::CaseSpec& spec);
+/// The regions of a case's scene, ascending id: the wall's tissues that `tets` has, then one per pathology named by
+/// its id.
+std::vector<scene::SceneRegion> sceneRegions(const scene::CaseSpec& spec, const TetMesh& tets);
 
-/// The meshed body with scene region ids (every region shifted by kSceneRegionOffset).
-TetMesh sceneTets(const TetMesh& meshed);
+/// The meshed body (body region ids) with scene region ids: wall tets by `layers` (myometrium when `layers` is
+/// empty), pathology tets shifted.
+TetMesh sceneTets(const TetMesh& meshed, const std::vector<WallLayer>& layers = {});
 
 /// The texture stage's result: the visual surface (the tet mesh's boundary split along chart seams, with UVs and
 /// the baked maps) and what the bake reported.
@@ -54,13 +63,13 @@ std::vector<std::int32_t> facesWith(const SurfaceMesh& mesh, const std::string& 
 std::vector<std::int32_t> tetsTouching(const TetMesh& mesh, std::int32_t region, std::int32_t other);
 
 /// The scene's named labels, in this order: contact:<id> (visual faces over pathology i), base:<id> (pathology
-/// tets touching the wall), ostia, cervical-canal. Empty sets give no label.
+/// tets sharing a face with a wall tissue), ostia, cervical-canal. Empty sets give no label.
 std::vector<scene::SceneLabel> sceneLabels(const scene::CaseSpec& spec, const TetMesh& tets, const SurfaceMesh& visual);
 
 /// Organ dimensions and one descriptor per grown pathology (size and FIGO/Lasmar as the pathology stage measured
-/// them, volume as meshed).
+/// them, volume as meshed: the body region's tets, its endometrial cover included). `bodyTets` has body region ids.
 scene::ClinicalDescriptors clinicalDescriptors(const scene::CaseSpec& spec, const anatomy::UterusDimensions& organ,
-                                               const pathology::PathologyResult& grown, const TetMesh& tets);
+                                               const pathology::PathologyResult& grown, const TetMesh& bodyTets);
 
 /// Where a real uterus is held, as the tet label scene::kSupportLabel: the cervix. The vagina grips the portio (in
 /// hysteroscopy a tenaculum holds it as well) and the cardinal and uterosacral ligaments insert on the supravaginal
@@ -78,11 +87,24 @@ LibraryVersions toolVersionsFor(const scene::CaseSpec& spec);
 /// The meshing stage's quality report as scene data.
 scene::MeshQuality qualityOf(const meshing::QualityReport& q);
 
+/// The tissue stage's result: the mesh with scene region ids, its labelled boundary (the texture stage's input) and
+/// the layers it measured.
+struct TissueStage {
+    TetMesh tets;         ///< scene region ids
+    SurfaceMesh boundary; ///< labelledBoundary(tets, ...)
+    TissueLayers layers;
+    std::vector<scene::SceneRegion> regions;
+};
+
+/// Splits the mesh's wall into myometrium, endometrium (`params`' lining) and cervix and labels its boundary.
+[[nodiscard]] Result<TissueStage> tissueStage(const scene::CaseSpec& spec, const merge::MergeResult& merged,
+                                              const meshing::MeshResult& meshed, const TissueLayerParams& params);
+
 /// The whole scene of a case from its stage results. InvalidInput when a material override is out of range or the
 /// result breaks a rule of scene::checkScene (naming it).
 [[nodiscard]] Result<scene::Scene> assembleScene(const scene::CaseSpec& spec, const OrganInstance& organ,
                                                  const pathology::PathologyResult& grown,
                                                  const merge::MergeResult& merged, const meshing::MeshResult& meshed,
-                                                 const Appearance& appearance);
+                                                 const TissueStage& tissue, const Appearance& appearance);
 
 } // namespace hs::generate

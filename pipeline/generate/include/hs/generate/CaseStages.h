@@ -5,6 +5,7 @@
 
 #include "hs/anatomy/ShapeModel.h"
 #include "hs/core/Result.h"
+#include "hs/generate/TissueLayers.h"
 #include "hs/meshing/MeshTypes.h"
 #include "hs/pathology/Pathology.h"
 #include "hs/scene/CaseSpec.h"
@@ -48,6 +49,9 @@ pathology::PathologyParams pathologyParamsFor(const scene::CaseSpec& spec,
 meshing::MeshMethod meshMethodFor(const scene::CaseSpec& spec);
 /// The meshing stage's parameters; `threads` replaces the case's thread count (never changes the mesh).
 meshing::MeshParams meshParamsFor(const scene::CaseSpec& spec, std::optional<int> threads = std::nullopt);
+
+/// The wall's tissue layers the case asks for (the endometrium's thickness follows the patient).
+TissueLayerParams tissueLayerParamsFor(const scene::CaseSpec& spec);
 
 /// Face label of the visual surface that says which appearance a face takes: 0 wall (endometrium, serosa), 1 over a
 /// myoma, 2 over a polyp.

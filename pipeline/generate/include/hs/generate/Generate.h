@@ -39,7 +39,8 @@ struct Generated {
     std::optional<OrganInstance> organ;
     std::optional<pathology::PathologyResult> pathologies; ///< the displaced organ and the grown pathologies
     std::optional<merge::MergeResult> body;                ///< the merged multi-region body
-    std::optional<meshing::MeshResult> mesh;               ///< body region ids (the scene's are shifted by one)
+    std::optional<meshing::MeshResult> mesh;               ///< body region ids (0 the wall, i + 1 pathology i)
+    std::optional<TissueStage> tissue;                     ///< scene region ids: the wall's layers, the pathologies
     std::optional<Appearance> appearance;                  ///< the textured visual surface
     std::optional<scene::Scene> scene;
     StageTimings timings; ///< one step per stage that ran, named by toString(Stage)

@@ -14,10 +14,10 @@
 namespace hs::generate {
 
 /// The stages of the chain, in the order they run.
-enum class Stage { Organ, Pathology, Merge, Meshing, Texture, Scene };
-inline constexpr int kStageCount = 6;
+enum class Stage { Organ, Pathology, Merge, Meshing, Tissue, Texture, Scene };
+inline constexpr int kStageCount = 7;
 
-/// "organ", "pathology", "merge", "meshing", "texture", "scene".
+/// "organ", "pathology", "merge", "meshing", "tissue", "texture", "scene".
 std::string_view toString(Stage stage);
 /// Sets `out` and returns true when `key` is one of the keys above.
 bool fromString(std::string_view key, Stage& out);
