@@ -37,6 +37,8 @@ def sweep_case(i, base):
     patient["heightCm"] = 155.0 + (i * 7) % 30
     patient["weightKg"] = 55.0 + (i * 11) % 40
     patient["menopausal"] = age >= 55
+    # The cycle phase sets the endometrium's thickness; a postmenopausal patient has none.
+    patient["cyclePhase"] = None if age >= 55 else ["menstrual", "proliferative", "secretory"][i % 3]
     pathologies = []
     # Every case has a myoma; the FIGO types cycle so that each appears at least twice.
     figo = FIGO[i % len(FIGO)]

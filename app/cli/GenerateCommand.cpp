@@ -48,6 +48,10 @@ struct VariantReport {
     std::vector<scene::PathologyDescriptor> pathologies;
     scene::OrganDimensions organ;
     std::vector<std::string> warnings;
+    double liningAskedMm = 0.0;  ///< mm, one wall's endometrium as the case asks for it
+    double liningMeshedMm = 0.0; ///< mm, the endometrium's volume per lining area (docs/anatomy.md)
+    double endometriumMl = 0.0;  ///< mL
+    double cervixMl = 0.0;       ///< mL
 };
 
 /// Generates one variant (`spec` already carries its seed) and writes its package.
@@ -79,6 +83,11 @@ Status generateVariant(const scene::CaseSpec& spec, const GenerateOptions& optio
     report.pathologies = s.clinical.pathologies;
     report.organ = s.clinical.organ;
     report.warnings = s.warnings;
+    const auto& layers = generated->tissue->layers;
+    report.liningAskedMm = generate::tissueLayerParamsFor(spec).endometriumThicknessMm;
+    report.liningMeshedMm = layers.endometriumVolumePerLiningAreaMm();
+    report.endometriumMl = layers.endometriumVolumeMm3 / 1000.0;
+    report.cervixMl = layers.cervixVolumeMm3 / 1000.0;
     return {};
 }
 
@@ -163,6 +172,10 @@ nlohmann::ordered_json reportJson(const VariantReport& r) {
         pathologies.push_back(pj);
     }
     j["pathologies"] = pathologies;
+    j["tissue"] = {{"endometriumLiningMm", r.liningAskedMm},
+                   {"endometriumVolumePerLiningAreaMm", r.liningMeshedMm},
+                   {"endometriumMl", r.endometriumMl},
+                   {"cervixMl", r.cervixMl}};
     j["warnings"] = r.warnings;
     return j;
 }
@@ -180,6 +193,8 @@ void printReport(const VariantReport& r) {
         std::printf("pathology   %-10s %.1f mm, %.2f mL%s%s\n", p.id.c_str(), p.sizeMm, p.volumeMl,
                     p.figo ? (", FIGO " + p.figo->toString()).c_str() : "",
                     p.lasmar ? (", Lasmar " + std::to_string(p.lasmar->total())).c_str() : "");
+    std::printf("tissue      endometrium %.2f mL (%.1f mm per lining area, lining asked %.1f mm), cervix %.2f mL\n",
+                r.endometriumMl, r.liningMeshedMm, r.liningAskedMm, r.cervixMl);
     std::printf("mesh        %zu vertices, %zu tetrahedra, mean radius ratio %.3f, min dihedral %.1f deg, "
                 "%zu slivers\n",
                 r.vertices, r.tets, r.quality.meanRadiusRatio, r.quality.minDihedralDeg, r.quality.sliverCount);

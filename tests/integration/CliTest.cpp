@@ -315,8 +315,8 @@ TEST(Cli, GenerateWritesAValidPackageForTheDefaultCase) {
     std::vector<std::string> stages;
     for (const auto& t : v["timings"])
         stages.push_back(t["stage"].get<std::string>());
-    EXPECT_EQ(stages,
-              (std::vector<std::string>{"organ", "pathology", "merge", "meshing", "texture", "scene", "package"}));
+    EXPECT_EQ(stages, (std::vector<std::string>{"organ", "pathology", "merge", "meshing", "tissue", "texture", "scene",
+                                                "package"}));
     auto validate = cli("validate " + quote(scene));
     EXPECT_EQ(validate.exitCode, 0) << validate.out;
     // The scope passage is measured and printed whether or not the 2.9 mm scope fits.
@@ -338,8 +338,10 @@ TEST(Cli, GenerateWritesAValidPackageForTheDefaultCase) {
     auto tets = hs::io::readTetMesh(scene + "/tets.vtu");
     ASSERT_TRUE(tets.ok()) << tets.error().message();
     const auto volumes = hs::regionVolumes(*tets);
-    EXPECT_EQ(volumes.size(), 3u); // myometrium, myoma, polyp
+    // Myometrium, endometrium, cervix, then the myoma and the polyp.
+    ASSERT_EQ(volumes.size(), 5u);
     EXPECT_EQ(volumes.begin()->first, 1);
+    EXPECT_EQ(volumes.rbegin()->first, 5);
 }
 
 TEST(Cli, GenerateGivesTheSamePackageOnRepeatedRunsAndAnyThreadCount) {

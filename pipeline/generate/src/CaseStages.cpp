@@ -95,7 +95,10 @@ meshing::MeshParams meshParamsFor(const scene::CaseSpec& spec, std::optional<int
     p.targetVertices = spec.meshing.targetVertices.value_or(0);
     p.seed = streamSeed(spec.seed, Stream::Meshing);
     p.threads = threads.value_or(spec.meshing.threads);
-    p.particlesPerVoxel = spec.meshing.particlesPerInnerVoxel;
+    p.seeding =
+        spec.meshing.seeding == scene::MeshingSeeding::Random ? meshing::Seeding::Random : meshing::Seeding::Lattice;
+    if (spec.meshing.particlesPerInnerVoxel)
+        p.particlesPerVoxel = *spec.meshing.particlesPerInnerVoxel;
     p.relaxationIterations = spec.meshing.relaxationIterations;
     return p;
 }
@@ -119,8 +122,11 @@ texture::BakeParams bakeParamsFor(const scene::CaseSpec& spec, std::optional<int
 }
 
 TissueLayerParams tissueLayerParamsFor(const scene::CaseSpec& spec) {
-    (void)spec;
-    return TissueLayerParams{};
+    TissueLayerParams p;
+    const double bothLayersMm =
+        spec.anatomy.endometrialThicknessMm.value_or(clinical::typicalEndometrialThicknessMm(spec.patient));
+    p.endometriumThicknessMm = 0.5 * bothLayersMm; // ultrasound measures across the cavity: two linings
+    return p;
 }
 
 } // namespace hs::generate

@@ -193,9 +193,14 @@ Result<Generated> generateScene(const scene::CaseSpec& spec, const GenerateParam
 std::optional<CaseChange> firstChangedStage(const scene::CaseSpec& before, const scene::CaseSpec& after) {
     if (before.seed != after.seed)
         return CaseChange{Stage::Organ, "/seed"};
-    if (!(before.patient == after.patient))
+    // The cycle phase and the endometrial thickness shape only the tissue layers, not the organ.
+    clinical::PatientParams patientBefore = before.patient;
+    patientBefore.cyclePhase = after.patient.cyclePhase;
+    if (!(patientBefore == after.patient))
         return CaseChange{Stage::Organ, "/patient"};
-    if (!(before.anatomy == after.anatomy))
+    scene::AnatomyParams anatomyBefore = before.anatomy;
+    anatomyBefore.endometrialThicknessMm = after.anatomy.endometrialThicknessMm;
+    if (!(anatomyBefore == after.anatomy))
         return CaseChange{Stage::Organ, "/anatomy"};
     if (!(before.pathologies == after.pathologies))
         return CaseChange{Stage::Pathology, "/pathologies"};
@@ -203,6 +208,10 @@ std::optional<CaseChange> firstChangedStage(const scene::CaseSpec& before, const
     meshingBefore.threads = after.meshing.threads; // the thread count never changes a result
     if (!(meshingBefore == after.meshing))
         return CaseChange{Stage::Meshing, "/meshing"};
+    if (before.patient.cyclePhase != after.patient.cyclePhase)
+        return CaseChange{Stage::Tissue, "/patient/cyclePhase"};
+    if (before.anatomy.endometrialThicknessMm != after.anatomy.endometrialThicknessMm)
+        return CaseChange{Stage::Tissue, "/anatomy/endometrialThicknessMm"};
     if (!(before.texture == after.texture))
         return CaseChange{Stage::Texture, "/texture"};
     if (!(before.scene == after.scene))

@@ -12,6 +12,7 @@ namespace hs::scene {
 
 namespace {
 
+using detail::choiceList;
 using detail::formatNumber;
 using detail::formatRange;
 using detail::quoteText;
@@ -72,6 +73,12 @@ void checkPatient(Checker& c, const clinical::PatientParams& p) {
         c.add("/patient/menopausal", "false needs ageYears <= " + formatNumber(limits::kPremenopausalMaxAgeYears) +
                                          " years, got " + formatNumber(p.ageYears) +
                                          " (beyond the shape model's ages at menopause)");
+    if (p.menopausal && p.cyclePhase)
+        c.add("/patient/cyclePhase", "\"" + std::string(clinical::toString(*p.cyclePhase)) +
+                                         "\" given for a postmenopausal patient, who has no cycle: write null");
+    if (!p.menopausal && !p.cyclePhase)
+        c.add("/patient/cyclePhase",
+              "null for a premenopausal patient: give one of " + choiceList(clinical::kCyclePhases));
     c.range("/patient/heightCm", p.heightCm, limits::kHeightCm, "cm");
     c.range("/patient/weightKg", p.weightKg, limits::kWeightKg, "kg");
 }
@@ -80,6 +87,8 @@ void checkAnatomy(Checker& c, const AnatomyParams& a) {
     c.filePath("/anatomy/modelPath", a.modelPath);
     c.range("/anatomy/versionDeg", a.versionDeg, limits::kVersionDeg, "degrees");
     c.range("/anatomy/flexionDeg", a.flexionDeg, limits::kFlexionDeg, "degrees");
+    c.range("/anatomy/endometrialThicknessMm", a.endometrialThicknessMm, limits::kEndometrialThicknessMm,
+            "mm (both layers)");
     const UterusDimensions& d = a.dimensions;
     const std::string p = "/anatomy/dimensions/";
     c.range(p + "lengthMm", d.lengthMm, limits::kLengthMm, "mm");
@@ -210,8 +219,18 @@ void checkMeshing(Checker& c, const MeshingParams& m) {
     c.range("/meshing/targetEdgeLengthMm", m.targetEdgeLengthMm, limits::kTargetEdgeLengthMm, "mm");
     if (m.targetVertices)
         c.range("/meshing/targetVertices", *m.targetVertices, limits::kTargetVertices, "vertices");
-    c.range("/meshing/particlesPerInnerVoxel", m.particlesPerInnerVoxel, limits::kParticlesPerVoxel, "");
-    c.range("/meshing/particlesPerSurfaceVoxel", m.particlesPerSurfaceVoxel, limits::kParticlesPerVoxel, "");
+    if (m.seeding == MeshingSeeding::Random && !m.particlesPerInnerVoxel)
+        c.add("/meshing/particlesPerInnerVoxel", "null with \"random\" seeding: give the particles per inner voxel (" +
+                                                     formatRange(limits::kParticlesPerVoxel) + ")");
+    if (m.seeding == MeshingSeeding::Lattice && m.particlesPerInnerVoxel)
+        c.add("/meshing/particlesPerInnerVoxel", std::to_string(*m.particlesPerInnerVoxel) +
+                                                     " does nothing with \"lattice\" seeding (the lattice sets the "
+                                                     "points): write null, or \"seeding\": \"random\"");
+    if (m.particlesPerInnerVoxel)
+        c.range("/meshing/particlesPerInnerVoxel", *m.particlesPerInnerVoxel, limits::kParticlesPerVoxel, "");
+    if (m.method != MeshingMethod::Particle && m.seeding == MeshingSeeding::Random)
+        c.add("/meshing/seeding", "\"random\" applies to the particle method only (method is \"" +
+                                      std::string(toString(m.method)) + "\"): write \"lattice\"");
     c.range("/meshing/relaxationIterations", m.relaxationIterations, limits::kRelaxationIterations, "");
     c.range("/meshing/threads", m.threads, limits::kThreads, "(0 = all hardware threads)");
 }
@@ -235,6 +254,7 @@ void checkScene(Checker& c, const SceneParams& s) {
         c.range(p + "youngsModulusKpa", m.youngsModulusKpa, youngsModulusRangeKpa(tissue), "kPa");
         c.range(p + "poissonRatio", m.poissonRatio, limits::kPoissonRatio, "");
         c.range(p + "densityKgPerM3", m.densityKgPerM3, limits::kDensityKgPerM3, "kg/m^3");
+        c.range(p + "heterogeneity", m.heterogeneity, limits::kHeterogeneity, "(coefficient of variation)");
     }
 }
 

@@ -28,7 +28,8 @@ std::string describePatient(const clinical::PatientParams& p) {
     const double heightM = p.heightCm / 100.0;
     return rounded(p.ageYears) + " years, gravida " + std::to_string(p.gravidity) + " para " +
            std::to_string(p.parity) + ", " + rounded(p.heightCm) + " cm, " + rounded(p.weightKg) + " kg (BMI " +
-           rounded(p.weightKg / (heightM * heightM)) + "), " + (p.menopausal ? "postmenopausal" : "premenopausal");
+           rounded(p.weightKg / (heightM * heightM)) + "), " + (p.menopausal ? "postmenopausal" : "premenopausal") +
+           (p.cyclePhase ? ", " + std::string(clinical::toString(*p.cyclePhase)) + " phase" : std::string());
 }
 
 std::string describeAnatomy(const AnatomyParams& a) {
@@ -83,9 +84,11 @@ std::string describeMeshing(const MeshingParams& m) {
         text += ", edge " + formatNumber(*m.targetEdgeLengthMm) + " mm";
     if (m.targetVertices)
         text += ", ~" + std::to_string(*m.targetVertices) + " vertices";
-    return text + ", " + std::to_string(m.particlesPerInnerVoxel) + "/" + std::to_string(m.particlesPerSurfaceVoxel) +
-           " particles per inner/surface voxel, " + std::to_string(m.relaxationIterations) +
-           " relaxation iterations, threads " + (m.threads == 0 ? "auto" : std::to_string(m.threads));
+    text += m.seeding == MeshingSeeding::Random
+                ? ", random seeding, " + std::to_string(m.particlesPerInnerVoxel.value_or(0)) + " per inner voxel"
+                : ", lattice seeding";
+    return text + ", " + std::to_string(m.relaxationIterations) + " relaxation iterations, threads " +
+           (m.threads == 0 ? "auto" : std::to_string(m.threads));
 }
 
 std::string describeTexture(const TextureParams& t) {
@@ -100,7 +103,7 @@ std::string describeScene(const SceneParams& s) {
     std::string overridden;
     for (const clinical::Tissue tissue : clinical::kTissues) {
         const MaterialOverride& o = s.materials[static_cast<std::size_t>(tissue)];
-        if (o.youngsModulusKpa || o.poissonRatio || o.densityKgPerM3)
+        if (o.youngsModulusKpa || o.poissonRatio || o.densityKgPerM3 || o.heterogeneity)
             overridden += (overridden.empty() ? "" : ", ") + std::string(toString(tissue));
     }
     return text + ", materials " + (overridden.empty() ? "default" : "overridden for " + overridden);

@@ -130,6 +130,12 @@ bool readValue(const json& v, const std::string& path, ShapeMode& out, Issues& i
 bool readValue(const json& v, const std::string& path, MeshingMethod& out, Issues& issues) {
     return readEnum(v, path, out, kMeshingMethods, issues);
 }
+bool readValue(const json& v, const std::string& path, MeshingSeeding& out, Issues& issues) {
+    return readEnum(v, path, out, kMeshingSeedings, issues);
+}
+bool readValue(const json& v, const std::string& path, clinical::CyclePhase& out, Issues& issues) {
+    return readEnum(v, path, out, clinical::kCyclePhases, issues);
+}
 
 /// A FIGO type: an integer (2) or a string ("2", "2-5"). Range rules are checkCase()'s.
 bool readValue(const json& v, const std::string& path, clinical::FigoType& out, Issues& issues) {
@@ -254,6 +260,7 @@ void readPatient(const json& v, const std::string& path, clinical::PatientParams
     o.read("heightCm", p.heightCm);
     o.read("weightKg", p.weightKg);
     o.read("menopausal", p.menopausal);
+    o.read("cyclePhase", p.cyclePhase);
     o.finish();
 }
 
@@ -278,6 +285,7 @@ void readAnatomy(const json& v, const std::string& path, AnatomyParams& a, Issue
     o.read("flexionDeg", a.flexionDeg);
     if (const json* d = o.member("dimensions"))
         readDimensions(*d, o.pathOf("dimensions"), a.dimensions, issues);
+    o.read("endometrialThicknessMm", a.endometrialThicknessMm);
     o.finish();
 }
 
@@ -357,8 +365,8 @@ void readMeshing(const json& v, const std::string& path, MeshingParams& m, Issue
     if (m.targetEdgeLengthMm && !o.member("targetVertices"))
         m.targetVertices.reset();
     o.read("targetVertices", m.targetVertices);
+    o.read("seeding", m.seeding);
     o.read("particlesPerInnerVoxel", m.particlesPerInnerVoxel);
-    o.read("particlesPerSurfaceVoxel", m.particlesPerSurfaceVoxel);
     o.read("relaxationIterations", m.relaxationIterations);
     o.read("threads", m.threads);
     o.finish();
@@ -391,6 +399,7 @@ void readScene(const json& v, const std::string& path, SceneParams& s, Issues& i
                 fields.read("youngsModulusKpa", out.youngsModulusKpa);
                 fields.read("poissonRatio", out.poissonRatio);
                 fields.read("densityKgPerM3", out.densityKgPerM3);
+                fields.read("heterogeneity", out.heterogeneity);
                 fields.finish();
             }
         }

@@ -39,6 +39,20 @@ struct EnumKeys<MeshingMethod> {
     }
 };
 
+template <>
+struct EnumKeys<MeshingSeeding> {
+    static constexpr const auto& values = kMeshingSeedings;
+    static std::string_view key(MeshingSeeding v) {
+        switch (v) {
+        case MeshingSeeding::Lattice:
+            return "lattice";
+        case MeshingSeeding::Random:
+            return "random";
+        }
+        return "";
+    }
+};
+
 template <class E>
 bool enumFromKey(std::string_view key, E& out) {
     for (const E value : EnumKeys<E>::values) {
@@ -65,6 +79,12 @@ bool fromString(std::string_view key, ShapeMode& out) {
 bool fromString(std::string_view key, MeshingMethod& out) {
     return enumFromKey(key, out);
 }
+std::string_view toString(MeshingSeeding value) {
+    return EnumKeys<MeshingSeeding>::key(value);
+}
+bool fromString(std::string_view key, MeshingSeeding& out) {
+    return enumFromKey(key, out);
+}
 
 // ---- Equality ----
 
@@ -75,18 +95,18 @@ bool operator==(const UterusDimensions& a, const UterusDimensions& b) {
                                                   b.cornualAngleDeg, b.fundalWallThicknessMm, b.cervixLengthMm);
 }
 bool operator==(const AnatomyParams& a, const AnatomyParams& b) {
-    return std::tie(a.shape, a.modelPath, a.versionDeg, a.flexionDeg, a.dimensions) ==
-           std::tie(b.shape, b.modelPath, b.versionDeg, b.flexionDeg, b.dimensions);
+    return std::tie(a.shape, a.modelPath, a.versionDeg, a.flexionDeg, a.dimensions, a.endometrialThicknessMm) ==
+           std::tie(b.shape, b.modelPath, b.versionDeg, b.flexionDeg, b.dimensions, b.endometrialThicknessMm);
 }
 bool operator==(const PathologySpec& a, const PathologySpec& b) {
     return std::tie(a.id, a.kind, a.growthModel, a.sizeMm, a.figo, a.attachment, a.stalkLengthMm, a.placement) ==
            std::tie(b.id, b.kind, b.growthModel, b.sizeMm, b.figo, b.attachment, b.stalkLengthMm, b.placement);
 }
 bool operator==(const MeshingParams& a, const MeshingParams& b) {
-    return std::tie(a.method, a.targetEdgeLengthMm, a.targetVertices, a.particlesPerInnerVoxel,
-                    a.particlesPerSurfaceVoxel, a.relaxationIterations,
-                    a.threads) == std::tie(b.method, b.targetEdgeLengthMm, b.targetVertices, b.particlesPerInnerVoxel,
-                                           b.particlesPerSurfaceVoxel, b.relaxationIterations, b.threads);
+    return std::tie(a.method, a.targetEdgeLengthMm, a.targetVertices, a.seeding, a.particlesPerInnerVoxel,
+                    a.relaxationIterations, a.threads) == std::tie(b.method, b.targetEdgeLengthMm, b.targetVertices,
+                                                                   b.seeding, b.particlesPerInnerVoxel,
+                                                                   b.relaxationIterations, b.threads);
 }
 bool operator==(const TextureExemplars& a, const TextureExemplars& b) {
     return std::tie(a.endometrium, a.myoma, a.polyp) == std::tie(b.endometrium, b.myoma, b.polyp);
@@ -95,8 +115,8 @@ bool operator==(const TextureParams& a, const TextureParams& b) {
     return std::tie(a.sizePx, a.exemplars, a.vesselDensity) == std::tie(b.sizePx, b.exemplars, b.vesselDensity);
 }
 bool operator==(const MaterialOverride& a, const MaterialOverride& b) {
-    return std::tie(a.youngsModulusKpa, a.poissonRatio, a.densityKgPerM3) ==
-           std::tie(b.youngsModulusKpa, b.poissonRatio, b.densityKgPerM3);
+    return std::tie(a.youngsModulusKpa, a.poissonRatio, a.densityKgPerM3, a.heterogeneity) ==
+           std::tie(b.youngsModulusKpa, b.poissonRatio, b.densityKgPerM3, b.heterogeneity);
 }
 bool operator==(const SceneParams& a, const SceneParams& b) {
     return a.hydrometraPressureKpa == b.hydrometraPressureKpa && a.materials == b.materials;

@@ -4,9 +4,37 @@
 
 namespace hs::scene::detail {
 
+namespace {
+
+/// Version 1 -> 2: the wall's tissue layers and the fields that did nothing.
+///  - meshing.particlesPerSurfaceVoxel is removed (no seeding read it);
+///  - meshing.seeding is added, "lattice" (what version 1 used), and particlesPerInnerVoxel, which the lattice
+///    ignores, becomes null;
+///  - patient.cyclePhase is added: "proliferative" for a premenopausal patient (what the endometrium's default
+///    stiffness already assumed), null after menopause; anatomy.endometrialThicknessMm and each material's
+///    heterogeneity are added as null (derived / homogeneous, as before).
+/// Anything unexpected (a member of the wrong type) is left for the validator.
+Status upgradeV1ToV2(nlohmann::json& document) {
+    if (auto meshing = document.find("meshing"); meshing != document.end() && meshing->is_object()) {
+        meshing->erase("particlesPerSurfaceVoxel");
+        if (!meshing->contains("seeding")) {
+            (*meshing)["seeding"] = "lattice";
+            (*meshing)["particlesPerInnerVoxel"] = nullptr;
+        }
+    }
+    if (auto patient = document.find("patient"); patient != document.end() && patient->is_object()) {
+        const auto menopausal = patient->find("menopausal");
+        const bool post = menopausal != patient->end() && menopausal->is_boolean() && menopausal->get<bool>();
+        if (!patient->contains("cyclePhase"))
+            (*patient)["cyclePhase"] = post ? nlohmann::json(nullptr) : nlohmann::json("proliferative");
+    }
+    return {};
+}
+
+} // namespace
+
 const CaseUpgradeChain& caseUpgradeChain() {
-    // Version 2 would add here: chain.steps.push_back(upgradeV1ToV2); and kCaseSchemaVersion = 2.
-    static const CaseUpgradeChain chain{kOldestCaseSchemaVersion, kCaseSchemaVersion, {}};
+    static const CaseUpgradeChain chain{kOldestCaseSchemaVersion, kCaseSchemaVersion, {upgradeV1ToV2}};
     return chain;
 }
 

@@ -57,8 +57,13 @@ ojson writeCase(const CaseSpec& spec) {
     j["seed"] = spec.seed;
 
     const clinical::PatientParams& p = spec.patient;
-    j["patient"] = ojson{{"ageYears", p.ageYears}, {"parity", p.parity},     {"gravidity", p.gravidity},
-                         {"heightCm", p.heightCm}, {"weightKg", p.weightKg}, {"menopausal", p.menopausal}};
+    j["patient"] = ojson{{"ageYears", p.ageYears},
+                         {"parity", p.parity},
+                         {"gravidity", p.gravidity},
+                         {"heightCm", p.heightCm},
+                         {"weightKg", p.weightKg},
+                         {"menopausal", p.menopausal},
+                         {"cyclePhase", p.cyclePhase ? ojson(std::string(toString(*p.cyclePhase))) : ojson(nullptr)}};
 
     const AnatomyParams& a = spec.anatomy;
     const UterusDimensions& d = a.dimensions;
@@ -75,6 +80,7 @@ ojson writeCase(const CaseSpec& spec) {
                                   {"cornualAngleDeg", optionalValue(d.cornualAngleDeg)},
                                   {"fundalWallThicknessMm", optionalValue(d.fundalWallThicknessMm)},
                                   {"cervixLengthMm", optionalValue(d.cervixLengthMm)}};
+    anatomy["endometrialThicknessMm"] = optionalValue(a.endometrialThicknessMm);
     j["anatomy"] = anatomy;
 
     ojson pathologies = ojson::array();
@@ -87,8 +93,8 @@ ojson writeCase(const CaseSpec& spec) {
     meshing["method"] = std::string(toString(m.method));
     meshing["targetEdgeLengthMm"] = optionalValue(m.targetEdgeLengthMm);
     meshing["targetVertices"] = optionalValue(m.targetVertices);
-    meshing["particlesPerInnerVoxel"] = m.particlesPerInnerVoxel;
-    meshing["particlesPerSurfaceVoxel"] = m.particlesPerSurfaceVoxel;
+    meshing["seeding"] = std::string(toString(m.seeding));
+    meshing["particlesPerInnerVoxel"] = optionalValue(m.particlesPerInnerVoxel);
     meshing["relaxationIterations"] = m.relaxationIterations;
     meshing["threads"] = m.threads;
     j["meshing"] = meshing;
@@ -109,7 +115,8 @@ ojson writeCase(const CaseSpec& spec) {
         const MaterialOverride& o = spec.scene.materials[static_cast<std::size_t>(tissue)];
         materials[std::string(toString(tissue))] = ojson{{"youngsModulusKpa", optionalValue(o.youngsModulusKpa)},
                                                          {"poissonRatio", optionalValue(o.poissonRatio)},
-                                                         {"densityKgPerM3", optionalValue(o.densityKgPerM3)}};
+                                                         {"densityKgPerM3", optionalValue(o.densityKgPerM3)},
+                                                         {"heterogeneity", optionalValue(o.heterogeneity)}};
     }
     scene["materials"] = materials;
     j["scene"] = scene;

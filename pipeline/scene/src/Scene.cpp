@@ -188,7 +188,12 @@ Result<std::vector<SceneMaterial>> assignMaterials(TetMesh& tets, const std::vec
         m.tissue = region.tissue;
         m.material = effectiveMaterial(params, region.tissue);
         m.youngsModulusRangeKpa = youngsModulusRangeKpa(region.tissue);
-        m.heterogeneity = options.heterogeneity;
+        m.heterogeneity =
+            params.materials[static_cast<std::size_t>(region.tissue)].heterogeneity.value_or(options.heterogeneity);
+        if (!(m.heterogeneity >= 0.0 && m.heterogeneity <= kMaxHeterogeneity))
+            return fail(ErrorCode::InvalidInput, "/scene/materials/" + std::string(toString(region.tissue)) +
+                                                     "/heterogeneity: " + detail::formatNumber(m.heterogeneity) +
+                                                     " is outside 0..0.5");
         HS_TRY(checkMaterialRange(region, m.material));
         materialOfRegion[region.id] = m.id;
         materials.push_back(std::move(m));
@@ -201,7 +206,10 @@ Result<std::vector<SceneMaterial>> assignMaterials(TetMesh& tets, const std::vec
                                                      std::to_string(tets.regionOf(t)) + ", which has no material");
         materialIds[t] = it->second;
     }
-    if (options.heterogeneity > 0.0) {
+    bool heterogeneous = false;
+    for (const auto& m : materials)
+        heterogeneous = heterogeneous || m.heterogeneity > 0.0;
+    if (heterogeneous) {
         const Rng base(options.seed);
         std::vector<std::int32_t> modulusPa(tets.tetCount());
         for (std::size_t t = 0; t < tets.tetCount(); ++t)

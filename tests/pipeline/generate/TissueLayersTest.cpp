@@ -87,7 +87,7 @@ TEST(TissueLayers, CervixSurroundsTheCanalAndTheEndometriumLinesTheCavityToItsTh
         }
     }
     EXPECT_NEAR(layers.liningAreaMm2, 5.0 * 2.0, 1e-9);
-    EXPECT_NEAR(layers.meanEndometriumThicknessMm(), params.endometriumThicknessMm, h);
+    EXPECT_NEAR(layers.endometriumVolumePerLiningAreaMm(), params.endometriumThicknessMm, h);
     EXPECT_GT(layers.cervixTets, 0u);
     EXPECT_NEAR(layers.cervixVolumeMm3, 5.0 * 2.0 * 8.0, 2.0 * 8.0 * h);
 }

@@ -50,12 +50,14 @@ CaseSpec richCase() {
     sessile.placement = clinical::ClinicalPlacement{clinical::UterineLocation::CornualLeft};
     spec.pathologies.push_back(sessile);
 
-    spec.meshing = {MeshingMethod::Cgal, 1.75, std::nullopt, 3, 2, 120, 2};
+    spec.meshing = {MeshingMethod::Cgal, 1.75, std::nullopt, MeshingSeeding::Lattice, std::nullopt, 120, 2};
+    spec.patient.cyclePhase.reset(); // postmenopausal
+    spec.anatomy.endometrialThicknessMm = 9.5;
     spec.texture.sizePx = 2048;
     spec.texture.exemplars.endometrium = "images/endometrium.png";
     spec.texture.vesselDensity = 1.5;
     spec.scene.hydrometraPressureKpa = 10.0;
-    spec.scene.materials[static_cast<std::size_t>(clinical::Tissue::Myoma)] = {80.0, 0.49, 1060.0};
+    spec.scene.materials[static_cast<std::size_t>(clinical::Tissue::Myoma)] = {80.0, 0.49, 1060.0, 0.2};
     spec.scene.materials[static_cast<std::size_t>(clinical::Tissue::Endometrium)].youngsModulusKpa = 12.5;
     return spec;
 }
@@ -109,7 +111,7 @@ TEST(CaseSpec, ToJsonIsDeterministicAndEndsWithANewline) {
     EXPECT_EQ(a, toJson(richCase()));
     ASSERT_FALSE(a.empty());
     EXPECT_EQ(a.back(), '\n');
-    EXPECT_EQ(a.rfind("{\n    \"format\": \"hysteroscene-case\",\n    \"schemaVersion\": 1,", 0), 0u);
+    EXPECT_EQ(a.rfind("{\n    \"format\": \"hysteroscene-case\",\n    \"schemaVersion\": 2,", 0), 0u);
 }
 
 TEST(CaseSpec, MinimalDocumentTakesTheDocumentedDefaults) {

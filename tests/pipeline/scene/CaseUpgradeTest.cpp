@@ -142,3 +142,27 @@ TEST(CaseUpgrade, HugeVersionNumberIsRefusedAsNewer) {
     ASSERT_FALSE(spec.ok());
     EXPECT_EQ(spec.error().code, ErrorCode::Unsupported);
 }
+
+TEST(CaseUpgrade, AVersionOneCaseLosesTheFieldsThatDidNothingAndGainsItsTissueFields) {
+    const std::string v1 = R"({"format": "hysteroscene-case", "schemaVersion": 1,
+        "patient": {"ageYears": 62, "parity": 2, "gravidity": 2, "heightCm": 160, "weightKg": 70, "menopausal": true},
+        "meshing": {"method": "particle", "targetEdgeLengthMm": null, "targetVertices": 30000,
+                    "particlesPerInnerVoxel": 2, "particlesPerSurfaceVoxel": 1, "relaxationIterations": 60,
+                    "threads": 0}})";
+    const auto spec = parseCase(v1, "old.json");
+    ASSERT_TRUE(spec.ok()) << spec.error().message();
+    EXPECT_EQ(spec->meshing.seeding, MeshingSeeding::Lattice);
+    EXPECT_FALSE(spec->meshing.particlesPerInnerVoxel.has_value());
+    EXPECT_FALSE(spec->patient.cyclePhase.has_value()); // postmenopausal
+    EXPECT_FALSE(spec->anatomy.endometrialThicknessMm.has_value());
+
+    const auto young = parseCase(R"({"format": "hysteroscene-case", "schemaVersion": 1,
+        "patient": {"ageYears": 30, "menopausal": false}})",
+                                 "young.json");
+    ASSERT_TRUE(young.ok()) << young.error().message();
+    EXPECT_EQ(young->patient.cyclePhase, clinical::CyclePhase::Proliferative);
+    // Written back, it is a version 2 document that reads the same.
+    const auto again = parseCase(toJson(*young), "again.json");
+    ASSERT_TRUE(again.ok()) << again.error().message();
+    EXPECT_EQ(*again, *young);
+}

@@ -6,7 +6,22 @@
 /// checked where they matter: a case's by scene::checkCase() (hs/scene/CaseSpec.h, limits), the shape model's by
 /// anatomy::validatePatient() (hs/anatomy/PatientParams.h).
 
+#include <array>
+#include <optional>
+#include <string_view>
+
 namespace hs::clinical {
+
+/// Phase of the menstrual cycle on the day of the hysteroscopy; it sets the endometrium's thickness.
+enum class CyclePhase {
+    Menstrual,     ///< "menstrual": days 1-4
+    Proliferative, ///< "proliferative": after menstruation until ovulation; when office hysteroscopy is scheduled
+    Secretory,     ///< "secretory": after ovulation
+};
+constexpr std::array<CyclePhase, 3> kCyclePhases{CyclePhase::Menstrual, CyclePhase::Proliferative,
+                                                 CyclePhase::Secretory};
+std::string_view toString(CyclePhase value); ///< "menstrual", "proliferative", "secretory"
+bool fromString(std::string_view key, CyclePhase& out);
 
 struct PatientParams {
     double ageYears = 35.0;  ///< years; 35: the 35-45 band (line 41-42), uterine length near its peak at 40 (line 30)
@@ -15,7 +30,15 @@ struct PatientParams {
     double heightCm = 165.0; ///< cm; dimensions correlate with height (line 32-33); a typical adult woman
     double weightKg = 65.0;  ///< kg; no correlation with BMI (line 32-33); BMI 23.9 with the default height
     bool menopausal = false; ///< postmenopausal; AP shrinks ~22 % (line 43); true needs age >= 40, false age <= 60
+    /// Premenopausal patients only (unset after menopause). Proliferative: hysteroscopy is done then, which is also
+    /// why the endometrium's default stiffness is the proliferative one (UTERUS.md, tissue mechanics).
+    std::optional<CyclePhase> cyclePhase = CyclePhase::Proliferative;
 };
+
+/// The typical endometrial thickness (mm) of a patient, as transvaginal ultrasound measures it: both layers,
+/// anterior and posterior, across the cavity in the mid-sagittal plane (docs/anatomy.md, "Tissue layers", cites the
+/// sources): menstrual 3 (2-4), proliferative 8 (5-11), secretory 11.5 (7-16), postmenopausal 3 (<= 4).
+double typicalEndometrialThicknessMm(const PatientParams& patient);
 
 bool operator==(const PatientParams& a, const PatientParams& b);
 bool operator!=(const PatientParams& a, const PatientParams& b);

@@ -61,8 +61,9 @@ struct CaseChange {
 };
 
 /// The earliest stage whose inputs differ between `before` and `after`; std::nullopt when they give the same
-/// scene. The seed is read by every stage (Stage::Organ); meshing.threads never changes a result and is ignored;
-/// the title is only recorded in the scene (Stage::Scene).
+/// scene. The seed is read by every stage (Stage::Organ); the patient's cycle phase and the anatomy's endometrial
+/// thickness only by the tissue layers (Stage::Tissue); meshing.threads never changes a result and is ignored; the
+/// title is only recorded in the scene (Stage::Scene).
 std::optional<CaseChange> firstChangedStage(const scene::CaseSpec& before, const scene::CaseSpec& after);
 
 /// Reruns `from` and every stage after it on `edited`, keeping `previous`'s results of the stages before `from`.

@@ -40,8 +40,9 @@ struct TissueLayers {
     double liningAreaMm2 = 0.0;        ///< mm^2, cavity faces of the wall
     double endometriumVolumeMm3 = 0.0; ///< mm^3
     double cervixVolumeMm3 = 0.0;      ///< mm^3
-    /// mm, the endometrium's mean thickness as meshed (volume / lining area); 0 without a lining.
-    double meanEndometriumThicknessMm() const {
+    /// mm, the endometrium's volume per lining area; above the thickness where the cavity curves (the shell wraps
+    /// its rim: docs/anatomy.md); 0 without a lining.
+    double endometriumVolumePerLiningAreaMm() const {
         return liningAreaMm2 > 0.0 ? endometriumVolumeMm3 / liningAreaMm2 : 0.0;
     }
 };

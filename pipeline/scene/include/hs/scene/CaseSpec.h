@@ -29,7 +29,7 @@ namespace hs::scene {
 /// Value of the document's "format" member.
 constexpr std::string_view kCaseFormat = "hysteroscene-case";
 /// The schema version this build writes and validates; older documents are upgraded to it first.
-constexpr int kCaseSchemaVersion = 1;
+constexpr int kCaseSchemaVersion = 2;
 /// The oldest schema version this build can upgrade.
 constexpr int kOldestCaseSchemaVersion = 1;
 /// A case file is a few kB; anything above this is refused before parsing (guards against huge allocations).
@@ -75,6 +75,9 @@ constexpr Range kCornualAngleDeg{30.0, 100.0};       ///< 95 % range 39-88 (line
 constexpr Range kFundalWallThicknessMm{5.0, 20.0};   ///< 10.8-13.6 by age (line 41); >= 5 mm wall
 constexpr Range kCervixLengthMm{20.0, 45.0};         ///< about 30 (line 39)
 constexpr Range kSurfaceCoordinateMm{-500.0, 500.0}; ///< a click on the organ lies well inside this box
+/// Endometrial thickness as ultrasound reports it (both layers): 2-16 mm premenopausal, <= 4 postmenopausal
+/// (docs/anatomy.md, "Tissue layers"), with margin; 1 mm is about the finest lining a 30 000-vertex mesh resolves.
+constexpr Range kEndometrialThicknessMm{1.0, 20.0};
 // Pathologies (mm).
 constexpr Range kMyomaSizeMm{5.0, 100.0};  ///< Lasmar size classes <= 20, 20-50, > 50 mm (line 67)
 constexpr Range kPolypSizeMm{3.0, 40.0};   ///< usually 5-30 mm (line 71)
@@ -84,7 +87,8 @@ constexpr Range kTargetEdgeLengthMm{0.2, 20.0};
 constexpr Range kTargetVertices{500.0, 500000.0};
 constexpr Range kParticlesPerVoxel{1.0, 8.0};
 constexpr Range kRelaxationIterations{0.0, 1000.0};
-constexpr Range kThreads{0.0, 256.0}; ///< 0 = all hardware threads
+constexpr Range kThreads{0.0, 256.0};     ///< 0 = all hardware threads
+constexpr Range kHeterogeneity{0.0, 0.5}; ///< coefficient of variation of Young's modulus per tet
 // Texture.
 constexpr Range kTextureSizePx{64.0, 8192.0}; ///< and a power of two
 constexpr Range kVesselDensity{0.0, 4.0};     ///< relative to the default network; 0 = no vessels
@@ -100,16 +104,24 @@ constexpr Range kDensityKgPerM3{1000.0, 1100.0};   ///< around the generic 1050 
 /// Healthy organ: a random instance of the conditional shape model, or its mean for the patient.
 enum class ShapeMode { Sample, Mean };
 enum class MeshingMethod { Particle, TetGen, Cgal };
+/// How the particle mesher seeds inner voxels (the particle method only).
+enum class MeshingSeeding {
+    Lattice, ///< "lattice": body-centred cubic points (meets the meshing bars; docs/meshing.md)
+    Random,  ///< "random": particlesPerInnerVoxel random points per voxel, as in Sierra et al. 2004 (sec. 2.2)
+};
 
 constexpr std::array<ShapeMode, 2> kShapeModes{ShapeMode::Sample, ShapeMode::Mean};
 constexpr std::array<MeshingMethod, 3> kMeshingMethods{MeshingMethod::Particle, MeshingMethod::TetGen,
                                                        MeshingMethod::Cgal};
+constexpr std::array<MeshingSeeding, 2> kMeshingSeedings{MeshingSeeding::Lattice, MeshingSeeding::Random};
 
 std::string_view toString(ShapeMode value);
-std::string_view toString(MeshingMethod value); ///< "particle", "tetgen", "cgal"
+std::string_view toString(MeshingMethod value);  ///< "particle", "tetgen", "cgal"
+std::string_view toString(MeshingSeeding value); ///< "lattice", "random"
 /// Sets `out` and returns true when `key` is one of the JSON keys above.
 bool fromString(std::string_view key, ShapeMode& out);
 bool fromString(std::string_view key, MeshingMethod& out);
+bool fromString(std::string_view key, MeshingSeeding& out);
 
 // ---- The document. ----
 
@@ -131,6 +143,9 @@ struct AnatomyParams {
     std::optional<double> versionDeg;     ///< degrees, cervix against vagina; + anteverted, - retroverted (line 44)
     std::optional<double> flexionDeg;     ///< degrees, corpus against cervix; + anteflexed, - retroflexed (line 44)
     UterusDimensions dimensions;
+    /// mm, both layers as ultrasound measures them; unset = typical for the patient's cycle phase or menopause
+    /// (clinical::typicalEndometrialThicknessMm). Each wall's lining is half of it.
+    std::optional<double> endometrialThicknessMm;
 };
 
 struct PathologySpec {
@@ -150,10 +165,10 @@ struct MeshingParams {
     /// giving only targetEdgeLengthMm unsets targetVertices.
     std::optional<double> targetEdgeLengthMm;
     std::optional<int> targetVertices = 30000;
-    int particlesPerInnerVoxel = 2;   ///< particles seeded per inner voxel (Sierra et al. 2004, sec. 2.2)
-    int particlesPerSurfaceVoxel = 1; ///< particles seeded per surface voxel
-    int relaxationIterations = 60;    ///< cap; relaxation also stops on convergence
-    int threads = 0;                  ///< 0 = all hardware threads; never changes the result
+    MeshingSeeding seeding = MeshingSeeding::Lattice;
+    std::optional<int> particlesPerInnerVoxel; ///< random seeding only (required there, unset for the lattice)
+    int relaxationIterations = 60;             ///< cap; relaxation also stops on convergence
+    int threads = 0;                           ///< 0 = all hardware threads; never changes the result
 };
 
 /// Exemplar images for texture synthesis; unset = the bundled procedural exemplars.
@@ -174,6 +189,9 @@ struct MaterialOverride {
     std::optional<double> youngsModulusKpa; ///< kPa
     std::optional<double> poissonRatio;     ///< dimensionless
     std::optional<double> densityKgPerM3;   ///< kg/m^3
+    /// Coefficient of variation of Young's modulus per tet, seeded (0 or unset: homogeneous). Myomas are
+    /// heterogeneous (UTERUS.md, tissue mechanics); the spread is the user's.
+    std::optional<double> heterogeneity;
 };
 
 struct SceneParams {
