@@ -68,7 +68,7 @@ TEST(MergedBodyMeshing, MeshesOneMyomaPerModelAndAPolypWithEveryRegionAndItsVolu
     params.pathologies.push_back(
         test::myoma("particles", GrowthModel::Particles, FigoType{6, -1}, 15.0, UterineLocation::LeftLateral));
     params.pathologies.push_back(
-        test::polyp("polyp", GrowthModel::Skeleton, 12.0, false, 0.0, UterineLocation::Fundal));
+        test::polyp("polyp", GrowthModel::Skeleton, 11.0, false, 0.0, UterineLocation::Fundal));
     const auto start = std::chrono::steady_clock::now();
     auto grown = pathology::growPathologies(test::testOrgan(2), params);
     ASSERT_TRUE(grown.ok()) << grown.error().detail;

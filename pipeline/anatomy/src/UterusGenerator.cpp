@@ -17,6 +17,11 @@ constexpr double kBlendPower = 8.0;      ///< soft maximum joining corpus and ce
 constexpr double kPortioShrink = 0.82;   ///< the portio rounds off to this fraction of the cervix radius at the os
 constexpr double kMinBendLengthMm = 20.0;
 constexpr double kWallWindowMm = 7.0; ///< mm; half-height of the window in which the wall rule looks at the serosa
+/// mm; the canal is at least 4 mm across in every direction. In life it is collapsed at rest and the scope opens it
+/// (Nott et al. 2016: "outside of pregnancy the cervical canal is collapsed"); the scene is the rest state a
+/// simulator starts from, so it keeps the way open for the thinnest office hysteroscope (2.9 mm, UTERUS.md), with
+/// about 0.5 mm each side for what meshing takes off a narrow canal (docs/anatomy.md, "Open canal").
+constexpr double kOpenCanalHalfWidthMm = 2.0;
 
 double smoothstep(double e0, double e1, double x) {
     const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
@@ -250,9 +255,10 @@ struct Builder {
         for (int k = 0; k < layout.canalRings; ++k) {
             const double u = static_cast<double>(k) / (layout.canalRings - 1);
             const double z = internalOs * u;
-            // Fusiform canal: narrow at both ora, widest in the middle.
+            // Fusiform canal: narrow at both ora, widest in the middle; never narrower than the open canal.
             const double r = rext + (rio - rext) * u + 0.25 * rio * std::sin(units::kPi * u);
-            rings.push_back(innerRing(z, r, 0.8 * r, 0.0));
+            rings.push_back(
+                innerRing(z, std::max(r, kOpenCanalHalfWidthMm), std::max(0.8 * r, kOpenCanalHalfWidthMm), 0.0));
         }
     }
 
@@ -265,8 +271,8 @@ struct Builder {
     }
 
     void addCavityRings() {
-        const double rio = 0.5 * p.internalOsWidthMm;
-        const double dio = 0.8 * rio;
+        const double rio = std::max(0.5 * p.internalOsWidthMm, kOpenCanalHalfWidthMm);
+        const double dio = std::max(0.8 * rio, kOpenCanalHalfWidthMm);
         const double halfWidth = std::max(rio, 0.5 * p.cavityWidthMm);
         const double halfDepth = std::max(dio, 0.5 * p.cavityDepthMm);
         const double top = cavityTop - capHeight;
