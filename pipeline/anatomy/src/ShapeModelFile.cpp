@@ -62,18 +62,28 @@ struct Writer {
     hid_t file;
     bool ok = true;
 
+    /// Creation properties without modification times, so the same model gives the same file bytes.
+    static hid_t untimed(hid_t propertyClass) {
+        const hid_t p = H5Pcreate(propertyClass);
+        if (p >= 0)
+            H5Pset_obj_track_times(p, 0);
+        return p;
+    }
+
     void dataset(const std::string& path, hid_t type, const std::vector<hsize_t>& dims, const void* values) {
         Handle lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
         H5Pset_create_intermediate_group(lcpl.get(), 1);
         Handle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
-        Handle set(H5Dcreate2(file, path.c_str(), type, space.get(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
+        Handle dcpl(untimed(H5P_DATASET_CREATE), H5Pclose);
+        Handle set(H5Dcreate2(file, path.c_str(), type, space.get(), lcpl.get(), dcpl.get(), H5P_DEFAULT), H5Dclose);
         ok = ok && set.valid() && H5Dwrite(set.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values) >= 0;
     }
     void scalarInt(const std::string& path, int value) {
         Handle lcpl(H5Pcreate(H5P_LINK_CREATE), H5Pclose);
         H5Pset_create_intermediate_group(lcpl.get(), 1);
         Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-        Handle set(H5Dcreate2(file, path.c_str(), H5T_NATIVE_INT, space.get(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT),
+        Handle dcpl(untimed(H5P_DATASET_CREATE), H5Pclose);
+        Handle set(H5Dcreate2(file, path.c_str(), H5T_NATIVE_INT, space.get(), lcpl.get(), dcpl.get(), H5P_DEFAULT),
                    H5Dclose);
         ok = ok && set.valid() && H5Dwrite(set.get(), H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, &value) >= 0;
     }
@@ -83,12 +93,14 @@ struct Writer {
         Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
         H5Tset_size(type.get(), std::max<std::size_t>(1, value.size()));
         Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-        Handle set(H5Dcreate2(file, path.c_str(), type.get(), space.get(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT),
+        Handle dcpl(untimed(H5P_DATASET_CREATE), H5Pclose);
+        Handle set(H5Dcreate2(file, path.c_str(), type.get(), space.get(), lcpl.get(), dcpl.get(), H5P_DEFAULT),
                    H5Dclose);
         ok = ok && set.valid() && H5Dwrite(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, value.c_str()) >= 0;
     }
     void group(const std::string& path) {
-        Handle g(H5Gcreate2(file, path.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+        Handle gcpl(untimed(H5P_GROUP_CREATE), H5Pclose);
+        Handle g(H5Gcreate2(file, path.c_str(), H5P_DEFAULT, gcpl.get(), H5P_DEFAULT), H5Gclose);
         ok = ok && g.valid();
     }
     void attribute(const std::string& object, const std::string& name, const std::string& value) {

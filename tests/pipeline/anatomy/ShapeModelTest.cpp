@@ -7,7 +7,11 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <fstream>
+#include <iterator>
+#include <string>
+#include <thread>
 
 using namespace hs::anatomy;
 using hs::clinical::PatientParams;
@@ -64,6 +68,17 @@ TEST(ShapeModel, BuildsFromACohortAndRoundTripsThroughHdf5) {
     ASSERT_TRUE(a.ok() && b.ok());
     EXPECT_EQ(a->points, b->points); // the build rounds to the file's single precision
     EXPECT_EQ(a->faceLabels, b->faceLabels);
+
+    // The same model gives the same file bytes (no modification times in the file), a second apart or not.
+    std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+    ASSERT_TRUE(saveShapeModel(model, dir.file("again.h5")).ok());
+    auto bytes = [](const std::string& path) {
+        std::ifstream in(path, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    };
+    const std::string first = bytes(dir.file("model.h5"));
+    EXPECT_FALSE(first.empty());
+    EXPECT_TRUE(first == bytes(dir.file("again.h5")));
 }
 
 TEST(ShapeModel, RejectsAFileThatIsNotAModel) {
