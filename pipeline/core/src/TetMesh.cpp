@@ -23,9 +23,35 @@ struct FaceKeyHash {
 };
 
 // Faces of a positively oriented tet (p0, p1, p2, p3), each wound so that its normal points out of the tet.
-constexpr int kTetFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+constexpr const auto& kTetFaces = kTetFacePoints;
+
+FaceKey faceKey(const Tet& tet, int face) {
+    FaceKey key{{tet[static_cast<std::size_t>(kTetFaces[face][0])], tet[static_cast<std::size_t>(kTetFaces[face][1])],
+                 tet[static_cast<std::size_t>(kTetFaces[face][2])]}};
+    std::sort(key.sorted.begin(), key.sorted.end());
+    return key;
+}
 
 } // namespace
+
+std::vector<std::array<std::int32_t, 4>> tetNeighbours(const TetMesh& mesh) {
+    std::vector<std::array<std::int32_t, 4>> out(mesh.tets.size(), {-1, -1, -1, -1});
+    std::unordered_map<FaceKey, std::pair<std::int32_t, int>, FaceKeyHash> open; // face -> (tet, face index)
+    open.reserve(mesh.tets.size() * 2);
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+        for (int f = 0; f < 4; ++f) {
+            const auto [it, inserted] = open.try_emplace(faceKey(mesh.tets[t], f), static_cast<std::int32_t>(t), f);
+            if (inserted)
+                continue;
+            const auto [other, otherFace] = it->second;
+            if (other < 0)
+                continue; // already paired: a third tet on the face is not linked
+            out[t][static_cast<std::size_t>(f)] = other;
+            out[static_cast<std::size_t>(other)][static_cast<std::size_t>(otherFace)] = static_cast<std::int32_t>(t);
+            it->second.first = -1;
+        }
+    return out;
+}
 
 Status validate(const TetMesh& mesh) {
     for (std::size_t i = 0; i < mesh.points.size(); ++i) {

@@ -121,31 +121,30 @@ std::vector<std::int32_t> facesWith(const SurfaceMesh& mesh, const std::string& 
     return faces;
 }
 
-std::vector<std::int32_t> tetsTouching(const TetMesh& mesh, std::int32_t region, std::int32_t other) {
-    std::map<std::array<std::int32_t, 3>, std::int32_t> otherFaces; // sorted face -> 1
-    constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
-    auto faceOf = [&mesh](std::size_t t, const int* f) {
-        std::array<std::int32_t, 3> key{mesh.tets[t][static_cast<std::size_t>(f[0])],
-                                        mesh.tets[t][static_cast<std::size_t>(f[1])],
-                                        mesh.tets[t][static_cast<std::size_t>(f[2])]};
-        std::sort(key.begin(), key.end());
-        return key;
-    };
-    for (std::size_t t = 0; t < mesh.tets.size(); ++t)
-        if (mesh.regionOf(t) == other)
-            for (const auto& f : kFaces)
-                otherFaces.emplace(faceOf(t, f), 1);
+namespace {
+
+/// Tets of region `region` that share a face with a tet whose region satisfies `touches`, ascending.
+template <class Pred>
+std::vector<std::int32_t> tetsTouchingWhere(const TetMesh& mesh,
+                                            const std::vector<std::array<std::int32_t, 4>>& adjacent,
+                                            std::int32_t region, Pred touches) {
     std::vector<std::int32_t> out;
     for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
         if (mesh.regionOf(t) != region)
             continue;
-        for (const auto& f : kFaces)
-            if (otherFaces.count(faceOf(t, f))) {
+        for (const auto u : adjacent[t])
+            if (u >= 0 && touches(mesh.regionOf(static_cast<std::size_t>(u)))) {
                 out.push_back(static_cast<std::int32_t>(t));
                 break;
             }
     }
     return out;
+}
+
+} // namespace
+
+std::vector<std::int32_t> tetsTouching(const TetMesh& mesh, std::int32_t region, std::int32_t other) {
+    return tetsTouchingWhere(mesh, tetNeighbours(mesh), region, [other](std::int32_t r) { return r == other; });
 }
 
 std::vector<scene::SceneLabel> sceneLabels(const scene::CaseSpec& spec, const TetMesh& tets,
@@ -157,14 +156,9 @@ std::vector<scene::SceneLabel> sceneLabels(const scene::CaseSpec& spec, const Te
             labels.push_back({"contact:" + spec.pathologies[i].id, scene::LabelKind::Contact,
                               scene::LabelElement::SurfaceFace, spec.pathologies[i].id, std::move(faces)});
     }
+    const auto adjacent = tetNeighbours(tets);
     for (std::size_t i = 0; i < spec.pathologies.size(); ++i) {
-        std::vector<std::int32_t> base;
-        for (const auto wall : {kMyometriumRegion, kEndometriumRegion, kCervixRegion}) {
-            const auto touching = tetsTouching(tets, pathologyRegion(i), wall);
-            base.insert(base.end(), touching.begin(), touching.end());
-        }
-        std::sort(base.begin(), base.end());
-        base.erase(std::unique(base.begin(), base.end()), base.end());
+        auto base = tetsTouchingWhere(tets, adjacent, pathologyRegion(i), isWallRegion);
         if (!base.empty())
             labels.push_back({"base:" + spec.pathologies[i].id, scene::LabelKind::PathologyBase,
                               scene::LabelElement::Tet, spec.pathologies[i].id, std::move(base)});

@@ -15,7 +15,6 @@ namespace hs::generate {
 namespace {
 
 using FaceKey = std::array<std::int32_t, 3>;
-constexpr int kTetFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
 
 FaceKey sortedFace(std::int32_t a, std::int32_t b, std::int32_t c) {
     FaceKey k{a, b, c};
@@ -63,26 +62,18 @@ TissueLayers tissueLayers(const TetMesh& tets, std::int32_t wallRegion, const Su
     TissueLayers out;
     out.layer.assign(n, WallLayer::Myometrium);
 
-    // Face -> the (first) tet that has it; a boundary face has exactly one.
+    // The tets across each face, and the tet that owns each boundary face.
+    const auto neighbours = tetNeighbours(tets);
     std::map<FaceKey, std::int32_t> faceTet;
-    std::vector<std::array<std::int32_t, 4>> neighbours(n, {-1, -1, -1, -1});
     for (std::size_t t = 0; t < n; ++t)
-        for (int f = 0; f < 4; ++f) {
-            const auto& tet = tets.tets[t];
-            const FaceKey key = sortedFace(tet[static_cast<std::size_t>(kTetFaces[f][0])],
-                                           tet[static_cast<std::size_t>(kTetFaces[f][1])],
-                                           tet[static_cast<std::size_t>(kTetFaces[f][2])]);
-            const auto [it, inserted] = faceTet.emplace(key, static_cast<std::int32_t>(t));
-            if (!inserted) {
-                const auto other = static_cast<std::size_t>(it->second);
-                neighbours[t][static_cast<std::size_t>(f)] = it->second;
-                for (auto& slot : neighbours[other])
-                    if (slot < 0) {
-                        slot = static_cast<std::int32_t>(t);
-                        break;
-                    }
+        for (int f = 0; f < 4; ++f)
+            if (neighbours[t][static_cast<std::size_t>(f)] < 0) {
+                const auto& tet = tets.tets[t];
+                faceTet.emplace(sortedFace(tet[static_cast<std::size_t>(kTetFacePoints[f][0])],
+                                           tet[static_cast<std::size_t>(kTetFacePoints[f][1])],
+                                           tet[static_cast<std::size_t>(kTetFacePoints[f][2])]),
+                                static_cast<std::int32_t>(t));
             }
-        }
 
     // The lining faces of the wall, as sources.
     std::vector<Source> sources;

@@ -5,6 +5,7 @@
 #include "ClearanceGrid.h"
 #include "Format.h"
 #include "hs/core/TriangleGeometry.h"
+#include "hs/core/TriangleGrid.h"
 
 #include <algorithm>
 #include <array>
@@ -301,65 +302,29 @@ Result<Closure> closureOf(const ClearanceGrid& grid, const std::vector<std::uint
     return closure;
 }
 
-/// The tissue boundary as triangles with their boxes, for exact distances along the route.
+/// The tissue boundary and its triangle index, for exact distances along the route.
 struct BoundaryTriangles {
     SurfaceMesh surface;
-    std::vector<Bounds> boxes;
+    TriangleGrid index;
+    explicit BoundaryTriangles(SurfaceMesh boundary) : surface(std::move(boundary)), index(surface, 0.0, false) {}
+    BoundaryTriangles(const BoundaryTriangles&) = delete;
+    BoundaryTriangles& operator=(const BoundaryTriangles&) = delete;
 };
 
-BoundaryTriangles boundaryTriangles(const TetMesh& tets) {
-    BoundaryTriangles b{extractBoundary(tets), {}};
-    b.boxes.reserve(b.surface.faceCount());
-    for (const auto& t : b.surface.triangles) {
-        Bounds box;
-        for (std::int32_t v : t)
-            box.add(b.surface.points[std::size_t(v)]);
-        b.boxes.push_back(box);
-    }
-    return b;
-}
-
-double squaredDistanceToBox(const Vec3& p, const Bounds& box) {
-    double d2 = 0.0;
-    for (int k = 0; k < 3; ++k) {
-        const double e = std::max({box.min[k] - p[k], 0.0, p[k] - box.max[k]});
-        d2 += e * e;
-    }
-    return d2;
-}
-
-/// The boundary triangles near p: within |approx| + 3 voxels, enough for every point up to a voxel from p (the
-/// grid's value is within a voxel of the exact distance).
-std::vector<std::size_t> nearbyTriangles(const Vec3& p, double approxMm, const BoundaryTriangles& b, double voxelMm) {
-    const double reach = std::fabs(approxMm) + 3.0 * voxelMm;
-    std::vector<std::size_t> near;
-    for (std::size_t f = 0; f < b.boxes.size(); ++f)
-        if (squaredDistanceToBox(p, b.boxes[f]) <= reach * reach)
-            near.push_back(f);
-    return near;
-}
-
-/// Exact distance from p to the nearest of `faces`, signed like the grid's (negative in tissue).
-double exactClearance(const Vec3& p, bool inTissue, const BoundaryTriangles& b, const std::vector<std::size_t>& faces) {
-    double best2 = kInf;
-    for (std::size_t f : faces) {
-        const auto& t = b.surface.triangles[f];
-        const auto c = closestPointOnTriangle(p, b.surface.points[std::size_t(t[0])],
-                                              b.surface.points[std::size_t(t[1])], b.surface.points[std::size_t(t[2])]);
-        best2 = std::min(best2, c.distance2);
-    }
-    return inTissue ? -std::sqrt(best2) : std::sqrt(best2);
+/// Exact distance from p to the tissue boundary, signed like the grid's (negative in tissue).
+double exactClearance(const Vec3& p, bool inTissue, const BoundaryTriangles& b) {
+    const double d = std::sqrt(b.index.closest(p).closest.distance2);
+    return inTissue ? -d : d;
 }
 
 /// Moves a route point within a voxel across the route (pattern search in the plane normal to `along`, steps
 /// halved from half a voxel) to where the exact clearance is largest: a voxel centre can lie half a voxel off the
 /// middle of a channel, which would understate its width by up to a voxel. Returns the clearance at the new point.
-double centreAcross(Vec3& p, const Vec3& along, bool inTissue, const BoundaryTriangles& b,
-                    const std::vector<std::size_t>& faces, double voxelMm) {
+double centreAcross(Vec3& p, const Vec3& along, bool inTissue, const BoundaryTriangles& b, double voxelMm) {
     Vec3 u = cross(along, std::fabs(along.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0));
     u = normalized(u);
     const Vec3 v = cross(along, u);
-    double best = exactClearance(p, inTissue, b, faces);
+    double best = exactClearance(p, inTissue, b);
     if (norm2(u) == 0.0)
         return best;
     const Vec3 centre = p;
@@ -369,7 +334,7 @@ double centreAcross(Vec3& p, const Vec3& along, bool inTissue, const BoundaryTri
             for (int dv = -1; dv <= 1; ++dv) {
                 const Vec3 q = from + (u * double(du) + v * double(dv)) * step;
                 if ((du || dv) && distance(q, centre) <= voxelMm) {
-                    const double c = exactClearance(q, inTissue, b, faces);
+                    const double c = exactClearance(q, inTissue, b);
                     if (c > best) {
                         best = c;
                         p = q;
@@ -395,31 +360,6 @@ PassagePart partOf(const Vec3& p, const ScopeLandmarks& l) {
     return PassagePart::Cavity;
 }
 
-/// Trilinear interpolation of the clearance grid at p (voxel values sit at the centres; clamped at the border).
-double clearanceAt(const VoxelGrid<float>& grid, const Vec3& p) {
-    const double h = grid.spacing();
-    std::array<std::int64_t, 3> i0{};
-    std::array<double, 3> t{};
-    for (int k = 0; k < 3; ++k) {
-        const std::int64_t n = grid.dims()[k];
-        const double u = std::clamp((p[k] - grid.origin()[k]) / h - 0.5, 0.0, double(n - 1));
-        i0[std::size_t(k)] = std::min(static_cast<std::int64_t>(std::floor(u)), std::max<std::int64_t>(n - 2, 0));
-        t[std::size_t(k)] = u - double(i0[std::size_t(k)]);
-    }
-    double value = 0.0;
-    for (int corner = 0; corner < 8; ++corner) {
-        Index3 ijk{};
-        double w = 1.0;
-        for (int k = 0; k < 3; ++k) {
-            const bool up = (corner >> k) & 1;
-            ijk[std::size_t(k)] = std::min(i0[std::size_t(k)] + (up ? 1 : 0), grid.dims()[k] - 1);
-            w *= up ? t[std::size_t(k)] : 1.0 - t[std::size_t(k)];
-        }
-        value += w * double(grid.at(ijk));
-    }
-    return value;
-}
-
 /// Route points with exact clearances, arc lengths and parts.
 Result<std::vector<PassagePoint>> describeRoute(const std::vector<std::int64_t>& voxels, const ClearanceGrid& grid,
                                                 const BoundaryTriangles& boundary, const ScopeLandmarks& landmarks,
@@ -438,12 +378,11 @@ Result<std::vector<PassagePoint>> describeRoute(const std::vector<std::int64_t>&
         PassagePoint p;
         p.positionMm = centreOf(i);
         const Vec3 along = normalized(centreOf(std::min(i + 1, voxels.size() - 1)) - centreOf(i > 0 ? i - 1 : 0));
-        const auto faces = nearbyTriangles(p.positionMm, grid.clearanceMm[v], boundary, h);
         // Points in tissue stay at their centre: the route crosses the closure, it does not need room there.
         const bool inTissue = grid.tissue[v] != 0;
-        const double c = faces.empty() ? double(grid.clearanceMm[v])
-                         : inTissue    ? exactClearance(p.positionMm, true, boundary, faces)
-                                       : centreAcross(p.positionMm, along, false, boundary, faces, h);
+        const double c = boundary.surface.triangles.empty() ? double(grid.clearanceMm[v])
+                         : inTissue                         ? exactClearance(p.positionMm, true, boundary)
+                                                            : centreAcross(p.positionMm, along, false, boundary, h);
         p.freeWidthMm = 2.0 * std::max(0.0, c);
         p.arcLengthMm =
             route.empty() ? 0.0 : route.back().arcLengthMm + distance(route.back().positionMm, p.positionMm);
@@ -473,32 +412,14 @@ double straightClearance(const std::vector<PassagePoint>& route, const std::vect
     const auto samples = static_cast<int>(std::ceil(distance(tip, end) / (0.5 * h)));
     if (samples == 0)
         return clearanceMm[i];
-    // Candidates: triangles near the stretch's box, within the grid's largest clearance along it plus a voxel.
-    Bounds stretch;
-    double reach = 0.0;
-    for (int s = 0; s <= samples; ++s) {
-        const Vec3 q = tip + (end - tip) * (double(s) / double(samples));
-        stretch.add(q);
-        reach = std::max(reach, std::fabs(clearanceAt(grid.clearanceMm, q)));
-    }
-    reach += 2.0 * h;
-    std::vector<std::size_t> faces;
-    for (std::size_t f = 0; f < boundary.boxes.size(); ++f) {
-        const Bounds& b = boundary.boxes[f];
-        bool near = true;
-        for (int k = 0; k < 3; ++k)
-            near = near && b.min[k] <= stretch.max[k] + reach && b.max[k] >= stretch.min[k] - reach;
-        if (near)
-            faces.push_back(f);
-    }
     double least = clearanceMm[i];
-    if (faces.empty())
+    if (boundary.surface.triangles.empty())
         return least;
     for (int s = 1; s <= samples; ++s) {
         const Vec3 q = tip + (end - tip) * (double(s) / double(samples));
         const Index3 v = grid.tissue.voxelOf(q);
         const bool inTissue = grid.tissue.contains(v) && grid.tissue.at(v) != 0;
-        least = std::min(least, exactClearance(q, inTissue, boundary, faces));
+        least = std::min(least, exactClearance(q, inTissue, boundary));
     }
     return least;
 }
@@ -645,7 +566,7 @@ Result<ScopePassage> checkScopePassage(const TetMesh& tets, const ScopeLandmarks
     progress.report("scope.route", 0.9);
 
     std::vector<double> clearanceMm;
-    const BoundaryTriangles boundary = boundaryTriangles(tets);
+    const BoundaryTriangles boundary(extractBoundary(tets));
     auto route = describeRoute(*voxels, *grid, boundary, landmarks, clearanceMm, progress);
     if (!route.ok())
         return route.failure();

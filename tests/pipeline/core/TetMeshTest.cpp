@@ -56,3 +56,19 @@ TEST(TetMesh, ValidateRejectsOutOfRangeIndicesAndWrongRegionCount) {
     m.regions.push_back(3);
     EXPECT_FALSE(hs::validate(m).ok());
 }
+
+TEST(TetMesh, NeighboursAreTheTetsAcrossEachFaceAndMinusOneOnTheBoundary) {
+    auto m = twoTets();
+    auto n = hs::tetNeighbours(m);
+    ASSERT_EQ(n.size(), 2u);
+    // Tet 0's face 0 (points 1, 2, 3) is tet 1's face 1 (the face opposite its point 4).
+    EXPECT_EQ(n[0], (std::array<std::int32_t, 4>{1, -1, -1, -1}));
+    EXPECT_EQ(n[1], (std::array<std::int32_t, 4>{-1, 0, -1, -1}));
+    // A third tet on the same face (a non-manifold mesh) is not linked; the first two stay paired.
+    m.points.push_back({0.5, 0.5, 0.5});
+    m.tets.push_back({1, 2, 3, 5});
+    n = hs::tetNeighbours(m);
+    EXPECT_EQ(n[0][0], 1);
+    EXPECT_EQ(n[1][1], 0);
+    EXPECT_EQ(n[2], (std::array<std::int32_t, 4>{-1, -1, -1, -1}));
+}

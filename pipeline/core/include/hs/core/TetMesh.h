@@ -45,4 +45,10 @@ std::size_t invertedTetCount(const TetMesh& mesh, double minVolume = 0.0);
 /// original index in the vertex label "sourcePoint".
 SurfaceMesh extractBoundary(const TetMesh& mesh, bool includeInterfaces = false);
 
+/// The three points of face `k` of a tet (the face opposite its point k), wound outward for a positive tet.
+inline constexpr int kTetFacePoints[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+/// For every tet, the tet across each of its faces (face k as in kTetFacePoints), -1 on the boundary. A face shared
+/// by more than two tets (a non-manifold mesh) links only its first two.
+std::vector<std::array<std::int32_t, 4>> tetNeighbours(const TetMesh& mesh);
+
 } // namespace hs
