@@ -1,13 +1,15 @@
 // render_endoscope: the view a hysteroscope has of a scene package's cavity, offscreen, for the docs and for
 // judging the visual surface at close range (run under xvfb-run -a).
 //   render_endoscope SCENE_DIR OUT.png [--size W H] [--fov DEG] [--smooth] [--advance MM]
-// The camera stands at the internal os (the end of the cervical canal faces nearest the cavity) and looks at the
+// The camera stands at the internal os (the scene's landmark, hs::scene::findScopeLandmarks) and looks at the
 // centre of the cavity (the endometrium faces); the only light is at the camera, as with a scope's light guide.
 // The surface is drawn as the package stores it (surface.vtp with its UVs and maps/albedo.png): without stored
 // normals VTK shades each facet flat, which is what a simulator that loads the package as-is would show.
 // --smooth computes vertex normals first (what smooth normals would give); --advance moves the camera that far
 // along the view direction (mm; negative: back down the canal).
 #include "hs/clinical/Tissue.h"
+#include "hs/scene/ScenePackage.h"
+#include "hs/scene/ScopePassage.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
@@ -40,7 +42,6 @@ namespace {
 
 // Values of the organ's surface tissue label, carried onto the visual surface.
 constexpr int kEndometrium = hs::clinical::labelValue(hs::clinical::SurfaceTissue::Endometrium);
-constexpr int kCervicalCanal = hs::clinical::labelValue(hs::clinical::SurfaceTissue::CervicalCanal);
 
 struct Options {
     std::string scene;
@@ -94,19 +95,15 @@ double dist2(const P3& a, const P3& b) {
     return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]);
 }
 
-/// Camera position (the internal os) and focal point (the cavity's centre) from the tissue labels.
-bool landmarks(vtkPolyData* poly, P3& internalOs, P3& cavityCentre) {
+/// The focal point: the area-weighted centre of the endometrium faces (the cavity's centre).
+bool cavityCentreOf(vtkPolyData* poly, P3& cavityCentre) {
     vtkDataArray* tissue = poly->GetCellData()->GetArray(hs::clinical::kSurfaceTissueLabel);
     if (!tissue)
         return false;
-    std::vector<P3> canal;
     P3 cavity{0, 0, 0};
     double cavityArea = 0.0;
     for (vtkIdType f = 0; f < poly->GetNumberOfCells(); ++f) {
-        const int t = static_cast<int>(tissue->GetTuple1(f));
-        if (t == kCervicalCanal)
-            canal.push_back(centroid(poly, f));
-        else if (t == kEndometrium) {
+        if (static_cast<int>(tissue->GetTuple1(f)) == kEndometrium) {
             vtkCell* c = poly->GetCell(f);
             double a[3], b[3], d[3];
             poly->GetPoint(c->GetPointId(0), a);
@@ -119,18 +116,10 @@ bool landmarks(vtkPolyData* poly, P3& internalOs, P3& cavityCentre) {
             cavityArea += area;
         }
     }
-    if (canal.empty() || cavityArea <= 0.0)
+    if (cavityArea <= 0.0)
         return false;
     for (auto& c : cavity)
         c /= cavityArea;
-    // The internal os: the mean of the tenth of the canal faces nearest the cavity's centre.
-    std::sort(canal.begin(), canal.end(),
-              [&cavity](const P3& a, const P3& b) { return dist2(a, cavity) < dist2(b, cavity); });
-    const std::size_t n = std::max<std::size_t>(1, canal.size() / 10);
-    internalOs = {0, 0, 0};
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t k = 0; k < 3; ++k)
-            internalOs[k] += canal[i][k] / static_cast<double>(n);
     cavityCentre = cavity;
     return true;
 }
@@ -155,9 +144,20 @@ int main(int argc, char** argv) {
     reader->SetFileName(surfacePath.c_str());
     reader->Update();
     vtkPolyData* poly = reader->GetOutput();
-    P3 eye{}, focal{};
-    if (!landmarks(poly, eye, focal)) {
-        std::fprintf(stderr, "render_endoscope: %s: no cervical canal or endometrium faces\n", surfacePath.c_str());
+    // The internal os as the package's other readers (validate's scope passage) find it.
+    auto package = hs::scene::readScenePackage(o.scene);
+    if (!package) {
+        std::fprintf(stderr, "render_endoscope: %s\n", package.error().message().c_str());
+        return 3;
+    }
+    auto found = hs::scene::findScopeLandmarks(*package);
+    if (!found) {
+        std::fprintf(stderr, "render_endoscope: %s: %s\n", o.scene.c_str(), found.error().message().c_str());
+        return 3;
+    }
+    P3 eye{found->internalOsMm.x, found->internalOsMm.y, found->internalOsMm.z}, focal{};
+    if (!cavityCentreOf(poly, focal)) {
+        std::fprintf(stderr, "render_endoscope: %s: no endometrium faces\n", surfacePath.c_str());
         return 3;
     }
     P3 dir{focal[0] - eye[0], focal[1] - eye[1], focal[2] - eye[2]};
