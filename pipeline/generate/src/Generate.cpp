@@ -148,15 +148,18 @@ Status runFrom(Stage from, Generated& g, const GenerateParams& params, Progress&
     }
     clearFrom(from, g);
     g.timings = {};
+    // The stages that run share the whole range: a rerun from the texture goes from 0 to 1 too.
+    const double first = kStageStart[indexOf(from)];
+    const auto scaled = [first](double f) { return first < 1.0 ? (f - first) / (1.0 - first) : 1.0; };
     for (auto i = indexOf(from); i < static_cast<std::size_t>(kStageCount); ++i) {
         const auto stage = static_cast<Stage>(i);
         HS_TRY(progress.check("generation"));
-        auto sub = progress.sub(kStageStart[i], kStageStart[i + 1]);
+        auto sub = progress.sub(scaled(kStageStart[i]), scaled(kStageStart[i + 1]));
         {
             ScopedStepTimer timer(g.timings, std::string(toString(stage)));
             HS_TRY(runStage(stage, g, params, sub));
         }
-        progress.report(toString(stage), kStageStart[i + 1]);
+        progress.report(toString(stage), scaled(kStageStart[i + 1]));
     }
     return {};
 }

@@ -94,7 +94,12 @@ TEST(Generate, RegeneratingTheTextureGivesTheBytesOfAFullRunOfTheEditedCase) {
     edited.texture.sizePx = 128;
     edited.texture.vesselDensity = 0.5;
     std::vector<std::string> keys;
-    Progress watched([&keys](std::string_view key, double) { keys.emplace_back(key); });
+    double lowest = 1.0, highest = 0.0;
+    Progress watched([&](std::string_view key, double f) {
+        keys.emplace_back(key);
+        lowest = std::min(lowest, f);
+        highest = std::max(highest, f);
+    });
     auto again = regenerateFrom(Stage::Texture, baseRun(), edited, {}, watched);
     ASSERT_TRUE(again.ok()) << again.error().message();
     // Only the texture and scene stages ran; the earlier results are the previous run's.
@@ -103,6 +108,9 @@ TEST(Generate, RegeneratingTheTextureGivesTheBytesOfAFullRunOfTheEditedCase) {
     EXPECT_EQ(again->organ->mesh.points, baseRun().organ->mesh.points);
     EXPECT_EQ(again->mesh->mesh.tets, baseRun().mesh->mesh.tets);
     EXPECT_EQ(std::count(keys.begin(), keys.end(), "organ"), 0);
+    // The rerun's own stages fill the whole progress range.
+    EXPECT_LT(lowest, 0.2);
+    EXPECT_DOUBLE_EQ(highest, 1.0);
     EXPECT_EQ(again->scene->surface.albedo.width(), 128);
 
     auto full = generateScene(edited);
