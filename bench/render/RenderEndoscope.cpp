@@ -3,10 +3,10 @@
 //   render_endoscope SCENE_DIR OUT.png [--size W H] [--fov DEG] [--smooth] [--advance MM]
 // The camera stands at the internal os (the scene's landmark, hs::scene::findScopeLandmarks) and looks at the
 // centre of the cavity (the endometrium faces); the only light is at the camera, as with a scope's light guide.
-// The surface is drawn as the package stores it (surface.vtp with its UVs and maps/albedo.png): without stored
-// normals VTK shades each facet flat, which is what a simulator that loads the package as-is would show.
-// --smooth computes vertex normals first (what smooth normals would give); --advance moves the camera that far
-// along the view direction (mm; negative: back down the canal).
+// The surface is drawn as the package stores it (surface.vtp with its UVs, normals and maps/albedo.png): without
+// stored normals VTK shades each facet flat, which is what a simulator that loads such a package as-is shows.
+// --smooth computes vertex normals first; --advance moves the camera that far along the view direction (mm;
+// negative: back down the canal); --eye puts the camera at X Y Z looking at FX FY FZ instead (mm).
 #include "hs/clinical/Tissue.h"
 #include "hs/scene/ScenePackage.h"
 #include "hs/scene/ScopePassage.h"
@@ -51,6 +51,8 @@ struct Options {
     double fovDeg = 90.0; ///< office hysteroscopes see 70-110 degrees
     bool smooth = false;
     double advanceMm = 0.0;
+    bool view = false; ///< --eye: camera and focal point given (mm, scene frame)
+    std::array<double, 3> eye{}, focal{};
 };
 
 bool parse(int argc, char** argv, Options& o) {
@@ -67,7 +69,13 @@ bool parse(int argc, char** argv, Options& o) {
             o.fovDeg = std::atof(argv[++i]);
         else if (a == "--advance" && i + 1 < argc)
             o.advanceMm = std::atof(argv[++i]);
-        else if (a == "--smooth")
+        else if (a == "--eye" && i + 6 < argc) {
+            o.view = true;
+            for (int k = 0; k < 3; ++k)
+                o.eye[static_cast<std::size_t>(k)] = std::atof(argv[++i]);
+            for (int k = 0; k < 3; ++k)
+                o.focal[static_cast<std::size_t>(k)] = std::atof(argv[++i]);
+        } else if (a == "--smooth")
             o.smooth = true;
         else
             return false;
@@ -130,7 +138,7 @@ int main(int argc, char** argv) {
     Options o;
     if (!parse(argc, argv, o)) {
         std::fprintf(stderr, "usage: render_endoscope SCENE_DIR OUT.png [--size W H] [--fov DEG] [--smooth] "
-                             "[--advance MM]\n");
+                             "[--advance MM] [--eye X Y Z FX FY FZ]\n");
         return 2;
     }
     const std::filesystem::path scene(o.scene);
@@ -156,7 +164,10 @@ int main(int argc, char** argv) {
         return 3;
     }
     P3 eye{found->internalOsMm.x, found->internalOsMm.y, found->internalOsMm.z}, focal{};
-    if (!cavityCentreOf(poly, focal)) {
+    if (o.view) {
+        eye = o.eye;
+        focal = o.focal;
+    } else if (!cavityCentreOf(poly, focal)) {
         std::fprintf(stderr, "render_endoscope: %s: no endometrium faces\n", surfacePath.c_str());
         return 3;
     }

@@ -4,6 +4,7 @@
 #include "hs/anatomy/UterusGenerator.h"
 #include "hs/clinical/Tissue.h"
 #include "hs/core/LabelTransfer.h"
+#include "hs/core/Subdivision.h"
 #include "hs/core/Units.h"
 #include "hs/generate/Seeds.h"
 #include "hs/meshing/BaselineMeshers.h"
@@ -91,6 +92,33 @@ TetMesh sceneTets(const TetMesh& meshed, const std::vector<WallLayer>& layers) {
             r = pathologyRegion(static_cast<std::size_t>(r - 1));
     }
     return tets;
+}
+
+std::vector<std::int32_t> scopeSeenFaces(const SurfaceMesh& boundary) {
+    std::vector<std::int32_t> seen(boundary.triangles.size(), 1);
+    const auto tissue = boundary.faceLabels.find(clinical::kSurfaceTissueLabel);
+    if (tissue == boundary.faceLabels.end())
+        return seen;
+    for (std::size_t f = 0; f < seen.size(); ++f)
+        seen[f] = tissue->second[f] == clinical::labelValue(clinical::SurfaceTissue::Serosa) ? 0 : 1;
+    return seen;
+}
+
+int visualSurfaceLevels(const SurfaceMesh& boundary) {
+    const SurfaceShape shape = measureSurfaceShape(boundary, scopeSeenFaces(boundary));
+    int levels = 0;
+    for (double edge = shape.meanEdgeMm; edge > kVisualEdgeLengthMm && levels < kMaxVisualSurfaceLevels; edge /= 2.0)
+        ++levels;
+    return levels;
+}
+
+texture::CloseUpParams closeUpParamsFor(const SurfaceMesh& boundary) {
+    texture::CloseUpParams p;
+    p.levels = visualSurfaceLevels(boundary);
+    p.seen = scopeSeenFaces(boundary);
+    p.smoothing.iterations = 10;
+    p.smoothing.maxDisplacement = kMaxVisualFairingMm;
+    return p;
 }
 
 Result<SurfaceMesh> labelledBoundary(const TetMesh& tets, const SurfaceMesh& outline, const scene::CaseSpec& spec,

@@ -73,14 +73,18 @@ Status runTissue(Generated& g) {
     return {};
 }
 
-/// The visual surface: the mesh's labelled boundary, baked and split along chart seams.
+/// The visual surface: the mesh's labelled boundary, baked, refined for close-ups (visualSurfaceLevels), split along
+/// chart seams and bound to the tets.
 Status runTexture(Generated& g, const GenerateParams& params, Progress& progress) {
     const SurfaceMesh& boundary = g.tissue->boundary;
     auto baked = texture::bakeAppearance(boundary, bakeParamsFor(g.spec, params.threads), progress);
     if (!baked)
         return baked.failure();
-    texture::TexturedSurface textured = texture::makeTexturedSurface(boundary, baked->atlas);
+    texture::TexturedSurface textured =
+        texture::makeCloseUpSurface(boundary, baked->atlas, closeUpParamsFor(boundary));
     Appearance a;
+    a.surface.embedding = embedPoints(g.tissue->tets, textured.mesh.points, params.threads.value_or(g.spec.meshing.threads));
+    a.surface.normals = std::move(textured.normals);
     a.surface.mesh = std::move(textured.mesh);
     a.surface.uvs = std::move(textured.uv);
     a.surface.albedo = std::move(baked->albedo);

@@ -25,10 +25,11 @@ Status writePly(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary
 Result<SurfaceMesh> readStl(const std::string& path, const ReadLimits& limits);
 Status writeStl(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary);
 
-Result<SurfaceMesh> readVtp(const std::string& path, const ReadLimits& limits);
+/// `arrays`: when set, also the floating-point point arrays (see readSurfaceWithArrays).
+Result<SurfaceMesh> readVtp(const std::string& path, const ReadLimits& limits, PointArrays* arrays = nullptr);
 Status writeVtp(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary,
                 const std::vector<std::array<float, 2>>* textureCoordinates = nullptr,
-                const std::vector<Vec3>* normals = nullptr);
+                const std::vector<Vec3>* normals = nullptr, const PointArrays* pointArrays = nullptr);
 
 /// A VTU with tetrahedra gives a TetMesh; one with only surface cells a SurfaceMesh.
 Result<AnyMesh> readVtu(const std::string& path, const ReadLimits& limits);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 
 namespace hs::io {
@@ -111,6 +112,16 @@ Result<SurfaceMesh> readSurface(const std::string& path, const ReadLimits& limit
     return fail(ErrorCode::InvalidInput, path + ": holds tetrahedra, not a surface (read it with readTetMesh)");
 }
 
+Result<SurfaceMesh> readSurfaceWithArrays(const std::string& path, PointArrays& arrays, const ReadLimits& limits) {
+    const Result<MeshFormat> format = formatFromPath(path);
+    if (!format.ok())
+        return format.failure();
+    if (*format != MeshFormat::Vtp)
+        return fail(ErrorCode::InvalidInput, path + ": point arrays are read from VTP files only");
+    arrays.clear();
+    return detail::readVtp(path, limits, &arrays);
+}
+
 Result<TetMesh> readTetMesh(const std::string& path, const ReadLimits& limits) {
     const Result<MeshFormat> format = formatFromPath(path);
     if (!format.ok())
@@ -141,6 +152,22 @@ Status writeSurface(const SurfaceMesh& mesh, const std::string& path, const Writ
     if (options.normals && options.normals->size() != mesh.points.size())
         return fail(ErrorCode::InvalidInput, path + ": " + std::to_string(options.normals->size()) + " normals for " +
                                                  std::to_string(mesh.points.size()) + " points");
+    if (options.pointArrays)
+        for (const auto& [name, array] : *options.pointArrays) {
+            if (!detail::isPortableName(name) || name == "uv" || name == "normals" || mesh.faceLabels.count(name) ||
+                mesh.vertexLabels.count(name))
+                return fail(ErrorCode::InvalidInput, path + ": point array name '" + name +
+                                                         "' is not a valid label name or is taken");
+            if (array.components < 1 || array.components > 9 ||
+                array.values.size() != mesh.points.size() * static_cast<std::size_t>(array.components))
+                return fail(ErrorCode::InvalidInput, path + ": point array '" + name + "' has " +
+                                                         std::to_string(array.values.size()) + " values for " +
+                                                         std::to_string(mesh.points.size()) + " points x " +
+                                                         std::to_string(array.components) + " components (1..9)");
+            for (double v : array.values)
+                if (!std::isfinite(v))
+                    return fail(ErrorCode::InvalidInput, path + ": point array '" + name + "' has a non-finite value");
+        }
     if (options.textureCoordinates || options.normals)
         for (const auto* labels : {&mesh.faceLabels, &mesh.vertexLabels})
             for (const char* reserved : {"uv", "normals"})
@@ -159,7 +186,8 @@ Status writeSurface(const SurfaceMesh& mesh, const std::string& path, const Writ
         case MeshFormat::Off:
             return detail::writeOff(mesh, tmpPath);
         case MeshFormat::Vtp:
-            return detail::writeVtp(mesh, tmpPath, options.binary, options.textureCoordinates, options.normals);
+            return detail::writeVtp(mesh, tmpPath, options.binary, options.textureCoordinates, options.normals,
+                                    options.pointArrays);
         case MeshFormat::Vtu:
             return detail::writeVtuSurface(mesh, tmpPath, options.binary);
         case MeshFormat::GmshMsh:

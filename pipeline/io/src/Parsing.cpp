@@ -197,15 +197,6 @@ Status finishTetMesh(const std::string& path, const TetMesh& mesh) {
 
 namespace {
 
-bool isPortableName(const std::string& name) {
-    if (name.empty() || name.size() > 64)
-        return false;
-    return std::all_of(name.begin(), name.end(), [](char c) {
-        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-' ||
-               c == '.';
-    });
-}
-
 Status checkLabelNames(const LabelMap& labels, const std::string& path, const char* what) {
     for (const auto& [name, values] : labels) {
         if (!isPortableName(name))
@@ -217,6 +208,15 @@ Status checkLabelNames(const LabelMap& labels, const std::string& path, const ch
 }
 
 } // namespace
+
+bool isPortableName(const std::string& name) {
+    if (name.empty() || name.size() > 64)
+        return false;
+    return std::all_of(name.begin(), name.end(), [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-' ||
+               c == '.';
+    });
+}
 
 Status checkWritable(const SurfaceMesh& mesh, const std::string& path) {
     const Status valid = validate(mesh);

@@ -91,6 +91,9 @@ Status checkWritable(const SurfaceMesh& mesh, const std::string& path);
 Status checkWritable(const TetMesh& mesh, const std::string& path);
 
 /// Appends triangles of a polygon (fan from its first corner) to `mesh`; InvalidInput beyond the cell limit.
+/// 1 to 64 characters from A-Z a-z 0-9 _ - . (label and array names that every format can hold).
+bool isPortableName(const std::string& name);
+
 bool appendFan(SurfaceMesh& mesh, const std::int32_t* corners, std::size_t count, std::int64_t maxCells);
 
 } // namespace hs::io::detail

@@ -11,6 +11,7 @@
 #include <vtkCellData.h>
 #include <vtkCellType.h>
 #include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -235,6 +236,38 @@ Status readLabels(const std::string& path, vtkDataSetAttributes* data, const std
     return {};
 }
 
+/// Non-integer point arrays with 1..9 components, as PointArrays; a non-finite value is an error.
+Status readPointArrays(const std::string& path, vtkDataSetAttributes* data, std::size_t pointCount,
+                       PointArrays& out) {
+    for (int a = 0; a < data->GetNumberOfArrays(); ++a) {
+        vtkDataArray* array = data->GetArray(a);
+        if (!array || !array->GetName() || isIntegerArray(array))
+            continue;
+        const std::string name = array->GetName();
+        const int components = array->GetNumberOfComponents();
+        if (name.empty() || out.count(name) != 0 || components < 1 || components > 9)
+            continue;
+        if (array->GetNumberOfTuples() != static_cast<vtkIdType>(pointCount))
+            return fileError(ErrorCode::InvalidInput, path,
+                             "point array '" + name + "' has " + std::to_string(array->GetNumberOfTuples()) +
+                                 " tuples for " + std::to_string(pointCount) + " points");
+        PointArray values;
+        values.components = components;
+        values.values.reserve(pointCount * static_cast<std::size_t>(components));
+        for (vtkIdType row = 0; row < static_cast<vtkIdType>(pointCount); ++row)
+            for (int c = 0; c < components; ++c) {
+                const double v = array->GetComponent(row, c);
+                if (!std::isfinite(v))
+                    return fileError(ErrorCode::InvalidInput, path,
+                                     "point array '" + name + "' has a non-finite value at point " +
+                                         std::to_string(row));
+                values.values.push_back(v);
+            }
+        out.emplace(name, std::move(values));
+    }
+    return {};
+}
+
 /// Offsets start at 0, never decrease and end at the connectivity size; every index names an existing point.
 Status checkCellArray(const std::string& path, vtkCellArray* cells, vtkIdType pointCount, const char* what) {
     if (!cells)
@@ -352,7 +385,7 @@ Result<vtkSmartPointer<vtkDataObject>> readXml(const std::string& path, const Re
 
 } // namespace
 
-Result<SurfaceMesh> readVtp(const std::string& path, const ReadLimits& limits) {
+Result<SurfaceMesh> readVtp(const std::string& path, const ReadLimits& limits, PointArrays* arrays) {
     auto object = readXml(path, limits, true);
     if (!object.ok())
         return object.failure();
@@ -392,6 +425,8 @@ Result<SurfaceMesh> readVtp(const std::string& path, const ReadLimits& limits) {
     }
     HS_TRY(readLabels(path, data->GetCellData(), rows, "cell", mesh.faceLabels));
     HS_TRY(readLabels(path, data->GetPointData(), allRows(mesh.points.size()), "point", mesh.vertexLabels));
+    if (arrays)
+        HS_TRY(readPointArrays(path, data->GetPointData(), mesh.points.size(), *arrays));
     HS_TRY(finishSurface(path, mesh));
     return mesh;
 }
@@ -498,8 +533,19 @@ Status writeXml(vtkDataObject* data, const std::string& tmpPath, bool binary, co
 } // namespace
 
 Status writeVtp(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary,
-                const std::vector<std::array<float, 2>>* textureCoordinates, const std::vector<Vec3>* normals) {
+                const std::vector<std::array<float, 2>>* textureCoordinates, const std::vector<Vec3>* normals,
+                const PointArrays* pointArrays) {
     auto poly = toPolyData(mesh, true);
+    if (pointArrays)
+        for (const auto& [name, array] : *pointArrays) {
+            vtkNew<vtkDoubleArray> values;
+            values->SetName(name.c_str());
+            values->SetNumberOfComponents(array.components);
+            values->SetNumberOfTuples(static_cast<vtkIdType>(mesh.points.size()));
+            for (std::size_t i = 0; i < array.values.size(); ++i)
+                values->SetValue(static_cast<vtkIdType>(i), array.values[i]);
+            poly->GetPointData()->AddArray(values);
+        }
     if (textureCoordinates) {
         vtkNew<vtkFloatArray> uv;
         uv->SetName("uv");

@@ -102,8 +102,9 @@ int addTexture(tinygltf::Model& model, const std::string& png, const std::string
     return static_cast<int>(model.textures.size() - 1);
 }
 
-std::vector<float> unitNormals(const SurfaceMesh& mesh) {
-    const auto normals = vertexNormals(mesh);
+/// The surface's own normals when it has them (smooth across UV seams), else area-weighted ones of the split mesh.
+std::vector<float> unitNormals(const VisualSurface& surface) {
+    const auto normals = surface.normals.empty() ? vertexNormals(surface.mesh) : surface.normals;
     std::vector<float> out;
     out.reserve(normals.size() * 3);
     for (const Vec3& n : normals) {
@@ -192,7 +193,7 @@ Result<std::string> encodeGlb(const VisualSurface& surface, const GltfTextures& 
     tinygltf::Primitive primitive;
     primitive.mode = TINYGLTF_MODE_TRIANGLES;
     primitive.attributes["POSITION"] = addFloatAccessor(model, positions, 3, TINYGLTF_TYPE_VEC3);
-    const std::vector<float> normals = unitNormals(mesh);
+    const std::vector<float> normals = unitNormals(surface);
     primitive.attributes["NORMAL"] = addFloatAccessor(model, normals, 3, TINYGLTF_TYPE_VEC3);
     if (!textures.normalPng.empty())
         primitive.attributes["TANGENT"] =

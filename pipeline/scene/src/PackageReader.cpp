@@ -4,6 +4,7 @@
 #include "PackageFiles.h"
 #include "Png.h"
 #include "SceneJson.h"
+#include "SurfaceEmbedding.h"
 #include "hs/io/AtomicFile.h"
 #include "hs/io/MeshIO.h"
 #include "hs/scene/ScenePackage.h"
@@ -237,10 +238,23 @@ Status readMeshes(const fs::path& root, const PackageManifest& manifest, const P
     if (!tets)
         return fail(tets.error().code, std::string(detail::kTetsFile) + ": " + tets.error().detail);
     scene.tets = std::move(*tets);
-    auto surface = io::readSurface((root / std::string(detail::kSurfaceVtpFile)).string(), meshLimits);
+    io::PointArrays arrays;
+    auto surface = io::readSurfaceWithArrays((root / std::string(detail::kSurfaceVtpFile)).string(), arrays, meshLimits);
     if (!surface)
         return fail(surface.error().code, std::string(detail::kSurfaceVtpFile) + ": " + surface.error().detail);
     scene.surface.mesh = std::move(*surface);
+    HS_TRY(detail::joinEmbedding(scene.surface.mesh, arrays, scene.surface.embedding));
+    if (scene.surface.embedding.empty()) // a package written before the surface was bound to the tets
+        scene.surface.embedding = embedPoints(scene.tets, scene.surface.mesh.points);
+    if (const auto normals = arrays.find("normals"); normals != arrays.end()) {
+        if (normals->second.components != 3)
+            return fail(ErrorCode::InvalidInput, std::string(detail::kSurfaceVtpFile) + ": 'normals' has " +
+                                                     std::to_string(normals->second.components) +
+                                                     " components, expected 3");
+        const auto& v = normals->second.values;
+        for (std::size_t i = 0; i + 2 < v.size(); i += 3)
+            scene.surface.normals.push_back({v[i], v[i + 1], v[i + 2]});
+    }
     auto glbBytes = readVerified(root, *findFile(manifest, detail::kSurfaceGlbFile), limits.maxFileBytes);
     if (!glbBytes)
         return glbBytes.failure();

@@ -4,6 +4,7 @@
 #include "PackageFiles.h"
 #include "Png.h"
 #include "SceneJson.h"
+#include "SurfaceEmbedding.h"
 #include "Sofa.h"
 #include "hs/io/MeshIO.h"
 #include "hs/scene/ScenePackage.h"
@@ -120,7 +121,14 @@ Result<std::vector<PendingFile>> planFiles(const Scene& scene, const PackageWrit
     files.push_back({std::string(detail::kSurfaceVtpFile), [&scene](const fs::path& p) {
                          io::WriteOptions vtp;
                          vtp.textureCoordinates = scene.surface.uvs.empty() ? nullptr : &scene.surface.uvs;
-                         return io::writeSurface(scene.surface.mesh, p.string(), vtp);
+                         vtp.normals = scene.surface.normals.empty() ? nullptr : &scene.surface.normals;
+                         if (scene.surface.embedding.empty())
+                             return io::writeSurface(scene.surface.mesh, p.string(), vtp);
+                         SurfaceMesh mesh = scene.surface.mesh;
+                         io::PointArrays arrays;
+                         detail::splitEmbedding(scene.surface.embedding, mesh, arrays);
+                         vtp.pointArrays = &arrays;
+                         return io::writeSurface(mesh, p.string(), vtp);
                      }});
     if (options.gmsh)
         files.push_back({std::string(detail::kGmshFile),

@@ -101,6 +101,55 @@ Status checkSurface(const VisualSurface& surface) {
     HS_TRY(checkMap(surface.albedo, "albedo", 3));
     HS_TRY(checkMap(surface.normal, "normal", 3));
     HS_TRY(checkMap(surface.roughness, "roughness", 1));
+    if (!surface.normals.empty()) {
+        if (surface.normals.size() != surface.mesh.vertexCount())
+            return fail(ErrorCode::InvalidInput, "the visual surface has " + std::to_string(surface.normals.size()) +
+                                                     " normals for " + std::to_string(surface.mesh.vertexCount()) +
+                                                     " points (one per point expected)");
+        for (std::size_t i = 0; i < surface.normals.size(); ++i)
+            if (!isFinite(surface.normals[i]) || std::abs(norm(surface.normals[i]) - 1.0) > 1e-3)
+                return fail(ErrorCode::InvalidInput, "normal of point " + std::to_string(i) + " is not a unit vector");
+    }
+    return {};
+}
+
+/// Every surface point bound to an existing tet, with weights that sum to 1, stay within the allowed extrapolation
+/// and give the point back (1e-6 of the scene's size).
+Status checkEmbedding(const Scene& scene) {
+    const auto& embedding = scene.surface.embedding;
+    if (embedding.empty())
+        return {};
+    const auto& points = scene.surface.mesh.points;
+    if (embedding.size() != points.size())
+        return fail(ErrorCode::InvalidInput, "the visual surface has " + std::to_string(embedding.size()) +
+                                                 " embedded points for " + std::to_string(points.size()) +
+                                                 " points (one per point expected)");
+    const Bounds box = bounds(scene.surface.mesh);
+    const double tolerance = 1e-6 * std::max(1.0, norm(box.max - box.min));
+    const auto tets = static_cast<std::int64_t>(scene.tets.tetCount());
+    for (std::size_t i = 0; i < embedding.size(); ++i) {
+        const TetEmbedding& e = embedding[i];
+        const std::string where = "surface point " + std::to_string(i) + ": ";
+        if (e.tet < 0 || e.tet >= tets)
+            return fail(ErrorCode::InvalidInput, where + "embedded in tet " + std::to_string(e.tet) + ", allowed 0.." +
+                                                     std::to_string(tets - 1));
+        double sum = 0.0;
+        for (double w : e.weights) {
+            if (!std::isfinite(w) || w < -kMaxEmbeddingExtrapolation || w > 1.0 + kMaxEmbeddingExtrapolation)
+                return fail(ErrorCode::InvalidInput,
+                            where + "barycentric weight " + std::to_string(w) + " outside the allowed " +
+                                std::to_string(-kMaxEmbeddingExtrapolation) + ".." +
+                                std::to_string(1.0 + kMaxEmbeddingExtrapolation));
+            sum += w;
+        }
+        if (std::abs(sum - 1.0) > 1e-6)
+            return fail(ErrorCode::InvalidInput, where + "barycentric weights sum to " + std::to_string(sum) + ", not 1");
+        if (distance(embeddedPoint(scene.tets, e), points[i]) > tolerance)
+            return fail(ErrorCode::InvalidInput, where + "its embedding in tet " + std::to_string(e.tet) +
+                                                     " lies " + std::to_string(distance(embeddedPoint(scene.tets, e),
+                                                                                        points[i])) +
+                                                     " mm away from it");
+    }
     return {};
 }
 
@@ -244,6 +293,7 @@ Status checkScene(const Scene& scene) {
     if (scene.tets.tetCount() == 0)
         return fail(ErrorCode::InvalidInput, "the tet mesh has no tetrahedra");
     HS_TRY(checkSurface(scene.surface));
+    HS_TRY(checkEmbedding(scene));
     HS_TRY(checkMaterials(scene));
     HS_TRY(checkLabels(scene));
     const auto issues = checkCase(scene.caseSpec);

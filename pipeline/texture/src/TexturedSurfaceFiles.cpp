@@ -2,6 +2,7 @@
 #include "hs/texture/Bake.h"
 #include "hs/texture/ImageFiles.h"
 
+#include "hs/core/Subdivision.h"
 #include "hs/io/AtomicFile.h"
 #include "hs/io/MeshIO.h"
 #include "hs/io/TexturedSurface.h"
@@ -9,6 +10,7 @@
 #include <filesystem>
 #include <string>
 #include <system_error>
+#include <unordered_map>
 
 namespace hs::texture {
 
@@ -33,6 +35,46 @@ TexturedSurface makeTexturedSurface(const SurfaceMesh& surface, const Atlas& atl
         for (const UvVertex& q : atlas.uvVertices)
             dst.push_back(values[static_cast<std::size_t>(q.vertex)]);
     }
+    return out;
+}
+
+TexturedSurface makeCloseUpSurface(const SurfaceMesh& surface, const Atlas& atlas, const CloseUpParams& params) {
+    const int levels = params.levels;
+    SurfaceMesh labelled =
+        params.smoothing.iterations > 0 ? taubinSmooth(surface, params.seen, params.smoothing) : surface;
+    labelled.vertexLabels.clear();
+    labelled.faceLabels["chart"] = atlas.chartOfFace;
+    std::vector<std::array<CornerUv, 3>> corners(surface.triangles.size());
+    for (std::size_t f = 0; f < corners.size(); ++f)
+        for (std::size_t k = 0; k < 3; ++k) {
+            const UvVertex& q = atlas.uvVertices[static_cast<std::size_t>(atlas.uvTriangles[f][k])];
+            corners[f][k] = {q.u, q.v};
+        }
+    SurfaceMesh smooth = loopSubdivide(labelled, levels);
+    for (int i = 0; i < levels; ++i)
+        corners = subdivideCorners(corners);
+    const std::vector<Vec3> normals = vertexNormals(smooth);
+
+    // One output point per (point, chart), numbered in order of first use.
+    const auto& chart = smooth.faceLabels.at("chart");
+    std::unordered_map<std::uint64_t, std::int32_t> split;
+    split.reserve(smooth.points.size() * 2);
+    TexturedSurface out;
+    out.mesh.triangles.resize(smooth.triangles.size());
+    for (std::size_t f = 0; f < smooth.triangles.size(); ++f)
+        for (std::size_t k = 0; k < 3; ++k) {
+            const std::int32_t v = smooth.triangles[f][k];
+            const std::uint64_t key =
+                (static_cast<std::uint64_t>(static_cast<std::uint32_t>(v)) << 32) | static_cast<std::uint32_t>(chart[f]);
+            const auto [it, inserted] = split.try_emplace(key, static_cast<std::int32_t>(out.mesh.points.size()));
+            if (inserted) {
+                out.mesh.points.push_back(smooth.points[static_cast<std::size_t>(v)]);
+                out.uv.push_back({static_cast<float>(corners[f][k][0]), static_cast<float>(corners[f][k][1])});
+                out.normals.push_back(normals[static_cast<std::size_t>(v)]);
+            }
+            out.mesh.triangles[f][k] = it->second;
+        }
+    out.mesh.faceLabels = std::move(smooth.faceLabels);
     return out;
 }
 

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,46 @@ TEST(TexturedVtp, WritesNormalsAsTheActiveNormalsAndRefusesLabelsNamedLikeThem) 
     m.faceLabels.clear();
     options.normals = &tooFew;
     EXPECT_EQ(writeSurface(m, tmp.file("few.vtp"), options).error().code, ErrorCode::InvalidInput);
+}
+
+TEST(TexturedVtp, KeepsFloatingPointArraysBitForBitAndRefusesBadOnes) {
+    const SurfaceMesh m = tetrahedron();
+    test::TempDir tmp;
+    PointArrays arrays;
+    arrays["weights"] = {4, {0.1, 0.2, 0.3, 0.4, 1.0 / 3.0, 1e-300, -2.5, 7.0, 0, 0, 0, 1, -0.0, 0.5, 0.25, 0.25}};
+    arrays["height"] = {1, {1.5, 2.5, 3.5, 4.5}};
+    const std::vector<Vec3> normals(4, Vec3{0, 0, 1});
+    WriteOptions options;
+    options.pointArrays = &arrays;
+    options.normals = &normals;
+    ASSERT_TRUE(writeSurface(m, tmp.file("a.vtp"), options).ok());
+    PointArrays read;
+    auto back = readSurfaceWithArrays(tmp.file("a.vtp"), read);
+    ASSERT_TRUE(back.ok()) << back.error().message();
+    EXPECT_EQ(back->triangles, m.triangles);
+    ASSERT_EQ(read.count("weights"), 1u);
+    EXPECT_EQ(read.at("weights").components, 4);
+    EXPECT_EQ(read.at("weights").values, arrays.at("weights").values);
+    EXPECT_EQ(read.at("height").values, arrays.at("height").values);
+    ASSERT_EQ(read.count("normals"), 1u); // the normals come back as an array too
+    EXPECT_EQ(read.at("normals").components, 3);
+    EXPECT_FALSE(readSurfaceWithArrays(tmp.file("a.stl"), read).ok()); // VTP only
+
+    PointArrays bad = arrays;
+    bad["weights"].values.pop_back();
+    options.pointArrays = &bad;
+    EXPECT_EQ(writeSurface(m, tmp.file("short.vtp"), options).error().code, ErrorCode::InvalidInput);
+    bad = arrays;
+    bad["height"].values[2] = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_EQ(writeSurface(m, tmp.file("nan.vtp"), options).error().code, ErrorCode::InvalidInput);
+    bad = arrays;
+    bad["uv"] = {1, {0, 0, 0, 0}};
+    EXPECT_EQ(writeSurface(m, tmp.file("taken.vtp"), options).error().code, ErrorCode::InvalidInput);
+    bad = arrays;
+    bad["bad name"] = {1, {0, 0, 0, 0}};
+    EXPECT_EQ(writeSurface(m, tmp.file("name.vtp"), options).error().code, ErrorCode::InvalidInput);
+    for (const char* f : {"short.vtp", "nan.vtp", "taken.vtp", "name.vtp"})
+        EXPECT_FALSE(std::filesystem::exists(tmp.file(f))) << f;
 }
 
 } // namespace

@@ -122,6 +122,54 @@ TEST_F(ScenePackage, ReadsBackTheSceneItWasWrittenFrom) {
     EXPECT_EQ(read->clinical.pathologies[0].figo->toString(), "2");
     EXPECT_EQ(read->toolVersions, original.toolVersions);
     EXPECT_EQ(read->quality.tetCount, original.tets.tetCount());
+    // Written without an embedding (as packages were before the surface was bound to the tets): computed on read.
+    ASSERT_EQ(read->surface.embedding.size(), read->surface.mesh.vertexCount());
+    for (std::size_t i = 0; i < read->surface.embedding.size(); ++i)
+        EXPECT_LT(distance(embeddedPoint(read->tets, read->surface.embedding[i]), read->surface.mesh.points[i]), 1e-9);
+}
+
+TEST_F(ScenePackage, KeepsTheSurfacesNormalsAndItsEmbeddingInTheTets) {
+    Scene original = test::syntheticScene();
+    original.surface.embedding = embedPoints(original.tets, original.surface.mesh.points);
+    original.surface.embedding[0].weights = {0.1, 0.2, 0.3, 0.4}; // any weights that give the point back
+    original.surface.mesh.points[0] = embeddedPoint(original.tets, original.surface.embedding[0]);
+    for (const Vec3& n : vertexNormals(original.surface.mesh))
+        original.surface.normals.push_back(n / norm(n));
+    const auto written = writeScenePackage(original, m_dir.file("bound"));
+    ASSERT_TRUE(written.ok()) << written.error().message();
+    const auto read = readScenePackage(m_dir.file("bound"));
+    ASSERT_TRUE(read.ok()) << read.error().message();
+    ASSERT_EQ(read->surface.embedding.size(), original.surface.embedding.size());
+    for (std::size_t i = 0; i < original.surface.embedding.size(); ++i) {
+        EXPECT_EQ(read->surface.embedding[i].tet, original.surface.embedding[i].tet);
+        EXPECT_EQ(read->surface.embedding[i].weights, original.surface.embedding[i].weights); // Float64, bit for bit
+    }
+    EXPECT_TRUE(read->surface.mesh.vertexLabels.count("embedTet") == 0); // taken out of the labels
+    ASSERT_EQ(read->surface.normals.size(), original.surface.normals.size());
+    for (std::size_t i = 0; i < original.surface.normals.size(); ++i)
+        EXPECT_LT(distance(read->surface.normals[i], original.surface.normals[i]), 1e-6); // Float32 in the file
+    // Written again from what was read: the same bytes.
+    ASSERT_TRUE(writeScenePackage(*read, m_dir.file("again")).ok());
+    EXPECT_EQ(readText(m_dir.path() / "bound" / "surface.vtp"), readText(m_dir.path() / "again" / "surface.vtp"));
+}
+
+TEST_F(ScenePackage, RefusesAnEmbeddingThatDoesNotGiveThePointBack) {
+    Scene scene = test::syntheticScene();
+    scene.surface.embedding = embedPoints(scene.tets, scene.surface.mesh.points);
+    Scene far = scene;
+    far.surface.embedding[3].weights = {0.25, 0.25, 0.25, 0.25};
+    auto refused = writeScenePackage(far, m_dir.file("far"));
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.error().detail.find("surface point 3"), std::string::npos) << refused.error().detail;
+    Scene wild = scene;
+    wild.surface.embedding[5].weights = {50.0, -49.0, 0.0, 0.0};
+    refused = writeScenePackage(wild, m_dir.file("wild"));
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.error().detail.find("outside the allowed"), std::string::npos) << refused.error().detail;
+    Scene missing = scene;
+    missing.surface.embedding[7].tet = static_cast<std::int32_t>(scene.tets.tetCount());
+    EXPECT_FALSE(writeScenePackage(missing, m_dir.file("missing")).ok());
+    EXPECT_FALSE(fs::exists(m_dir.path() / "missing"));
 }
 
 TEST_F(ScenePackage, WritesASofaSceneWithOneForceFieldPerRegion) {

@@ -41,13 +41,33 @@ std::vector<scene::SceneRegion> sceneRegions(const scene::CaseSpec& spec, const 
 /// empty), pathology tets shifted.
 TetMesh sceneTets(const TetMesh& meshed, const std::vector<WallLayer>& layers = {});
 
-/// The texture stage's result: the visual surface (the tet mesh's boundary split along chart seams, with UVs and
-/// the baked maps) and what the bake reported.
+/// The texture stage's result: the visual surface (the tet mesh's boundary refined for close-ups, split along chart
+/// seams, with UVs, normals, its embedding in the tets and the baked maps) and what the bake reported.
 struct Appearance {
     scene::VisualSurface surface;
     texture::BakeStats stats;
     std::vector<std::string> warnings;
 };
+
+/// Edge length the visual surface aims at where the hysteroscope sees it, mm. The scope looks at the wall from a
+/// few millimetres (a lesion inspected closely) to the cavity's length (26-44 mm, shared/domain/UTERUS.md); at 5 mm a
+/// 0.75 mm facet spans under 9 degrees of a 90-degree view, and smooth normals hide its shading. See
+/// docs/scene-format.md, "The visual surface".
+inline constexpr double kVisualEdgeLengthMm = 0.75;
+/// At most this many Loop levels (each quadruples the triangles; 3 levels of a 30 000-vertex scene's boundary is
+/// about half a million triangles).
+inline constexpr int kMaxVisualSurfaceLevels = 3;
+/// Faces the hysteroscope sees: every boundary face but the serosa (cavity, canal, ectocervix, ostia, pathologies
+/// in the cavity). 1 where seen, 0 elsewhere.
+std::vector<std::int32_t> scopeSeenFaces(const SurfaceMesh& boundary);
+/// Loop levels that bring the mean edge of the seen faces down to kVisualEdgeLengthMm (0..kMaxVisualSurfaceLevels).
+int visualSurfaceLevels(const SurfaceMesh& boundary);
+/// How far fairing may move a point of the visual surface away from the tets' boundary, mm: well under the lining's
+/// thinnest 1 mm (scene::kEndometrialThicknessMm), so the surface stays on its tissue.
+inline constexpr double kMaxVisualFairingMm = 0.75;
+/// The texture stage's close-up refinement of `boundary`: visualSurfaceLevels, the seen faces faired by Taubin
+/// smoothing within kMaxVisualFairingMm.
+texture::CloseUpParams closeUpParamsFor(const SurfaceMesh& boundary);
 
 /// The boundary of `tets` with the body outline's "tissue" and "pathology" face labels carried over (within
 /// `reachMm`), the tubal ostia kept although they are smaller than a triangle, and the kAppearanceLabel label

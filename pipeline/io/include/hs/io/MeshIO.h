@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <variant>
 #include <vector>
@@ -42,6 +43,13 @@ struct ReadLimits {
     std::int64_t maxFileBytes = 8'000'000'000; ///< 8 GB
 };
 
+/// A floating-point array with one tuple of `components` values per point, row-major (VTP point data).
+struct PointArray {
+    int components = 1; ///< 1..9
+    std::vector<double> values;
+};
+using PointArrays = std::map<std::string, PointArray>;
+
 struct WriteOptions {
     bool binary = true; ///< STL/PLY binary, VTP/VTU appended raw (false: ASCII everywhere the format allows)
     /// VTP only: one (u, v) per point, written as the active texture coordinates "uv" (the other formats ignore it).
@@ -50,6 +58,10 @@ struct WriteOptions {
     /// VTP only: one normal per point, written as the active normals "normals" (Float32). A count other than the
     /// point count is an InvalidInput error, and so is a label named "uv" or "normals" next to either array.
     const std::vector<Vec3>* normals = nullptr;
+    /// VTP only: further point arrays, written as Float64 point data. Names follow the label rules and may not be
+    /// taken by a label, "uv" or "normals"; a size other than points x components, a component count outside 1..9
+    /// or a non-finite value is an InvalidInput error.
+    const PointArrays* pointArrays = nullptr;
 };
 
 /// Reads a surface in any surface format (chosen by extension). Polygons are fan-triangulated. Labels read where the
@@ -57,6 +69,10 @@ struct WriteOptions {
 /// is read as a surface too. A file without triangles is an InvalidInput error. docs/file-formats.md lists what each
 /// format keeps.
 Result<SurfaceMesh> readSurface(const std::string& path, const ReadLimits& limits = {});
+/// A VTP surface and its floating-point point arrays (every point array of a non-integer type with 1..9 components,
+/// "uv" and "normals" included) in `arrays`. A non-finite value is an InvalidInput error naming the array; any
+/// other format is an InvalidInput error.
+Result<SurfaceMesh> readSurfaceWithArrays(const std::string& path, PointArrays& arrays, const ReadLimits& limits = {});
 /// Writes a surface; the format is chosen by extension (".vtu" writes triangle cells). Refuses (InvalidInput) a mesh
 /// that fails hs::validate, has no triangles, or has label names outside 1-64 characters of A-Z a-z 0-9 _ - .
 Status writeSurface(const SurfaceMesh& mesh, const std::string& path, const WriteOptions& options = {});

@@ -10,6 +10,7 @@
 #include "hs/core/Image.h"
 #include "hs/core/Result.h"
 #include "hs/core/SurfaceMesh.h"
+#include "hs/core/TetEmbedding.h"
 #include "hs/core/TetMesh.h"
 #include "hs/scene/CaseSpec.h"
 #include "hs/scene/Hydrometra.h"
@@ -79,10 +80,19 @@ struct SceneLabel {
 /// it is written free.
 inline constexpr const char* kSupportLabel = "support:cervix";
 
+/// The largest extrapolation of an embedding: a surface point may lie outside its tet (the smooth surface runs just
+/// inside and outside the tets' faceted boundary), but no weight below -kMaxEmbeddingExtrapolation or above
+/// 1 + kMaxEmbeddingExtrapolation, so a deformation moves it like its tet (docs/scene-format.md, surface.vtp).
+inline constexpr double kMaxEmbeddingExtrapolation = 2.0;
+
 /// The visual surface: triangles in mm, a UV per vertex, and the baked maps (all share the UV atlas).
 struct VisualSurface {
     SurfaceMesh mesh;                      ///< with its face and vertex labels
     std::vector<std::array<float, 2>> uvs; ///< one per mesh point, in [0, 1]; origin at the image's top left
+    std::vector<Vec3> normals;             ///< unit, one per mesh point, smooth across seams; empty: not stored
+    /// One per mesh point: where it is bound in Scene::tets (hs/core/TetEmbedding.h); empty: not bound (a package
+    /// read without it gets it computed).
+    std::vector<TetEmbedding> embedding;
     ImageU8 albedo;                        ///< RGB, sRGB-encoded base colour
     ImageU8 normal;                        ///< RGB, tangent-space normal map (OpenGL convention, +Y up)
     ImageU8 roughness;                     ///< 1 channel, linear perceptual roughness 0..255

@@ -16,6 +16,7 @@
 #include "hs/core/Image.h"
 #include "hs/core/Progress.h"
 #include "hs/core/Result.h"
+#include "hs/core/Subdivision.h"
 #include "hs/core/SurfaceMesh.h"
 #include "hs/core/Timings.h"
 #include "hs/texture/Atlas.h"
@@ -96,5 +97,20 @@ struct TexturedSurface {
     std::vector<Vec3> normals;            ///< per point, of the unsplit surface, so shading stays smooth across seams
 };
 TexturedSurface makeTexturedSurface(const SurfaceMesh& surface, const Atlas& atlas);
+
+/// How makeCloseUpSurface refines.
+struct CloseUpParams {
+    int levels = 2;                 ///< Loop levels (0..4); each quadruples the triangles
+    std::vector<std::int32_t> seen; ///< per face of the input: nonzero where the scope sees it (empty: everywhere)
+    TaubinParams smoothing;         ///< applied to the seen faces' points before subdividing (iterations 0: none)
+};
+
+/// The visual surface for close-ups: the seen part of `surface` faired (taubinSmooth, removing the fins and spikes
+/// of a faceted tet boundary), then `levels` levels of Loop subdivision (hs/core/Subdivision.h; each child face
+/// keeps its parent's labels and chart, its UVs linear on the parent's UV triangle, so it shows the same texels as
+/// the part of the parent it covers and seams stay where they were), then split along chart seams like
+/// makeTexturedSurface, with the area-weighted normals of the unsplit smooth surface. Vertex labels are not carried
+/// (the new points have none). Points are numbered in order of first use.
+TexturedSurface makeCloseUpSurface(const SurfaceMesh& surface, const Atlas& atlas, const CloseUpParams& params);
 
 } // namespace hs::texture

@@ -1,0 +1,162 @@
+// The close-up visual surface of the generated default scene (docs/scene-format.md, "The visual surface"): refined
+// where the scope sees it, smooth (bounded triangle angles and normal turns, no fins or spikes), seamless across
+// chart seams, and bound to the tets by its barycentric embedding.
+#include "hs/core/Subdivision.h"
+#include "hs/core/TriangleGrid.h"
+#include "hs/generate/Generate.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+using namespace hs;
+
+namespace {
+
+const generate::Generated& defaultScene() {
+    static const generate::Generated generated = [] {
+        auto spec = scene::loadCase(HS_DEFAULT_CASE_FILE);
+        EXPECT_TRUE(spec.ok()) << spec.error().message();
+        scene::CaseSpec s = *spec;
+        s.texture.sizePx = 512; // the geometry is that of the default scene; only the maps are smaller
+        auto g = generate::generateScene(s, {HS_DEFAULT_CASE_FILE, 2});
+        EXPECT_TRUE(g.ok()) << g.error().message();
+        return std::move(g).value();
+    }();
+    return generated;
+}
+
+/// Bilinear albedo at (u, v) (v up, as the UVs are stored).
+std::array<double, 3> albedoAt(const ImageU8& img, double u, double v) {
+    const double fx = u * img.width() - 0.5, fy = (1.0 - v) * img.height() - 0.5;
+    const int x0 = std::clamp(static_cast<int>(std::floor(fx)), 0, img.width() - 1);
+    const int y0 = std::clamp(static_cast<int>(std::floor(fy)), 0, img.height() - 1);
+    const int x1 = std::min(x0 + 1, img.width() - 1), y1 = std::min(y0 + 1, img.height() - 1);
+    const double ax = std::clamp(fx - x0, 0.0, 1.0), ay = std::clamp(fy - y0, 0.0, 1.0);
+    std::array<double, 3> out{};
+    for (int c = 0; c < 3; ++c)
+        out[static_cast<std::size_t>(c)] = (img.at(x0, y0, c) * (1 - ax) + img.at(x1, y0, c) * ax) * (1 - ay) +
+                                           (img.at(x0, y1, c) * (1 - ax) + img.at(x1, y1, c) * ax) * ay;
+    return out;
+}
+
+double squaredStep(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+    double s = 0.0;
+    for (std::size_t c = 0; c < 3; ++c)
+        s += (a[c] - b[c]) * (a[c] - b[c]);
+    return s;
+}
+
+} // namespace
+
+TEST(VisualSurface, IsRefinedAndSmoothWhereTheScopeSeesIt) {
+    const auto& g = defaultScene();
+    ASSERT_TRUE(g.scene.has_value());
+    const SurfaceMesh& coarse = g.tissue->boundary;
+    const SurfaceMesh& visual = g.scene->surface.mesh;
+    const int levels = generate::visualSurfaceLevels(coarse);
+    ASSERT_GE(levels, 1);
+    ASSERT_EQ(visual.triangles.size(), coarse.triangles.size() << (2 * levels));
+
+    const auto coarseSeen = generate::scopeSeenFaces(coarse);
+    const auto seen = generate::scopeSeenFaces(visual);
+    const SurfaceShape before = measureSurfaceShape(coarse, coarseSeen);
+    const SurfaceShape after = measureSurfaceShape(visual, seen);
+    const SurfaceShape serosa = measureSurfaceShape(visual, [&] {
+        auto m = seen;
+        for (auto& v : m)
+            v = 1 - v;
+        return m;
+    }());
+    std::printf("visual surface: %d levels, %zu -> %zu triangles; seen by the scope: %zu -> %zu faces, mean edge %.2f -> "
+                "%.2f mm (max %.2f), min angle %.1f -> %.1f deg, normal turn max %.1f -> %.1f deg (99%% %.1f -> "
+                "%.1f; over 30 deg %.2f -> %.2f %%); serosa: min angle %.1f, normal turn max %.1f\n",
+                levels, coarse.triangles.size(), visual.triangles.size(), before.faces, after.faces, before.meanEdgeMm,
+                after.meanEdgeMm, after.maxEdgeMm, before.minAngleDeg, after.minAngleDeg, before.maxNormalDeviationDeg,
+                after.maxNormalDeviationDeg, before.p99NormalDeviationDeg, after.p99NormalDeviationDeg,
+                100.0 * before.sharpEdgeFraction, 100.0 * after.sharpEdgeFraction, serosa.minAngleDeg, serosa.maxNormalDeviationDeg);
+    // Facets small against a close-up's distance, no needle triangles, and no fins or spikes: nowhere do two
+    // neighbouring faces fold by more than a right angle (the faceted boundary folds by up to 162 degrees), and
+    // turns beyond 30 degrees are left only along the creases where a pathology meets the wall.
+    EXPECT_LE(after.meanEdgeMm, generate::kVisualEdgeLengthMm);
+    EXPECT_LE(after.maxEdgeMm, 2.0 * generate::kVisualEdgeLengthMm);
+    EXPECT_GE(after.minAngleDeg, 8.0);
+    EXPECT_LE(after.maxNormalDeviationDeg, 90.0);
+    EXPECT_LE(after.p99NormalDeviationDeg, 20.0);
+    EXPECT_LE(after.sharpEdgeFraction, 0.005);
+    // The serosa is refined alike and smooth too.
+    EXPECT_GE(serosa.minAngleDeg, 8.0);
+    EXPECT_LE(serosa.maxNormalDeviationDeg, 30.0);
+}
+
+TEST(VisualSurface, ShowsTheSameColourOnBothSidesOfEveryChartSeam) {
+    // Points split along a seam lie at the same place; each side's UV must show the colour the other side shows
+    // there. Compared with the colour step along the surface's own edges inside a chart (about 0.6 mm apart).
+    const auto& g = defaultScene();
+    const scene::VisualSurface& s = g.scene->surface;
+    ASSERT_FALSE(s.albedo.empty());
+    std::map<std::array<double, 3>, std::vector<std::size_t>> at;
+    for (std::size_t i = 0; i < s.mesh.points.size(); ++i)
+        at[{s.mesh.points[i].x, s.mesh.points[i].y, s.mesh.points[i].z}].push_back(i);
+    double seam = 0.0;
+    std::size_t seamPairs = 0;
+    for (const auto& [p, ids] : at)
+        for (std::size_t k = 1; k < ids.size(); ++k) {
+            seam += squaredStep(albedoAt(s.albedo, s.uvs[ids[0]][0], s.uvs[ids[0]][1]),
+                                albedoAt(s.albedo, s.uvs[ids[k]][0], s.uvs[ids[k]][1]));
+            ++seamPairs;
+        }
+    double inside = 0.0;
+    std::size_t insidePairs = 0;
+    for (const auto& t : s.mesh.triangles)
+        for (std::size_t k = 0; k < 3; ++k) {
+            const auto a = static_cast<std::size_t>(t[k]), b = static_cast<std::size_t>(t[(k + 1) % 3]);
+            inside += squaredStep(albedoAt(s.albedo, s.uvs[a][0], s.uvs[a][1]),
+                                  albedoAt(s.albedo, s.uvs[b][0], s.uvs[b][1]));
+            ++insidePairs;
+        }
+    ASSERT_GT(seamPairs, 100u);
+    const double ratio = (seam / double(seamPairs)) / (inside / double(insidePairs));
+    std::printf("visual surface seams: %zu split points, mean squared albedo step across a seam %.2f, along an edge "
+                "%.2f (ratio %.3f)\n",
+                seamPairs, seam / double(seamPairs), inside / double(insidePairs), ratio);
+    EXPECT_LT(ratio, 0.5);
+}
+
+TEST(VisualSurface, IsBoundToTheTetsItCovers) {
+    const auto& g = defaultScene();
+    const scene::Scene& sc = *g.scene;
+    const auto& points = sc.surface.mesh.points;
+    ASSERT_EQ(sc.surface.embedding.size(), points.size());
+    ASSERT_EQ(sc.surface.normals.size(), points.size());
+    const SurfaceMesh boundary = extractBoundary(sc.tets);
+    const TriangleGrid grid(boundary, 0.0, false);
+    double worstError = 0.0, lowestWeight = 1.0, farthest = 0.0;
+    std::size_t inside = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const TetEmbedding& e = sc.surface.embedding[i];
+        ASSERT_GE(e.tet, 0);
+        worstError = std::max(worstError, distance(embeddedPoint(sc.tets, e), points[i]));
+        const double lowest = *std::min_element(e.weights.begin(), e.weights.end());
+        lowestWeight = std::min(lowestWeight, lowest);
+        inside += lowest >= -1e-9 ? 1 : 0;
+        farthest = std::max(farthest, grid.distance(points[i], 100.0));
+    }
+    std::printf("visual surface embedding: %zu points, %.1f %% inside their tet, lowest weight %.3f, largest "
+                "reconstruction error %.2e mm, farthest from the tets' boundary %.3f mm\n",
+                points.size(), 100.0 * double(inside) / double(points.size()), lowestWeight, worstError, farthest);
+    EXPECT_LT(worstError, 1e-9);
+    EXPECT_GE(lowestWeight, -scene::kMaxEmbeddingExtrapolation);
+    // The smooth surface runs within the fairing's reach plus what Loop's masks move of the faceted boundary.
+    EXPECT_LT(farthest, generate::kMaxVisualFairingMm + 0.25);
+    // Unit normals that point out of the body, like the faces around them.
+    std::size_t agreeing = 0;
+    for (std::size_t f = 0; f < sc.surface.mesh.triangles.size(); ++f) {
+        const Vec3 n = faceNormal(sc.surface.mesh, f);
+        const auto& t = sc.surface.mesh.triangles[f];
+        agreeing += dot(n, sc.surface.normals[static_cast<std::size_t>(t[0])]) > 0.0 ? 1 : 0;
+    }
+    EXPECT_EQ(agreeing, sc.surface.mesh.triangles.size());
+}
