@@ -149,6 +149,7 @@ Result<SurfaceMesh> ShapeModel::withDimensions(const clinical::PatientParams& pa
     auto mesh = instance(std::vector<double>(c.data(), c.data() + k));
     if (!mesh)
         return mesh.failure();
+    openPassage(*mesh, *d.layout);
     auto thick = wallAtLeast(*mesh, *d.layout, kWallMm);
     if (!thick)
         return thick.failure();

@@ -89,6 +89,16 @@ SurfaceMesh meshFrom(const ShapeModel::Data& d, const Eigen::VectorXd& v) {
     return mesh;
 }
 
+/// An organ for a patient: the model's instance with its canal and cavity opened to the generator's floor, which a
+/// linear combination of training organs does not keep (openPassage). The raw instances (`instance`, modes,
+/// unconditional samples) stay as the model gives them.
+SurfaceMesh organFrom(const ShapeModel::Data& d, const Eigen::VectorXd& v) {
+    SurfaceMesh mesh = meshFrom(d, v);
+    if (d.layout)
+        openPassage(mesh, *d.layout);
+    return mesh;
+}
+
 /// Standard normal deviates truncated at kTruncation: samples stay where the training shapes are.
 Eigen::VectorXd truncatedNormals(Rng& rng, Eigen::Index k) {
     Eigen::VectorXd z(k);
@@ -203,6 +213,8 @@ Result<SurfaceMesh> ShapeModel::mean(const clinical::PatientParams& patient, std
     auto mesh = instance(*c);
     if (!mesh)
         return mesh.failure();
+    if (m_data->layout)
+        openPassage(*mesh, *m_data->layout);
     return pose(std::move(mesh).value(), versionDeg.value_or(m_data->pose.antevertedMeanDeg));
 }
 
@@ -220,11 +232,11 @@ Result<SurfaceMesh> ShapeModel::sample(const clinical::PatientParams& patient, s
     for (int attempt = 0; attempt < kMaxAttempts && !accepted; ++attempt) {
         const Eigen::VectorXd z = truncatedNormals(rng, d.variance.size());
         const Eigen::VectorXd coefficients = mu + scale * (d.residualFactor * z);
-        shape = meshFrom(d, d.mean + d.basis * d.variance.cwiseSqrt().cwiseProduct(coefficients));
+        shape = organFrom(d, d.mean + d.basis * d.variance.cwiseSqrt().cwiseProduct(coefficients));
         accepted = isPlausible(shape, d);
     }
     if (!accepted) // the conditional mean itself is checked by the tests over the supported range
-        shape = meshFrom(d, d.mean + d.basis * d.variance.cwiseSqrt().cwiseProduct(mu));
+        shape = organFrom(d, d.mean + d.basis * d.variance.cwiseSqrt().cwiseProduct(mu));
     const auto& pp = d.pose;
     double version = rng.bernoulli(pp.retroversionProbability) ? rng.normal(pp.retrovertedMeanDeg, pp.retrovertedSdDeg)
                                                                : rng.normal(pp.antevertedMeanDeg, pp.antevertedSdDeg);

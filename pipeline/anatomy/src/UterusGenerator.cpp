@@ -17,11 +17,11 @@ constexpr double kBlendPower = 8.0;      ///< soft maximum joining corpus and ce
 constexpr double kPortioShrink = 0.82;   ///< the portio rounds off to this fraction of the cervix radius at the os
 constexpr double kMinBendLengthMm = 20.0;
 constexpr double kWallWindowMm = 7.0; ///< mm; half-height of the window in which the wall rule looks at the serosa
-/// mm; the canal is at least 4 mm across in every direction. In life it is collapsed at rest and the scope opens it
-/// (Nott et al. 2016: "outside of pregnancy the cervical canal is collapsed"); the scene is the rest state a
-/// simulator starts from, so it keeps the way open for the thinnest office hysteroscope (2.9 mm, UTERUS.md), with
-/// about 0.5 mm each side for what meshing takes off a narrow canal (docs/anatomy.md, "Open canal").
-constexpr double kOpenCanalHalfWidthMm = 2.0;
+// kOpenCanalHalfWidthMm (UterusGenerator.h): the canal is at least 4 mm across in every direction. In life it is
+// collapsed at rest and the scope opens it (Nott et al. 2016: "outside of pregnancy the cervical canal is
+// collapsed"); the scene is the rest state a simulator starts from, so it keeps the way open for the thinnest office
+// hysteroscope (2.9 mm), with about 0.5 mm each side for what meshing takes off a narrow canal (docs/anatomy.md,
+// "Open canal"). 4 mm is also the narrowest internal os of Chen et al.'s 95 % range (4-11 mm, UTERUS.md).
 
 double smoothstep(double e0, double e1, double x) {
     const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
@@ -340,6 +340,39 @@ void addTopology(SurfaceMesh& mesh, const TemplateLayout& l) {
 }
 
 } // namespace
+
+double openPassage(SurfaceMesh& mesh, const TemplateLayout& l) {
+    if (mesh.points.size() != static_cast<std::size_t>(l.vertexCount()))
+        return 0.0;
+    auto point = [&](int ring, int j) -> Vec3& { return mesh.points[static_cast<std::size_t>(l.vertex(ring, j))]; };
+    auto centroid = [&](int ring) {
+        Vec3 c;
+        for (int j = 0; j < l.around; ++j)
+            c += point(ring, j);
+        return c / l.around;
+    };
+    std::vector<Vec3> centres;
+    for (int r = l.firstCanalRing() - 1; r <= l.lastCavityRing() + 1; ++r)
+        centres.push_back(centroid(r));
+    double moved = 0.0;
+    for (int r = l.firstCanalRing(); r <= l.lastCavityRing(); ++r) {
+        const auto k = static_cast<std::size_t>(r - l.firstCanalRing() + 1);
+        const Vec3 c = centres[k];
+        // The ring's plane: normal to the passage's centreline through it (the rings of a bent organ tilt with it).
+        const Vec3 along = normalized(centres[k + 1] - centres[k - 1]);
+        for (int j = 0; j < l.around; ++j) {
+            Vec3& p = point(r, j);
+            const Vec3 d = p - c;
+            const Vec3 inPlane = d - along * dot(d, along);
+            const double rho = norm(inPlane);
+            if (rho >= kOpenCanalHalfWidthMm || rho < 1e-9)
+                continue;
+            p += inPlane * ((kOpenCanalHalfWidthMm - rho) / rho);
+            moved = std::max(moved, kOpenCanalHalfWidthMm - rho);
+        }
+    }
+    return moved;
+}
 
 SurfaceMesh uterusTemplate(const TemplateLayout& layout) {
     SurfaceMesh mesh;

@@ -55,6 +55,7 @@ struct Push {
     /// outside rises as a wide, low swelling rather than a bump). Widening with the height only adds motion further
     /// along each line along n, so it keeps the map injective.
     double widen = 0.0;
+    double clearance = 0.0; ///< mm the points it moves keep from the pathology (0: the stage's clearanceMm)
     Vec3 upDir() const { return norm(up) > 0.0 ? up : n; }
     double keepRamp(double height) const {
         return smoothstep(keepFrom, keepFrom + std::max(windowRamp, 2.0 * keep * amount), height);
@@ -97,8 +98,11 @@ struct Push {
     Vec3 apply(const Vec3& x) const { return x + direction(x) * (amount * weight(x)); }
 };
 
-/// Increases the push until the organ points it moves keep `clearance` from the pathology (at most `cap`).
+/// Increases the push until the organ points it moves keep its clearance (`clearance` unless the push sets its own)
+/// from the pathology (at most `cap`).
 void solvePush(Push& push, const SurfaceMesh& organ, const SurfaceMesh& pathology, double clearance, double cap) {
+    if (push.clearance > 0.0)
+        clearance = push.clearance;
     const Bounds box = bounds(pathology);
     for (int it = 0; it < 12 && push.amount < cap; ++it) {
         double deficit = 0.0;
@@ -171,6 +175,8 @@ std::vector<Push> planPushes(const Planned& p, const OrganInfo& info, const Path
         open.keepFrom = far ? farMm + c : 0.0;
         open.keep = kOpenKeep;
         open.widen = kOpenWiden;
+        // The far wall stands off as the distension medium holds it: a scope passes in front of the mass.
+        open.clearance = std::max(c, params.distendedGapMm);
         pushes.push_back(open);
         Push around{e, d, 0.5, 2.0, across + c, windowRamp, 0.0, 0.0};
         around.radial = true;

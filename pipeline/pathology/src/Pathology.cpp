@@ -10,7 +10,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
+#include <variant>
 
 namespace hs::pathology {
 
@@ -36,6 +38,19 @@ std::string who(const PathologyRequest& r) {
 namespace {
 using namespace detail;
 
+constexpr double kResiteSlide = 0.5;     ///< a pathology moved off another slides at most this fraction of the
+                                         ///< cavity length
+constexpr double kResiteTurnDeg = 45.0;  ///< and stays on a wall facing within this angle of the nominal seat
+constexpr double kResiteMarginMm = 1.0;  ///< planned room beyond the minimum gap (the grown shape is lobulated)
+constexpr int kResiteGrowths = 8;        ///< seats grown at most before the case is refused
+
+std::vector<const SurfaceMesh*> earlierSurfaces(const std::vector<Planned>& plans, std::size_t i) {
+    std::vector<const SurfaceMesh*> earlier;
+    for (std::size_t j = 0; j < i; ++j)
+        earlier.push_back(&plans[j].surface);
+    return earlier;
+}
+
 Result<SurfaceMesh> grow(const PathologyRequest& r, const ShapeSpec& spec, const SurfaceMesh& organ, Rng& rng,
                          Progress& progress) {
     GrowthTuning tuning;
@@ -48,6 +63,101 @@ Result<SurfaceMesh> grow(const PathologyRequest& r, const ShapeSpec& spec, const
         return particleShape(spec, organ, tuning, rng, progress);
     }
     return fail(ErrorCode::Internal, "unknown growth model");
+}
+
+/// Plans pathology i at `seat`, grows it (its own random stream, so a second seat grows it the same way), scales it
+/// to the requested size and fits its depth to the FIGO type.
+Status growAt(std::vector<Planned>& plans, std::size_t i, const Seat& seat, const SurfaceMesh& organ,
+              const OrganInfo& info, const PathologyParams& params, const Rng& root, StageTimings& timings,
+              Progress& progress) {
+    Planned& p = plans[i];
+    const PathologyRequest& r = *p.request;
+    {
+        ScopedStepTimer timer(timings, "place");
+        p.seat = seat;
+        auto spec = planShape(r, info, p.seat, params, earlierSurfaces(plans, i), p.fromSerosa);
+        if (!spec.ok())
+            return spec.failure();
+        p.spec = *spec;
+    }
+    {
+        ScopedStepTimer timer(timings, "grow");
+        Rng rng = root.derive(i);
+        auto shape = grow(r, p.spec, organ, rng, progress);
+        if (!shape.ok())
+            return shape.failure();
+        p.surface = std::move(*shape);
+        scaleToSize(p.surface, p.spec, r.sizeMm);
+    }
+    ScopedStepTimer timer(timings, "fit");
+    const Vec3 before = volumeCentroid(p.surface);
+    fitDepth(p.surface, organ, r, p.seat, params);
+    const Vec3 moved = volumeCentroid(p.surface) - before;
+    p.spec.center += moved;
+    p.spec.base += moved;
+    return {};
+}
+
+/// The earlier pathology that pathology i overlaps (comes within `gap` of, or nests in), if any.
+std::optional<std::size_t> overlapsEarlier(const std::vector<Planned>& plans, std::size_t i, double gap) {
+    for (std::size_t j = 0; j < i; ++j)
+        if (!checkOverlap(plans[j], plans[i], gap).ok())
+            return j;
+    return std::nullopt;
+}
+
+/// A clinical location names a wall, not a point on it: when pathology i, grown at its nominal seat, overlaps one
+/// placed before it, it moves to the nearest seat on the same wall (within kResiteSlide of the cavity's length,
+/// facing within kResiteTurnDeg) where it keeps the minimum gap, with a warning that says so. Seats whose planned
+/// centre already lies too close to an earlier pathology are skipped without growing; at most kResiteGrowths are
+/// grown. When none is clear the pathology stays and the overlap check refuses the case, as it refuses a point
+/// placement (a click), which stays where it was put.
+Status resiteClearOfEarlier(std::vector<Planned>& plans, std::size_t i, const SurfaceMesh& organ,
+                            const OrganInfo& info, const PathologyParams& params, const Rng& root,
+                            PathologyResult& result, Progress& progress) {
+    const auto blocker = overlapsEarlier(plans, i, params.minimumGapMm);
+    if (!blocker)
+        return {};
+    const PathologyRequest& r = *plans[i].request;
+    const Seat nominal = plans[i].seat;
+    const Planned kept = plans[i];
+    std::vector<std::pair<const SurfaceMesh*, Bounds>> earlier;
+    for (std::size_t j = 0; j < i; ++j)
+        earlier.emplace_back(&plans[j].surface, bounds(plans[j].surface));
+    // Room the planned shape needs: its centre keeps radius + gap (+ margin, the grown shape is lobulated) from
+    // every earlier pathology, and so does its foot (a stalk's root or a dome's base) within its own reach.
+    auto roomy = [&](const ShapeSpec& spec) {
+        const double need = spec.radius + params.minimumGapMm + kResiteMarginMm;
+        const double footNeed = spec.stalkRadius + params.minimumGapMm + kResiteMarginMm;
+        for (const auto& [mesh, box] : earlier) {
+            if (signedDistance(*mesh, box, spec.center, need + 1.0) < need)
+                return false;
+            if (signedDistance(*mesh, box, spec.base, footNeed + 1.0) < footNeed)
+                return false;
+        }
+        return true;
+    };
+    int grown = 0;
+    for (const Seat& seat :
+         nearbySeats(info, nominal, std::max(5.0, kResiteSlide * info.cavityLengthMm), kResiteTurnDeg)) {
+        if (grown >= kResiteGrowths)
+            break;
+        bool fromSerosa = false;
+        auto spec = planShape(r, info, seat, params, earlierSurfaces(plans, i), fromSerosa);
+        if (!spec.ok() || !roomy(*spec))
+            continue;
+        ++grown;
+        HS_TRY(progress.check("pathology stage"));
+        HS_TRY(growAt(plans, i, seat, organ, info, params, root, result.timings, progress));
+        if (!overlapsEarlier(plans, i, params.minimumGapMm)) {
+            result.warnings.push_back(who(r) + ": at its nominal seat it overlaps " + who(*plans[*blocker].request) +
+                                      "; seated " + fmt(distance(seat.endometrium, nominal.endometrium)) +
+                                      " mm away on the same wall");
+            return {};
+        }
+    }
+    plans[i] = kept; // nothing clear nearby: the overlap check names both
+    return {};
 }
 
 } // namespace
@@ -68,44 +178,24 @@ Result<PathologyResult> growPathologies(const SurfaceMesh& organ, const Patholog
         const PathologyRequest& r = params.pathologies[i];
         Planned& p = plans[i];
         p.request = &r;
+        Seat seat;
         {
             ScopedStepTimer timer(result.timings, "place");
             HS_TRY(checkRequest(r));
             HS_TRY(checkSize(r, info));
-            auto seat = seatFrom(r, info, params.contactToleranceMm, result.warnings);
-            if (!seat.ok())
-                return seat.failure();
-            p.seat = *seat;
-            std::vector<const SurfaceMesh*> earlier;
-            for (std::size_t j = 0; j < i; ++j)
-                earlier.push_back(&plans[j].surface);
-            auto spec = planShape(r, info, p.seat, params, earlier, p.fromSerosa);
-            if (!spec.ok())
-                return spec.failure();
-            p.spec = *spec;
+            auto nominal = seatFrom(r, info, params.contactToleranceMm, result.warnings);
+            if (!nominal.ok())
+                return nominal.failure();
+            seat = *nominal;
         }
-        {
-            ScopedStepTimer timer(result.timings, "grow");
-            Rng rng = root.derive(i);
-            const double di = static_cast<double>(i);
-            auto sub = progress.sub(di / n * 0.8, (di + 1.0) / n * 0.8);
-            auto shape = grow(r, p.spec, organ, rng, sub);
-            if (!shape.ok())
-                return shape.failure();
-            p.surface = std::move(*shape);
-            scaleToSize(p.surface, p.spec, r.sizeMm);
-            result.timings.step("grow").counts.emplace_back(r.id + ".triangles",
-                                                            static_cast<std::int64_t>(p.surface.triangles.size()));
-        }
-        {
-            ScopedStepTimer timer(result.timings, "fit");
-            const Vec3 before = volumeCentroid(p.surface);
-            fitDepth(p.surface, organ, r, p.seat, params);
-            const Vec3 moved = volumeCentroid(p.surface) - before;
-            p.spec.center += moved;
-            p.spec.base += moved;
-        }
-        progress.report("pathology.grow", (static_cast<double>(i) + 1.0) / n * 0.8);
+        const double di = static_cast<double>(i);
+        auto sub = progress.sub(di / n * 0.8, (di + 1.0) / n * 0.8);
+        HS_TRY(growAt(plans, i, seat, organ, info, params, root, result.timings, sub));
+        if (std::holds_alternative<clinical::ClinicalPlacement>(r.placement))
+            HS_TRY(resiteClearOfEarlier(plans, i, organ, info, params, root, result, sub));
+        result.timings.step("grow").counts.emplace_back(r.id + ".triangles",
+                                                        static_cast<std::int64_t>(p.surface.triangles.size()));
+        progress.report("pathology.grow", (di + 1.0) / n * 0.8);
     }
     {
         ScopedStepTimer timer(result.timings, "overlap");

@@ -36,10 +36,15 @@ std::string who(const PathologyRequest& r);
 // Validation.cpp
 Status checkRequest(const PathologyRequest& r);
 Status checkSize(const PathologyRequest& r, const OrganInfo& info);
+/// Fails naming both when they come within `gap` mm of each other or one lies inside the other.
+Status checkOverlap(const Planned& first, const Planned& second, double gap);
 Status checkOverlaps(const std::vector<Planned>& all, double gap);
 
 // Placement.cpp
 Result<Seat> seatFrom(const PathologyRequest& r, const OrganInfo& info, double tol, std::vector<std::string>& notes);
+/// The seats on the endometrium within `reachMm` of `nominal` whose wall faces within `turnDeg` of it (the same
+/// wall), nearest first (ties by face order, so the list is deterministic).
+std::vector<Seat> nearbySeats(const OrganInfo& info, const Seat& nominal, double reachMm, double turnDeg);
 Result<ShapeSpec> planShape(const PathologyRequest& r, const OrganInfo& info, const Seat& seat,
                             const PathologyParams& params, const std::vector<const SurfaceMesh*>& earlier,
                             bool& fromSerosa);

@@ -79,6 +79,34 @@ std::pair<double, double> figoRun(const clinical::FigoType& want, double wallMm,
     return {bestStart, bestLength};
 }
 
+} // namespace
+
+std::vector<Seat> nearbySeats(const OrganInfo& info, const Seat& nominal, double reachMm, double turnDeg) {
+    const SurfaceMesh& organ = *info.mesh;
+    const auto& tissue = organ.faceLabels.at(clinical::kSurfaceTissueLabel);
+    const double minCos = std::cos(units::degToRad(turnDeg));
+    std::vector<std::pair<double, std::size_t>> candidates;
+    for (std::size_t f = 0; f < organ.triangles.size(); ++f) {
+        if (static_cast<clinical::SurfaceTissue>(tissue[f]) != clinical::SurfaceTissue::Endometrium)
+            continue;
+        const double d = distance(faceCentroid(organ, f), nominal.endometrium);
+        if (d <= reachMm && dot(-faceNormalOf(info, f), nominal.intoWall) >= minCos)
+            candidates.emplace_back(d, f);
+    }
+    std::sort(candidates.begin(), candidates.end());
+    std::vector<Seat> seats;
+    for (const auto& [d, f] : candidates) {
+        Seat s;
+        s.endometrium = faceCentroid(organ, f);
+        s.intoWall = -faceNormalOf(info, f);
+        if (reachSerosa(info, s))
+            seats.push_back(s);
+    }
+    return seats;
+}
+
+namespace {
+
 /// A hybrid (X-Y) must span the wall, and a clinical location names a wall, not a point on it. Where the wall at the
 /// nominal seat is too thick for the requested size to span it with room to spare (an ideal sphere's centre must
 /// have kHybridPlay of its radius of play), the seat slides to the nearest endometrium point within kHybridSlide of
@@ -94,19 +122,8 @@ Seat slideHybridSeat(const PathologyRequest& r, const OrganInfo& info, const Sea
     double bestPlay = play(nominal);
     if (bestPlay >= enough)
         return nominal;
-    const SurfaceMesh& organ = *info.mesh;
-    const auto& tissue = organ.faceLabels.at(clinical::kSurfaceTissueLabel);
-    const double reach = std::max(5.0, kHybridSlide * info.cavityLengthMm);
-    const double minCos = std::cos(units::degToRad(kHybridTurnDeg));
-    std::vector<std::pair<double, std::size_t>> candidates;
-    for (std::size_t f = 0; f < organ.triangles.size(); ++f) {
-        if (static_cast<clinical::SurfaceTissue>(tissue[f]) != clinical::SurfaceTissue::Endometrium)
-            continue;
-        const double d = distance(faceCentroid(organ, f), nominal.endometrium);
-        if (d <= reach && dot(-faceNormalOf(info, f), nominal.intoWall) >= minCos)
-            candidates.emplace_back(d, f);
-    }
-    std::sort(candidates.begin(), candidates.end());
+    const std::vector<Seat> candidates =
+        nearbySeats(info, nominal, std::max(5.0, kHybridSlide * info.cavityLengthMm), kHybridTurnDeg);
     auto slid = [&](const Seat& s) {
         notes.push_back(who(r) + ": the wall at the nominal seat is " + fmt(nominal.wallMm) +
                         " mm thick, too thick for a " + fmt(r.sizeMm, 0) + " mm FIGO " + r.figo.toString() +
@@ -114,12 +131,7 @@ Seat slideHybridSeat(const PathologyRequest& r, const OrganInfo& info, const Sea
                         " mm away, where it is " + fmt(s.wallMm) + " mm");
         return s;
     };
-    for (const auto& [d, f] : candidates) {
-        Seat s;
-        s.endometrium = faceCentroid(organ, f);
-        s.intoWall = -faceNormalOf(info, f);
-        if (!reachSerosa(info, s))
-            continue;
+    for (const Seat& s : candidates) {
         const double p = play(s);
         if (p >= enough)
             return slid(s);

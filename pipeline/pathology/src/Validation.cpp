@@ -74,21 +74,25 @@ Status checkSize(const PathologyRequest& r, const OrganInfo& info) {
     }
     return {};
 }
+Status checkOverlap(const Planned& first, const Planned& second, double gap) {
+    const SurfaceMesh& a = first.surface;
+    const SurfaceMesh& b = second.surface;
+    const double d = std::min(surfaceDistance(a, b, gap + 1.0), surfaceDistance(b, a, gap + 1.0));
+    const bool nested = windingNumber(b, a.points.front()) > 0.5 || windingNumber(a, b.points.front()) > 0.5;
+    if (d < gap || nested)
+        return fail(ErrorCode::InvalidInput,
+                    who(*first.request) + " and " + who(*second.request) + " overlap" +
+                        (nested ? " (one lies inside the other)"
+                                : " (they come within " + fmt(d, 2) + " mm; at least " + fmt(gap) +
+                                      " mm of tissue must separate them)") +
+                        ": move one or make them smaller");
+    return {};
+}
+
 Status checkOverlaps(const std::vector<Planned>& all, double gap) {
     for (std::size_t i = 0; i < all.size(); ++i)
-        for (std::size_t j = i + 1; j < all.size(); ++j) {
-            const SurfaceMesh& a = all[i].surface;
-            const SurfaceMesh& b = all[j].surface;
-            const double d = std::min(surfaceDistance(a, b, gap + 1.0), surfaceDistance(b, a, gap + 1.0));
-            const bool nested = windingNumber(b, a.points.front()) > 0.5 || windingNumber(a, b.points.front()) > 0.5;
-            if (d < gap || nested)
-                return fail(ErrorCode::InvalidInput,
-                            who(*all[i].request) + " and " + who(*all[j].request) + " overlap" +
-                                (nested ? " (one lies inside the other)"
-                                        : " (they come within " + fmt(d, 2) + " mm; at least " + fmt(gap) +
-                                              " mm of tissue must separate them)") +
-                                ": move one or make them smaller");
-        }
+        for (std::size_t j = i + 1; j < all.size(); ++j)
+            HS_TRY(checkOverlap(all[i], all[j], gap));
     return {};
 }
 

@@ -321,11 +321,37 @@ TEST(Pathology, RefusesFigoNine) {
     EXPECT_NE(grown.error().detail.find("FIGO type 9 does not exist"), std::string::npos) << grown.error().detail;
 }
 
-TEST(Pathology, RefusesOverlappingPathologies) {
+TEST(Pathology, MovesASecondPathologyAtTheSameLocationAlongItsWall) {
+    // A clinical location names a wall: two myomas asked for on the posterior wall both grow there, apart.
     PathologyParams params;
     params.pathologies.push_back(myoma("a", GrowthModel::Skeleton, {4, -1}, 20.0));
     params.pathologies.push_back(myoma("b", GrowthModel::Skeleton, {3, -1}, 15.0));
     auto grown = growPathologies(test::testOrgan(1), params);
+    ASSERT_TRUE(grown.ok()) << grown.error().detail;
+    ASSERT_EQ(grown->pathologies.size(), 2u);
+    const auto& a = grown->pathologies[0];
+    const auto& b = grown->pathologies[1];
+    EXPECT_GT(distance(a.anchor, b.anchor), 5.0);
+    EXPECT_GT(dot(a.intoWall, b.intoWall), std::cos(45.0 * 3.14159265358979 / 180.0) - 1e-9); // the same wall
+    EXPECT_NEAR(a.descriptors.sizeMm, 20.0, 2.0);
+    EXPECT_NEAR(b.descriptors.sizeMm, 15.0, 1.5);
+    const bool said = std::any_of(grown->warnings.begin(), grown->warnings.end(), [](const std::string& w) {
+        return w.find("myoma 'b': at its nominal seat it overlaps myoma 'a'") != std::string::npos;
+    });
+    EXPECT_TRUE(said);
+}
+
+TEST(Pathology, RefusesOverlappingPathologiesPlacedByPoint) {
+    // A point placement (a click) stays where it was put: on top of the other myoma's seat, the case is refused.
+    PathologyParams first;
+    first.pathologies.push_back(myoma("a", GrowthModel::Skeleton, {4, -1}, 20.0));
+    const SurfaceMesh organ = test::testOrgan(1);
+    auto alone = growPathologies(organ, first);
+    ASSERT_TRUE(alone.ok()) << alone.error().detail;
+    PathologyParams params = first;
+    params.pathologies.push_back(myoma("b", GrowthModel::Skeleton, {3, -1}, 15.0));
+    params.pathologies[1].placement = SurfacePlacement{alone->pathologies[0].anchor, -alone->pathologies[0].intoWall};
+    auto grown = growPathologies(organ, params);
     ASSERT_FALSE(grown.ok());
     EXPECT_NE(grown.error().detail.find("overlap"), std::string::npos) << grown.error().detail;
 }

@@ -77,6 +77,16 @@ struct UterusResult {
 /// Wall kept in every cross-section of the generator, mm (the organ checks require >= 5 mm in 3-D).
 inline constexpr double kMinimumWallMm = 6.0;
 
+/// mm; the canal and the cavity are at least twice this across in every direction (docs/anatomy.md, "Open canal").
+inline constexpr double kOpenCanalHalfWidthMm = 2.0;
+
+/// Widens every ring of the canal and of the cavity below the cornua (internal os included) where it is narrower
+/// than `kOpenCanalHalfWidthMm` from its centre, moving those vertices out in the ring's plane. `generateUterus`
+/// builds its rings that wide; a shape model's instance is a linear combination of such organs plus a residual,
+/// which the floor does not survive (the default model's samples had canals 3.0-3.5 mm across). Returns the largest
+/// move in mm.
+double openPassage(SurfaceMesh& mesh, const TemplateLayout& layout);
+
 /// The template's triangles and labels (positions all zero): identical for every instance of `layout`.
 SurfaceMesh uterusTemplate(const TemplateLayout& layout = {});
 

@@ -37,6 +37,12 @@ struct PathologyParams {
     std::uint64_t seed = 1;                   ///< every random choice derives from it (one stream per pathology)
     double clearanceMm = 2.0;                 ///< mm of wall the organ keeps between a pathology and a surface it must
                                               ///< not reach (it is displaced to make room)
+    /// mm the cavity keeps open in front of a pathology that stands in it (FIGO 0-2, hybrids reaching it, polyps):
+    /// the far wall moves away until it is this far from the pathology. Hysteroscopy distends the cavity with fluid
+    /// (45-75 mmHg, UTERUS.md), which holds the walls off a mass as it does elsewhere: the model's cavity has its
+    /// distended depth (8 mm, docs/anatomy.md), 4 mm on either side of its midplane, and a 2.9 mm office scope
+    /// passes in front of the mass (docs/pathology.md, "The organ adapts").
+    double distendedGapMm = 4.0;
     double contactToleranceMm = 1.0;          ///< mm; closer than this to the endometrium counts as contact (FIGO 3)
     double minimumGapMm = 1.0;                ///< mm; two pathologies closer than this overlap (an error)
     double measureVoxelFraction = 1.0 / 40.0; ///< voxel edge for volume fractions, fraction of the size
