@@ -3,9 +3,14 @@
 //   bench_meshing [--data DIR] [--sizes 5000,50000] [--methods particle,tetgen,cgal,gmsh] [--surfaces a.off,b.obj]
 //                 [--threads N] [--seed S]
 //
-// For each good test surface in DIR (default: the shared data folder configured at build time) and each size, it
-// meshes with every method at the edge length the particle mesher derives for that vertex count, and prints one row
-// per run. Time excludes the quality measurement (done the same way for every method).
+// For each good test surface in DIR (default: the shared data folder configured at build time), then for two shapes
+// generated here (disc-40x3: a thin plate 40 mm across and 3 mm thick with a sharp rim; shell-ellipsoid: a closed
+// ellipsoidal shell with a 4 mm wall around a cavity, one surface of two components as a hollow organ is given to
+// the mesher), and each size, it meshes with every method at the edge length the particle mesher derives for that
+// vertex count, and prints one row per run. Time excludes the quality measurement (done the same way for every
+// method). --surfaces selects by file or shape name.
+#include "MeshingTestShapes.h"
+
 #include "hs/core/RegionModel.h"
 #include "hs/io/MeshIO.h"
 #include "hs/meshing/BaselineMeshers.h"
@@ -19,6 +24,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <numeric>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -79,20 +85,78 @@ bool gmshAvailable() {
     return std::system("gmsh --version > /dev/null 2>&1") == 0;
 }
 
+/// The face-connected components of `s`, largest bounding box first (the outside of a hollow body, then its
+/// cavities), each with its own vertices.
+std::vector<SurfaceMesh> components(const SurfaceMesh& s) {
+    std::vector<std::size_t> parent(s.points.size());
+    std::iota(parent.begin(), parent.end(), std::size_t{0});
+    auto find = [&](std::size_t v) {
+        while (parent[v] != v)
+            v = parent[v] = parent[parent[v]];
+        return v;
+    };
+    for (const Triangle& t : s.triangles)
+        for (int k = 1; k < 3; ++k)
+            parent[find(std::size_t(t[std::size_t(k)]))] = find(std::size_t(t[0]));
+    std::vector<std::size_t> rootOf(s.points.size(), SIZE_MAX);
+    std::vector<SurfaceMesh> parts;
+    std::vector<std::vector<std::int32_t>> newIndex;
+    for (const Triangle& t : s.triangles) {
+        const std::size_t root = find(std::size_t(t[0]));
+        if (rootOf[root] == SIZE_MAX) {
+            rootOf[root] = parts.size();
+            parts.emplace_back();
+            newIndex.emplace_back(s.points.size(), -1);
+        }
+        SurfaceMesh& part = parts[rootOf[root]];
+        auto& index = newIndex[rootOf[root]];
+        Triangle out{};
+        for (std::size_t k = 0; k < 3; ++k) {
+            const auto v = std::size_t(t[k]);
+            if (index[v] < 0) {
+                index[v] = std::int32_t(part.points.size());
+                part.points.push_back(s.points[v]);
+            }
+            out[k] = index[v];
+        }
+        part.triangles.push_back(out);
+    }
+    auto diagonal = [](const SurfaceMesh& m) {
+        Vec3 lo = m.points.front(), hi = m.points.front();
+        for (const Vec3& p : m.points) {
+            lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+            hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+        }
+        return norm(hi - lo);
+    };
+    std::stable_sort(parts.begin(), parts.end(),
+                     [&](const SurfaceMesh& a, const SurfaceMesh& b) { return diagonal(a) > diagonal(b); });
+    return parts;
+}
+
 Row runGmsh(const RegionModel& body, double edge, const Options& opt) {
     Row row;
     row.method = "gmsh-hxt";
     const fs::path dir = fs::temp_directory_path() / ("hs-bench-gmsh-" + std::to_string(::getpid()));
     fs::create_directories(dir);
-    const std::string stl = (dir / "surface.stl").string(), geo = (dir / "body.geo").string(),
-                      msh = (dir / "body.msh").string();
-    if (auto st = io::writeSurface(body.surfaces[0].surface, stl); !st.ok()) {
-        row.error = st.error().message();
-        return row;
+    const std::string geo = (dir / "body.geo").string(), msh = (dir / "body.msh").string();
+    // One STL and one surface loop per component of the outline: the first bounds the volume, the others (the
+    // cavities of a hollow body) are holes in it, so Gmsh meshes the wall only.
+    const std::vector<SurfaceMesh> parts = components(body.surfaces[0].surface);
+    std::string merges, loops;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+        const std::string name = "surface" + std::to_string(i + 1) + ".stl";
+        if (auto st = io::writeSurface(parts[i], (dir / name).string()); !st.ok()) {
+            row.error = st.error().message();
+            return row;
+        }
+        merges +=
+            "Merge \"" + name + "\";\nSurface Loop(" + std::to_string(i + 1) + ") = {" + std::to_string(i + 1) + "};\n";
+        loops += (i > 0 ? ", " : "") + std::to_string(i + 1);
     }
     {
         std::ofstream g(geo);
-        g << "Merge \"surface.stl\";\nSurface Loop(1) = {1};\nVolume(1) = {1};\nPhysical Volume(0) = {1};\n"
+        g << merges << "Volume(1) = {" << loops << "};\nPhysical Volume(0) = {1};\n"
           << "Mesh.MeshSizeMin = " << edge << ";\nMesh.MeshSizeMax = " << edge << ";\n";
     }
     const std::string cmd = "cd '" + dir.string() + "' && gmsh -3 -algo hxt -nt " + std::to_string(opt.threads) +
@@ -175,21 +239,39 @@ int main(int argc, char** argv) {
                 files.push_back(e.path());
         }
     std::sort(files.begin(), files.end());
-    if (files.empty()) {
-        std::cerr << "bench_meshing: no surfaces in " << meshes << '\n';
+    const std::vector<std::pair<std::string, SurfaceMesh (*)()>> shapes{
+        {"disc-40x3", [] { return test::thinDisc(40.0, 3.0, 0.6); }},
+        {"shell-ellipsoid",
+         [] {
+             return test::hollowEllipsoid({30.0, 22.0, 18.0}, 4.0, 5);
+         }},
+    };
+    std::size_t shapeCount = 0;
+    for (const auto& shape : shapes)
+        shapeCount += opt.surfaces.empty() || has(opt.surfaces, shape.first);
+    if (files.empty() && shapeCount == 0) {
+        std::cerr << "bench_meshing: no surfaces in " << meshes << " and no generated shape selected\n";
         return 1;
     }
     const bool gmsh = has(opt.methods, "gmsh") && gmshAvailable();
-    std::printf("bench_meshing: %zu surfaces, threads %d, seed %llu%s\n", files.size(), opt.threads,
-                static_cast<unsigned long long>(opt.seed), gmsh ? ", gmsh found" : ", gmsh not found");
+    std::printf("bench_meshing: %zu surfaces, %zu generated shapes, threads %d, seed %llu%s\n", files.size(),
+                shapeCount, opt.threads, static_cast<unsigned long long>(opt.seed),
+                gmsh ? ", gmsh found" : ", gmsh not found");
     printHeader();
+    std::vector<std::pair<std::string, RegionModel>> bodies;
     for (const fs::path& file : files) {
         auto surface = io::readSurface(file.string());
         if (!surface.ok()) {
             std::printf("%-22s read failed: %s\n", file.filename().c_str(), surface.error().message().c_str());
             continue;
         }
-        const RegionModel body = RegionModel::fromSurfaces({*surface}, {file.filename().string()});
+        bodies.emplace_back(file.filename().string(),
+                            RegionModel::fromSurfaces({*surface}, {file.filename().string()}));
+    }
+    for (const auto& [name, make] : shapes)
+        if (opt.surfaces.empty() || has(opt.surfaces, name))
+            bodies.emplace_back(name, RegionModel::fromSurfaces({make()}, {name}));
+    for (const auto& [bodyName, body] : bodies) {
         for (long size : opt.sizes) {
             MeshParams params;
             params.targetVertices = size;
@@ -197,7 +279,7 @@ int main(int argc, char** argv) {
             params.threads = opt.threads;
             auto edge = resolveEdgeLength(body, params);
             if (!edge.ok()) {
-                std::printf("%-22s %7ld failed: %s\n", file.filename().c_str(), size, edge.error().message().c_str());
+                std::printf("%-22s %7ld failed: %s\n", bodyName.c_str(), size, edge.error().message().c_str());
                 continue;
             }
             MeshParams fixed = params;
@@ -237,7 +319,7 @@ int main(int argc, char** argv) {
                         row.error = r.error().message();
                     }
                 }
-                row.surface = file.filename().string();
+                row.surface = bodyName;
                 row.target = size;
                 rows.push_back(row);
             }

@@ -124,6 +124,8 @@ Result<detail::MeshImproveStats> improveTets(const RegionModel& body,
     ParticleConstraints constraints(body, adjacency, ps);
     detail::MeshImproveParams params;
     params.targetDihedralDeg = kImproveDihedralDeg;
+    params.radiusRatioSweeps = kRadiusRatioSweeps;
+    params.radiusRatioBelow = kRadiusRatioBelow;
     return detail::improveMesh(ps.position, tets, region, constraints.freedom(), params, constraints.callbacks(),
                                progress);
 }
@@ -138,6 +140,7 @@ void recordImprovement(const detail::MeshImproveStats& stats, StepTiming& step) 
     counts.emplace_back("smoothedVertices", static_cast<std::int64_t>(stats.smoothedVertices));
     counts.emplace_back("contractions", static_cast<std::int64_t>(stats.contractions));
     counts.emplace_back("passes", stats.passes);
+    counts.emplace_back("radiusRatioMoves", static_cast<std::int64_t>(stats.radiusRatioMoves));
     counts.emplace_back("minDihedralBeforeMilliDeg", std::lround(stats.minDihedralBefore * 1000.0));
     counts.emplace_back("minDihedralAfterMilliDeg", std::lround(stats.minDihedralAfter * 1000.0));
 }

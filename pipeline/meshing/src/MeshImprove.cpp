@@ -99,6 +99,11 @@ public:
             if (changed == 0)
                 break;
         }
+        for (int sweep = 0; sweep < m_params.radiusRatioSweeps; ++sweep) {
+            HS_TRY(progress.check("meshing", "improving the mesh"));
+            if (smoothRadiusRatioSweep() == 0)
+                break;
+        }
         m_stats.minDihedralAfter = worstQuality();
         m_stats.badAfter = worklist().size();
         return m_stats;
@@ -160,18 +165,38 @@ private:
         return kNoTet;
     }
 
-    /// Whether v lies on a face without a neighbour of the same region (outer boundary or interface).
+    /// Whether v lies on a face without a neighbour of the same region (outer boundary or interface): the faces of
+    /// its star through v, as the pairs of their other two vertices, must each come twice, from the same region.
     bool onBoundary(std::int32_t v) {
         std::int8_t& cached = m_boundary[static_cast<std::size_t>(v)];
         if (cached < 0) {
-            cached = 0;
-            for (TetId t : m_vertexTets[static_cast<std::size_t>(v)])
-                for (int k = 0; k < 4 && !cached; ++k) {
-                    if (m_tets[t][static_cast<std::size_t>(k)] == v)
-                        continue;
-                    const TetId u = neighbourAcross(t, k);
-                    cached = u == kNoTet || m_region[u] != m_region[t];
+            std::vector<std::array<std::int32_t, 3>>& faces = m_faceScratch;
+            faces.clear();
+            for (TetId t : m_vertexTets[static_cast<std::size_t>(v)]) {
+                const Tet& tet = m_tets[t];
+                for (int k = 0; k < 4; ++k) {
+                    if (tet[static_cast<std::size_t>(k)] == v)
+                        continue; // the face opposite v
+                    std::array<std::int32_t, 3> key{-1, -1, m_region[t]};
+                    for (int i = 0; i < 3; ++i) {
+                        const std::int32_t w = tet[static_cast<std::size_t>(kFace[k][i])];
+                        if (w != v)
+                            (key[0] < 0 ? key[0] : key[1]) = w;
+                    }
+                    if (key[0] > key[1])
+                        std::swap(key[0], key[1]);
+                    faces.push_back(key);
                 }
+            }
+            std::sort(faces.begin(), faces.end());
+            cached = 0;
+            for (std::size_t i = 0; i < faces.size() && !cached;) {
+                std::size_t j = i + 1;
+                while (j < faces.size() && faces[j][0] == faces[i][0] && faces[j][1] == faces[i][1])
+                    ++j;
+                cached = j - i != 2 || faces[i][2] != faces[i + 1][2];
+                i = j;
+            }
         }
         return cached == 1;
     }
@@ -576,6 +601,110 @@ private:
         return minNormInHull(gradients);
     }
 
+    // ---- mean quality ----
+
+    double radiusRatioWith(TetId t, std::int32_t v, const Vec3& x) const {
+        const Tet& tet = m_tets[t];
+        std::array<Vec3, 4> p;
+        for (std::size_t i = 0; i < 4; ++i)
+            p[i] = tet[i] == v ? x : point(tet[i]);
+        return radiusRatio(p[0], p[1], p[2], p[3]);
+    }
+
+    /// One sweep in vertex order over the vertices that may move (inner ones freely, surface and feature ones along
+    /// their constraint) and whose star has a tet of radius ratio below params.radiusRatioBelow: each is moved
+    /// towards its optimal-Delaunay point (the volume-weighted mean of its star's circumcentres, Chen & Xu 2004;
+    /// Alliez et al. 2005), all or half the way, or to the centroid of its neighbours, whichever raises the sum of
+    /// the star's radius ratios most while keeping its smallest dihedral angle at least min(before, target). The
+    /// worst-angle passes above fix the slivers; this raises the many fair tets of the boundary layer, which dominate
+    /// the mean on thin bodies. Returns the number of moved vertices.
+    std::size_t smoothRadiusRatioSweep() {
+        std::size_t moved = 0;
+        for (std::size_t vi = 0; vi < m_points.size(); ++vi) {
+            const auto v = static_cast<std::int32_t>(vi);
+            const std::vector<TetId>& star = m_vertexTets[vi];
+            if (star.empty())
+                continue;
+            const VertexFreedom f = freedomOf(v);
+            if (f == VertexFreedom::Fixed || (f != VertexFreedom::Free && !m_params.radiusRatioOnSurfaces) ||
+                (f != VertexFreedom::Free && !m_cb.project))
+                continue;
+            const Vec3 origin = point(v);
+            double before = 0.0, worstRatio = 1.0, worstAngle = 180.0, volumes = 0.0, corners = 0.0;
+            Vec3 odt, centroid;
+            for (TetId t : star) {
+                const Tet& tet = m_tets[t];
+                const Vec3 &a = point(tet[0]), &b = point(tet[1]), &c = point(tet[2]), &d = point(tet[3]);
+                const double r = radiusRatio(a, b, c, d);
+                before += r;
+                worstRatio = std::min(worstRatio, r);
+                worstAngle = std::min(worstAngle, m_quality[t]);
+                const double vol = dot(b - a, cross(c - a, d - a));
+                odt += circumcentre(a, b, c, d) * vol;
+                volumes += vol;
+                for (auto w : tet)
+                    if (w != v) {
+                        centroid += point(w);
+                        corners += 1.0;
+                    }
+            }
+            if (worstRatio >= m_params.radiusRatioBelow || !(volumes > 0.0))
+                continue;
+            const Vec3 axis = f == VertexFreedom::Free ? Vec3{} : m_cb.constraintAxis(static_cast<std::uint32_t>(v));
+            // Candidates in the tangent space; only the chosen one is projected onto the constraint (the walk is
+            // the expensive part) and checked again there.
+            auto along = [&](const Vec3& target, double fraction) {
+                Vec3 d = (target - origin) * fraction;
+                if (f == VertexFreedom::Surface)
+                    d -= axis * dot(d, axis);
+                else if (f == VertexFreedom::Feature)
+                    d = axis * dot(d, axis);
+                return origin + d;
+            };
+            auto starSum = [&](const Vec3& x) {
+                double sum = 0.0;
+                for (TetId t : star) {
+                    const double r = radiusRatioWith(t, v, x);
+                    if (!(r > 0.0))
+                        return -1.0;
+                    sum += r;
+                }
+                return sum;
+            };
+            const Vec3 odtPoint = odt / volumes, centre = centroid / corners;
+            std::array<std::pair<double, Vec3>, 3> candidates{
+                {{0.0, along(odtPoint, 1.0)}, {0.0, along(odtPoint, 0.5)}, {0.0, along(centre, 1.0)}}};
+            for (auto& [sum, x] : candidates)
+                sum = starSum(x);
+            std::sort(candidates.begin(), candidates.end(),
+                      [](const auto& a, const auto& b) { return a.first > b.first; });
+            const double floorAngle = std::min(worstAngle, m_params.targetDihedralDeg);
+            const double least = before + 1e-9 * double(star.size());
+            Vec3 chosenPoint;
+            const Vec3* chosen = nullptr;
+            for (const auto& [sum, x] : candidates) {
+                if (!(sum > least))
+                    break;
+                chosenPoint = constrained(v, f, x);
+                if ((f == VertexFreedom::Free || starSum(chosenPoint) > least) &&
+                    starWorst(star, v, chosenPoint) >= floorAngle) {
+                    chosen = &chosenPoint;
+                    break;
+                }
+            }
+            if (!chosen)
+                continue;
+            m_points[vi] = *chosen;
+            for (TetId t : star)
+                m_quality[t] = quality(m_tets[t]);
+            if (m_cb.moved)
+                m_cb.moved(static_cast<std::uint32_t>(v), *chosen);
+            ++moved;
+        }
+        m_stats.radiusRatioMoves += moved;
+        return moved;
+    }
+
     /// Removes inner vertex v by contracting it onto the neighbour w whose cone over v's link (the tets of v not
     /// containing w, with v replaced by w) has the best worst tet. The link, the boundary of the cavity, does not
     /// change, so when every new tet is positive they fill the cavity exactly.
@@ -646,10 +775,30 @@ private:
     std::vector<double> m_quality;
     std::vector<std::vector<TetId>> m_vertexTets;
     std::vector<std::int8_t> m_boundary; ///< per vertex: -1 unknown, 0 inside, 1 on a boundary or interface face
+    std::vector<std::array<std::int32_t, 3>> m_faceScratch; ///< onBoundary: faces through the vertex
     MeshImproveStats m_stats;
 };
 
 } // namespace
+
+Vec3 circumcentre(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+    const Vec3 u = b - a, v = c - a, w = d - a;
+    const double det = 2.0 * dot(u, cross(v, w));
+    if (det == 0.0)
+        return (a + b + c + d) * 0.25;
+    return a + (cross(v, w) * norm2(u) + cross(w, u) * norm2(v) + cross(u, v) * norm2(w)) / det;
+}
+
+double radiusRatio(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+    const Vec3 u = b - a, v = c - a, w = d - a;
+    const double six = dot(u, cross(v, w)); // 6 x volume
+    if (!(six > 0.0))
+        return 0.0;
+    const double faces = norm(cross(u, v)) + norm(cross(v, w)) + norm(cross(w, u)) + norm(cross(c - b, d - b));
+    const double inradius = six / faces; // 3 V / (sum of areas), areas = |cross| / 2
+    const double circumradius = distance(circumcentre(a, b, c, d), a);
+    return 3.0 * inradius / circumradius;
+}
 
 double minDihedralDeg(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
     const Vec3 ab = b - a, ac = c - a, ad = d - a;

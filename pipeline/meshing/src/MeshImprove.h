@@ -21,13 +21,16 @@ enum class VertexFreedom : std::uint8_t {
 };
 
 struct MeshImproveParams {
-    double targetDihedralDeg = 17.0; ///< degrees; tets with a smaller smallest dihedral angle are worked on
-    int passes = 8;                  ///< passes over the sorted worklist of bad tets
-    int maxRing = 8;                 ///< largest number of tets around an edge that edge removal handles
-    double coplanarDeg = 12.0;       ///< degrees; boundary faces are re-triangulated only when their normals
-                                     ///< differ by less (keeps the surface and its features)
-    int smoothingSteps = 6;          ///< ascent steps per vertex smoothing
-    bool contractVertices = true;    ///< last resort: remove an inner vertex by contracting it onto a neighbour
+    double targetDihedralDeg = 17.0;   ///< degrees; tets with a smaller smallest dihedral angle are worked on
+    int passes = 8;                    ///< passes over the sorted worklist of bad tets
+    int maxRing = 8;                   ///< largest number of tets around an edge that edge removal handles
+    double coplanarDeg = 12.0;         ///< degrees; boundary faces are re-triangulated only when their normals
+                                       ///< differ by less (keeps the surface and its features)
+    int smoothingSteps = 6;            ///< ascent steps per vertex smoothing
+    bool contractVertices = true;      ///< last resort: remove an inner vertex by contracting it onto a neighbour
+    int radiusRatioSweeps = 0;         ///< afterwards, sweeps of smoothing inner vertices for the mean radius ratio
+    double radiusRatioBelow = 0.85;    ///< those sweeps move vertices whose star has a tet of a smaller radius ratio
+    bool radiusRatioOnSurfaces = true; ///< those sweeps also move surface and feature vertices along them
 };
 
 struct MeshImproveCallbacks {
@@ -49,8 +52,14 @@ struct MeshImproveStats {
     std::size_t boundaryFlips = 0;    ///< boundary edges removed (2-2 flips of the surface, peeling)
     std::size_t smoothedVertices = 0; ///< accepted vertex moves
     std::size_t contractions = 0;     ///< inner vertices removed by contracting them onto a neighbour
+    std::size_t radiusRatioMoves = 0; ///< vertex moves of the radius-ratio sweeps
     int passes = 0;
 };
+
+/// Centre of the sphere through a, b, c, d (their centroid when they are coplanar).
+Vec3 circumcentre(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+/// 3 * inradius / circumradius of tet (a, b, c, d): 1 when regular, 0 when flat or inverted.
+double radiusRatio(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
 /// Smallest dihedral angle of tet (a, b, c, d) in degrees; negative when it is inverted or flat.
 double minDihedralDeg(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);

@@ -18,6 +18,10 @@ namespace hs::meshing::detail {
 
 /// Tets with a smaller dihedral angle (degrees) are improved after extraction: above the bar of 15 with margin.
 constexpr double kImproveDihedralDeg = 17.0;
+/// Radius-ratio smoothing after the worst-angle improvement: one sweep over the vertices of the tets below 0.7. More
+/// sweeps or a higher threshold gain less than 0.003 in the mean at 50k vertices and cost 0.2-0.4 s each.
+constexpr int kRadiusRatioSweeps = 1;
+constexpr double kRadiusRatioBelow = 0.7;
 
 /// The region of a point: the id of the innermost surface containing it (kOutside outside the body or in a void).
 class RegionLocator {

@@ -142,6 +142,7 @@ Result<ParticleMeshResult> meshParticles(const RegionModel& input, const Particl
         timings.step("voxelize").counts.emplace_back("voxels", static_cast<std::int64_t>(voxels.region.size()));
     }
 
+    const RegionLocator locator(body, voxels);
     std::vector<detail::SurfaceAdjacency> adjacency;
     detail::Particles particles;
     {
@@ -154,6 +155,7 @@ Result<ParticleMeshResult> meshParticles(const RegionModel& input, const Particl
         in.adjacency = &adjacency;
         in.edge = *edge;
         in.params = &params;
+        in.locator = &locator;
         auto sub = progress.sub(0.1, 0.15);
         auto seeded = detail::seedParticles(in, sub);
         if (!seeded.ok())
@@ -176,7 +178,6 @@ Result<ParticleMeshResult> meshParticles(const RegionModel& input, const Particl
         timings.step("relax").counts.emplace_back("iterations", stats->iterations);
     }
 
-    const RegionLocator locator(body, voxels);
     detail::DelaunayOutput dt;
     std::int64_t interfaceParticles = 0;
     for (int pass = 0;; ++pass) {

@@ -1,6 +1,8 @@
 // Seeding: corner, feature, surface and inner particles, thinned by priority (Sierra et al. 2004, sec. 2.2).
 #include "Particles.h"
 
+#include "MesherSteps.h"
+
 #include "hs/core/Rng.h"
 #include "hs/meshing/Geometry.h"
 
@@ -20,6 +22,8 @@ constexpr double kFeatureRadius = 0.8;     ///< features against corners and fea
 constexpr double kSurfaceRadius = 0.75;    ///< surface candidates against accepted particles of their own sheet
 constexpr double kInnerRadius = 0.6;       ///< inner candidates against surface, feature and corner particles
 constexpr double kRandomInnerRadius = 0.5; ///< Seeding::Random: inner candidates against everything
+/// Lattice points of surface voxels become inner particles only this far (per edge) from every input surface.
+constexpr double kSurfaceVoxelClearance = 0.45;
 constexpr int kSurfaceCandidatesPerVoxel = 3;
 
 /// Accepted particles hashed by voxel (head/next lists) for the seeding radius checks.
@@ -170,9 +174,21 @@ void seedInner(const SeedingInput& in, const Rng& base, Particles& ps, AcceptedI
     const double radius = (lattice ? kInnerRadius : kRandomInnerRadius) * in.edge;
     const std::size_t boundaryCount = ps.size();
     const double jitter = std::clamp(params.latticeJitter, 0.0, 0.24) * h;
+    const double clearance2 = kSurfaceVoxelClearance * in.edge * kSurfaceVoxelClearance * in.edge;
+    // Where on its lattice point a surface voxel is inside the body, clear of the surfaces: the region there.
+    auto surfaceVoxelRegion = [&](const Vec3& p) {
+        const std::int32_t r = in.locator->regionAt(p);
+        if (r < 0)
+            return r;
+        for (std::size_t s = 0; s < in.body->surfaces.size(); ++s)
+            if (in.locator->surfaceGrid(s).closestWithin(p, clearance2).triangle >= 0)
+                return std::int32_t(VoxelSpace::kOutside);
+        return r;
+    };
     for (std::size_t v = 0; v < grid.size(); ++v) {
-        const std::int32_t region = grid[v];
-        if (region < 0)
+        const std::int32_t voxelRegion = grid[v];
+        const bool surfaceVoxel = voxelRegion == VoxelSpace::kSurface && lattice && in.locator;
+        if (voxelRegion < 0 && !surfaceVoxel)
             continue;
         Rng rng = base.derive((std::uint64_t(1) << 62) ^ v);
         const Vec3 corner = grid.minCorner(grid.unlinear(v));
@@ -209,7 +225,10 @@ void seedInner(const SeedingInput& in, const Rng& base, Particles& ps, AcceptedI
             } else {
                 tooClose = index.near(ps, p, radius);
             }
-            if (!tooClose)
+            if (tooClose)
+                continue;
+            const std::int32_t region = surfaceVoxel ? surfaceVoxelRegion(p) : voxelRegion;
+            if (region >= 0)
                 index.add(ps, p, ParticleKind::Inner, -1, -1, region);
         }
     }

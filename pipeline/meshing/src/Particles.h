@@ -64,12 +64,17 @@ bool sameSheet(const Particles& ps, const std::vector<SurfaceAdjacency>& adjacen
 std::int32_t projectByWalk(const SurfaceMesh& mesh, const SurfaceAdjacency& adj, std::int32_t start, const Vec3& p,
                            Vec3& projected);
 
+class RegionLocator;
+
 struct SeedingInput {
     const RegionModel* body = nullptr;
     const VoxelSpace* voxels = nullptr;
     const std::vector<SurfaceAdjacency>* adjacency = nullptr;
     double edge = 1.0; ///< target edge length, mm
     const MeshParams* params = nullptr;
+    /// Lattice seeding: also fills surface voxels with lattice particles inside the body and clear of its surfaces
+    /// (see seedParticles); null: inner voxels only.
+    const RegionLocator* locator = nullptr;
 };
 
 /// Feature and corner particles, surface particles per surface voxel (projected to the closest associated

@@ -306,3 +306,46 @@ TEST(ParticleMesher, StopsWithin100MillisecondsOfACancel) {
         EXPECT_LT(latency, 100.0) << "after " << delayMs << " ms";
     }
 }
+
+TEST(ParticleMesher, MeshesAThinPlateWithGoodTets) {
+    // The disc of bench_meshing (40 mm across, 3 mm thick, sharp rim) at 1 mm: three edges through its thickness,
+    // so most tets touch the surface. The lattice points of the surface voxels fill the layer under the faces and
+    // the radius-ratio sweep raises the boundary tets.
+    const RegionModel body = RegionModel::fromSurfaces({test::thinDisc(40.0, 3.0, 1.0)}, {"disc"});
+    auto result = meshParticles(body, smallParams(1.0));
+    ASSERT_TRUE(result.ok()) << result.error().message();
+    const QualityReport& q = result->quality;
+    EXPECT_GT(q.vertexCount, 4000u);
+    EXPECT_EQ(q.sliverCount, 0u);
+    EXPECT_EQ(q.invertedCount, 0u);
+    EXPECT_GE(q.minDihedralDeg, 16.9);  // the improvement aims at 17
+    EXPECT_GE(q.meanRadiusRatio, 0.87); // 0.90 is the bar at 50k vertices
+    EXPECT_LE(q.hausdorffRelative, 0.01);
+    EXPECT_LE(q.volumeError, 0.01);
+}
+
+TEST(ParticleMesher, MeshesTheWallOfAHollowShellOnly) {
+    // The shell of bench_meshing (ellipsoid 60 x 44 x 36 mm, 4 mm wall around a closed cavity), one surface of two
+    // components as the uterus wall comes to the mesher, at 1.6 mm: the cavity stays empty (the volume is the
+    // wall's), and the tets meet the bars.
+    const SurfaceMesh shell = test::hollowEllipsoid({30.0, 22.0, 18.0}, 4.0, 4);
+    const RegionModel body = RegionModel::fromSurfaces({shell}, {"shell"});
+    auto result = meshParticles(body, smallParams(1.6));
+    ASSERT_TRUE(result.ok()) << result.error().message();
+    const QualityReport& q = result->quality;
+    EXPECT_GT(q.vertexCount, 4000u);
+    EXPECT_EQ(q.sliverCount, 0u);
+    EXPECT_EQ(q.invertedCount, 0u);
+    EXPECT_GE(q.minDihedralDeg, 16.9);  // the improvement aims at 17
+    EXPECT_GE(q.meanRadiusRatio, 0.86); // 0.90 is the bar at 50k vertices
+    EXPECT_LE(q.hausdorffRelative, 0.01);
+    EXPECT_LE(q.volumeError, 0.01);
+    std::size_t inCavity = 0;
+    for (const Tet& t : result->mesh.tets) {
+        Vec3 c;
+        for (auto v : t)
+            c += result->mesh.points[std::size_t(v)] * 0.25;
+        inCavity += std::sqrt(c.x * c.x / (25.0 * 25.0) + c.y * c.y / (17.0 * 17.0) + c.z * c.z / (13.0 * 13.0)) < 1.0;
+    }
+    EXPECT_EQ(inCavity, 0u) << "tets in the cavity";
+}
