@@ -171,7 +171,8 @@ Result<ParticleMeshResult> meshParticles(const RegionModel& input, const Particl
         ScopedStepTimer timer(timings, "relax");
         auto sub = progress.sub(0.15, 0.6);
         auto stats = detail::relaxParticles(particles, body, voxels, adjacency, kRestPerEdge * *edge,
-                                            params.relaxationIterations, threads, sub);
+                                            params.relaxationIterations, threads, sub,
+                                            params.seeding == Seeding::Lattice ? &locator : nullptr, *edge);
         if (!stats.ok())
             return stats.failure();
         result.relaxationEnergy = stats->energy;

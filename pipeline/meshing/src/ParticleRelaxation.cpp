@@ -1,5 +1,6 @@
 // Relaxation: particles pushed towards the rest distance by the interaction profile (Bossen & Heckbert 1996).
 #include "Particles.h"
+#include "MesherSteps.h"
 
 #include "hs/core/Parallel.h"
 #include "hs/meshing/Geometry.h"
@@ -113,7 +114,7 @@ double interactionEnergy(double d) {
 }
 Result<RelaxationStats> relaxParticles(Particles& ps, const RegionModel& body, const VoxelSpace& voxels,
                                        const std::vector<SurfaceAdjacency>& adjacency, double r0, int iterations,
-                                       int threads, Progress& progress) {
+                                       int threads, Progress& progress, const RegionLocator* locator, double edge) {
     RelaxationStats stats;
     const std::size_t n = ps.size();
     const double cutoff = kInteractionCutoff * r0;
@@ -129,6 +130,26 @@ Result<RelaxationStats> relaxParticles(Particles& ps, const RegionModel& body, c
     const std::size_t chunks = chunkCount(n, kParticleChunk);
     std::vector<double> chunkEnergy(chunks), chunkMove(chunks);
     double motility = kInitialMotility;
+    // Inner particles in surface voxels keep kSurfaceVoxelClearance edges from every input surface (the region cannot
+    // change on the way: a step is shorter than the clearance). The distance is searched up to clearance + slack and
+    // remembered with the position it was measured at, so a particle queries again only once it has moved farther
+    // than its slack (the same decisions as a query per move, by the triangle inequality).
+    const double clearance = kSurfaceVoxelClearance * edge;
+    const double searchRange = clearance + 0.5 * edge;
+    std::vector<Vec3> clearAnchor(locator ? n : 0);
+    std::vector<double> clearSlack(locator ? n : 0, -1.0);
+    auto clearOfSurfaces = [&](std::size_t i, const Vec3& p) {
+        if (clearSlack[i] >= 0.0 && norm2(p - clearAnchor[i]) <= clearSlack[i] * clearSlack[i])
+            return true;
+        double d = searchRange;
+        for (std::size_t s = 0; s < body.surfaces.size(); ++s)
+            d = std::min(d, locator->surfaceGrid(s).distance(p, searchRange));
+        if (d < clearance)
+            return false;
+        clearAnchor[i] = p;
+        clearSlack[i] = d - clearance;
+        return true;
+    };
 
     for (int it = 0; it < iterations; ++it) {
         HS_TRY(progress.check("meshing", "relaxing particles"));
@@ -192,7 +213,9 @@ Result<RelaxationStats> relaxParticles(Particles& ps, const RegionModel& body, c
                         for (int attempt = 0; attempt < 2; ++attempt) {
                             const Vec3 candidate = xi + step;
                             const Index3 v = grid.voxelOf(candidate);
-                            if (grid.contains(v) && grid.at(v) == ps.region[i]) {
+                            if (grid.contains(v) && (grid.at(v) == ps.region[i] ||
+                                                     (locator && grid.at(v) == VoxelSpace::kSurface &&
+                                                      clearOfSurfaces(i, candidate)))) {
                                 moved = candidate;
                                 break;
                             }

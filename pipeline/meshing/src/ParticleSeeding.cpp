@@ -22,8 +22,6 @@ constexpr double kFeatureRadius = 0.8;     ///< features against corners and fea
 constexpr double kSurfaceRadius = 0.75;    ///< surface candidates against accepted particles of their own sheet
 constexpr double kInnerRadius = 0.6;       ///< inner candidates against surface, feature and corner particles
 constexpr double kRandomInnerRadius = 0.5; ///< Seeding::Random: inner candidates against everything
-/// Lattice points of surface voxels become inner particles only this far (per edge) from every input surface.
-constexpr double kSurfaceVoxelClearance = 0.45;
 constexpr int kSurfaceCandidatesPerVoxel = 3;
 
 /// Accepted particles hashed by voxel (head/next lists) for the seeding radius checks.

@@ -13,7 +13,7 @@
 namespace hs::meshing::detail {
 
 enum class ParticleKind : std::uint8_t {
-    Inner = 0,   ///< moves freely inside the inner voxels of its region
+    Inner = 0,   ///< moves inside the inner voxels of its region and, clear of the surfaces, in surface voxels
     Surface = 1, ///< moves tangentially on its surface, re-projected after each step
     Feature = 2, ///< on a feature edge (sharp dihedral angle): fixed
     Corner = 3,  ///< on a corner (end or junction of feature edges): fixed
@@ -66,6 +66,10 @@ std::int32_t projectByWalk(const SurfaceMesh& mesh, const SurfaceAdjacency& adj,
 
 class RegionLocator;
 
+/// Lattice points of surface voxels become inner particles only this far (per edge) from every input surface, and
+/// stay so far in relaxation.
+constexpr double kSurfaceVoxelClearance = 0.45;
+
 struct SeedingInput {
     const RegionModel* body = nullptr;
     const VoxelSpace* voxels = nullptr;
@@ -96,8 +100,13 @@ struct RelaxationStats {
 
 /// Jacobi relaxation: every particle's new position is computed from the old positions only, so the result does
 /// not depend on the thread count.
+/// Inner particles move within the inner voxels of their region; with `locator` (lattice seeding) also within surface
+/// voxels while they stay kSurfaceVoxelClearance edges (`edge`) clear of every input surface, so the lattice points
+/// seeded in surface voxels are not fixed obstacles to the surface particles (bunny at 50k: Hausdorff 1.143 % frozen,
+/// 0.942 % free).
 Result<RelaxationStats> relaxParticles(Particles& particles, const RegionModel& body, const VoxelSpace& voxels,
                                        const std::vector<SurfaceAdjacency>& adjacency, double restDistance,
-                                       int iterations, int threads, Progress& progress);
+                                       int iterations, int threads, Progress& progress,
+                                       const RegionLocator* locator = nullptr, double edge = 1.0);
 
 } // namespace hs::meshing::detail
