@@ -139,8 +139,36 @@ SurfaceMesh taubinSmooth(const SurfaceMesh& mesh, const std::vector<std::int32_t
             ring[static_cast<std::size_t>(b)].push_back(a);
         }
     }
+    std::vector<std::vector<std::int32_t>> facesOf(n);
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+        for (std::int32_t v : mesh.triangles[f])
+            facesOf[static_cast<std::size_t>(v)].push_back(static_cast<std::int32_t>(f));
     SurfaceMesh out = mesh;
     std::vector<Vec3> next(n);
+    // Smallest angle (degrees) and normal of face f with point v at q.
+    const auto shapeWith = [&](std::size_t f, std::int32_t v, const Vec3& q, Vec3& normal) {
+        const Triangle& t = out.triangles[f];
+        Vec3 c[3];
+        for (std::size_t k = 0; k < 3; ++k)
+            c[k] = t[k] == v ? q : out.points[static_cast<std::size_t>(t[k])];
+        normal = cross(c[1] - c[0], c[2] - c[0]);
+        double smallest = 180.0;
+        for (std::size_t k = 0; k < 3; ++k)
+            smallest = std::min(smallest, angleBetween(c[(k + 1) % 3] - c[k], c[(k + 2) % 3] - c[k]));
+        return smallest;
+    };
+    // A move is kept only if no face around the point turns over or gets a smaller angle than params.minAngleDeg
+    // (or than it had, if that was smaller already).
+    const auto acceptable = [&](std::size_t v, const Vec3& q) {
+        for (std::int32_t f : facesOf[v]) {
+            Vec3 before, after;
+            const double a0 = shapeWith(static_cast<std::size_t>(f), static_cast<std::int32_t>(v), out.points[v], before);
+            const double a1 = shapeWith(static_cast<std::size_t>(f), static_cast<std::int32_t>(v), q, after);
+            if (dot(before, after) <= 0.0 || a1 < std::min(a0, params.minAngleDeg))
+                return false;
+        }
+        return true;
+    };
     const auto step = [&](double factor) {
         for (std::size_t v = 0; v < n; ++v) {
             next[v] = out.points[v];
@@ -155,7 +183,8 @@ SurfaceMesh taubinSmooth(const SurfaceMesh& mesh, const std::vector<std::int32_t
             const double len = norm(shift);
             if (len > params.maxDisplacement)
                 p = mesh.points[v] + shift * (params.maxDisplacement / len);
-            next[v] = p;
+            if (acceptable(v, p))
+                next[v] = p;
         }
         out.points.swap(next);
     };

@@ -35,6 +35,9 @@ struct TaubinParams {
     double lambda = 0.5;
     double mu = -0.53;
     double maxDisplacement = 1e300; ///< mm
+    /// A move that would turn a face around the point over, or give it an angle below this (or below the one it
+    /// had, if smaller), is not made: the fairing never makes needles or fold-overs.
+    double minAngleDeg = 15.0;
 };
 SurfaceMesh taubinSmooth(const SurfaceMesh& mesh, const std::vector<std::int32_t>& faceMask, const TaubinParams& params);
 
