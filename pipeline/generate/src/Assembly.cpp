@@ -112,8 +112,71 @@ int visualSurfaceLevels(const SurfaceMesh& boundary) {
     return levels;
 }
 
-texture::CloseUpParams closeUpParamsFor(const SurfaceMesh& boundary) {
+std::vector<OstiumOpening> ostiumOpenings(const SurfaceMesh& boundary) {
+    std::vector<OstiumOpening> out;
+    const auto tissue = boundary.faceLabels.find(clinical::kSurfaceTissueLabel);
+    if (tissue == boundary.faceLabels.end())
+        return out;
+    // Union-find over the ostium faces, joined through shared points.
+    const std::size_t faces = boundary.triangles.size();
+    std::vector<std::int32_t> parent(faces, -1), ownerOfPoint(boundary.points.size(), -1);
+    const auto find = [&](std::int32_t f) {
+        while (parent[static_cast<std::size_t>(f)] != f)
+            f = parent[static_cast<std::size_t>(f)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(f)])];
+        return f;
+    };
+    for (std::size_t f = 0; f < faces; ++f) {
+        if (tissue->second[f] != kTissueOstium)
+            continue;
+        parent[f] = static_cast<std::int32_t>(f);
+        for (std::int32_t v : boundary.triangles[f]) {
+            std::int32_t& owner = ownerOfPoint[static_cast<std::size_t>(v)];
+            if (owner < 0) {
+                owner = static_cast<std::int32_t>(f);
+                continue;
+            }
+            const std::int32_t a = find(owner), b = find(static_cast<std::int32_t>(f));
+            if (a != b)
+                parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
+        }
+    }
+    std::map<std::int32_t, std::pair<Vec3, Vec3>> sums; // root -> (area-weighted centre, area-weighted normal)
+    std::map<std::int32_t, double> areas;
+    for (std::size_t f = 0; f < faces; ++f) {
+        if (parent[f] < 0)
+            continue;
+        const Triangle& t = boundary.triangles[f];
+        const Vec3& a = boundary.points[static_cast<std::size_t>(t[0])];
+        const Vec3& b = boundary.points[static_cast<std::size_t>(t[1])];
+        const Vec3& c = boundary.points[static_cast<std::size_t>(t[2])];
+        const Vec3 n = cross(b - a, c - a); // |n| = 2 area
+        const double area = 0.5 * norm(n);
+        auto& sum = sums[find(static_cast<std::int32_t>(f))];
+        sum.first += (a + b + c) * (area / 3.0);
+        sum.second += n;
+        areas[find(static_cast<std::int32_t>(f))] += area;
+    }
+    for (const auto& [root, sum] : sums) {
+        const double area = areas.at(root);
+        const double len = norm(sum.second);
+        if (area <= 0.0 || len <= 0.0)
+            continue;
+        out.push_back({sum.first / area, sum.second / len});
+    }
+    return out;
+}
+
+std::vector<texture::DarkSpot> ostiumDarkSpots(const std::vector<OstiumOpening>& ostia) {
+    std::vector<texture::DarkSpot> spots;
+    for (const auto& o : ostia)
+        spots.push_back({o.centreMm, 1.5 * kOstiumRadiusMm, 0.85});
+    return spots;
+}
+
+texture::CloseUpParams closeUpParamsFor(const SurfaceMesh& boundary, const std::vector<OstiumOpening>& ostia) {
     texture::CloseUpParams p;
+    for (const auto& o : ostia)
+        p.pits.push_back({o.centreMm, o.normal, kOstiumRadiusMm, kOstiumDepthMm});
     p.levels = visualSurfaceLevels(boundary);
     p.seen = scopeSeenFaces(boundary);
     p.smoothing.iterations = 10;

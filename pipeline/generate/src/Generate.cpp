@@ -77,11 +77,14 @@ Status runTissue(Generated& g) {
 /// chart seams and bound to the tets.
 Status runTexture(Generated& g, const GenerateParams& params, Progress& progress) {
     const SurfaceMesh& boundary = g.tissue->boundary;
-    auto baked = texture::bakeAppearance(boundary, bakeParamsFor(g.spec, params.threads), progress);
+    const auto ostia = ostiumOpenings(boundary);
+    texture::BakeParams bake = bakeParamsFor(g.spec, params.threads);
+    bake.darkSpots = ostiumDarkSpots(ostia);
+    auto baked = texture::bakeAppearance(boundary, bake, progress);
     if (!baked)
         return baked.failure();
     texture::TexturedSurface textured =
-        texture::makeCloseUpSurface(boundary, baked->atlas, closeUpParamsFor(boundary));
+        texture::makeCloseUpSurface(boundary, baked->atlas, closeUpParamsFor(boundary, ostia));
     Appearance a;
     a.surface.embedding = embedPoints(g.tissue->tets, textured.mesh.points, params.threads.value_or(g.spec.meshing.threads));
     a.surface.normals = std::move(textured.normals);

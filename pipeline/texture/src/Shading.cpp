@@ -159,6 +159,15 @@ Shading shade(const SurfaceMesh& mesh, const TexelMap& map, const std::vector<Ve
                                        rgb[k] += (vc[k] - rgb[k]) * v.cover;
                                    rough += (0.3f - rough) * v.cover;
                                }
+                               for (const DarkSpot& spot : params.darkSpots) {
+                                   const double d = distance(p, spot.centreMm);
+                                   if (d >= spot.radiusMm)
+                                       continue;
+                                   const double q = 1.0 - (d / spot.radiusMm) * (d / spot.radiusMm);
+                                   const auto keep = static_cast<float>(1.0 - spot.strength * q * q);
+                                   for (float& c : rgb)
+                                       c *= keep;
+                               }
                                for (int k = 0; k < 3; ++k)
                                    out.albedo.at(x, y, k) =
                                        static_cast<std::uint8_t>(std::lround(std::clamp(rgb[k], 0.0f, 1.0f) * 255.0f));

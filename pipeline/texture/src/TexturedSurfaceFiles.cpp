@@ -53,6 +53,18 @@ TexturedSurface makeCloseUpSurface(const SurfaceMesh& surface, const Atlas& atla
     SurfaceMesh smooth = loopSubdivide(labelled, levels);
     for (int i = 0; i < levels; ++i)
         corners = subdivideCorners(corners);
+    if (!params.pits.empty()) {
+        const std::vector<Vec3> before = vertexNormals(smooth);
+        for (std::size_t v = 0; v < smooth.points.size(); ++v)
+            for (const SurfacePit& pit : params.pits) {
+                const double d = distance(smooth.points[v], pit.centreMm);
+                const double len = norm(before[v]);
+                if (d >= pit.radiusMm || len <= 0.0 || dot(before[v], pit.normal) < 0.5 * len)
+                    continue;
+                const double s = 1.0 - (d / pit.radiusMm) * (d / pit.radiusMm);
+                smooth.points[v] -= pit.normal * (pit.depthMm * s * s);
+            }
+    }
     const std::vector<Vec3> normals = vertexNormals(smooth);
 
     // One output point per (point, chart), numbered in order of first use.

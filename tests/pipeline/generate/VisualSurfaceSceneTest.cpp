@@ -164,6 +164,7 @@ TEST(VisualSurface, IsBoundToTheTetsItCovers) {
     ASSERT_EQ(sc.surface.normals.size(), points.size());
     const SurfaceMesh boundary = extractBoundary(sc.tets);
     const TriangleGrid grid(boundary, 0.0, false);
+    const auto ostia = generate::ostiumOpenings(g.tissue->boundary);
     double worstError = 0.0, lowestWeight = 1.0, farthest = 0.0;
     std::size_t inside = 0;
     for (std::size_t i = 0; i < points.size(); ++i) {
@@ -173,10 +174,14 @@ TEST(VisualSurface, IsBoundToTheTetsItCovers) {
         const double lowest = *std::min_element(e.weights.begin(), e.weights.end());
         lowestWeight = std::min(lowestWeight, lowest);
         inside += lowest >= -1e-9 ? 1 : 0;
-        farthest = std::max(farthest, grid.distance(points[i], 100.0));
+        bool inFunnel = false; // the ostia's funnels go into the wall on purpose
+        for (const auto& o : ostia)
+            inFunnel = inFunnel || distance(points[i], o.centreMm) < generate::kOstiumRadiusMm + generate::kOstiumDepthMm;
+        if (!inFunnel)
+            farthest = std::max(farthest, grid.distance(points[i], 100.0));
     }
     std::printf("visual surface embedding: %zu points, %.1f %% inside their tet, lowest weight %.3f, largest "
-                "reconstruction error %.2e mm, farthest from the tets' boundary %.3f mm\n",
+                "reconstruction error %.2e mm, farthest from the tets' boundary (outside the ostia's funnels) %.3f mm\n",
                 points.size(), 100.0 * double(inside) / double(points.size()), lowestWeight, worstError, farthest);
     EXPECT_LT(worstError, 1e-9);
     EXPECT_GE(lowestWeight, -scene::kMaxEmbeddingExtrapolation);
@@ -192,4 +197,34 @@ TEST(VisualSurface, IsBoundToTheTetsItCovers) {
     std::printf("visual surface normals: %zu of %zu faces agree with their first corner's normal\n", agreeing,
                 sc.surface.mesh.triangles.size());
     EXPECT_EQ(agreeing, sc.surface.mesh.triangles.size());
+}
+
+TEST(VisualSurface, OpensEachTubalOstiumAsAFunnelIntoTheWall) {
+    const auto& g = defaultScene();
+    const scene::Scene& sc = *g.scene;
+    const auto ostia = generate::ostiumOpenings(g.tissue->boundary);
+    ASSERT_FALSE(ostia.empty());
+    ASSERT_LE(ostia.size(), 2u);
+    for (const auto& o : ostia) {
+        EXPECT_NEAR(norm(o.normal), 1.0, 1e-9);
+        // The deepest visual point near the ostium's axis lies about the funnel's depth behind its mouth, inside
+        // the wall's tets.
+        double deepest = 0.0;
+        std::size_t at = 0;
+        for (std::size_t i = 0; i < sc.surface.mesh.points.size(); ++i) {
+            const Vec3 r = sc.surface.mesh.points[i] - o.centreMm;
+            const double along = dot(r, o.normal);
+            if (norm(r) < generate::kOstiumRadiusMm + generate::kOstiumDepthMm &&
+                norm(r - o.normal * along) < 0.5 * generate::kOstiumRadiusMm && along < deepest) {
+                deepest = along;
+                at = i;
+            }
+        }
+        std::printf("tubal ostium at (%.1f, %.1f, %.1f) mm, facing (%.2f, %.2f, %.2f): funnel %.2f mm deep\n", o.centreMm.x, o.centreMm.y,
+                    o.centreMm.z, o.normal.x, o.normal.y, o.normal.z, -deepest);
+        EXPECT_LT(deepest, -0.5 * generate::kOstiumDepthMm);
+        EXPECT_GT(deepest, -1.5 * generate::kOstiumDepthMm);
+        const auto& w = sc.surface.embedding[at].weights;
+        EXPECT_GE(*std::min_element(w.begin(), w.end()), -1e-9) << "the funnel's tip lies outside the tets";
+    }
 }

@@ -65,9 +65,25 @@ int visualSurfaceLevels(const SurfaceMesh& boundary);
 /// How far fairing may move a point of the visual surface away from the tets' boundary, mm: well under the lining's
 /// thinnest 1 mm (scene::kEndometrialThicknessMm), so the surface stays on its tissue.
 inline constexpr double kMaxVisualFairingMm = 0.75;
+/// A tubal ostium as the visual surface shows it: a funnel into the cornu's wall, 2 mm across at its mouth, where the
+/// interstitial part of the tube (about 1 cm long in the wall, lumen about 1 mm) opens into the cavity (El-Mowafi &
+/// Diamond, "Fallopian tube", and Tubal microsurgery versus assisted reproduction, in Infertility and Assisted
+/// Reproduction, Cambridge University Press 2008). The tets keep the wall closed: the tube is not modelled.
+inline constexpr double kOstiumRadiusMm = 1.0;
+inline constexpr double kOstiumDepthMm = 2.0; ///< the funnel's depth, mm: as deep as the light shows the opening
+/// One tubal ostium of a labelled boundary: the area-weighted centre and outward (into the cavity) unit normal of
+/// one connected set of its ostium faces; in order of their first face.
+struct OstiumOpening {
+    Vec3 centreMm;
+    Vec3 normal;
+};
+std::vector<OstiumOpening> ostiumOpenings(const SurfaceMesh& boundary);
+/// The albedo's dark spots over the openings (the funnel's inside, which the scope's light does not reach).
+std::vector<texture::DarkSpot> ostiumDarkSpots(const std::vector<OstiumOpening>& ostia);
+
 /// The texture stage's close-up refinement of `boundary`: visualSurfaceLevels, the seen faces faired by Taubin
-/// smoothing within kMaxVisualFairingMm.
-texture::CloseUpParams closeUpParamsFor(const SurfaceMesh& boundary);
+/// smoothing within kMaxVisualFairingMm; a funnel (kOstiumRadiusMm, kOstiumDepthMm) at each of `ostia`.
+texture::CloseUpParams closeUpParamsFor(const SurfaceMesh& boundary, const std::vector<OstiumOpening>& ostia = {});
 
 /// The boundary of `tets` with the body outline's "tissue" and "pathology" face labels carried over (within
 /// `reachMm`), the tubal ostia kept although they are smaller than a triangle, and the kAppearanceLabel label

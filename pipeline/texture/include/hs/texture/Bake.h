@@ -37,6 +37,14 @@ struct AppearanceLabels {
     std::string contactLabel = "contact";   ///< face label marking contact faces (non-zero)
 };
 
+/// A round spot whose albedo darkens towards its centre (an opening whose depth the light does not reach: the tubal
+/// ostia). The factor at distance d < radius is 1 - strength (1 - (d / radius)^2)^2.
+struct DarkSpot {
+    Vec3 centreMm;
+    double radiusMm = 1.0;
+    double strength = 0.85; ///< 0..1
+};
+
 struct BakeParams {
     int size = 2048;           ///< texture side, texels (64..8192)
     int padding = 0;           ///< gutter texels; <= 0: size / 256, at least 2
@@ -49,6 +57,7 @@ struct BakeParams {
     VesselParams vesselParams;   ///< its seed is replaced by one derived from `seed`
     double bumpMm = 0.06;        ///< height of the mucosa bumps from the base texture's luminance, mm
     double normalStrength = 1.0; ///< scale of the slopes in the normal map
+    std::vector<DarkSpot> darkSpots; ///< applied to the albedo after the vessels
     std::uint64_t seed = 1;      ///< same seed, same maps
     int threads = 0;             ///< 0: all cores; the maps do not depend on it
 };
@@ -98,11 +107,21 @@ struct TexturedSurface {
 };
 TexturedSurface makeTexturedSurface(const SurfaceMesh& surface, const Atlas& atlas);
 
+/// A funnel pressed into the surface: every point within `radiusMm` of `centreMm` whose normal faces like `normal`
+/// (cosine above 0.5) moves by depthMm (1 - (d / radius)^2)^2 against `normal` (the outward unit normal there).
+struct SurfacePit {
+    Vec3 centreMm;
+    Vec3 normal;
+    double radiusMm = 1.0;
+    double depthMm = 2.0;
+};
+
 /// How makeCloseUpSurface refines.
 struct CloseUpParams {
     int levels = 2;                 ///< Loop levels (0..4); each quadruples the triangles
     std::vector<std::int32_t> seen; ///< per face of the input: nonzero where the scope sees it (empty: everywhere)
     TaubinParams smoothing;         ///< applied to the seen faces' points before subdividing (iterations 0: none)
+    std::vector<SurfacePit> pits;   ///< carved into the subdivided surface, before its normals
 };
 
 /// The visual surface for close-ups: the seen part of `surface` faired (taubinSmooth, removing the fins and spikes
