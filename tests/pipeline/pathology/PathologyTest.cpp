@@ -247,7 +247,9 @@ TEST(Pathology, SameSeedGivesTheSameShape) {
     EXPECT_EQ(a->pathologies[0].surface.points, b->pathologies[0].surface.points);
 }
 
-TEST(Pathology, GrowsOneThreeCentimetreMyomaWithAnyModelWithinTwoSeconds) {
+// The time is printed, not asserted (tests run in parallel on noisy machines); the 2-second bar is a benchmark's:
+// `bench_pathology 20 30` prints the mean grow time of a 30 mm myoma per model.
+TEST(Pathology, GrowsOneThreeCentimetreMyomaWithAnyModel) {
     const SurfaceMesh organ = test::testOrgan(1);
     for (GrowthModel model : {GrowthModel::CellularAutomaton, GrowthModel::Skeleton, GrowthModel::Particles}) {
         PathologyParams params;
@@ -256,7 +258,9 @@ TEST(Pathology, GrowsOneThreeCentimetreMyomaWithAnyModelWithinTwoSeconds) {
         auto grown = growPathologies(organ, params);
         const double seconds = secondsOf(start);
         ASSERT_TRUE(grown.ok()) << grown.error().detail;
-        EXPECT_LE(seconds, 2.0) << toString(model);
+        std::printf("30 mm myoma, %s: %.2f s, %.1f mm\n", std::string(toString(model)).c_str(), seconds,
+                    grown->pathologies[0].descriptors.sizeMm);
+        EXPECT_NEAR(grown->pathologies[0].descriptors.sizeMm, 30.0, 6.0) << toString(model);
     }
 }
 
