@@ -322,19 +322,21 @@ constexpr std::array<std::array<double, 4>, 5> kTetSamples{{{0.25, 0.25, 0.25, 0
                                                             {0.15, 0.15, 0.55, 0.15},
                                                             {0.15, 0.15, 0.15, 0.55}}};
 
-/// Pathology region `region` of `tets` against the scene's boundary, as a pathology::WallContact.
-pathology::WallContact contactOf(const TetMesh& tets, const std::vector<std::array<std::int32_t, 4>>& adjacent,
-                                 std::int32_t region, std::size_t index, const SurfaceMesh& boundary,
-                                 const std::vector<std::int32_t>& cavityFaces,
-                                 const std::vector<std::int32_t>& serosaFaces) {
-    pathology::WallContact c;
+/// A pathology region of the tets: its volume, volume centroid, the volumes beyond the rims of what is draped over
+/// it (in the cavity, outside the serosa) and the points of its surface.
+struct RegionShape {
+    double volume = 0.0;   ///< mm^3
+    double inCavity = 0.0; ///< mm^3
+    double outside = 0.0;  ///< mm^3
+    Vec3 centre;
+    std::vector<Vec3> surface;
+};
+
+RegionShape regionShape(const TetMesh& tets, const std::vector<std::array<std::int32_t, 4>>& adjacent,
+                        std::int32_t region, const std::optional<Rim>& cavityRim, const std::optional<Rim>& serosaRim) {
+    RegionShape r;
     std::vector<std::uint8_t> onSurface(tets.points.size(), 0);
-    double volume = 0.0;
     Vec3 moment;
-    const auto draped = static_cast<std::int32_t>(index + 1);
-    const auto cavityRim = rimOf(boundary, sideFaces(boundary, true, draped));
-    const auto serosaRim = rimOf(boundary, sideFaces(boundary, false, draped));
-    double inCavity = 0.0, outside = 0.0;
     for (std::size_t t = 0; t < tets.tets.size(); ++t) {
         if (tets.regionOf(t) != region)
             continue;
@@ -343,14 +345,14 @@ pathology::WallContact contactOf(const TetMesh& tets, const std::vector<std::arr
         for (std::size_t k = 0; k < 4; ++k)
             p[k] = tets.points[static_cast<std::size_t>(tet[k])];
         const double v = std::abs(dot(p[1] - p[0], cross(p[2] - p[0], p[3] - p[0]))) / 6.0;
-        volume += v;
+        r.volume += v;
         moment += (p[0] + p[1] + p[2] + p[3]) * (0.25 * v);
         for (const auto& w : kTetSamples) {
             const Vec3 q = p[0] * w[0] + p[1] * w[1] + p[2] * w[2] + p[3] * w[3];
             if (cavityRim && beyond(*cavityRim, q))
-                inCavity += v / kTetSamples.size();
+                r.inCavity += v / kTetSamples.size();
             else if (serosaRim && beyond(*serosaRim, q))
-                outside += v / kTetSamples.size();
+                r.outside += v / kTetSamples.size();
         }
         for (std::size_t k = 0; k < 4; ++k) {
             const auto u = adjacent[t][k];
@@ -362,9 +364,26 @@ pathology::WallContact contactOf(const TetMesh& tets, const std::vector<std::arr
     }
     for (std::size_t v = 0; v < onSurface.size(); ++v)
         if (onSurface[v])
-            c.points.push_back(tets.points[v]);
+            r.surface.push_back(tets.points[v]);
+    r.centre = r.volume > 0.0 ? moment / r.volume : Vec3{};
+    return r;
+}
+
+/// Pathology region `region` (pathology `index`) of `tets` against the scene's boundary, as a
+/// pathology::WallContact.
+pathology::WallContact contactOf(const TetMesh& tets, const std::vector<std::array<std::int32_t, 4>>& adjacent,
+                                 std::int32_t region, std::size_t index, const SurfaceMesh& boundary,
+                                 const std::vector<std::int32_t>& cavityFaces,
+                                 const std::vector<std::int32_t>& serosaFaces) {
+    const auto draped = static_cast<std::int32_t>(index + 1);
+    const auto cavityRim = rimOf(boundary, sideFaces(boundary, true, draped));
+    const auto serosaRim = rimOf(boundary, sideFaces(boundary, false, draped));
+    RegionShape shape = regionShape(tets, adjacent, region, cavityRim, serosaRim);
+    const double volume = shape.volume, inCavity = shape.inCavity, outside = shape.outside;
+    pathology::WallContact c;
+    c.points = std::move(shape.surface);
     c.volumeMm3 = volume;
-    c.centre = volume > 0.0 ? moment / volume : Vec3{};
+    c.centre = shape.centre;
     c.sizeMm = largestDiameter(c.points);
     auto& f = c.fractions;
     if (volume > 0.0) {
