@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace hs::anatomy {
 
@@ -69,7 +70,119 @@ double cavityArea(const Reader& in) {
     return 0.5 * norm(area);
 }
 
+/// The crossing of the line through `p` along the unit `normal` with those of `faces` of `body` that face the same
+/// way (so the other side of a thin cavity is never taken for its own wall), nearest to `p` and within `reach` mm.
+std::optional<Vec3> reproject(const Vec3& p, const Vec3& normal, const SurfaceMesh& body,
+                              const std::vector<std::int32_t>& faces, double reach) {
+    std::optional<double> step;
+    for (const auto f : faces) {
+        const auto& t = body.triangles[static_cast<std::size_t>(f)];
+        const Vec3& a = body.points[static_cast<std::size_t>(t[0])];
+        const Vec3 e1 = body.points[static_cast<std::size_t>(t[1])] - a;
+        const Vec3 e2 = body.points[static_cast<std::size_t>(t[2])] - a;
+        if (dot(cross(e1, e2), normal) <= 0.0)
+            continue;
+        const Vec3 h = cross(normal, e2);
+        const double det = dot(e1, h);
+        if (std::abs(det) < 1e-15)
+            continue;
+        const Vec3 s = p - a;
+        const double bu = dot(s, h) / det;
+        const Vec3 q = cross(s, e1);
+        const double bv = dot(normal, q) / det;
+        const double tt = dot(e2, q) / det;
+        if (bu >= 0.0 && bv >= 0.0 && bu + bv <= 1.0 && std::abs(tt) <= reach &&
+            (!step || std::abs(tt) < std::abs(*step)))
+            step = tt;
+    }
+    if (!step)
+        return std::nullopt;
+    return p + normal * *step;
+}
+
+/// The faces of `faces` whose box comes within `margin` of the box of `points`.
+std::vector<std::int32_t> facesNear(const std::vector<Vec3>& points, double margin, const SurfaceMesh& body,
+                                    const std::vector<std::int32_t>& faces) {
+    Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+    for (const Vec3& p : points) {
+        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+    }
+    std::vector<std::int32_t> near;
+    for (const auto f : faces) {
+        const auto& t = body.triangles[static_cast<std::size_t>(f)];
+        bool out = false;
+        for (int axis = 0; axis < 3 && !out; ++axis) {
+            double fl = 1e300, fh = -1e300;
+            for (const auto v : t) {
+                const Vec3& p = body.points[static_cast<std::size_t>(v)];
+                const double c = axis == 0 ? p.x : (axis == 1 ? p.y : p.z);
+                fl = std::min(fl, c), fh = std::max(fh, c);
+            }
+            const double l = axis == 0 ? lo.x : (axis == 1 ? lo.y : lo.z);
+            const double h = axis == 0 ? hi.x : (axis == 1 ? hi.y : hi.z);
+            out = fh < l - margin || fl > h + margin;
+        }
+        if (!out)
+            near.push_back(f);
+    }
+    return near;
+}
+
+/// A subserosal myoma bulges the serosa, and a pathology's push moves the far wall of the cavity, about this far.
+constexpr double kReprojectReachMm = 20.0;
+
+/// Moves the vertices `ids` of `mesh` (a copy of the template instance) along their normals onto `faces` of `body`;
+/// a vertex with no crossing stays.
+void reprojectVertices(const std::vector<std::size_t>& ids, const std::vector<Vec3>& normals, const SurfaceMesh& body,
+                       const std::vector<std::int32_t>& faces, SurfaceMesh& mesh) {
+    std::vector<Vec3> points;
+    for (const auto v : ids)
+        points.push_back(mesh.points[v]);
+    const auto near = facesNear(points, kReprojectReachMm, body, faces);
+    for (std::size_t k = 0; k < ids.size(); ++k)
+        if (auto hit = reproject(points[k], normals[ids[k]], body, near, kReprojectReachMm))
+            mesh.points[ids[k]] = *hit;
+}
+
 } // namespace
+
+double ellipsoidVolumeMl(double lengthMm, double widthMm, double apDepthMm) {
+    return units::mlFromMm3(lengthMm * widthMm * apDepthMm * kEllipsoidFactor);
+}
+
+Result<UterusDimensions> measureBody(const SurfaceMesh& organ, const TemplateLayout& l, const SurfaceMesh& body,
+                                     const std::vector<std::int32_t>& serosaFaces,
+                                     const std::vector<std::int32_t>& cavityFaces) {
+    if (organ.points.size() != static_cast<std::size_t>(l.vertexCount()) ||
+        organ.triangles.size() != static_cast<std::size_t>(l.faceCount()))
+        return fail(ErrorCode::InvalidInput, "the organ has " + std::to_string(organ.points.size()) +
+                                                 " vertices; the uterus template has " +
+                                                 std::to_string(l.vertexCount()));
+    const auto normals = hs::vertexNormals(organ);
+    SurfaceMesh onBody = organ;
+    auto ringIds = [&](int r) {
+        std::vector<std::size_t> ids;
+        for (int j = 0; j < l.around; ++j)
+            ids.push_back(static_cast<std::size_t>(l.vertex(r, j)));
+        return ids;
+    };
+    for (int r = 0; r < l.ringCount(); ++r)
+        reprojectVertices(ringIds(r), normals, body, r < l.firstCanalRing() ? serosaFaces : cavityFaces, onBody);
+    // A pole with no crossing of its own follows the ring next to it.
+    auto pole = [&](std::size_t v, int ring, const std::vector<std::int32_t>& faces) {
+        if (auto hit = reproject(organ.points[v], normals[v], body,
+                                 facesNear({organ.points[v]}, kReprojectReachMm, body, faces), kReprojectReachMm)) {
+            onBody.points[v] = *hit;
+            return;
+        }
+        const Reader before{organ, l}, after{onBody, l};
+        onBody.points[v] = organ.points[v] + (after.centroid(ring) - before.centroid(ring));
+    };
+    pole(0, 0, serosaFaces);
+    pole(static_cast<std::size_t>(l.innerPole()), l.ringCount() - 1, cavityFaces);
+    return measureUterus(onBody, l);
+}
 
 Result<UterusDimensions> measureUterus(const SurfaceMesh& mesh, const TemplateLayout& l) {
     if (mesh.points.size() != static_cast<std::size_t>(l.vertexCount()) ||
@@ -118,7 +231,7 @@ Result<UterusDimensions> measureUterus(const SurfaceMesh& mesh, const TemplateLa
     const double angle = std::atan2(norm(cross(canalAxis, corpusAxis)), dot(canalAxis, corpusAxis));
     d.flexionDeg = units::radToDeg(dot(corpusAxis, anterior) >= 0.0 ? angle : -angle);
 
-    d.ellipsoidVolumeMl = units::mlFromMm3(d.lengthMm * d.widthMm * d.apDepthMm * kEllipsoidFactor);
+    d.ellipsoidVolumeMl = ellipsoidVolumeMl(d.lengthMm, d.widthMm, d.apDepthMm);
     d.tissueVolumeMl = units::mlFromMm3(enclosedVolume(mesh));
     d.cavityVolumeMl = units::mlFromMm3(cavityVolume(in));
     return d;

@@ -8,9 +8,8 @@
 #include <deque>
 
 namespace hs::pathology {
-namespace detail {
 
-clinical::FigoType classifyFigo(const Fractions& f, double tol) {
+clinical::FigoType classifyFigo(const WallFractions& f, double tol) {
     const bool cavity = f.cavity > 0.01;
     const bool serosal = f.outside > 0.02;
     const bool touchesEndometrium = cavity || f.endometriumDistanceMm <= tol;
@@ -26,6 +25,8 @@ clinical::FigoType classifyFigo(const Fractions& f, double tol) {
     }
     return clinical::FigoType{touchesEndometrium ? 3 : 4, -1};
 }
+
+namespace detail {
 
 double tissueFraction(const SurfaceMesh& organ, const SurfaceMesh& pathology, double h) {
     const Grid g = Grid::covering(bounds(pathology), h, 1);
@@ -156,6 +157,66 @@ std::vector<Vec3> basePoints(const SurfaceMesh& organ, const OrganInfo& info, Si
 }
 
 } // namespace
+
+/// The descriptors of a contact in `info`'s cavity frame: one home for the rules `measure` and `describeContact`
+/// share.
+Descriptors describe(const OrganInfo& info, const WallContact& c, clinical::PathologyKind kind, double tol) {
+    WallFractions f = c.fractions;
+    double sizeMm = c.sizeMm, stalkMm = c.stalkLengthMm;
+    // Size: largest diameter; for a body that lies mostly outside the wall, of the head beyond a stalk.
+    if (f.tissue < 0.5 && !c.base.empty() && !c.points.empty()) {
+        double stalk = 0.0;
+        const Vec3 axis = normalized(c.centre - centroid(c.base));
+        const double head = headDiameter(c.points, centroid(c.base), axis, &stalk);
+        if (stalk > 0.0) {
+            f.pedunculated = true;
+            stalkMm = stalk;
+            sizeMm = head;
+        }
+    }
+    Descriptors d;
+    d.kind = kind;
+    d.volumeMm3 = c.volumeMm3;
+    d.sizeMm = sizeMm;
+    d.intramuralFraction = f.tissue;
+    d.cavityFraction = f.cavity;
+    d.outsideFraction = f.outside;
+    d.endometriumDistanceMm = f.endometriumDistanceMm;
+    d.serosaDistanceMm = f.serosaDistanceMm;
+    d.pedunculated = f.pedunculated;
+    d.stalkLengthMm = stalkMm;
+    const Side baseSide = c.serosalBase ? Side::Serosa : Side::Cavity;
+    Vec3 baseCentre;
+    if (!c.base.empty()) {
+        baseCentre = centroid(c.base);
+        d.baseWidthMm = diameter(c.base);
+    } else {
+        const SurfaceMesh& organ = *info.mesh;
+        const auto [face, dist] = info.nearestFace(c.centre, baseSide);
+        (void)dist;
+        const Triangle& t = organ.triangles[face];
+        baseCentre = (organ.points[static_cast<std::size_t>(t[0])] + organ.points[static_cast<std::size_t>(t[1])] +
+                      organ.points[static_cast<std::size_t>(t[2])]) /
+                     3.0;
+    }
+    const Vec3 fromCentre = normalized(baseCentre - info.cavityCenter);
+    const double wallLength = baseSide == Side::Serosa           ? info.corpusLengthMm
+                              : dot(fromCentre, info.axis) > 0.8 ? info.cavityWidthMm
+                                                                 : info.cavityLengthMm;
+    d.baseExtension = wallLength > 0.0 ? d.baseWidthMm / wallLength : 0.0;
+    const double along = dot(baseCentre - info.internalOs, info.axis) / std::max(info.cavityLengthMm, 1e-9);
+    d.topography = along < 1.0 / 3.0 ? 0 : (along < 2.0 / 3.0 ? 1 : 2);
+    const Vec3 radial = (baseCentre - info.internalOs) - info.axis * dot(baseCentre - info.internalOs, info.axis);
+    d.lateralWall = norm(radial) > 0.25 * info.cavityWidthMm && std::fabs(dot(normalized(radial), info.lateral)) > 0.8;
+    if (kind == clinical::PathologyKind::Myoma) {
+        d.figo = classifyFigo(f, tol);
+        d.lasmar = lasmarScore(d);
+    } else {
+        d.figo = clinical::FigoType{-1, -1};
+    }
+    return d;
+}
+
 } // namespace detail
 
 clinical::LasmarScore lasmarScore(const Descriptors& d) {
@@ -207,54 +268,23 @@ Result<Descriptors> measure(const SurfaceMesh& organ, const SurfaceMesh& patholo
     d.serosaDistanceMm = f.serosaDistanceMm;
 
     // The base: organ vertices of the side it grows from that lie inside it or within 1 mm of it.
-    const Side baseSide = (f.cavity > 0.0 || (f.outside == 0.0 && f.endometriumDistanceMm <= f.serosaDistanceMm))
-                              ? Side::Cavity
-                              : Side::Serosa;
-    const std::vector<Vec3> base = basePoints(organ, info, baseSide, g, pm);
-    const Vec3 bodyCentre = volumeCentroid(pathology);
-    Vec3 baseCentre;
-    if (!base.empty()) {
-        baseCentre = centroid(base);
-        d.baseWidthMm = diameter(base);
-    } else {
-        const auto [face, dist] = info.nearestFace(bodyCentre, baseSide);
-        (void)dist;
-        const Triangle& t = organ.triangles[face];
-        baseCentre = (organ.points[static_cast<std::size_t>(t[0])] + organ.points[static_cast<std::size_t>(t[1])] +
-                      organ.points[static_cast<std::size_t>(t[2])]) /
-                     3.0;
-    }
+    WallContact c;
+    c.serosalBase = !(f.cavity > 0.0 || (f.outside == 0.0 && f.endometriumDistanceMm <= f.serosaDistanceMm));
+    c.base = basePoints(organ, info, c.serosalBase ? Side::Serosa : Side::Cavity, g, pm);
+    c.centre = volumeCentroid(pathology);
+    c.volumeMm3 = d.volumeMm3;
+    c.points = pathology.points;
+    c.sizeMm = extent;
+    c.fractions = f;
+    return detail::describe(info, c, kind, params.contactToleranceMm);
+}
 
-    // Size: largest diameter; for a body that lies mostly outside the wall, of the head beyond a stalk.
-    d.sizeMm = extent;
-    if (f.tissue < 0.5 && !base.empty()) {
-        double stalk = 0.0;
-        const Vec3 axis = normalized(bodyCentre - baseCentre);
-        const double head = headDiameter(pathology.points, baseCentre, axis, &stalk);
-        if (stalk > 0.0) {
-            d.pedunculated = true;
-            d.stalkLengthMm = stalk;
-            d.sizeMm = head;
-        }
-    }
-    f.pedunculated = d.pedunculated;
-
-    const Vec3 fromCentre = normalized(baseCentre - info.cavityCenter);
-    const double wallLength = baseSide == Side::Serosa           ? info.corpusLengthMm
-                              : dot(fromCentre, info.axis) > 0.8 ? info.cavityWidthMm
-                                                                 : info.cavityLengthMm;
-    d.baseExtension = wallLength > 0.0 ? d.baseWidthMm / wallLength : 0.0;
-    const double along = dot(baseCentre - info.internalOs, info.axis) / std::max(info.cavityLengthMm, 1e-9);
-    d.topography = along < 1.0 / 3.0 ? 0 : (along < 2.0 / 3.0 ? 1 : 2);
-    const Vec3 radial = (baseCentre - info.internalOs) - info.axis * dot(baseCentre - info.internalOs, info.axis);
-    d.lateralWall = norm(radial) > 0.25 * info.cavityWidthMm && std::fabs(dot(normalized(radial), info.lateral)) > 0.8;
-    if (kind == clinical::PathologyKind::Myoma) {
-        d.figo = classifyFigo(f, params.contactToleranceMm);
-        d.lasmar = lasmarScore(d);
-    } else {
-        d.figo = clinical::FigoType{-1, -1};
-    }
-    return d;
+Result<Descriptors> describeContact(const SurfaceMesh& organ, const WallContact& contact, clinical::PathologyKind kind,
+                                    double contactToleranceMm) {
+    auto info = detail::analyzeOrgan(organ);
+    if (!info.ok())
+        return info.failure();
+    return detail::describe(*info, contact, kind, contactToleranceMm);
 }
 
 } // namespace hs::pathology

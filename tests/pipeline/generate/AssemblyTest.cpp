@@ -1,6 +1,7 @@
 #include "hs/generate/Assembly.h"
 
 #include "hs/anatomy/UterusGenerator.h"
+#include "hs/clinical/Tissue.h"
 #include "hs/meshing/BaselineMeshers.h"
 
 #include <gtest/gtest.h>
@@ -99,38 +100,232 @@ TEST(Assembly, LabelsComeInContactBaseOstiaCanalOrderAndEmptySetsAreLeftOut) {
     EXPECT_EQ(labels[3].indices, (std::vector<std::int32_t>{2, 3}));
 }
 
-TEST(Assembly, DescriptorsTakeTheMeasuredSizeAndTheMeshedVolume) {
-    const auto spec = twoPathologyCase();
-    pathology::PathologyResult grown;
-    grown.pathologies.resize(2);
-    grown.pathologies[0].id = "myoma-1";
-    grown.pathologies[0].kind = clinical::PathologyKind::Myoma;
-    grown.pathologies[0].descriptors.sizeMm = 19.5;
-    grown.pathologies[0].descriptors.figo = clinical::FigoType{2, -1};
-    grown.pathologies[0].descriptors.lasmar = clinical::LasmarScore{0, 1, 1, 2, 1};
-    grown.pathologies[1].id = "polyp-1";
-    grown.pathologies[1].kind = clinical::PathologyKind::Polyp;
-    grown.pathologies[1].descriptors.sizeMm = 9.8;
-    anatomy::UterusDimensions organ;
-    organ.lengthMm = 70.0;
-    organ.ellipsoidVolumeMl = 80.0;
-    const TetMesh tets = threeTets(); // body region ids
-    const auto c = clinicalDescriptors(spec, organ, grown, tets);
-    EXPECT_EQ(c.organ.lengthMm, 70.0);
-    EXPECT_EQ(c.organ.uterineVolumeMl, 80.0);
-    ASSERT_EQ(c.pathologies.size(), 2u);
-    const auto& myoma = c.pathologies[0];
-    EXPECT_EQ(myoma.regionId, 4);
-    EXPECT_EQ(myoma.sizeMm, 19.5);
-    EXPECT_NEAR(myoma.volumeMl, std::abs(signedVolume(tets, 1)) / 1000.0, 1e-12);
-    ASSERT_TRUE(myoma.figo && myoma.lasmar);
-    EXPECT_EQ(myoma.figo->toString(), "2");
-    EXPECT_EQ(myoma.lasmar->total(), 5);
-    EXPECT_EQ(myoma.location, "left-lateral");
-    const auto& polyp = c.pathologies[1];
-    EXPECT_EQ(polyp.kind, clinical::PathologyKind::Polyp);
-    EXPECT_FALSE(polyp.figo.has_value());
-    EXPECT_EQ(polyp.location, "cornual-right");
+namespace {
+
+/// The parametric organ as its own final body: the boundary is the organ surface with no pathology draped on it.
+struct SyntheticBody {
+    anatomy::UterusResult organ;
+    SurfaceMesh boundary;
+};
+
+const SyntheticBody& syntheticBody() {
+    static const SyntheticBody b = [] {
+        SyntheticBody s;
+        auto organ = anatomy::generateUterus(anatomy::UterusShapeParams{});
+        EXPECT_TRUE(organ.ok());
+        s.organ = std::move(organ).value();
+        s.boundary = s.organ.mesh;
+        s.boundary.faceLabels[merge::kPathologyLabel].assign(s.boundary.triangles.size(), 0);
+        return s;
+    }();
+    return b;
+}
+
+/// A cube of `n`^3 cells of 6 tets each, side `side` mm, centred on `centre`, its axes (e1, e2, normal), all in
+/// region `region`.
+TetMesh tetCube(const Vec3& centre, const Vec3& normal, double side, int n, std::int32_t region) {
+    Vec3 e1 = normalized(cross(normal, std::abs(normal.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0}));
+    const Vec3 e2 = cross(normal, e1);
+    TetMesh m;
+    auto id = [n](int i, int j, int k) { return static_cast<std::int32_t>((k * (n + 1) + j) * (n + 1) + i); };
+    for (int k = 0; k <= n; ++k)
+        for (int j = 0; j <= n; ++j)
+            for (int i = 0; i <= n; ++i) {
+                const double h = side / n;
+                m.points.push_back(centre + e1 * (i * h - side / 2) + e2 * (j * h - side / 2) +
+                                   normal * (k * h - side / 2));
+            }
+    for (int k = 0; k < n; ++k)
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const std::int32_t c[8] = {
+                    id(i, j, k),     id(i + 1, j, k),     id(i + 1, j + 1, k),     id(i, j + 1, k),
+                    id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)};
+                // Six tets around the diagonal 0-6 (Kuhn triangulation).
+                const int t[6][4] = {{0, 1, 2, 6}, {0, 2, 3, 6}, {0, 3, 7, 6},
+                                     {0, 7, 4, 6}, {0, 4, 5, 6}, {0, 5, 1, 6}};
+                for (const auto& q : t)
+                    m.tets.push_back({c[q[0]], c[q[1]], c[q[2]], c[q[3]]});
+            }
+    m.regions.assign(m.tets.size(), region);
+    return m;
+}
+
+/// A seat on the posterior endometrium half way up the cavity: the vertex and the unit normal into the cavity.
+std::pair<Vec3, Vec3> posteriorSeat(const SyntheticBody& b) {
+    const auto& l = b.organ.layout;
+    const auto v = static_cast<std::size_t>(l.vertex(l.internalOsRing() + l.cavityRings / 2, 3 * l.around / 4));
+    Vec3 n;
+    for (const auto& t : b.boundary.triangles)
+        if (t[0] == static_cast<std::int32_t>(v) || t[1] == static_cast<std::int32_t>(v) ||
+            t[2] == static_cast<std::int32_t>(v)) {
+            const Vec3& a = b.boundary.points[static_cast<std::size_t>(t[0])];
+            n += cross(b.boundary.points[static_cast<std::size_t>(t[1])] - a,
+                       b.boundary.points[static_cast<std::size_t>(t[2])] - a);
+        }
+    return {b.boundary.points[v], normalized(n)};
+}
+
+/// The default case with its myoma only, asked as `figo` and the size of an 8 mm cube (its diagonal).
+scene::CaseSpec cubeMyomaCase(int figo) {
+    scene::CaseSpec spec = scene::defaultCase();
+    spec.pathologies.resize(1);
+    spec.pathologies[0].figo = clinical::FigoType{figo, -1};
+    spec.pathologies[0].sizeMm = 8.0 * std::sqrt(3.0);
+    return spec;
+}
+
+/// The body with an 8 mm cube of myoma tets sunk `depthMm` (its centre) below the posterior endometrium; the
+/// cavity faces above it are draped over it (pathology label 1) when `draped`.
+MeasuredDescriptors cubeMyoma(double depthMm, bool draped, int askedFigo) {
+    SyntheticBody b = syntheticBody();
+    const auto [seat, normal] = posteriorSeat(b);
+    const Vec3 centre = seat - normal * depthMm;
+    if (draped) {
+        auto& over = b.boundary.faceLabels[merge::kPathologyLabel];
+        const auto& tissue = b.boundary.faceLabels.at(clinical::kSurfaceTissueLabel);
+        for (std::size_t f = 0; f < b.boundary.triangles.size(); ++f) {
+            const auto& t = b.boundary.triangles[f];
+            const Vec3 c =
+                (b.boundary.points[static_cast<std::size_t>(t[0])] + b.boundary.points[static_cast<std::size_t>(t[1])] +
+                 b.boundary.points[static_cast<std::size_t>(t[2])]) /
+                3.0;
+            const Vec3 d = c - seat;
+            if (tissue[f] == clinical::labelValue(clinical::SurfaceTissue::Endometrium) &&
+                norm(d - normal * dot(d, normal)) < 6.0 && std::abs(dot(d, normal)) < 3.0)
+                over[f] = 1;
+        }
+    }
+    const TetMesh tets = tetCube(centre, normal, 8.0, 8, pathologyRegion(0));
+    return clinicalDescriptors(cubeMyomaCase(askedFigo), b.organ.mesh, tets, b.boundary);
+}
+
+bool hasWarning(const MeasuredDescriptors& m, const std::string& text) {
+    for (const auto& w : m.warnings)
+        if (w.find(text) != std::string::npos)
+            return true;
+    return false;
+}
+
+} // namespace
+
+TEST(Assembly, OrganDimensionsOfAnUnchangedBodyAreTheGeneratorsOwn) {
+    const auto& b = syntheticBody();
+    scene::CaseSpec spec = scene::defaultCase();
+    spec.pathologies.clear();
+    const auto m = clinicalDescriptors(spec, b.organ.mesh, TetMesh{}, b.boundary);
+    const auto d = anatomy::measureUterus(b.organ.mesh, b.organ.layout);
+    ASSERT_TRUE(d.ok());
+    EXPECT_TRUE(m.warnings.empty()) << m.warnings.front();
+    const auto& o = m.clinical.organ;
+    EXPECT_NEAR(o.lengthMm, d->lengthMm, 0.01 * d->lengthMm);
+    EXPECT_NEAR(o.widthMm, d->widthMm, 0.01 * d->widthMm);
+    EXPECT_NEAR(o.apMm, d->apDepthMm, 0.01 * d->apDepthMm);
+    EXPECT_NEAR(o.cavityLengthMm, d->cavityLengthMm, 0.02 * d->cavityLengthMm);
+    EXPECT_NEAR(o.cavityWidthMm, d->cavityWidthMm, 0.02 * d->cavityWidthMm);
+    EXPECT_NEAR(o.uterineVolumeMl, anatomy::ellipsoidVolumeMl(o.lengthMm, o.widthMm, o.apMm), 1e-9);
+}
+
+TEST(Assembly, OrganDimensionsFollowTheFinalBodyNotTheOrganItGrewFrom) {
+    // The final body 10 % larger than the organ about the external os (the organ frame's origin). The organ's
+    // vertices follow it along their normals (anatomy::measureBody), which is how a pathology's push moves a wall:
+    // the outer dimensions measure 10 % more to 1 %; the small, curved cavity moves along its wall as well, which
+    // normals do not follow, and measures 7 % (width) and 18 % (length) more.
+    const auto& b = syntheticBody();
+    SurfaceMesh larger = b.boundary;
+    for (auto& p : larger.points)
+        p = p * 1.1;
+    scene::CaseSpec spec = scene::defaultCase();
+    spec.pathologies.clear();
+    const auto m = clinicalDescriptors(spec, b.organ.mesh, TetMesh{}, larger);
+    const auto d = anatomy::measureUterus(b.organ.mesh, b.organ.layout);
+    ASSERT_TRUE(d.ok());
+    const auto& o = m.clinical.organ;
+    EXPECT_NEAR(o.lengthMm, 1.1 * d->lengthMm, 0.01 * d->lengthMm);
+    EXPECT_NEAR(o.widthMm, 1.1 * d->widthMm, 0.01 * d->widthMm);
+    EXPECT_NEAR(o.apMm, 1.1 * d->apDepthMm, 0.01 * d->apDepthMm);
+    EXPECT_NEAR(o.cavityLengthMm, 1.1 * d->cavityLengthMm, 0.1 * d->cavityLengthMm);
+    EXPECT_GT(o.cavityLengthMm, 1.04 * d->cavityLengthMm);
+    EXPECT_NEAR(o.cavityWidthMm, 1.1 * d->cavityWidthMm, 0.05 * d->cavityWidthMm);
+    EXPECT_GT(o.cavityWidthMm, 1.04 * d->cavityWidthMm);
+    EXPECT_NEAR(o.uterineVolumeMl, 1.331 * d->ellipsoidVolumeMl, 0.03 * d->ellipsoidVolumeMl);
+}
+
+TEST(Assembly, DescriptorsOfTheCaseAskWarnWhenTheBodyDiffers) {
+    const auto& b = syntheticBody();
+    scene::CaseSpec spec = scene::defaultCase();
+    spec.pathologies.clear();
+    const auto d = anatomy::measureUterus(b.organ.mesh, b.organ.layout);
+    ASSERT_TRUE(d.ok());
+    spec.anatomy.dimensions.lengthMm = d->lengthMm;     // as measured: no warning
+    spec.anatomy.dimensions.widthMm = 1.3 * d->widthMm; // beyond the tolerance
+    const auto m = clinicalDescriptors(spec, b.organ.mesh, TetMesh{}, b.boundary);
+    ASSERT_EQ(m.warnings.size(), 1u);
+    EXPECT_EQ(m.warnings[0].rfind("organ: asked width ", 0), 0u) << m.warnings[0];
+}
+
+TEST(Assembly, AMyomaStandingAQuarterIntoTheCavityMeasuresFigo2) {
+    // Centre 2 mm below the endometrium: a quarter of the 8 mm cube stands beyond the wall's surface.
+    const auto m = cubeMyoma(2.0, true, 2);
+    ASSERT_EQ(m.clinical.pathologies.size(), 1u);
+    const auto& p = m.clinical.pathologies[0];
+    ASSERT_TRUE(p.figo && p.lasmar);
+    EXPECT_EQ(p.figo->toString(), "2");
+    EXPECT_NEAR(p.sizeMm, 8.0 * std::sqrt(3.0), 1e-6);
+    EXPECT_NEAR(p.volumeMl, 0.512, 1e-6);
+    EXPECT_EQ(p.lasmar->size, 0);
+    EXPECT_EQ(p.lasmar->penetration, 2);
+    EXPECT_EQ(p.lasmar->topography, 1);
+    EXPECT_EQ(p.regionId, 4);
+    EXPECT_EQ(p.location, "left-lateral");
+    EXPECT_FALSE(hasWarning(m, "FIGO")) << m.warnings.front();
+}
+
+TEST(Assembly, AMyomaMostlyInTheCavityMeasuresFigo1) {
+    const auto m = cubeMyoma(-2.0, true, 2); // three quarters beyond the endometrium
+    const auto& p = m.clinical.pathologies.at(0);
+    ASSERT_TRUE(p.figo);
+    EXPECT_EQ(p.figo->toString(), "1");
+    EXPECT_TRUE(hasWarning(m, "myoma-1: asked FIGO 2, the final body measures FIGO 1"));
+}
+
+TEST(Assembly, AMyomaUnderTheEndometriumMeasuresFigo3AndIsReported) {
+    const auto m = cubeMyoma(4.5, false, 2); // its top 0.5 mm under the endometrium, nothing draped
+    const auto& p = m.clinical.pathologies.at(0);
+    ASSERT_TRUE(p.figo);
+    EXPECT_EQ(p.figo->toString(), "3");
+    EXPECT_TRUE(hasWarning(m, "myoma-1: asked FIGO 2, the final body measures FIGO 3"));
+}
+
+TEST(Assembly, AMyomaDeepInTheWallMeasuresFigo4) {
+    const auto m = cubeMyoma(7.0, false, 4); // 3 mm under the endometrium
+    const auto& p = m.clinical.pathologies.at(0);
+    ASSERT_TRUE(p.figo);
+    EXPECT_EQ(p.figo->toString(), "4");
+    EXPECT_FALSE(hasWarning(m, "FIGO"));
+}
+
+TEST(Assembly, DescriptorWarningsNameEveryValueBeyondTheTolerance) {
+    scene::CaseSpec spec = cubeMyomaCase(2);
+    spec.pathologies[0].sizeMm = 20.0;
+    spec.anatomy.dimensions.lengthMm = 70.0;
+    spec.anatomy.dimensions.widthMm = 50.0;
+    scene::ClinicalDescriptors measured;
+    measured.organ.lengthMm = 72.0; // within 10 %
+    measured.organ.widthMm = 40.0;  // beyond
+    scene::PathologyDescriptor p;
+    p.id = "myoma-1";
+    p.sizeMm = 17.4;
+    p.figo = clinical::FigoType{3, -1};
+    measured.pathologies.push_back(p);
+    const auto w = descriptorWarnings(spec, measured);
+    ASSERT_EQ(w.size(), 3u);
+    EXPECT_EQ(w[0], "organ: asked width 50.0 mm, the final body measures 40.0 mm");
+    EXPECT_EQ(w[1], "myoma-1: asked size 20.0 mm, the final body measures 17.4 mm");
+    EXPECT_EQ(w[2], "myoma-1: asked FIGO 2, the final body measures FIGO 3");
+    const auto table = descriptorTable(spec, measured);
+    EXPECT_NE(table.find("myoma-1 FIGO"), std::string::npos);
+    EXPECT_NE(table.find("17.4"), std::string::npos);
 }
 
 TEST(Assembly, QualityCarriesEveryFigureOfTheReport) {

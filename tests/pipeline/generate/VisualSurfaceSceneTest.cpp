@@ -1,8 +1,10 @@
 // The close-up visual surface of the generated default scene (docs/scene-format.md, "The visual surface"): refined
 // where the scope sees it, smooth (bounded triangle angles and normal turns, no fins or spikes), seamless across
 // chart seams, and bound to the tets by its barycentric embedding.
+#include "hs/anatomy/UterusGenerator.h"
 #include "hs/core/Subdivision.h"
 #include "hs/core/TriangleGrid.h"
+#include "hs/generate/Assembly.h"
 #include "hs/generate/Generate.h"
 
 #include <gtest/gtest.h>
@@ -51,6 +53,57 @@ double squaredStep(const std::array<double, 3>& a, const std::array<double, 3>& 
 }
 
 } // namespace
+
+// The default scene's clinical descriptors, measured on the final body (docs/scene-format.md, "Where the clinical
+// descriptors are measured"), near what the case asks: a 20 mm FIGO 2 myoma and a 10 mm polyp. The organ is
+// compared with the pathology stage's displaced organ (the same template, measured by anatomy::measureUterus): the
+// default case states no dimensions, and the pathologies' mass effect widens the sampled organ (65.7 x 52.9 x
+// 37.2 mm before them). Prints the measured-vs-asked table.
+TEST(DefaultScene, DescriptorsMeasuredOnTheFinalBodyAreNearTheRequest) {
+    const auto& g = defaultScene();
+    ASSERT_TRUE(g.scene && g.organ && g.pathologies);
+    const auto& spec = g.scene->caseSpec;
+    const auto& c = g.scene->clinical;
+    std::printf("%s", generate::descriptorTable(spec, c).c_str());
+    const auto& before = g.organ->dimensions;
+    const auto displaced = anatomy::measureUterus(g.pathologies->organ, anatomy::TemplateLayout{});
+    ASSERT_TRUE(displaced.ok());
+    auto dims = [](const char* what, double l, double w, double ap, double cl, double cw, double v) {
+        std::printf("%-34s %.1f x %.1f x %.1f mm, cavity %.1f x %.1f mm, %.1f mL\n", what, l, w, ap, cl, cw, v);
+    };
+    dims("organ as sampled (no pathologies):", before.lengthMm, before.widthMm, before.apDepthMm, before.cavityLengthMm,
+         before.cavityWidthMm, before.ellipsoidVolumeMl);
+    dims("displaced organ (pathology stage):", displaced->lengthMm, displaced->widthMm, displaced->apDepthMm,
+         displaced->cavityLengthMm, displaced->cavityWidthMm, displaced->ellipsoidVolumeMl);
+    dims("final body (scene.json):", c.organ.lengthMm, c.organ.widthMm, c.organ.apMm, c.organ.cavityLengthMm,
+         c.organ.cavityWidthMm, c.organ.uterineVolumeMl);
+    for (const auto& p : g.pathologies->pathologies)
+        std::printf("%s as grown (pathology stage): %.1f mm, FIGO %s, Lasmar %d\n", p.id.c_str(), p.descriptors.sizeMm,
+                    p.descriptors.figo.toString().c_str(), p.descriptors.lasmar.total());
+    // Length and AP barely change; the left lateral myoma widens the organ and its cavity.
+    EXPECT_NEAR(c.organ.lengthMm, before.lengthMm, 0.05 * before.lengthMm);
+    EXPECT_NEAR(c.organ.apMm, before.apDepthMm, 0.08 * before.apDepthMm);
+    EXPECT_GT(c.organ.widthMm, before.widthMm);
+    EXPECT_NEAR(c.organ.lengthMm, displaced->lengthMm, 0.03 * displaced->lengthMm);
+    EXPECT_NEAR(c.organ.widthMm, displaced->widthMm, 0.03 * displaced->widthMm);
+    EXPECT_NEAR(c.organ.apMm, displaced->apDepthMm, 0.03 * displaced->apDepthMm);
+    EXPECT_NEAR(c.organ.cavityLengthMm, displaced->cavityLengthMm, 0.05 * displaced->cavityLengthMm);
+    EXPECT_NEAR(c.organ.cavityWidthMm, displaced->cavityWidthMm, 0.05 * displaced->cavityWidthMm);
+    EXPECT_NEAR(c.organ.uterineVolumeMl, c.organ.lengthMm * c.organ.widthMm * c.organ.apMm * 0.523e-3, 1e-9);
+    ASSERT_EQ(c.pathologies.size(), 2u);
+    const auto& myoma = c.pathologies[0];
+    ASSERT_TRUE(myoma.figo && myoma.lasmar);
+    EXPECT_EQ(myoma.figo->toString(), "2");
+    EXPECT_NEAR(myoma.sizeMm, 20.0, 2.0);
+    EXPECT_TRUE(myoma.lasmar->complete());
+    EXPECT_EQ(myoma.lasmar->penetration, 2); // >= 50 % intramural, as FIGO 2 says
+    const auto& polyp = c.pathologies[1];
+    EXPECT_FALSE(polyp.figo.has_value());
+    EXPECT_NEAR(polyp.sizeMm, 10.0, 1.0);
+    // Every measured value within the tolerance of the request: no descriptor warning.
+    for (const auto& w : g.scene->warnings)
+        EXPECT_NE(w.rfind("descriptors: ", 0), 0u) << w;
+}
 
 TEST(VisualSurface, IsRefinedAndSmoothWhereTheScopeSeesIt) {
     const auto& g = defaultScene();

@@ -113,4 +113,19 @@ struct UterusDimensions {
 /// does not have the layout's vertex count.
 [[nodiscard]] Result<UterusDimensions> measureUterus(const SurfaceMesh& mesh, const TemplateLayout& layout);
 
+/// Clinical ultrasound volume estimate of a uterus, L * W * AP * 0.523 (UTERUS.md), mL from mm.
+double ellipsoidVolumeMl(double lengthMm, double widthMm, double apDepthMm);
+
+/// Dimensions of a body grown from an instance of the template (pathologies added, merged, meshed), by measureUterus
+/// itself: every vertex of `organ` (a template instance in the body's frame, near the body) is moved along its
+/// normal onto the body's `serosaFaces` (serosa rings and the fundal pole) or `cavityFaces` (canal, cavity, cavity
+/// pole), to the crossing nearest to it within 20 mm with a face that faces its way (so a thin cavity's other wall
+/// is never taken for its own). A vertex with no crossing stays where `organ` has it: where a pathology has taken
+/// the place of the cavity's wall and `cavityFaces` leave it out, the wall runs beneath it as in `organ`. Fails with
+/// InvalidInput when `organ` is not an instance of `layout`.
+[[nodiscard]] Result<UterusDimensions> measureBody(const SurfaceMesh& organ, const TemplateLayout& layout,
+                                                   const SurfaceMesh& body,
+                                                   const std::vector<std::int32_t>& serosaFaces,
+                                                   const std::vector<std::int32_t>& cavityFaces);
+
 } // namespace hs::anatomy

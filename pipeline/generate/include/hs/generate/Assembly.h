@@ -102,10 +102,31 @@ std::vector<std::int32_t> tetsTouching(const TetMesh& mesh, std::int32_t region,
 /// tets sharing a face with a wall tissue), ostia, cervical-canal. Empty sets give no label.
 std::vector<scene::SceneLabel> sceneLabels(const scene::CaseSpec& spec, const TetMesh& tets, const SurfaceMesh& visual);
 
-/// Organ dimensions and one descriptor per grown pathology (size and FIGO/Lasmar as the pathology stage measured
-/// them, volume as meshed: the body region's tets, its endometrial cover included). `bodyTets` has body region ids.
-scene::ClinicalDescriptors clinicalDescriptors(const scene::CaseSpec& spec, const anatomy::UterusDimensions& organ,
-                                               const pathology::PathologyResult& grown, const TetMesh& bodyTets);
+/// Clinical descriptors measured on the final scene, and what differs from what the case asked.
+struct MeasuredDescriptors {
+    scene::ClinicalDescriptors clinical;
+    std::vector<std::string> warnings; ///< "myoma-1: asked FIGO 2, the final body measures FIGO 3", ...
+};
+
+/// Tolerance of a measured size or organ dimension against the case's request before it is reported, as a
+/// fraction: the pathology stage's bar (docs/pathology.md, "Bars").
+inline constexpr double kDescriptorTolerance = 0.10;
+
+/// The descriptors of the final scene (docs/scene-format.md, "Where the clinical descriptors are measured"): the
+/// organ's dimensions on `boundary`'s serosa and cavity by anatomy::measureBody (`organ`: the template instance nearest
+/// to the body, the pathology stage's displaced organ, whose vertices are moved onto it), each pathology's size,
+/// volume, FIGO type and Lasmar score from its region of `tets` (scene region ids) against `boundary` (tissue and
+/// pathology face labels, labelledBoundary), by the pathology stage's rules (pathology::describeContact). Warnings name
+/// every value that differs from `spec` (FIGO, or a size or dimension beyond kDescriptorTolerance).
+MeasuredDescriptors clinicalDescriptors(const scene::CaseSpec& spec, const SurfaceMesh& organ, const TetMesh& tets,
+                                        const SurfaceMesh& boundary);
+
+/// Warnings for every measured value of `measured` that differs from what `spec` asked ("descriptors: ..." is added
+/// by the scene's assembly).
+std::vector<std::string> descriptorWarnings(const scene::CaseSpec& spec, const scene::ClinicalDescriptors& measured);
+
+/// The measured descriptors beside what the case asked, one line per value (a table for reports and tests).
+std::string descriptorTable(const scene::CaseSpec& spec, const scene::ClinicalDescriptors& measured);
 
 /// Where a real uterus is held, as the tet label scene::kSupportLabel: the cervix. The vagina grips the portio (in
 /// hysteroscopy a tenaculum holds it as well) and the cardinal and uterosacral ligaments insert on the supravaginal

@@ -102,4 +102,39 @@ struct PathologyResult {
 /// Lasmar score of a myoma from its measured descriptors.
 clinical::LasmarScore lasmarScore(const Descriptors& d);
 
+/// Where a pathology lies against the wall, however it was measured: voxels of the grown shape against the displaced
+/// organ (`measure`), or the tets of a meshed region against a scene's boundary.
+struct WallFractions {
+    double tissue = 0.0;  ///< volume fraction inside the wall
+    double cavity = 0.0;  ///< inside the cavity
+    double outside = 0.0; ///< outside the serosa
+    double endometriumDistanceMm = 1e9;
+    double serosaDistanceMm = 1e9;
+    bool pedunculated = false;
+};
+
+/// FIGO type from fractions and contacts (UTERUS.md: 0 pedunculated intracavitary, 1 < 50 % intramural, 2 >= 50 %,
+/// 3 contacts the endometrium, 4 intramural, 5 subserosal >= 50 % intramural, 6 < 50 %, 7 pedunculated subserosal;
+/// hybrids X-Y when it reaches both sides). In the cavity means more than 0.01 of the volume, outside more than 0.02.
+clinical::FigoType classifyFigo(const WallFractions& f, double contactToleranceMm);
+
+/// A pathology against the wall it grows from, as some measurement found it.
+struct WallContact {
+    WallFractions fractions;
+    double sizeMm = 0.0; ///< largest diameter; replaced by the head's when a stalk is found in `points`
+    double volumeMm3 = 0.0;
+    double stalkLengthMm = 0.0; ///< replaced when a stalk is found in `points`
+    std::vector<Vec3> points;   ///< its surface's points: a stalk is looked for in them (empty: not looked for)
+    Vec3 centre;                ///< its volume centroid
+    std::vector<Vec3> base;     ///< points of the wall surface it grows from where it meets it (may be empty)
+    bool serosalBase = false;   ///< the base lies on the serosa (else on the cavity side)
+};
+
+/// The descriptors of `contact` read in the cavity frame of `organ` (a surface with the "tissue" face label: an organ,
+/// or the boundary of a scene's mesh): base width and extension, topography, lateral wall, and for myomas the FIGO
+/// type and Lasmar score. `measure` ends with it, so a grown shape and a meshed region are described by the same
+/// rules. Fails with InvalidInput when `organ` lacks the labels `measure` needs.
+[[nodiscard]] Result<Descriptors> describeContact(const SurfaceMesh& organ, const WallContact& contact,
+                                                  clinical::PathologyKind kind, double contactToleranceMm);
+
 } // namespace hs::pathology

@@ -98,18 +98,20 @@ struct VisualSurface {
     ImageU8 roughness;                     ///< 1 channel, linear perceptual roughness 0..255
 };
 
+/// A pathology as the final scene measures it: its region of the tets against the scene's boundary
+/// (docs/scene-format.md, "Where the clinical descriptors are measured").
 struct PathologyDescriptor {
     std::string id;
     clinical::PathologyKind kind = clinical::PathologyKind::Myoma;
     std::int32_t regionId = -1;                  ///< its region in the tet mesh (-1: not meshed as a region)
-    double sizeMm = 0.0;                         ///< mm, largest diameter as grown
+    double sizeMm = 0.0;                         ///< mm, largest diameter of its region (stalked: of the head)
     double volumeMl = 0.0;                       ///< mL, as meshed
-    std::optional<clinical::FigoType> figo;      ///< myomas
+    std::optional<clinical::FigoType> figo;      ///< myomas; where the region lies against cavity and serosa
     std::optional<clinical::LasmarScore> lasmar; ///< myomas
     std::string location;                        ///< a UterineLocation key ("fundal", ...) or empty
 };
 
-/// Organ dimensions as measured on the generated instance (mm, mL); 0 when not measured.
+/// Organ dimensions as measured on the final body's serosa and cavity (mm, mL); 0 when not measured.
 struct OrganDimensions {
     double lengthMm = 0.0;
     double widthMm = 0.0;
