@@ -74,9 +74,10 @@ SurfaceMesh loopSubdivide(const SurfaceMesh& mesh) {
             out.points[v] = p[v];
         } else if (!crease[v].empty()) {
             const auto& cr = crease[v];
-            out.points[v] = cr.size() == 2 ? p[v] * 0.75 + (p[static_cast<std::size_t>(cr[0])] +
-                                                              p[static_cast<std::size_t>(cr[1])]) * 0.125
-                                           : p[v];
+            out.points[v] =
+                cr.size() == 2
+                    ? p[v] * 0.75 + (p[static_cast<std::size_t>(cr[0])] + p[static_cast<std::size_t>(cr[1])]) * 0.125
+                    : p[v];
         } else {
             const double beta = loopBeta(nb.size());
             Vec3 sum{};
@@ -89,9 +90,11 @@ SurfaceMesh loopSubdivide(const SurfaceMesh& mesh) {
         const Edge& E = edges[e];
         const Vec3& a = p[static_cast<std::size_t>(E.a)];
         const Vec3& b = p[static_cast<std::size_t>(E.b)];
-        out.points[n + e] = E.faces == 2 ? (a + b) * 0.375 + (p[static_cast<std::size_t>(E.opposite[0])] +
-                                                             p[static_cast<std::size_t>(E.opposite[1])]) * 0.125
-                                        : (a + b) * 0.5;
+        out.points[n + e] =
+            E.faces == 2
+                ? (a + b) * 0.375 +
+                      (p[static_cast<std::size_t>(E.opposite[0])] + p[static_cast<std::size_t>(E.opposite[1])]) * 0.125
+                : (a + b) * 0.5;
     }
 
     out.triangles.reserve(mesh.triangles.size() * 4);
@@ -121,7 +124,8 @@ SurfaceMesh loopSubdivide(const SurfaceMesh& mesh, int levels) {
     return out;
 }
 
-SurfaceMesh taubinSmooth(const SurfaceMesh& mesh, const std::vector<std::int32_t>& faceMask, const TaubinParams& params) {
+SurfaceMesh taubinSmooth(const SurfaceMesh& mesh, const std::vector<std::int32_t>& faceMask,
+                         const TaubinParams& params) {
     const std::size_t n = mesh.points.size();
     std::vector<std::vector<std::int32_t>> ring(n);
     std::vector<char> moves(n, 0);
@@ -162,7 +166,8 @@ SurfaceMesh taubinSmooth(const SurfaceMesh& mesh, const std::vector<std::int32_t
     const auto acceptable = [&](std::size_t v, const Vec3& q) {
         for (std::int32_t f : facesOf[v]) {
             Vec3 before, after;
-            const double a0 = shapeWith(static_cast<std::size_t>(f), static_cast<std::int32_t>(v), out.points[v], before);
+            const double a0 =
+                shapeWith(static_cast<std::size_t>(f), static_cast<std::int32_t>(v), out.points[v], before);
             const double a1 = shapeWith(static_cast<std::size_t>(f), static_cast<std::int32_t>(v), q, after);
             if (dot(before, after) <= 0.0 || a1 < std::min(a0, params.minAngleDeg))
                 return false;
@@ -247,8 +252,8 @@ SurfaceShape measureSurfaceShape(const SurfaceMesh& mesh, const std::vector<std:
                                      canonical[static_cast<std::size_t>(t[static_cast<std::size_t>((k + 1) % 3)])]);
             const auto [it, inserted] = firstFace.try_emplace(key, static_cast<std::int32_t>(f));
             if (!inserted)
-                deviations.push_back(angleBetween(faceNormal(mesh, f),
-                                                  faceNormal(mesh, static_cast<std::size_t>(it->second))));
+                deviations.push_back(
+                    angleBetween(faceNormal(mesh, f), faceNormal(mesh, static_cast<std::size_t>(it->second))));
         }
     }
     if (s.faces == 0)
@@ -257,7 +262,8 @@ SurfaceShape measureSurfaceShape(const SurfaceMesh& mesh, const std::vector<std:
     if (!deviations.empty()) {
         std::sort(deviations.begin(), deviations.end());
         s.maxNormalDeviationDeg = deviations.back();
-        s.p99NormalDeviationDeg = deviations[static_cast<std::size_t>(0.99 * static_cast<double>(deviations.size() - 1))];
+        s.p99NormalDeviationDeg =
+            deviations[static_cast<std::size_t>(0.99 * static_cast<double>(deviations.size() - 1))];
         const auto sharp = deviations.end() - std::upper_bound(deviations.begin(), deviations.end(), 30.0);
         s.sharpEdgeFraction = static_cast<double>(sharp) / static_cast<double>(deviations.size());
     }

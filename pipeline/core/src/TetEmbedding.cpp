@@ -83,7 +83,8 @@ std::vector<TetEmbedding> embedPoints(const TetMesh& mesh, const std::vector<Vec
                            TetEmbedding best{tet, barycentricIn(mesh, static_cast<std::size_t>(tet), p)};
                            std::array<double, 4> w = best.weights;
                            for (int step = 0; step < kMaxWalkSteps && smallest(w) < 0.0; ++step) {
-                               const auto k = static_cast<std::size_t>(std::min_element(w.begin(), w.end()) - w.begin());
+                               const auto k =
+                                   static_cast<std::size_t>(std::min_element(w.begin(), w.end()) - w.begin());
                                const std::int32_t next = neighbours[static_cast<std::size_t>(tet)][k];
                                if (next < 0)
                                    break;

@@ -126,7 +126,8 @@ std::vector<OstiumOpening> ostiumOpenings(const SurfaceMesh& boundary) {
     std::vector<std::int32_t> parent(faces, -1), ownerOfPoint(boundary.points.size(), -1);
     const auto find = [&](std::int32_t f) {
         while (parent[static_cast<std::size_t>(f)] != f)
-            f = parent[static_cast<std::size_t>(f)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(f)])];
+            f = parent[static_cast<std::size_t>(f)] =
+                parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(f)])];
         return f;
     };
     for (std::size_t f = 0; f < faces; ++f) {

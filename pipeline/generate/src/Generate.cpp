@@ -86,7 +86,8 @@ Status runTexture(Generated& g, const GenerateParams& params, Progress& progress
     texture::TexturedSurface textured =
         texture::makeCloseUpSurface(boundary, baked->atlas, closeUpParamsFor(boundary, ostia));
     Appearance a;
-    a.surface.embedding = embedPoints(g.tissue->tets, textured.mesh.points, params.threads.value_or(g.spec.meshing.threads));
+    a.surface.embedding =
+        embedPoints(g.tissue->tets, textured.mesh.points, params.threads.value_or(g.spec.meshing.threads));
     a.surface.normals = std::move(textured.normals);
     a.surface.mesh = std::move(textured.mesh);
     a.surface.uvs = std::move(textured.uv);

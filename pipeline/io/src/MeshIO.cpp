@@ -156,8 +156,8 @@ Status writeSurface(const SurfaceMesh& mesh, const std::string& path, const Writ
         for (const auto& [name, array] : *options.pointArrays) {
             if (!detail::isPortableName(name) || name == "uv" || name == "normals" || mesh.faceLabels.count(name) ||
                 mesh.vertexLabels.count(name))
-                return fail(ErrorCode::InvalidInput, path + ": point array name '" + name +
-                                                         "' is not a valid label name or is taken");
+                return fail(ErrorCode::InvalidInput,
+                            path + ": point array name '" + name + "' is not a valid label name or is taken");
             if (array.components < 1 || array.components > 9 ||
                 array.values.size() != mesh.points.size() * static_cast<std::size_t>(array.components))
                 return fail(ErrorCode::InvalidInput, path + ": point array '" + name + "' has " +

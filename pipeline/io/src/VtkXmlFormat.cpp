@@ -237,8 +237,7 @@ Status readLabels(const std::string& path, vtkDataSetAttributes* data, const std
 }
 
 /// Non-integer point arrays with 1..9 components, as PointArrays; a non-finite value is an error.
-Status readPointArrays(const std::string& path, vtkDataSetAttributes* data, std::size_t pointCount,
-                       PointArrays& out) {
+Status readPointArrays(const std::string& path, vtkDataSetAttributes* data, std::size_t pointCount, PointArrays& out) {
     for (int a = 0; a < data->GetNumberOfArrays(); ++a) {
         vtkDataArray* array = data->GetArray(a);
         if (!array || !array->GetName() || isIntegerArray(array))

@@ -1,6 +1,6 @@
 // Relaxation: particles pushed towards the rest distance by the interaction profile (Bossen & Heckbert 1996).
-#include "Particles.h"
 #include "MesherSteps.h"
+#include "Particles.h"
 
 #include "hs/core/Parallel.h"
 #include "hs/meshing/Geometry.h"
@@ -213,9 +213,9 @@ Result<RelaxationStats> relaxParticles(Particles& ps, const RegionModel& body, c
                         for (int attempt = 0; attempt < 2; ++attempt) {
                             const Vec3 candidate = xi + step;
                             const Index3 v = grid.voxelOf(candidate);
-                            if (grid.contains(v) && (grid.at(v) == ps.region[i] ||
-                                                     (locator && grid.at(v) == VoxelSpace::kSurface &&
-                                                      clearOfSurfaces(i, candidate)))) {
+                            if (grid.contains(v) &&
+                                (grid.at(v) == ps.region[i] ||
+                                 (locator && grid.at(v) == VoxelSpace::kSurface && clearOfSurfaces(i, candidate)))) {
                                 moved = candidate;
                                 break;
                             }

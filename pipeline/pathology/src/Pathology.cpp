@@ -38,11 +38,11 @@ std::string who(const PathologyRequest& r) {
 namespace {
 using namespace detail;
 
-constexpr double kResiteSlide = 0.5;     ///< a pathology moved off another slides at most this fraction of the
-                                         ///< cavity length
-constexpr double kResiteTurnDeg = 45.0;  ///< and stays on a wall facing within this angle of the nominal seat
-constexpr double kResiteMarginMm = 1.0;  ///< planned room beyond the minimum gap (the grown shape is lobulated)
-constexpr int kResiteGrowths = 8;        ///< seats grown at most before the case is refused
+constexpr double kResiteSlide = 0.5;    ///< a pathology moved off another slides at most this fraction of the
+                                        ///< cavity length
+constexpr double kResiteTurnDeg = 45.0; ///< and stays on a wall facing within this angle of the nominal seat
+constexpr double kResiteMarginMm = 1.0; ///< planned room beyond the minimum gap (the grown shape is lobulated)
+constexpr int kResiteGrowths = 8;       ///< seats grown at most before the case is refused
 
 std::vector<const SurfaceMesh*> earlierSurfaces(const std::vector<Planned>& plans, std::size_t i) {
     std::vector<const SurfaceMesh*> earlier;
@@ -112,9 +112,9 @@ std::optional<std::size_t> overlapsEarlier(const std::vector<Planned>& plans, st
 /// centre already lies too close to an earlier pathology are skipped without growing; at most kResiteGrowths are
 /// grown. When none is clear the pathology stays and the overlap check refuses the case, as it refuses a point
 /// placement (a click), which stays where it was put.
-Status resiteClearOfEarlier(std::vector<Planned>& plans, std::size_t i, const SurfaceMesh& organ,
-                            const OrganInfo& info, const PathologyParams& params, const Rng& root,
-                            PathologyResult& result, Progress& progress) {
+Status resiteClearOfEarlier(std::vector<Planned>& plans, std::size_t i, const SurfaceMesh& organ, const OrganInfo& info,
+                            const PathologyParams& params, const Rng& root, PathologyResult& result,
+                            Progress& progress) {
     const auto blocker = overlapsEarlier(plans, i, params.minimumGapMm);
     if (!blocker)
         return {};

@@ -80,12 +80,11 @@ Status checkOverlap(const Planned& first, const Planned& second, double gap) {
     const double d = std::min(surfaceDistance(a, b, gap + 1.0), surfaceDistance(b, a, gap + 1.0));
     const bool nested = windingNumber(b, a.points.front()) > 0.5 || windingNumber(a, b.points.front()) > 0.5;
     if (d < gap || nested)
-        return fail(ErrorCode::InvalidInput,
-                    who(*first.request) + " and " + who(*second.request) + " overlap" +
-                        (nested ? " (one lies inside the other)"
-                                : " (they come within " + fmt(d, 2) + " mm; at least " + fmt(gap) +
-                                      " mm of tissue must separate them)") +
-                        ": move one or make them smaller");
+        return fail(ErrorCode::InvalidInput, who(*first.request) + " and " + who(*second.request) + " overlap" +
+                                                 (nested ? " (one lies inside the other)"
+                                                         : " (they come within " + fmt(d, 2) + " mm; at least " +
+                                                               fmt(gap) + " mm of tissue must separate them)") +
+                                                 ": move one or make them smaller");
     return {};
 }
 

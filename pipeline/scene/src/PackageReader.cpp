@@ -239,7 +239,8 @@ Status readMeshes(const fs::path& root, const PackageManifest& manifest, const P
         return fail(tets.error().code, std::string(detail::kTetsFile) + ": " + tets.error().detail);
     scene.tets = std::move(*tets);
     io::PointArrays arrays;
-    auto surface = io::readSurfaceWithArrays((root / std::string(detail::kSurfaceVtpFile)).string(), arrays, meshLimits);
+    auto surface =
+        io::readSurfaceWithArrays((root / std::string(detail::kSurfaceVtpFile)).string(), arrays, meshLimits);
     if (!surface)
         return fail(surface.error().code, std::string(detail::kSurfaceVtpFile) + ": " + surface.error().detail);
     scene.surface.mesh = std::move(*surface);

@@ -136,18 +136,18 @@ Status checkEmbedding(const Scene& scene) {
         double sum = 0.0;
         for (double w : e.weights) {
             if (!std::isfinite(w) || w < -kMaxEmbeddingExtrapolation || w > 1.0 + kMaxEmbeddingExtrapolation)
-                return fail(ErrorCode::InvalidInput,
-                            where + "barycentric weight " + std::to_string(w) + " outside the allowed " +
-                                std::to_string(-kMaxEmbeddingExtrapolation) + ".." +
-                                std::to_string(1.0 + kMaxEmbeddingExtrapolation));
+                return fail(ErrorCode::InvalidInput, where + "barycentric weight " + std::to_string(w) +
+                                                         " outside the allowed " +
+                                                         std::to_string(-kMaxEmbeddingExtrapolation) + ".." +
+                                                         std::to_string(1.0 + kMaxEmbeddingExtrapolation));
             sum += w;
         }
         if (std::abs(sum - 1.0) > 1e-6)
-            return fail(ErrorCode::InvalidInput, where + "barycentric weights sum to " + std::to_string(sum) + ", not 1");
+            return fail(ErrorCode::InvalidInput,
+                        where + "barycentric weights sum to " + std::to_string(sum) + ", not 1");
         if (distance(embeddedPoint(scene.tets, e), points[i]) > tolerance)
-            return fail(ErrorCode::InvalidInput, where + "its embedding in tet " + std::to_string(e.tet) +
-                                                     " lies " + std::to_string(distance(embeddedPoint(scene.tets, e),
-                                                                                        points[i])) +
+            return fail(ErrorCode::InvalidInput, where + "its embedding in tet " + std::to_string(e.tet) + " lies " +
+                                                     std::to_string(distance(embeddedPoint(scene.tets, e), points[i])) +
                                                      " mm away from it");
     }
     return {};

@@ -76,8 +76,8 @@ TexturedSurface makeCloseUpSurface(const SurfaceMesh& surface, const Atlas& atla
     for (std::size_t f = 0; f < smooth.triangles.size(); ++f)
         for (std::size_t k = 0; k < 3; ++k) {
             const std::int32_t v = smooth.triangles[f][k];
-            const std::uint64_t key =
-                (static_cast<std::uint64_t>(static_cast<std::uint32_t>(v)) << 32) | static_cast<std::uint32_t>(chart[f]);
+            const std::uint64_t key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(v)) << 32) |
+                                      static_cast<std::uint32_t>(chart[f]);
             const auto [it, inserted] = split.try_emplace(key, static_cast<std::int32_t>(out.mesh.points.size()));
             if (inserted) {
                 out.mesh.points.push_back(smooth.points[static_cast<std::size_t>(v)]);

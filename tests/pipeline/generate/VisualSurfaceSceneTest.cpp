@@ -155,9 +155,9 @@ TEST(VisualSurface, IsRefinedAndSmoothWhereTheScopeSeesIt) {
                 levels, coarse.triangles.size(), visual.triangles.size(), before.faces, after.faces, before.meanEdgeMm,
                 after.meanEdgeMm, after.maxEdgeMm, before.minAngleDeg, after.minAngleDeg, before.maxNormalDeviationDeg,
                 after.maxNormalDeviationDeg, before.p99NormalDeviationDeg, after.p99NormalDeviationDeg,
-                100.0 * before.sharpEdgeFraction, 100.0 * after.sharpEdgeFraction, atCrease.faces,
-                atCrease.minAngleDeg, atCrease.maxNormalDeviationDeg, atCrease.p99NormalDeviationDeg,
-                serosa.minAngleDeg, serosa.maxNormalDeviationDeg);
+                100.0 * before.sharpEdgeFraction, 100.0 * after.sharpEdgeFraction, atCrease.faces, atCrease.minAngleDeg,
+                atCrease.maxNormalDeviationDeg, atCrease.p99NormalDeviationDeg, serosa.minAngleDeg,
+                serosa.maxNormalDeviationDeg);
     // Facets small against a close-up's distance, no needle triangles, and fins and spikes flattened: off the
     // creases, few edges turn by more than 30 degrees and none folds back as far as the faceted boundary's (148
     // degrees there). A few remain above a right angle (docs/scene-format.md, "The visual surface": known gaps).
@@ -197,8 +197,8 @@ TEST(VisualSurface, ShowsTheSameColourOnBothSidesOfEveryChartSeam) {
     for (const auto& t : s.mesh.triangles)
         for (std::size_t k = 0; k < 3; ++k) {
             const auto a = static_cast<std::size_t>(t[k]), b = static_cast<std::size_t>(t[(k + 1) % 3]);
-            inside += squaredStep(albedoAt(s.albedo, s.uvs[a][0], s.uvs[a][1]),
-                                  albedoAt(s.albedo, s.uvs[b][0], s.uvs[b][1]));
+            inside +=
+                squaredStep(albedoAt(s.albedo, s.uvs[a][0], s.uvs[a][1]), albedoAt(s.albedo, s.uvs[b][0], s.uvs[b][1]));
             ++insidePairs;
         }
     ASSERT_GT(seamPairs, 100u);
@@ -229,13 +229,15 @@ TEST(VisualSurface, IsBoundToTheTetsItCovers) {
         inside += lowest >= -1e-9 ? 1 : 0;
         bool inFunnel = false; // the ostia's funnels go into the wall on purpose
         for (const auto& o : ostia)
-            inFunnel = inFunnel || distance(points[i], o.centreMm) < generate::kOstiumRadiusMm + generate::kOstiumDepthMm;
+            inFunnel =
+                inFunnel || distance(points[i], o.centreMm) < generate::kOstiumRadiusMm + generate::kOstiumDepthMm;
         if (!inFunnel)
             farthest = std::max(farthest, grid.distance(points[i], 100.0));
     }
-    std::printf("visual surface embedding: %zu points, %.1f %% inside their tet, lowest weight %.3f, largest "
-                "reconstruction error %.2e mm, farthest from the tets' boundary (outside the ostia's funnels) %.3f mm\n",
-                points.size(), 100.0 * double(inside) / double(points.size()), lowestWeight, worstError, farthest);
+    std::printf(
+        "visual surface embedding: %zu points, %.1f %% inside their tet, lowest weight %.3f, largest "
+        "reconstruction error %.2e mm, farthest from the tets' boundary (outside the ostia's funnels) %.3f mm\n",
+        points.size(), 100.0 * double(inside) / double(points.size()), lowestWeight, worstError, farthest);
     EXPECT_LT(worstError, 1e-9);
     EXPECT_GE(lowestWeight, -scene::kMaxEmbeddingExtrapolation);
     // The smooth surface runs within the fairing's reach plus what Loop's masks move of the faceted boundary.
@@ -273,8 +275,8 @@ TEST(VisualSurface, OpensEachTubalOstiumAsAFunnelIntoTheWall) {
                 at = i;
             }
         }
-        std::printf("tubal ostium at (%.1f, %.1f, %.1f) mm, facing (%.2f, %.2f, %.2f): funnel %.2f mm deep\n", o.centreMm.x, o.centreMm.y,
-                    o.centreMm.z, o.normal.x, o.normal.y, o.normal.z, -deepest);
+        std::printf("tubal ostium at (%.1f, %.1f, %.1f) mm, facing (%.2f, %.2f, %.2f): funnel %.2f mm deep\n",
+                    o.centreMm.x, o.centreMm.y, o.centreMm.z, o.normal.x, o.normal.y, o.normal.z, -deepest);
         EXPECT_LT(deepest, -0.5 * generate::kOstiumDepthMm);
         EXPECT_GT(deepest, -1.5 * generate::kOstiumDepthMm);
         const auto& w = sc.surface.embedding[at].weights;

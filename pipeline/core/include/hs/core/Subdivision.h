@@ -39,7 +39,8 @@ struct TaubinParams {
     /// had, if smaller), is not made: the fairing never makes needles or fold-overs.
     double minAngleDeg = 15.0;
 };
-SurfaceMesh taubinSmooth(const SurfaceMesh& mesh, const std::vector<std::int32_t>& faceMask, const TaubinParams& params);
+SurfaceMesh taubinSmooth(const SurfaceMesh& mesh, const std::vector<std::int32_t>& faceMask,
+                         const TaubinParams& params);
 
 /// Per-corner data through one level of loopSubdivide: each child corner gets its parent corner's value or the
 /// mean of two (linear along the parent face, so the children of a textured face keep the same texture).

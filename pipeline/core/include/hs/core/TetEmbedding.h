@@ -12,8 +12,8 @@
 namespace hs {
 
 struct TetEmbedding {
-    std::int32_t tet = -1;             ///< index into TetMesh::tets
-    std::array<double, 4> weights{};   ///< barycentric, sum 1; all >= 0 inside the tet, some < 0 outside it
+    std::int32_t tet = -1;           ///< index into TetMesh::tets
+    std::array<double, 4> weights{}; ///< barycentric, sum 1; all >= 0 inside the tet, some < 0 outside it
 };
 
 /// Barycentric coordinates of p in tet `tet` (zero weights for a flat tet).

@@ -34,9 +34,9 @@ struct PathologyRequest {
 
 struct PathologyParams {
     std::vector<PathologyRequest> pathologies;
-    std::uint64_t seed = 1;                   ///< every random choice derives from it (one stream per pathology)
-    double clearanceMm = 2.0;                 ///< mm of wall the organ keeps between a pathology and a surface it must
-                                              ///< not reach (it is displaced to make room)
+    std::uint64_t seed = 1;   ///< every random choice derives from it (one stream per pathology)
+    double clearanceMm = 2.0; ///< mm of wall the organ keeps between a pathology and a surface it must
+                              ///< not reach (it is displaced to make room)
     /// mm the cavity keeps open in front of a pathology that stands in it (FIGO 0-2, hybrids reaching it, polyps):
     /// the far wall moves away until it is this far from the pathology. Hysteroscopy distends the cavity with fluid
     /// (45-75 mmHg, UTERUS.md), which holds the walls off a mass as it does elsewhere: the model's cavity has its

@@ -93,9 +93,9 @@ struct VisualSurface {
     /// One per mesh point: where it is bound in Scene::tets (hs/core/TetEmbedding.h); empty: not bound (a package
     /// read without it gets it computed).
     std::vector<TetEmbedding> embedding;
-    ImageU8 albedo;                        ///< RGB, sRGB-encoded base colour
-    ImageU8 normal;                        ///< RGB, tangent-space normal map (OpenGL convention, +Y up)
-    ImageU8 roughness;                     ///< 1 channel, linear perceptual roughness 0..255
+    ImageU8 albedo;    ///< RGB, sRGB-encoded base colour
+    ImageU8 normal;    ///< RGB, tangent-space normal map (OpenGL convention, +Y up)
+    ImageU8 roughness; ///< 1 channel, linear perceptual roughness 0..255
 };
 
 /// A pathology as the final scene measures it: its region of the tets against the scene's boundary

@@ -54,12 +54,12 @@ struct BakeParams {
     AppearanceLabels labels;
     double blendMm = 2.5; ///< approximate width of the blend between classes, mm
     bool vessels = true;
-    VesselParams vesselParams;   ///< its seed is replaced by one derived from `seed`
-    double bumpMm = 0.06;        ///< height of the mucosa bumps from the base texture's luminance, mm
-    double normalStrength = 1.0; ///< scale of the slopes in the normal map
+    VesselParams vesselParams;       ///< its seed is replaced by one derived from `seed`
+    double bumpMm = 0.06;            ///< height of the mucosa bumps from the base texture's luminance, mm
+    double normalStrength = 1.0;     ///< scale of the slopes in the normal map
     std::vector<DarkSpot> darkSpots; ///< applied to the albedo after the vessels
-    std::uint64_t seed = 1;      ///< same seed, same maps
-    int threads = 0;             ///< 0: all cores; the maps do not depend on it
+    std::uint64_t seed = 1;          ///< same seed, same maps
+    int threads = 0;                 ///< 0: all cores; the maps do not depend on it
 };
 
 struct BakeStats {
