@@ -118,7 +118,7 @@ struct SurfacePit {
 
 /// How makeCloseUpSurface refines.
 struct CloseUpParams {
-    int levels = 2;                 ///< Loop levels (0..4); each quadruples the triangles
+    int levels = 2;                 ///< Loop levels (>= 0); each quadruples the triangles (generate: at most 3)
     std::vector<std::int32_t> seen; ///< per face of the input: nonzero where the scope sees it (empty: everywhere)
     TaubinParams smoothing;         ///< applied to the seen faces' points before subdividing (iterations 0: none)
     std::vector<SurfacePit> pits;   ///< carved into the subdivided surface, before its normals
