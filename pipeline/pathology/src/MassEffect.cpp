@@ -56,6 +56,15 @@ struct Push {
     /// along each line along n, so it keeps the map injective.
     double widen = 0.0;
     double clearance = 0.0; ///< mm the points it moves keep from the pathology (0: the stage's clearanceMm)
+    /// Axial, parting: points move along n by amount * a(tau) * (1 - s(rho)), a(tau) rising from -1 to 1 over
+    /// |tau| < partRamp (odd, monotone), tau the signed distance from the plane through origin across n: the two
+    /// sides of that plane move apart. Each line along n maps onto itself monotonically, so it is injective too.
+    bool parting = false;
+    double partRamp = 1.5;
+    /// Parting solve: only points at least this far along `solveAlong` from `solveFrom` drive the amount (the walls
+    /// across the pathology, not the wall it stands in).
+    Vec3 solveFrom{}, solveAlong{};
+    double solveAbove = 0.0;
     Vec3 upDir() const { return norm(up) > 0.0 ? up : n; }
     double keepRamp(double height) const {
         return smoothstep(keepFrom, keepFrom + std::max(windowRamp, 2.0 * keep * amount), height);
@@ -77,6 +86,8 @@ struct Push {
         const double rho = norm(d - n * tau);
         const double height = dot(d, upDir());
         const double across = 1.0 - smoothstep(dome ? 0.0 : window, (window + fall()) * widthAt(height), rho);
+        if (parting)
+            return (2.0 * smoothstep(-partRamp, partRamp, tau) - 1.0) * across;
         if (radial) {
             const double tilt = norm(cross(upDir(), n));
             const double hi = std::max(rampHi, rampLo + amount * (0.5 + 4.0 * tilt));
@@ -107,9 +118,11 @@ void solvePush(Push& push, const SurfaceMesh& organ, const SurfaceMesh& patholog
     for (int it = 0; it < 12 && push.amount < cap; ++it) {
         double deficit = 0.0;
         for (const Vec3& x0 : organ.points) {
-            const double w = push.weight(x0);
+            const double w = std::fabs(push.weight(x0)); // a parting push moves either side away from the pathology
             if (w < 0.3)
                 continue;
+            if (push.parting && (w < 0.9 || dot(x0 - push.solveFrom, push.solveAlong) < push.solveAbove))
+                continue; // on the midplane (the cavity's rim) or the wall it stands in: parting cannot clear them
             if (push.solveWithin > 0.0) {
                 const Vec3 d = x0 - push.origin;
                 if (norm(d - push.n * dot(d, push.n)) > push.solveWithin)
@@ -130,6 +143,35 @@ Vec3 protrusionDirection(const Planned& p) {
     if (p.spec.pedunculated && !p.fromSerosa)
         return normalized(p.spec.center - p.seat.endometrium);
     return -p.seat.intoWall;
+}
+
+/// A submucosal myoma (types 1, 2) on a wall beside the cavity's flat plane (lateral, fundal, cornual) stands across
+/// the cavity's depth: a lateral myoma wider than the 5 mm of an atrophic cavity lies in its anterior and posterior
+/// walls, which then close the cavity to a scope and count it as intramural. Those walls part as the distension medium
+/// holds them off it (UTERUS.md, 45-75 mmHg): everything on either side of the cavity's midplane through the myoma's
+/// centre moves away from that plane over its footprint until the walls keep the distended gap, and the uterus
+/// thickens there. The sides do not fold: each line across the plane maps onto itself monotonically. Nothing when the
+/// myoma stands out of the anterior or posterior wall (its far wall moves instead). Polyps and hybrids do not part the
+/// walls: with them too the default organ intersected itself and two sweep myomas nearby changed type.
+std::optional<Push> partingPush(const Planned& p, const Vec3& d, const OrganInfo& info, const PathologyParams& params,
+                                double windowRamp) {
+    Vec3 m = info.anterior - d * dot(info.anterior, d);
+    if (norm(m) < 0.5)
+        return std::nullopt;
+    m = normalized(m);
+    const Vec3 c = volumeCentroid(p.surface);
+    double footprint = 0.0;
+    for (const Vec3& q : p.surface.points) {
+        const Vec3 r = q - c;
+        footprint = std::max(footprint, norm(r - m * dot(r, m)));
+    }
+    Push part{c, m, 0.0, 1.0, footprint + params.clearanceMm, windowRamp, 0.0, kOpenStretch};
+    part.parting = true;
+    part.solveFrom = p.seat.endometrium;
+    part.solveAlong = d;
+    part.solveAbove = 1.5;
+    part.clearance = std::max(params.clearanceMm, params.distendedGapMm);
+    return part;
 }
 
 /// The pushes a pathology needs, by where it must and must not reach (UTERUS.md: types 0-2 bulge into the cavity,
@@ -177,6 +219,10 @@ std::vector<Push> planPushes(const Planned& p, const OrganInfo& info, const Path
         open.widen = kOpenWiden;
         // The far wall stands off as the distension medium holds it: a scope passes in front of the mass.
         open.clearance = std::max(c, params.distendedGapMm);
+        const bool dome = !polyp && !f.isHybrid() && (f.type == 1 || f.type == 2);
+        if (dome) // first the walls across the dome part, so the far wall's push is solved on the far wall alone
+            if (auto part = partingPush(p, d, info, params, windowRamp))
+                pushes.push_back(*part);
         pushes.push_back(open);
         Push around{e, d, 0.5, 2.0, across + c, windowRamp, 0.0, 0.0};
         around.radial = true;
