@@ -14,11 +14,13 @@ namespace hs::pathology::detail {
 
 namespace {
 
-constexpr double kOpenKeep = 0.5;      ///< the far wall's serosa moves by this fraction less than its endometrium
-constexpr double kOpenStretch = 1.0;   ///< the far wall's window ramp widens by this fraction of its push
-constexpr double kOpenWiden = 1.0;     ///< the far wall's outside moves over a profile this much wider
-constexpr int kPocketRounds = 30;      ///< rounds of averaging that round the pockets the pushes open
-constexpr double kPocketSlackMm = 1.0; ///< a rounded pocket keeps this much more than the clearance
+constexpr double kOpenKeep = 0.5;           ///< the far wall's serosa moves by this fraction less than its endometrium
+constexpr double kOpenStretch = 1.0;        ///< the far wall's window ramp widens by this fraction of its push
+constexpr double kOpenWiden = 1.0;          ///< the far wall's outside moves over a profile this much wider
+constexpr double kPartRampPerAmount = 0.25; ///< the parting's ramp across the midplane widens with its amount
+constexpr double kPartKeep = 0.5;           ///< the serosa across a dome moves by this fraction less than its lining
+constexpr int kPocketRounds = 30;           ///< rounds of averaging that round the pockets the pushes open
+constexpr double kPocketSlackMm = 1.0;      ///< a rounded pocket keeps this much more than the clearance
 
 /// An injective deformation that opens room: points move along `n` by amount * s(h) * (1 - s(rho)), h the height
 /// along `up` (n unless set; up . n > 0) from `origin`, rho the distance from the axis through origin along n. Every
@@ -86,8 +88,11 @@ struct Push {
         const double rho = norm(d - n * tau);
         const double height = dot(d, upDir());
         const double across = 1.0 - smoothstep(dome ? 0.0 : window, (window + fall()) * widthAt(height), rho);
-        if (parting)
-            return (2.0 * smoothstep(-partRamp, partRamp, tau) - 1.0) * across;
+        if (parting) // beyond the cavity's lining (keepFrom) the motion falls back to 1 - keep: the serosa moves less
+        {
+            const double ramp = std::max(partRamp, kPartRampPerAmount * amount);
+            return (2.0 * smoothstep(-ramp, ramp, tau) - 1.0) * beyond(std::fabs(tau)) * across;
+        }
         if (radial) {
             const double tilt = norm(cross(upDir(), n));
             const double hi = std::max(rampHi, rampLo + amount * (0.5 + 4.0 * tilt));
@@ -167,6 +172,15 @@ std::optional<Push> partingPush(const Planned& p, const Vec3& d, const OrganInfo
     }
     Push part{c, m, 0.0, 1.0, footprint + params.clearanceMm, windowRamp, 0.0, kOpenStretch};
     part.parting = true;
+    // The lining across the dome: the farthest cavity-side hit from the midplane, on rays across it from the dome's
+    // axis into the cavity. Beyond it the wall moves less, so it thins rather than the whole uterus growing.
+    double lining = part.partRamp;
+    for (double t : {1.0, 3.0, 6.0})
+        for (double sign : {-1.0, 1.0})
+            if (auto hit = info.ray(p.seat.endometrium + d * t, m * sign, Side::Cavity))
+                lining = std::max(lining, std::fabs(dot(hit->point - c, m)));
+    part.keepFrom = std::min(lining, 0.25 * info.corpusDepthMm) + 1.0;
+    part.keep = kPartKeep;
     part.solveFrom = p.seat.endometrium;
     part.solveAlong = d;
     part.solveAbove = 1.5;
@@ -219,7 +233,7 @@ std::vector<Push> planPushes(const Planned& p, const OrganInfo& info, const Path
         open.widen = kOpenWiden;
         // The far wall stands off as the distension medium holds it: a scope passes in front of the mass.
         open.clearance = std::max(c, params.distendedGapMm);
-        const bool dome = !polyp && !f.isHybrid() && (f.type == 1 || f.type == 2);
+        const bool dome = !polyp && !f.isHybrid() && f.type <= 1;
         if (dome) // first the walls across the dome part, so the far wall's push is solved on the far wall alone
             if (auto part = partingPush(p, d, info, params, windowRamp))
                 pushes.push_back(*part);
@@ -248,6 +262,55 @@ std::vector<Push> planPushes(const Planned& p, const OrganInfo& info, const Path
     return pushes;
 }
 
+/// A head on a stalk hangs in the free cavity, wherever there is room: the pushes of the pathologies before it move
+/// its root with the wall, and the head with it, rigidly, which can leave it in a wall that moved less (a cornual
+/// polyp beside the far wall of a posterior myoma: 56 % in tissue). When the head's centre lies closer to the organ's
+/// wall than its radius, the pathology turns about its root to the direction the stalk would take on the organ as it
+/// now is (freeStalkDirection), if the head keeps more room from the wall there.
+void reaimStalk(std::vector<Planned>& all, std::size_t which, const OrganInfo& info, const PathologyParams& params) {
+    Planned& p = all[which];
+    if (!p.spec.pedunculated || p.fromSerosa)
+        return;
+    const Vec3 root = p.seat.endometrium;
+    const double reach = distance(p.spec.center, root);
+    if (reach < 1e-6)
+        return;
+    const Bounds box = bounds(*info.mesh);
+    const double cutoff = 2.0 * p.spec.radius + 10.0;
+    const double room = signedDistance(*info.mesh, box, p.spec.center, cutoff);
+    if (room >= p.spec.radius)
+        return;
+    std::vector<const SurfaceMesh*> others;
+    for (std::size_t j = 0; j < all.size(); ++j)
+        if (j != which)
+            others.push_back(&all[j].surface);
+    const Vec3 from = (p.spec.center - root) / reach;
+    const Vec3 to = freeStalkDirection(info, p.seat, reach, p.spec.radius, p.spec.stalkRadius,
+                                       params.minimumGapMm + params.clearanceMm, others);
+    if (signedDistance(*info.mesh, box, root + to * reach, cutoff) <= room)
+        return;
+    // The rotation about the root that takes `from` to `to` (Rodrigues).
+    const Vec3 k = cross(from, to);
+    const double sinA = norm(k), cosA = dot(from, to);
+    if (sinA < 1e-9)
+        return;
+    const Vec3 axis = k / sinA;
+    auto turn = [&](const Vec3& x) {
+        const Vec3 v = x - root;
+        return root + v * cosA + cross(axis, v) * sinA + axis * (dot(axis, v) * (1.0 - cosA));
+    };
+    Planned turned = p;
+    for (Vec3& x : turned.surface.points)
+        x = turn(x);
+    turned.spec.center = turn(p.spec.center);
+    turned.spec.base = turn(p.spec.base);
+    for (std::size_t j = 0; j < all.size(); ++j) // it stays clear of the others, or it stays where it is
+        if (j != which &&
+            !checkOverlap(j < which ? all[j] : turned, j < which ? turned : all[j], params.minimumGapMm).ok())
+            return;
+    p = std::move(turned);
+}
+
 } // namespace
 
 /// Applies pathology `which`'s pushes to the organ and to every other pathology (they sit in the moving tissue).
@@ -257,6 +320,8 @@ Status adaptOrgan(SurfaceMesh& organ, std::vector<Planned>& all, std::size_t whi
     auto info = analyzeOrgan(organ); // the organ as earlier pathologies left it
     if (!info.ok())
         return info.failure();
+    if (which > 0)
+        reaimStalk(all, which, *info, params);
     for (Push& push : planPushes(all[which], *info, params)) {
         solvePush(push, organ, mesh, params.clearanceMm, cap);
         if (push.amount <= 0.0)
