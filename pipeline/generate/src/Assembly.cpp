@@ -469,7 +469,7 @@ pathology::WallContact contactOf(const TetMesh& tets, const std::vector<std::arr
 } // namespace
 
 MeasuredDescriptors clinicalDescriptors(const scene::CaseSpec& spec, const SurfaceMesh& organ, const TetMesh& tets,
-                                        const SurfaceMesh& boundary) {
+                                        const SurfaceMesh& boundary, const std::vector<Vec3>& roots) {
     MeasuredDescriptors out;
     auto& c = out.clinical;
     const auto cavityFaces = sideFaces(boundary, true, -1);
@@ -492,7 +492,9 @@ MeasuredDescriptors clinicalDescriptors(const scene::CaseSpec& spec, const Surfa
         pd.kind = asked.kind;
         pd.regionId = pathologyRegion(i);
         pd.location = locationKey(asked);
-        const auto contact = contactOf(tets, adjacent, pd.regionId, i, boundary, cavityFaces, serosaFaces);
+        auto contact = contactOf(tets, adjacent, pd.regionId, i, boundary, cavityFaces, serosaFaces);
+        if (i < roots.size())
+            contact.root = roots[i];
         pd.volumeMl = units::mlFromMm3(contact.volumeMm3);
         pd.sizeMm = contact.sizeMm;
         if (contact.volumeMm3 <= 0.0) {
@@ -671,7 +673,12 @@ Result<scene::Scene> assembleScene(const scene::CaseSpec& spec, const OrganInsta
     // The displaced organ is the template instance nearest to the final body (the same frame, its rings moved where
     // the pathologies pushed them); without pathologies it is the organ itself.
     const SurfaceMesh& frame = grown.organ.points.size() == organ.mesh.points.size() ? grown.organ : organ.mesh;
-    auto descriptors = clinicalDescriptors(spec, frame, tissue.tets, tissue.boundary);
+    std::vector<Vec3> roots;
+    for (const auto& p : grown.pathologies)
+        roots.push_back(p.anchor);
+    if (roots.size() != spec.pathologies.size())
+        roots.clear();
+    auto descriptors = clinicalDescriptors(spec, frame, tissue.tets, tissue.boundary, roots);
     s.clinical = std::move(descriptors.clinical);
     auto hydrometra = scene::computeHydrometra(organ.dimensions.ellipsoidVolumeMl, spec.scene.hydrometraPressureKpa);
     if (!hydrometra)

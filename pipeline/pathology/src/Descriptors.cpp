@@ -163,15 +163,27 @@ std::vector<Vec3> basePoints(const SurfaceMesh& organ, const OrganInfo& info, Si
 Descriptors describe(const OrganInfo& info, const WallContact& c, clinical::PathologyKind kind, double tol) {
     WallFractions f = c.fractions;
     double sizeMm = c.sizeMm, stalkMm = c.stalkLengthMm;
-    // Size: largest diameter; for a body that lies mostly outside the wall, of the head beyond a stalk.
-    if (f.tissue < 0.5 && !c.base.empty() && !c.points.empty()) {
+    std::vector<Vec3> base = c.base;
+    // Size: largest diameter; for a body that lies mostly outside the wall, of the head beyond a stalk, looked for
+    // from where it grows (WallContact::root) or else from the base's centre. From its root, the base is then where
+    // the stalk meets the wall: a head that rests on a wall beside it, or whose pocket's walls hug it, touches the
+    // wall there too, and the centre of all those contacts lies nowhere near the stalk.
+    if (f.tissue < 0.5 && !c.points.empty() && (c.root || !base.empty())) {
         double stalk = 0.0;
-        const Vec3 axis = normalized(c.centre - centroid(c.base));
-        const double head = headDiameter(c.points, centroid(c.base), axis, &stalk);
+        const Vec3 origin = c.root ? *c.root : centroid(base);
+        const Vec3 axis = normalized(c.centre - origin);
+        const double head = headDiameter(c.points, origin, axis, &stalk);
         if (stalk > 0.0) {
             f.pedunculated = true;
             stalkMm = stalk;
             sizeMm = head;
+            if (c.root) {
+                std::vector<Vec3> foot;
+                for (const Vec3& q : base)
+                    if (dot(q - origin, axis) < 0.5 * stalk)
+                        foot.push_back(q);
+                base = foot.empty() ? std::vector<Vec3>{origin} : foot;
+            }
         }
     }
     Descriptors d;
@@ -187,9 +199,9 @@ Descriptors describe(const OrganInfo& info, const WallContact& c, clinical::Path
     d.stalkLengthMm = stalkMm;
     const Side baseSide = c.serosalBase ? Side::Serosa : Side::Cavity;
     Vec3 baseCentre;
-    if (!c.base.empty()) {
-        baseCentre = centroid(c.base);
-        d.baseWidthMm = diameter(c.base);
+    if (!base.empty()) {
+        baseCentre = centroid(base);
+        d.baseWidthMm = diameter(base);
     } else {
         const SurfaceMesh& organ = *info.mesh;
         const auto [face, dist] = info.nearestFace(c.centre, baseSide);
@@ -230,7 +242,7 @@ clinical::LasmarScore lasmarScore(const Descriptors& d) {
 }
 
 Result<Descriptors> measure(const SurfaceMesh& organ, const SurfaceMesh& pathology, clinical::PathologyKind kind,
-                            const PathologyParams& params) {
+                            const PathologyParams& params, std::optional<Vec3> root) {
     using namespace detail;
     if (!analyzeTopology(pathology).isWatertight())
         return fail(ErrorCode::InvalidInput, "the pathology surface is not closed and manifold");
@@ -276,6 +288,7 @@ Result<Descriptors> measure(const SurfaceMesh& organ, const SurfaceMesh& patholo
     c.points = pathology.points;
     c.sizeMm = extent;
     c.fractions = f;
+    c.root = root;
     return detail::describe(info, c, kind, params.contactToleranceMm);
 }
 

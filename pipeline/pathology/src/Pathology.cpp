@@ -218,7 +218,7 @@ Result<PathologyResult> growPathologies(const SurfaceMesh& organ, const Patholog
         g.surface = std::move(plans[i].surface);
         g.anchor = plans[i].fromSerosa ? plans[i].seat.serosa : plans[i].seat.endometrium;
         g.intoWall = plans[i].seat.intoWall;
-        auto d = measure(result.organ, g.surface, r.kind, params);
+        auto d = measure(result.organ, g.surface, r.kind, params, g.anchor);
         if (!d.ok())
             return fail(ErrorCode::Internal, who(r) + ": " + d.error().detail);
         g.descriptors = *d;

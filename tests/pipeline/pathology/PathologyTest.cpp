@@ -382,5 +382,57 @@ TEST(Pathology, LasmarScoreFollowsTheTable) {
     EXPECT_EQ(s.total(), 1 + 2 + 1 + 2 + 1);
 }
 
+TEST(Pathology, MeasuresAHeadThatRestsOnAWallFromItsStalksRoot) {
+    // A 10 mm head on a 6 mm stalk whose head also lies against a wall: the base (wall points near it) is mostly
+    // where the head rests. From the base's centre no stalk is seen and the polyp measures as one 16 mm body; from
+    // the root it grows from (WallContact::root), as the pathology stage and generate pass it, it is a 10 mm head.
+    const SurfaceMesh organ = test::testOrgan(1);
+    Vec3 centre;
+    for (const Vec3& p : organ.points)
+        centre += p;
+    const Vec3 root = centre / static_cast<double>(organ.points.size());
+    const Vec3 axis{0.0, 0.0, 1.0}, side{1.0, 0.0, 0.0}, other{0.0, 1.0, 0.0};
+    const double stalkMm = 6.0, headRadiusMm = 5.0;
+    const Vec3 head = root + axis * (stalkMm + headRadiusMm);
+    WallContact c;
+    constexpr double kPi = 3.14159265358979323846;
+    for (int i = 0; i <= 24; ++i) // the stalk: a cylinder of radius 1 mm
+        for (int k = 0; k < 12; ++k) {
+            const double a = 2.0 * kPi * k / 12.0;
+            c.points.push_back(root + axis * (stalkMm * i / 24.0) + (side * std::cos(a) + other * std::sin(a)));
+        }
+    for (int i = 1; i < 24; ++i) // the head: a sphere
+        for (int k = 0; k < 24; ++k) {
+            const double t = kPi * i / 24.0, a = 2.0 * kPi * k / 24.0;
+            c.points.push_back(head + (axis * std::cos(t) + (side * std::cos(a) + other * std::sin(a)) * std::sin(t)) *
+                                          headRadiusMm);
+        }
+    c.centre = head;
+    c.sizeMm = stalkMm + 2.0 * headRadiusMm;
+    c.volumeMm3 = 4.0 / 3.0 * kPi * 125.0;
+    c.fractions.tissue = 0.05;
+    c.fractions.cavity = 0.95;
+    for (int k = 0; k < 8; ++k) { // where the stalk meets the wall
+        const double a = 2.0 * kPi * k / 8.0;
+        c.base.push_back(root + (side * std::cos(a) + other * std::sin(a)) * 1.2);
+    }
+    for (int i = -4; i <= 4; ++i) // where the head rests on a wall beside it
+        for (int k = -4; k <= 4; ++k)
+            c.base.push_back(head + side * (headRadiusMm + 0.5) + axis * (0.5 * i) + other * (0.5 * k));
+
+    auto fromCentre = describeContact(organ, c, clinical::PathologyKind::Polyp, 1.0);
+    ASSERT_TRUE(fromCentre.ok()) << fromCentre.error().detail;
+    EXPECT_FALSE(fromCentre->pedunculated);
+    EXPECT_NEAR(fromCentre->sizeMm, 16.0, 1e-9);
+
+    c.root = root;
+    auto fromRoot = describeContact(organ, c, clinical::PathologyKind::Polyp, 1.0);
+    ASSERT_TRUE(fromRoot.ok()) << fromRoot.error().detail;
+    EXPECT_TRUE(fromRoot->pedunculated);
+    EXPECT_NEAR(fromRoot->sizeMm, 10.0, 0.5);
+    EXPECT_NEAR(fromRoot->stalkLengthMm, stalkMm, 1.0);
+    EXPECT_LT(fromRoot->baseWidthMm, 3.0); // the stalk's foot, not the wall under the head
+}
+
 } // namespace
 } // namespace hs::pathology

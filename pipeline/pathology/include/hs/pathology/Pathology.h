@@ -16,6 +16,7 @@
 #include "hs/core/Timings.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -94,10 +95,12 @@ struct PathologyResult {
 [[nodiscard]] Result<PathologyResult> growPathologies(const SurfaceMesh& organ, const PathologyParams& params,
                                                       Progress& progress = Progress::none());
 
-/// Measures one pathology against an organ (the displaced organ of a PathologyResult). Fails with InvalidInput
-/// for an open surface.
+/// Measures one pathology against an organ (the displaced organ of a PathologyResult). `root`: where it grows from
+/// when known (GrownPathology::anchor), so a head that also rests on a wall is measured from its stalk's root
+/// (WallContact::root). Fails with InvalidInput for an open surface.
 [[nodiscard]] Result<Descriptors> measure(const SurfaceMesh& organ, const SurfaceMesh& pathology,
-                                          clinical::PathologyKind kind, const PathologyParams& params = {});
+                                          clinical::PathologyKind kind, const PathologyParams& params = {},
+                                          std::optional<Vec3> root = std::nullopt);
 
 /// Lasmar score of a myoma from its measured descriptors.
 clinical::LasmarScore lasmarScore(const Descriptors& d);
@@ -128,6 +131,10 @@ struct WallContact {
     Vec3 centre;                ///< its volume centroid
     std::vector<Vec3> base;     ///< points of the wall surface it grows from where it meets it (may be empty)
     bool serosalBase = false;   ///< the base lies on the serosa (else on the cavity side)
+    /// Where it grows from, when known (its seat, a stalk's root): a stalk is looked for from there rather than from
+    /// the base's centre, and when one is found the base is where it meets the wall. A head on a stalk that also
+    /// rests on a wall, or whose pocket's walls hug it, touches the wall away from its root too.
+    std::optional<Vec3> root;
 };
 
 /// The descriptors of `contact` read in the cavity frame of `organ` (a surface with the "tissue" face label: an organ,
