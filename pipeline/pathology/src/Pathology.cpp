@@ -44,11 +44,19 @@ constexpr double kResiteTurnDeg = 45.0; ///< and stays on a wall facing within t
 constexpr double kResiteMarginMm = 1.0; ///< planned room beyond the minimum gap (the grown shape is lobulated)
 constexpr int kResiteGrowths = 8;       ///< seats grown at most before the case is refused
 
-std::vector<const SurfaceMesh*> earlierSurfaces(const std::vector<Planned>& plans, std::size_t i) {
-    std::vector<const SurfaceMesh*> earlier;
+/// The pathologies placed before pathology i: those it keeps clear of when it is placed.
+std::vector<std::size_t> othersOf(std::size_t i) {
+    std::vector<std::size_t> others;
     for (std::size_t j = 0; j < i; ++j)
-        earlier.push_back(&plans[j].surface);
-    return earlier;
+        others.push_back(j);
+    return others;
+}
+
+std::vector<const SurfaceMesh*> surfacesOf(const std::vector<Planned>& plans, const std::vector<std::size_t>& which) {
+    std::vector<const SurfaceMesh*> surfaces;
+    for (std::size_t j : which)
+        surfaces.push_back(&plans[j].surface);
+    return surfaces;
 }
 
 Result<SurfaceMesh> grow(const PathologyRequest& r, const ShapeSpec& spec, const SurfaceMesh& organ, Rng& rng,
@@ -67,15 +75,15 @@ Result<SurfaceMesh> grow(const PathologyRequest& r, const ShapeSpec& spec, const
 
 /// Plans pathology i at `seat`, grows it (its own random stream, so a second seat grows it the same way), scales it
 /// to the requested size and fits its depth to the FIGO type.
-Status growAt(std::vector<Planned>& plans, std::size_t i, const Seat& seat, const SurfaceMesh& organ,
-              const OrganInfo& info, const PathologyParams& params, const Rng& root, StageTimings& timings,
-              Progress& progress) {
+Status growAt(std::vector<Planned>& plans, std::size_t i, const std::vector<std::size_t>& others, const Seat& seat,
+              const SurfaceMesh& organ, const OrganInfo& info, const PathologyParams& params, const Rng& root,
+              StageTimings& timings, Progress& progress) {
     Planned& p = plans[i];
     const PathologyRequest& r = *p.request;
     {
         ScopedStepTimer timer(timings, "place");
         p.seat = seat;
-        auto spec = planShape(r, info, p.seat, params, earlierSurfaces(plans, i), p.fromSerosa);
+        auto spec = planShape(r, info, p.seat, params, surfacesOf(plans, others), p.fromSerosa);
         if (!spec.ok())
             return spec.failure();
         p.spec = *spec;
@@ -98,31 +106,32 @@ Status growAt(std::vector<Planned>& plans, std::size_t i, const Seat& seat, cons
     return {};
 }
 
-/// The earlier pathology that pathology i overlaps (comes within `gap` of, or nests in), if any.
-std::optional<std::size_t> overlapsEarlier(const std::vector<Planned>& plans, std::size_t i, double gap) {
-    for (std::size_t j = 0; j < i; ++j)
-        if (!checkOverlap(plans[j], plans[i], gap).ok())
+/// The pathology of `others` that pathology i overlaps (comes within `gap` of, or nests in), if any.
+std::optional<std::size_t> overlapsAny(const std::vector<Planned>& plans, std::size_t i,
+                                       const std::vector<std::size_t>& others, double gap) {
+    for (std::size_t j : others)
+        if (!checkOverlap(plans[std::min(i, j)], plans[std::max(i, j)], gap).ok())
             return j;
     return std::nullopt;
 }
 
-/// A clinical location names a wall, not a point on it: when pathology i, grown at its nominal seat, overlaps one
-/// placed before it, it moves to the nearest seat on the same wall (within kResiteSlide of the cavity's length,
-/// facing within kResiteTurnDeg) where it keeps the minimum gap, with a warning that says so. Seats whose planned
-/// centre already lies too close to an earlier pathology are skipped without growing; at most kResiteGrowths are
-/// grown. When none is clear the pathology stays and the overlap check refuses the case, as it refuses a point
-/// placement (a click), which stays where it was put.
-Status resiteClearOfEarlier(std::vector<Planned>& plans, std::size_t i, const SurfaceMesh& organ, const OrganInfo& info,
-                            const PathologyParams& params, const Rng& root, PathologyResult& result,
-                            Progress& progress) {
-    const auto blocker = overlapsEarlier(plans, i, params.minimumGapMm);
+/// A clinical location names a wall, not a point on it: when pathology i, grown at its seat, overlaps one of
+/// `others` (the pathologies already placed), it moves to the nearest seat on the same wall (within kResiteSlide of
+/// the cavity's length, facing within kResiteTurnDeg) where it keeps the minimum gap, with a warning that says so.
+/// Seats whose planned centre already lies too close to one of them are skipped without growing; at most
+/// kResiteGrowths are grown. When none is clear the pathology stays where it was (false). A point placement (a
+/// click) is never moved: it stays where it was put, and the overlap check refuses the case.
+Result<bool> resiteClearOf(std::vector<Planned>& plans, std::size_t i, const std::vector<std::size_t>& others,
+                           const SurfaceMesh& organ, const OrganInfo& info, const PathologyParams& params,
+                           const Rng& root, PathologyResult& result, Progress& progress) {
+    const auto blocker = overlapsAny(plans, i, others, params.minimumGapMm);
     if (!blocker)
-        return {};
+        return true;
     const PathologyRequest& r = *plans[i].request;
     const Seat nominal = plans[i].seat;
     const Planned kept = plans[i];
     std::vector<std::pair<const SurfaceMesh*, Bounds>> earlier;
-    for (std::size_t j = 0; j < i; ++j)
+    for (std::size_t j : others)
         earlier.emplace_back(&plans[j].surface, bounds(plans[j].surface));
     // Room the planned shape needs: its centre keeps radius + gap (+ margin, the grown shape is lobulated) from
     // every earlier pathology, and so does its foot (a stalk's root or a dome's base) within its own reach.
@@ -143,20 +152,46 @@ Status resiteClearOfEarlier(std::vector<Planned>& plans, std::size_t i, const Su
         if (grown >= kResiteGrowths)
             break;
         bool fromSerosa = false;
-        auto spec = planShape(r, info, seat, params, earlierSurfaces(plans, i), fromSerosa);
+        auto spec = planShape(r, info, seat, params, surfacesOf(plans, others), fromSerosa);
         if (!spec.ok() || !roomy(*spec))
             continue;
         ++grown;
         HS_TRY(progress.check("pathology stage"));
-        HS_TRY(growAt(plans, i, seat, organ, info, params, root, result.timings, progress));
-        if (!overlapsEarlier(plans, i, params.minimumGapMm)) {
+        HS_TRY(growAt(plans, i, others, seat, organ, info, params, root, result.timings, progress));
+        if (!overlapsAny(plans, i, others, params.minimumGapMm)) {
             result.warnings.push_back(who(r) + ": at its nominal seat it overlaps " + who(*plans[*blocker].request) +
                                       "; seated " + fmt(distance(seat.endometrium, nominal.endometrium)) +
                                       " mm away on the same wall");
-            return {};
+            return true;
         }
     }
     plans[i] = kept; // nothing clear nearby: the overlap check names both
+    return false;
+}
+
+/// Pathology i, placed by a clinical location, overlaps one placed before it: i slides along its wall
+/// (resiteClearOf); when no seat there is clear, the earlier one slides along its own wall instead, clear of i and
+/// of those before it, if it was placed by a clinical location too (a big head on a stalk can fill the room a later,
+/// smaller pathology's wall has, while its own wall has more). Otherwise both stay and the overlap check names them.
+Status resiteClearOfEarlier(std::vector<Planned>& plans, std::size_t i, const SurfaceMesh& organ, const OrganInfo& info,
+                            const PathologyParams& params, const Rng& root, PathologyResult& result,
+                            Progress& progress) {
+    auto cleared = resiteClearOf(plans, i, othersOf(i), organ, info, params, root, result, progress);
+    if (!cleared.ok())
+        return cleared.failure();
+    if (*cleared)
+        return {};
+    const auto blocker = overlapsAny(plans, i, othersOf(i), params.minimumGapMm);
+    if (!blocker || !std::holds_alternative<clinical::ClinicalPlacement>(plans[*blocker].request->placement))
+        return {};
+    const std::size_t j = *blocker;
+    std::vector<std::size_t> others;
+    for (std::size_t k = 0; k <= i; ++k)
+        if (k != j)
+            others.push_back(k);
+    auto moved = resiteClearOf(plans, j, others, organ, info, params, root, result, progress);
+    if (!moved.ok())
+        return moved.failure();
     return {};
 }
 
@@ -190,7 +225,7 @@ Result<PathologyResult> growPathologies(const SurfaceMesh& organ, const Patholog
         }
         const double di = static_cast<double>(i);
         auto sub = progress.sub(di / n * 0.8, (di + 1.0) / n * 0.8);
-        HS_TRY(growAt(plans, i, seat, organ, info, params, root, result.timings, sub));
+        HS_TRY(growAt(plans, i, othersOf(i), seat, organ, info, params, root, result.timings, sub));
         if (std::holds_alternative<clinical::ClinicalPlacement>(r.placement))
             HS_TRY(resiteClearOfEarlier(plans, i, organ, info, params, root, result, sub));
         result.timings.step("grow").counts.emplace_back(r.id + ".triangles",
