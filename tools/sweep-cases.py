@@ -18,6 +18,7 @@ FIGO = ["0", "1", "2", "3", "4", "5", "6", "7", "2-5"]
 LOCATIONS = ["posterior", "anterior", "fundal", "left-lateral", "right-lateral"]
 MYOMA_MODELS = ["skeleton", "particles", "ca"]
 POLYP_MODELS = ["skeleton", "particles"]
+POSTMENOPAUSAL_SUBMUCOSAL_MAX_MM = 20.0  # Lasmar size score 0 (UTERUS.md)
 
 
 def figo_value(text):
@@ -42,11 +43,18 @@ def sweep_case(i, base):
     pathologies = []
     # Every case has a myoma; the FIGO types cycle so that each appears at least twice.
     figo = FIGO[i % len(FIGO)]
+    size = 15.0 + (i * 3) % 12
+    if patient["menopausal"] and figo in ("0", "1"):
+        # A FIGO 0 or 1 myoma stands mostly in the cavity, and the cavity after menopause is small (the model's
+        # 72- and 75-year-olds: 22-23 mm long, 17 mm between the ostia, about 5 mm deep): a 24 mm one is longer than
+        # the whole cavity and covers the fundus. Leiomyomas regress after menopause (Stewart, N Engl J Med 2015;
+        # 372:1646-55), so these are drawn from Lasmar's smallest size class, <= 20 mm (UTERUS.md).
+        size = min(size, POSTMENOPAUSAL_SUBMUCOSAL_MAX_MM)
     pathologies.append({
         "id": "myoma-1",
         "kind": "myoma",
         "growthModel": MYOMA_MODELS[i % len(MYOMA_MODELS)],
-        "sizeMm": 15.0 + (i * 3) % 12,
+        "sizeMm": size,
         "figo": figo_value(figo),
         "placement": {"location": LOCATIONS[i % len(LOCATIONS)]},
     })
