@@ -251,9 +251,20 @@ SurfaceShape measureSurfaceShape(const SurfaceMesh& mesh, const std::vector<std:
             const auto key = edgeKey(canonical[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])],
                                      canonical[static_cast<std::size_t>(t[static_cast<std::size_t>((k + 1) % 3)])]);
             const auto [it, inserted] = firstFace.try_emplace(key, static_cast<std::int32_t>(f));
-            if (!inserted)
-                deviations.push_back(
-                    angleBetween(faceNormal(mesh, f), faceNormal(mesh, static_cast<std::size_t>(it->second))));
+            if (inserted)
+                continue;
+            const auto g = static_cast<std::size_t>(it->second);
+            const double turn = angleBetween(faceNormal(mesh, f), faceNormal(mesh, g));
+            deviations.push_back(turn);
+            // Convex on the normals' side when this face's far corner lies behind the other face's plane.
+            const Vec3& far = c;
+            const Vec3& on = mesh.points[static_cast<std::size_t>(mesh.triangles[g][0])];
+            const double side = dot(far - on, cross(mesh.points[static_cast<std::size_t>(mesh.triangles[g][1])] - on,
+                                                    mesh.points[static_cast<std::size_t>(mesh.triangles[g][2])] - on));
+            if (side < 0.0)
+                s.maxRidgeDeg = std::max(s.maxRidgeDeg, turn);
+            else
+                s.maxValleyDeg = std::max(s.maxValleyDeg, turn);
         }
     }
     if (s.faces == 0)

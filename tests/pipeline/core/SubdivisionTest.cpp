@@ -146,6 +146,25 @@ TEST(SurfaceShape, MeasuresAnglesEdgesAndNormalTurnsOnMaskedFaces) {
     EXPECT_GT(s.maxNormalDeviationDeg, all.maxNormalDeviationDeg);
 }
 
+TEST(SurfaceShape, TellsRidgesFromValleys) {
+    // An octahedron with outward faces is convex everywhere: all its edges are ridges (the normals of neighbouring
+    // faces 70.5 degrees apart). Its top pushed in below the equator makes the upper edges valleys (a notch); the
+    // spike (the top pulled far out) makes them sharper ridges.
+    const SurfaceMesh m = octahedron();
+    const SurfaceShape convex = measureSurfaceShape(m);
+    EXPECT_NEAR(convex.maxRidgeDeg, 180.0 - 109.471221, 1e-4);
+    EXPECT_EQ(convex.maxValleyDeg, 0.0);
+    SurfaceMesh dent = m;
+    dent.points[4] = {0, 0, -0.5};
+    const std::vector<std::int32_t> upper{1, 1, 1, 1, 0, 0, 0, 0};
+    const SurfaceShape notch = measureSurfaceShape(dent, upper);
+    EXPECT_GT(notch.maxValleyDeg, 0.0);
+    EXPECT_LT(notch.maxRidgeDeg, notch.maxValleyDeg);
+    SurfaceMesh spike = m;
+    spike.points[4] = {0, 0, 10};
+    EXPECT_GT(measureSurfaceShape(spike, upper).maxRidgeDeg, 85.0); // its sides nearly upright, 90 degrees apart
+}
+
 TEST(TetEmbedding, PointsInsideGetTheirTetAndPointsOutsideTheNearestWithBoundedWeights) {
     const TetMesh grid = cubeGrid(2);
     ASSERT_TRUE(validate(grid).ok());

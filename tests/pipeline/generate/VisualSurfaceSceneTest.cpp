@@ -173,6 +173,15 @@ TEST(VisualSurface, IsRefinedAndSmoothWhereTheScopeSeesIt) {
     // The serosa is refined alike and smooth too.
     EXPECT_GE(serosa.minAngleDeg, 8.0);
     EXPECT_LE(serosa.maxNormalDeviationDeg, 30.0);
+    // A fin or a spike stands up from the wall: a ridge, convex on the side the scope looks from. Over every face the
+    // scope sees, creases included, the sharpest edges are valleys (where a pathology meets the wall); no ridge
+    // turns by more than 60 degrees. The faceted boundary's fins were ridges.
+    const SurfaceShape seenCoarse = measureSurfaceShape(coarse, coarseSeen);
+    const SurfaceShape seenVisual = measureSurfaceShape(visual, seen);
+    std::printf("visual surface, every seen face: ridges turn at most %.1f -> %.1f deg, valleys %.1f -> %.1f deg\n",
+                seenCoarse.maxRidgeDeg, seenVisual.maxRidgeDeg, seenCoarse.maxValleyDeg, seenVisual.maxValleyDeg);
+    EXPECT_GT(seenCoarse.maxRidgeDeg, 90.0);
+    EXPECT_LE(seenVisual.maxRidgeDeg, 60.0);
 }
 
 TEST(VisualSurface, ShowsTheSameColourOnBothSidesOfEveryChartSeam) {

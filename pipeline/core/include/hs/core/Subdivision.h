@@ -55,6 +55,11 @@ struct SurfaceShape {
     double maxNormalDeviationDeg = 0.0; ///< largest angle between the normals of two faces sharing an edge
     double p99NormalDeviationDeg = 0.0; ///< 99th percentile of that angle over the edges
     double sharpEdgeFraction = 0.0;     ///< fraction of the edges whose faces turn by more than 30 degrees
+    /// The largest turn across an edge where the surface is convex on the side its normals face (a ridge: a fin or a
+    /// spike stands up as one), and where it is concave (a valley: a crease, a fold into a notch). Meaningful when
+    /// the faces are consistently oriented.
+    double maxRidgeDeg = 0.0;
+    double maxValleyDeg = 0.0;
     double meanEdgeMm = 0.0;
     double maxEdgeMm = 0.0;
 };
