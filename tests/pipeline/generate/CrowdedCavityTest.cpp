@@ -41,21 +41,29 @@ scene::PathologySpec stalkedMyoma(double sizeMm) {
     return m;
 }
 
+/// The pathology stage on the default case's organ with `pathologies` in place of the case's.
+Result<pathology::PathologyResult> grownInTheDefaultPatient(const std::vector<scene::PathologySpec>& pathologies) {
+    auto loaded = scene::loadCase(HS_DEFAULT_CASE_FILE);
+    if (!loaded)
+        return loaded.failure();
+    scene::CaseSpec spec = *loaded;
+    spec.pathologies = pathologies;
+    auto request = generate::organRequestFor(spec, HS_DEFAULT_CASE_FILE);
+    if (!request)
+        return request.failure();
+    auto model = anatomy::loadShapeModel(generate::modelPathFor(spec, HS_DEFAULT_CASE_FILE));
+    if (!model)
+        return model.failure();
+    auto organ = generate::makeOrgan(*model, *request);
+    if (!organ)
+        return organ.failure();
+    return pathology::growPathologies(organ->mesh, generate::pathologyParamsFor(spec));
+}
+
 } // namespace
 
 TEST(CrowdedCavity, AStalkedMyomaAndACornualPolypBothFit) {
-    auto loaded = scene::loadCase(HS_DEFAULT_CASE_FILE);
-    ASSERT_TRUE(loaded.ok()) << loaded.error().message();
-    scene::CaseSpec spec = *loaded;
-    spec.pathologies = {stalkedMyoma(24.0), pedunculatedPolyp()};
-    auto request = generate::organRequestFor(spec, HS_DEFAULT_CASE_FILE);
-    ASSERT_TRUE(request.ok()) << request.error().message();
-    auto model = anatomy::loadShapeModel(generate::modelPathFor(spec, HS_DEFAULT_CASE_FILE));
-    ASSERT_TRUE(model.ok()) << model.error().message();
-    auto organ = generate::makeOrgan(*model, *request);
-    ASSERT_TRUE(organ.ok()) << organ.error().message();
-
-    auto grown = pathology::growPathologies(organ->mesh, generate::pathologyParamsFor(spec));
+    auto grown = grownInTheDefaultPatient({stalkedMyoma(24.0), pedunculatedPolyp()});
     ASSERT_TRUE(grown.ok()) << grown.error().message();
     ASSERT_EQ(grown->pathologies.size(), 2u);
     const auto& myoma = grown->pathologies[0].descriptors;
@@ -84,19 +92,9 @@ TEST(CrowdedCavity, AStalkedMyomaAndACornualPolypBothFit) {
 TEST(CrowdedCavity, ALateralSubmucosalMyomaStandsInTheCavity) {
     // A FIGO 1 myoma on the left wall is wider than the default cavity is deep: the anterior and posterior walls
     // across it part (docs/pathology.md, "The organ adapts"). Before, they stayed and embedded it: it measured FIGO 2.
-    auto loaded = scene::loadCase(HS_DEFAULT_CASE_FILE);
-    ASSERT_TRUE(loaded.ok()) << loaded.error().message();
-    scene::CaseSpec spec = *loaded;
     scene::PathologySpec m = stalkedMyoma(20.0);
     m.figo = clinical::FigoType{1, -1};
-    spec.pathologies = {m};
-    auto request = generate::organRequestFor(spec, HS_DEFAULT_CASE_FILE);
-    ASSERT_TRUE(request.ok()) << request.error().message();
-    auto model = anatomy::loadShapeModel(generate::modelPathFor(spec, HS_DEFAULT_CASE_FILE));
-    ASSERT_TRUE(model.ok()) << model.error().message();
-    auto organ = generate::makeOrgan(*model, *request);
-    ASSERT_TRUE(organ.ok()) << organ.error().message();
-    auto grown = pathology::growPathologies(organ->mesh, generate::pathologyParamsFor(spec));
+    auto grown = grownInTheDefaultPatient({m});
     ASSERT_TRUE(grown.ok()) << grown.error().message();
     const auto& d = grown->pathologies[0].descriptors;
     std::printf("FIGO 1 on the left wall: measured FIGO %s, %.0f %% in the wall, %.0f %% in the cavity\n",
