@@ -167,8 +167,10 @@ TEST(VisualSurface, IsRefinedAndSmoothWhereTheScopeSeesIt) {
     EXPECT_LE(after.maxNormalDeviationDeg, 110.0);
     EXPECT_LE(after.p99NormalDeviationDeg, 20.0);
     EXPECT_LE(after.sharpEdgeFraction, 0.005);
-    // Along the creases the surface turns sharply where a pathology's head overhangs the wall, but most edges do not.
+    // Along the creases the surface turns sharply where a pathology's head overhangs the wall, but most edges do not;
+    // the needles there (2.3 degrees, docs/scene-format.md, "The visual surface": known gaps) get no thinner.
     EXPECT_LE(atCrease.p99NormalDeviationDeg, 90.0);
+    EXPECT_GE(atCrease.minAngleDeg, 2.0);
     EXPECT_LT(atCrease.faces, after.faces / 10);
     // The serosa is refined alike and smooth too.
     EXPECT_GE(serosa.minAngleDeg, 8.0);
