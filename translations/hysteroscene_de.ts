@@ -2,6 +2,21 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de">
 <context>
+    <name>hs::widgets::CaseDocument</name>
+    <message>
+        <source>Untitled</source>
+        <translation>Unbenannt</translation>
+    </message>
+    <message>
+        <source>Recover unsaved changes</source>
+        <translation>Ungespeicherte Änderungen wiederherstellen</translation>
+    </message>
+    <message>
+        <source>%1[*] - Hysteroscene</source>
+        <translation>%1[*] - Hysteroscene</translation>
+    </message>
+</context>
+<context>
     <name>hs::workstation::MainWindow</name>
     <message>
         <source>Hysteroscene</source>
@@ -169,6 +184,10 @@
     <message>
         <source>image</source>
         <translation>Bild</translation>
+    </message>
+    <message>
+        <source>Open a tetrahedral mesh cut open.</source>
+        <translation>Ein Tetraedernetz aufgeschnitten öffnen.</translation>
     </message>
 </context>
 </TS>

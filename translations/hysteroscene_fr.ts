@@ -2,6 +2,21 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="fr">
 <context>
+    <name>hs::widgets::CaseDocument</name>
+    <message>
+        <source>Untitled</source>
+        <translation>Sans titre</translation>
+    </message>
+    <message>
+        <source>Recover unsaved changes</source>
+        <translation>Récupérer les modifications non enregistrées</translation>
+    </message>
+    <message>
+        <source>%1[*] - Hysteroscene</source>
+        <translation>%1[*] - Hysteroscene</translation>
+    </message>
+</context>
+<context>
     <name>hs::workstation::MainWindow</name>
     <message>
         <source>Hysteroscene</source>
@@ -169,6 +184,10 @@
     <message>
         <source>image</source>
         <translation>image</translation>
+    </message>
+    <message>
+        <source>Open a tetrahedral mesh cut open.</source>
+        <translation>Ouvrir un maillage tétraédrique coupé.</translation>
     </message>
 </context>
 </TS>

@@ -2,6 +2,21 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="it">
 <context>
+    <name>hs::widgets::CaseDocument</name>
+    <message>
+        <source>Untitled</source>
+        <translation>Senza titolo</translation>
+    </message>
+    <message>
+        <source>Recover unsaved changes</source>
+        <translation>Recupera le modifiche non salvate</translation>
+    </message>
+    <message>
+        <source>%1[*] - Hysteroscene</source>
+        <translation>%1[*] - Hysteroscene</translation>
+    </message>
+</context>
+<context>
     <name>hs::workstation::MainWindow</name>
     <message>
         <source>Hysteroscene</source>
@@ -169,6 +184,10 @@
     <message>
         <source>image</source>
         <translation>immagine</translation>
+    </message>
+    <message>
+        <source>Open a tetrahedral mesh cut open.</source>
+        <translation>Apri una mesh tetraedrica sezionata.</translation>
     </message>
 </context>
 </TS>

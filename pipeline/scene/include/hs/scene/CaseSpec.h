@@ -266,8 +266,8 @@ std::string toJson(const CaseSpec& spec);
 /// Writes toJson(spec) atomically; refuses (InvalidInput) a spec that checkCase() rejects.
 [[nodiscard]] Status saveCase(const CaseSpec& spec, const std::string& path);
 
-/// The bundled default case (resources/cases/default.json): a 35-year-old primipara with a healthy uterus, one
-/// FIGO 2 posterior myoma of 25 mm and one pedunculated fundal polyp of 12 mm; seed 1.
+/// The bundled default case (resources/cases/default.json): a 35-year-old primipara with a FIGO 2 left lateral
+/// myoma of 20 mm and a sessile right cornual polyp of 10 mm; seed 1.
 CaseSpec defaultCase();
 
 /// A short human summary, one line per item, each "label       text" (12-column label), for `info` and `validate`.
