@@ -19,10 +19,6 @@
 <context>
     <name>hs::workstation::MainWindow</name>
     <message>
-        <source>Hysteroscene</source>
-        <translation>Hysteroscene</translation>
-    </message>
-    <message>
         <source>&amp;Open...</source>
         <translation>Ö&amp;ffnen...</translation>
     </message>
@@ -95,10 +91,6 @@
         <translation>%1 wird geöffnet...</translation>
     </message>
     <message>
-        <source>%1 - Hysteroscene</source>
-        <translation>%1 - Hysteroscene</translation>
-    </message>
-    <message>
         <source>The file %1 does not exist.</source>
         <translation>Die Datei %1 existiert nicht.</translation>
     </message>
@@ -153,6 +145,102 @@
     <message>
         <source>&lt;h3&gt;Hysteroscene %1&lt;/h3&gt;&lt;p&gt;A scenario authoring workstation for hysteroscopy training simulators.&lt;/p&gt;&lt;p&gt;Licensed under the GNU General Public License, version 3 or later.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Hysteroscene %1&lt;/h3&gt;&lt;p&gt;Eine Arbeitsstation zum Erstellen von Szenarien für Hysteroskopie-Trainingssimulatoren.&lt;/p&gt;&lt;p&gt;Lizenziert unter der GNU General Public License, Version 3 oder später.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&amp;New Case</source>
+        <translation>&amp;Neuer Fall</translation>
+    </message>
+    <message>
+        <source>Start a new case from the default patient</source>
+        <translation>Einen neuen Fall mit der Standardpatientin beginnen</translation>
+    </message>
+    <message>
+        <source>Open &amp;Case...</source>
+        <translation>&amp;Fall öffnen...</translation>
+    </message>
+    <message>
+        <source>Open a case file (case.json)</source>
+        <translation>Eine Falldatei öffnen (case.json)</translation>
+    </message>
+    <message>
+        <source>&amp;Save Case</source>
+        <translation>Fall &amp;speichern</translation>
+    </message>
+    <message>
+        <source>Save Case &amp;As...</source>
+        <translation>Fall speichern &amp;unter...</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederholen</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>The case %1 has unsaved changes. Save them?</source>
+        <translation>Der Fall %1 hat ungespeicherte Änderungen. Speichern?</translation>
+    </message>
+    <message>
+        <source>The case file does not exist.</source>
+        <translation>Die Falldatei existiert nicht.</translation>
+    </message>
+    <message>
+        <source>The case file could not be read or written.</source>
+        <translation>Die Falldatei konnte nicht gelesen oder geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>The case file is of a version this program does not read.</source>
+        <translation>Die Falldatei hat eine Version, die dieses Programm nicht lesen kann.</translation>
+    </message>
+    <message>
+        <source>The case file is larger than this program accepts.</source>
+        <translation>Die Falldatei ist größer, als dieses Programm zulässt.</translation>
+    </message>
+    <message>
+        <source>The case is not valid: a value is outside its allowed range (see the details).</source>
+        <translation>Der Fall ist ungültig: Ein Wert liegt außerhalb seines zulässigen Bereichs (siehe Details).</translation>
+    </message>
+    <message>
+        <source>The case could not be opened or saved.</source>
+        <translation>Der Fall konnte nicht geöffnet oder gespeichert werden.</translation>
+    </message>
+    <message>
+        <source>Open Case</source>
+        <translation>Fall öffnen</translation>
+    </message>
+    <message>
+        <source>Cases (*.json)</source>
+        <translation>Fälle (*.json)</translation>
+    </message>
+    <message>
+        <source>Save Case</source>
+        <translation>Fall speichern</translation>
+    </message>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>Automatisches Speichern fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Unbenannt</translation>
+    </message>
+    <message>
+        <source>Recover Unsaved Changes</source>
+        <translation>Ungespeicherte Änderungen wiederherstellen</translation>
+    </message>
+    <message>
+        <source>The last session ended with unsaved changes to the case %1. Recover them?</source>
+        <translation>Die letzte Sitzung endete mit ungespeicherten Änderungen am Fall %1. Wiederherstellen?</translation>
     </message>
 </context>
 <context>

@@ -19,10 +19,6 @@
 <context>
     <name>hs::workstation::MainWindow</name>
     <message>
-        <source>Hysteroscene</source>
-        <translation>Hysteroscene</translation>
-    </message>
-    <message>
         <source>&amp;Open...</source>
         <translation>&amp;Ouvrir...</translation>
     </message>
@@ -95,10 +91,6 @@
         <translation>Ouverture de %1...</translation>
     </message>
     <message>
-        <source>%1 - Hysteroscene</source>
-        <translation>%1 - Hysteroscene</translation>
-    </message>
-    <message>
         <source>The file %1 does not exist.</source>
         <translation>Le fichier %1 n&apos;existe pas.</translation>
     </message>
@@ -153,6 +145,102 @@
     <message>
         <source>&lt;h3&gt;Hysteroscene %1&lt;/h3&gt;&lt;p&gt;A scenario authoring workstation for hysteroscopy training simulators.&lt;/p&gt;&lt;p&gt;Licensed under the GNU General Public License, version 3 or later.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Hysteroscene %1&lt;/h3&gt;&lt;p&gt;Un poste de création de scénarios pour les simulateurs de formation à l&apos;hystéroscopie.&lt;/p&gt;&lt;p&gt;Distribué sous la licence publique générale GNU (GPL), version 3 ou ultérieure.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&amp;New Case</source>
+        <translation>&amp;Nouveau cas</translation>
+    </message>
+    <message>
+        <source>Start a new case from the default patient</source>
+        <translation>Commencer un nouveau cas à partir de la patiente par défaut</translation>
+    </message>
+    <message>
+        <source>Open &amp;Case...</source>
+        <translation>Ouvrir un &amp;cas...</translation>
+    </message>
+    <message>
+        <source>Open a case file (case.json)</source>
+        <translation>Ouvrir un fichier de cas (case.json)</translation>
+    </message>
+    <message>
+        <source>&amp;Save Case</source>
+        <translation>&amp;Enregistrer le cas</translation>
+    </message>
+    <message>
+        <source>Save Case &amp;As...</source>
+        <translation>Enregistrer le cas &amp;sous...</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Annuler</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Rétablir</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>É&amp;dition</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>Modifications non enregistrées</translation>
+    </message>
+    <message>
+        <source>The case %1 has unsaved changes. Save them?</source>
+        <translation>Le cas %1 a des modifications non enregistrées. Les enregistrer ?</translation>
+    </message>
+    <message>
+        <source>The case file does not exist.</source>
+        <translation>Le fichier de cas n&apos;existe pas.</translation>
+    </message>
+    <message>
+        <source>The case file could not be read or written.</source>
+        <translation>Le fichier de cas n&apos;a pas pu être lu ou écrit.</translation>
+    </message>
+    <message>
+        <source>The case file is of a version this program does not read.</source>
+        <translation>Le fichier de cas est d&apos;une version que ce programme ne lit pas.</translation>
+    </message>
+    <message>
+        <source>The case file is larger than this program accepts.</source>
+        <translation>Le fichier de cas est plus grand que ce que ce programme accepte.</translation>
+    </message>
+    <message>
+        <source>The case is not valid: a value is outside its allowed range (see the details).</source>
+        <translation>Le cas n&apos;est pas valide : une valeur est hors de sa plage autorisée (voir les détails).</translation>
+    </message>
+    <message>
+        <source>The case could not be opened or saved.</source>
+        <translation>Le cas n&apos;a pas pu être ouvert ou enregistré.</translation>
+    </message>
+    <message>
+        <source>Open Case</source>
+        <translation>Ouvrir un cas</translation>
+    </message>
+    <message>
+        <source>Cases (*.json)</source>
+        <translation>Cas (*.json)</translation>
+    </message>
+    <message>
+        <source>Save Case</source>
+        <translation>Enregistrer le cas</translation>
+    </message>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>L&apos;enregistrement automatique a échoué : %1</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Sans titre</translation>
+    </message>
+    <message>
+        <source>Recover Unsaved Changes</source>
+        <translation>Récupérer les modifications non enregistrées</translation>
+    </message>
+    <message>
+        <source>The last session ended with unsaved changes to the case %1. Recover them?</source>
+        <translation>La dernière session s&apos;est terminée avec des modifications non enregistrées du cas %1. Les récupérer ?</translation>
     </message>
 </context>
 <context>

@@ -19,10 +19,6 @@
 <context>
     <name>hs::workstation::MainWindow</name>
     <message>
-        <source>Hysteroscene</source>
-        <translation>Hysteroscene</translation>
-    </message>
-    <message>
         <source>&amp;Open...</source>
         <translation>&amp;Apri...</translation>
     </message>
@@ -95,10 +91,6 @@
         <translation>Apertura di %1...</translation>
     </message>
     <message>
-        <source>%1 - Hysteroscene</source>
-        <translation>%1 - Hysteroscene</translation>
-    </message>
-    <message>
         <source>The file %1 does not exist.</source>
         <translation>Il file %1 non esiste.</translation>
     </message>
@@ -153,6 +145,102 @@
     <message>
         <source>&lt;h3&gt;Hysteroscene %1&lt;/h3&gt;&lt;p&gt;A scenario authoring workstation for hysteroscopy training simulators.&lt;/p&gt;&lt;p&gt;Licensed under the GNU General Public License, version 3 or later.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Hysteroscene %1&lt;/h3&gt;&lt;p&gt;Una postazione per la creazione di scenari per simulatori di addestramento all&apos;isteroscopia.&lt;/p&gt;&lt;p&gt;Distribuito con la licenza GNU General Public License, versione 3 o successiva.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&amp;New Case</source>
+        <translation>&amp;Nuovo caso</translation>
+    </message>
+    <message>
+        <source>Start a new case from the default patient</source>
+        <translation>Inizia un nuovo caso dalla paziente predefinita</translation>
+    </message>
+    <message>
+        <source>Open &amp;Case...</source>
+        <translation>Apri &amp;caso...</translation>
+    </message>
+    <message>
+        <source>Open a case file (case.json)</source>
+        <translation>Apri un file di caso (case.json)</translation>
+    </message>
+    <message>
+        <source>&amp;Save Case</source>
+        <translation>&amp;Salva caso</translation>
+    </message>
+    <message>
+        <source>Save Case &amp;As...</source>
+        <translation>Salva caso &amp;come...</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Annulla</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Ripeti</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Modifica</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>Modifiche non salvate</translation>
+    </message>
+    <message>
+        <source>The case %1 has unsaved changes. Save them?</source>
+        <translation>Il caso %1 ha modifiche non salvate. Salvarle?</translation>
+    </message>
+    <message>
+        <source>The case file does not exist.</source>
+        <translation>Il file del caso non esiste.</translation>
+    </message>
+    <message>
+        <source>The case file could not be read or written.</source>
+        <translation>Il file del caso non può essere letto o scritto.</translation>
+    </message>
+    <message>
+        <source>The case file is of a version this program does not read.</source>
+        <translation>Il file del caso è di una versione che questo programma non legge.</translation>
+    </message>
+    <message>
+        <source>The case file is larger than this program accepts.</source>
+        <translation>Il file del caso è più grande di quanto questo programma accetti.</translation>
+    </message>
+    <message>
+        <source>The case is not valid: a value is outside its allowed range (see the details).</source>
+        <translation>Il caso non è valido: un valore è fuori dal suo intervallo consentito (vedi i dettagli).</translation>
+    </message>
+    <message>
+        <source>The case could not be opened or saved.</source>
+        <translation>Il caso non può essere aperto o salvato.</translation>
+    </message>
+    <message>
+        <source>Open Case</source>
+        <translation>Apri caso</translation>
+    </message>
+    <message>
+        <source>Cases (*.json)</source>
+        <translation>Casi (*.json)</translation>
+    </message>
+    <message>
+        <source>Save Case</source>
+        <translation>Salva caso</translation>
+    </message>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>Salvataggio automatico non riuscito: %1</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Senza titolo</translation>
+    </message>
+    <message>
+        <source>Recover Unsaved Changes</source>
+        <translation>Recupera le modifiche non salvate</translation>
+    </message>
+    <message>
+        <source>The last session ended with unsaved changes to the case %1. Recover them?</source>
+        <translation>L&apos;ultima sessione si è chiusa con modifiche non salvate al caso %1. Recuperarle?</translation>
     </message>
 </context>
 <context>

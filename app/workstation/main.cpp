@@ -91,5 +91,7 @@ int main(int argc, char** argv) {
         });
     if (!file.isEmpty())
         window.openFile(file);
+    if (!parser.isSet(screenshotOption)) // after a crash, the case being edited is offered back
+        QTimer::singleShot(0, &window, [&window] { window.offerRecovery(); });
     return QApplication::exec();
 }

@@ -11,6 +11,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QFile>
+#include <QFileInfo>
 #include <QLabel>
 #include <QLocale>
 #include <QMenu>
@@ -56,6 +57,11 @@ private slots:
     void missingRecentFileIsForgotten();
     void aboutGoesThroughMessageBox();
     void closingSavesWindowGeometry();
+    void caseTitleShowsFileAndUnsavedMark();
+    void undoAndRedoActionsFollowTheDocument();
+    void closingWithUnsavedChangesAsks();
+    void savingAnInvalidCaseShowsTheFieldAndKeepsTheFile();
+    void autosaveIsOfferedBackAfterACrash();
 
 private:
     template <class T>
@@ -97,6 +103,7 @@ void TestMainWindow::init() {
     QSettings().clear();
     MessageBox::takeRecorded();
     m_window = std::make_unique<MainWindow>();
+    m_window->setRecoveryFolder(m_dir.filePath("recovery"));
     m_window->resize(800, 600);
     m_window->show();
     QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
@@ -104,7 +111,10 @@ void TestMainWindow::init() {
 }
 
 void TestMainWindow::cleanup() {
+    if (m_window)
+        m_window->document().undoStack()->setClean(); // nothing left to ask about when the window goes
     m_window.reset();
+    hs::widgets::CaseDocument::discardRecovery(m_dir.filePath("recovery"));
     QCOMPARE(MessageBox::takeRecorded().size(), 0); // no test leaves an unexpected message behind
 }
 
@@ -123,7 +133,7 @@ void TestMainWindow::opensFileChosenInFileDialog() {
     const QImage shown = viewImage();
     const int changed = hs::test::pixelsDifferentBetween(empty, shown);
     QVERIFY2(changed > shown.width() * shown.height() / 20, qPrintable(QString::number(changed)));
-    QVERIFY(m_window->windowTitle().contains("sphere.off"));
+    QVERIFY(m_window->windowTitle().startsWith("Untitled")); // the title names the case, not the mesh shown
 }
 
 void TestMainWindow::cancelledDialogKeepsWindowAsItWas() {
@@ -285,6 +295,101 @@ void TestMainWindow::closingSavesWindowGeometry() {
     QVERIFY(!QSettings().value("window/geometry").toByteArray().isEmpty());
     m_window = std::make_unique<MainWindow>();
     QCOMPARE(m_window->size(), QSize(700, 500));
+}
+
+void TestMainWindow::caseTitleShowsFileAndUnsavedMark() {
+    QCOMPARE(m_window->windowTitle(), QString("Untitled[*] - Hysteroscene"));
+    QVERIFY(!m_window->isWindowModified());
+    const QString path = fixture("authored.json");
+    FileDialog::setNextFileName(path);
+    find<QAction>("actionSaveCaseAs")->trigger();
+    QVERIFY(QFileInfo::exists(path));
+    QCOMPARE(m_window->windowTitle(), QString("authored.json[*] - Hysteroscene"));
+    m_window->document().edit("Seed", [](hs::scene::CaseSpec& c) { c.seed = 3; });
+    QVERIFY(m_window->isWindowModified());
+    find<QAction>("actionSaveCase")->trigger(); // to the same file, no dialog
+    QVERIFY(!m_window->isWindowModified());
+    auto reread = hs::scene::loadCase(path.toStdString());
+    QVERIFY(reread.ok());
+    QCOMPARE(reread->seed, std::uint64_t{3});
+    // Open Case reads it back; New Case starts untitled again.
+    m_window->document().newCase();
+    FileDialog::setNextFileName(path);
+    find<QAction>("actionOpenCase")->trigger();
+    QCOMPARE(m_window->document().spec().seed, std::uint64_t{3});
+    QCOMPARE(m_window->document().filePath(), QFileInfo(path).absoluteFilePath());
+    find<QAction>("actionNewCase")->trigger();
+    QVERIFY(m_window->document().filePath().isEmpty());
+}
+
+void TestMainWindow::undoAndRedoActionsFollowTheDocument() {
+    QAction* undo = find<QAction>("actionUndo");
+    QAction* redo = find<QAction>("actionRedo");
+    QVERIFY(undo && redo);
+    QVERIFY(!undo->isEnabled());
+    m_window->document().edit("Age", [](hs::scene::CaseSpec& c) { c.patient.ageYears = 41.0; });
+    QVERIFY(undo->isEnabled());
+    QVERIFY(undo->text().contains("Age"));
+    undo->trigger();
+    QCOMPARE(m_window->document().spec().patient.ageYears, 35.0);
+    QVERIFY(!m_window->isWindowModified());
+    QVERIFY(redo->isEnabled());
+    m_window->activateWindow();
+    QTRY_VERIFY(m_window->isActiveWindow());
+    QTest::keySequence(m_window.get(), QKeySequence::Redo);
+    QCOMPARE(m_window->document().spec().patient.ageYears, 41.0);
+}
+
+void TestMainWindow::closingWithUnsavedChangesAsks() {
+    m_window->document().edit("Age", [](hs::scene::CaseSpec& c) { c.patient.ageYears = 41.0; });
+    MessageBox::setNextAnswer(MessageBox::Choice::Cancel);
+    QVERIFY(!m_window->close());
+    QVERIFY(m_window->isVisible());
+    auto asked = MessageBox::takeRecorded();
+    QCOMPARE(asked.size(), 1);
+    QCOMPARE(asked.front().icon, MessageBox::Icon::Question);
+    QVERIFY(asked.front().text.contains("Untitled"));
+    MessageBox::setNextAnswer(MessageBox::Choice::Discard);
+    QVERIFY(m_window->close());
+    QCOMPARE(MessageBox::takeRecorded().size(), 1);
+}
+
+void TestMainWindow::savingAnInvalidCaseShowsTheFieldAndKeepsTheFile() {
+    const QString path = fixture("valid.json");
+    FileDialog::setNextFileName(path);
+    find<QAction>("actionSaveCaseAs")->trigger();
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QByteArray before = file.readAll();
+    file.close();
+    m_window->document().edit("Age", [](hs::scene::CaseSpec& c) { c.patient.ageYears = 300.0; });
+    find<QAction>("actionSaveCase")->trigger();
+    const auto shown = MessageBox::takeRecorded();
+    QCOMPARE(shown.size(), 1);
+    QCOMPARE(shown.front().icon, MessageBox::Icon::Critical);
+    QVERIFY(shown.front().details.contains("ageYears")); // the detail names the field
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QCOMPARE(file.readAll(), before);
+    QVERIFY(m_window->isWindowModified());
+}
+
+void TestMainWindow::autosaveIsOfferedBackAfterACrash() {
+    m_window->autosave(); // nothing unsaved: nothing written
+    QVERIFY(!hs::widgets::CaseDocument::findRecovery(m_window->recoveryFolder()).has_value());
+    m_window->document().edit("Age", [](hs::scene::CaseSpec& c) { c.patient.ageYears = 58.0; });
+    m_window->autosave();
+    QVERIFY(hs::widgets::CaseDocument::findRecovery(m_window->recoveryFolder()).has_value());
+    // The session ends without closing (a crash): the next window offers the case back.
+    m_window->document().undoStack()->setClean();
+    auto next = std::make_unique<MainWindow>();
+    next->setRecoveryFolder(m_window->recoveryFolder());
+    MessageBox::setNextAnswer(MessageBox::Choice::Yes);
+    next->offerRecovery();
+    QCOMPARE(MessageBox::takeRecorded().size(), 1);
+    QCOMPARE(next->document().spec().patient.ageYears, 58.0);
+    QVERIFY(next->isWindowModified());
+    QVERIFY(!hs::widgets::CaseDocument::findRecovery(next->recoveryFolder()).has_value());
+    next->document().undoStack()->setClean();
 }
 
 int main(int argc, char** argv) {

@@ -24,6 +24,16 @@ QString FileDialog::getOpenFileName(QWidget* parent, const QString& caption, con
     return QFileDialog::getOpenFileName(parent, caption, folder, filter);
 }
 
+QString FileDialog::getSaveFileName(QWidget* parent, const QString& caption, const QString& folder,
+                                    const QString& filter) {
+    if (std::optional<QString>& next = nextFileName(); next.has_value()) {
+        const QString answer = *next;
+        next.reset();
+        return answer;
+    }
+    return QFileDialog::getSaveFileName(parent, caption, folder, filter);
+}
+
 void FileDialog::setNextFileName(const QString& fileName) {
     nextFileName() = fileName;
 }

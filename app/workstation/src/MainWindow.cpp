@@ -14,6 +14,7 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QSettings>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QtConcurrent/QtConcurrentRun>
 
@@ -72,7 +73,7 @@ QString patternsOf(const QStringList& extensions) {
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setObjectName("mainWindow");
-    setWindowTitle(tr("Hysteroscene"));
+    m_recoveryFolder = QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).filePath("recovery");
 
     m_view = new widgets::VtkView(this);
     m_view->setObjectName("view");
@@ -90,6 +91,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     updateStatus();
 
     connect(&m_loadWatcher, &QFutureWatcher<LoadedMesh>::finished, this, &MainWindow::onLoadFinished);
+    connect(m_document.undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+    connect(&m_document, &widgets::CaseDocument::filePathChanged, this, &MainWindow::updateTitle);
+    connect(&m_document, &widgets::CaseDocument::changed, this, &MainWindow::updateTitle);
+    m_autosaveTimer.setInterval(kAutosaveMs);
+    connect(&m_autosaveTimer, &QTimer::timeout, this, &MainWindow::autosave);
+    m_autosaveTimer.start();
+    updateTitle();
     connect(m_view, &widgets::VtkView::picked, this, &MainWindow::onPicked);
 }
 
@@ -99,6 +107,35 @@ MainWindow::~MainWindow() {
 }
 
 void MainWindow::createActions() {
+    m_newCaseAction = new QAction(tr("&New Case"), this);
+    m_newCaseAction->setObjectName("actionNewCase");
+    m_newCaseAction->setShortcut(QKeySequence::New);
+    m_newCaseAction->setStatusTip(tr("Start a new case from the default patient"));
+    connect(m_newCaseAction, &QAction::triggered, this, &MainWindow::onNewCase);
+
+    m_openCaseAction = new QAction(tr("Open &Case..."), this);
+    m_openCaseAction->setObjectName("actionOpenCase");
+    m_openCaseAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O));
+    m_openCaseAction->setStatusTip(tr("Open a case file (case.json)"));
+    connect(m_openCaseAction, &QAction::triggered, this, &MainWindow::onOpenCase);
+
+    m_saveCaseAction = new QAction(tr("&Save Case"), this);
+    m_saveCaseAction->setObjectName("actionSaveCase");
+    m_saveCaseAction->setShortcut(QKeySequence::Save);
+    connect(m_saveCaseAction, &QAction::triggered, this, &MainWindow::onSaveCase);
+
+    m_saveCaseAsAction = new QAction(tr("Save Case &As..."), this);
+    m_saveCaseAsAction->setObjectName("actionSaveCaseAs");
+    m_saveCaseAsAction->setShortcut(QKeySequence::SaveAs);
+    connect(m_saveCaseAsAction, &QAction::triggered, this, &MainWindow::onSaveCaseAs);
+
+    m_undoAction = m_document.undoStack()->createUndoAction(this, tr("&Undo"));
+    m_undoAction->setObjectName("actionUndo");
+    m_undoAction->setShortcut(QKeySequence::Undo);
+    m_redoAction = m_document.undoStack()->createRedoAction(this, tr("&Redo"));
+    m_redoAction->setObjectName("actionRedo");
+    m_redoAction->setShortcut(QKeySequence::Redo);
+
     m_openAction = new QAction(tr("&Open..."), this);
     m_openAction->setObjectName("actionOpen");
     m_openAction->setShortcut(QKeySequence::Open);
@@ -137,11 +174,21 @@ void MainWindow::createActions() {
 void MainWindow::createMenus() {
     QMenu* fileMenu = menuBar()->addMenu(tr("&File"));
     fileMenu->setObjectName("menuFile");
+    fileMenu->addAction(m_newCaseAction);
+    fileMenu->addAction(m_openCaseAction);
+    fileMenu->addAction(m_saveCaseAction);
+    fileMenu->addAction(m_saveCaseAsAction);
+    fileMenu->addSeparator();
     fileMenu->addAction(m_openAction);
     m_recentMenu = fileMenu->addMenu(tr("Open &Recent"));
     m_recentMenu->setObjectName("menuRecent");
     fileMenu->addSeparator();
     fileMenu->addAction(m_quitAction);
+
+    QMenu* editMenu = menuBar()->addMenu(tr("&Edit"));
+    editMenu->setObjectName("menuEdit");
+    editMenu->addAction(m_undoAction);
+    editMenu->addAction(m_redoAction);
 
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     viewMenu->setObjectName("menuView");
@@ -188,8 +235,123 @@ void MainWindow::writeSettings() const {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
     writeSettings();
+    widgets::CaseDocument::discardRecovery(m_recoveryFolder); // a clean exit leaves nothing to recover
     event->accept();
+}
+
+// --- The case -----------------------------------------------------------------------------------------------------
+
+void MainWindow::updateTitle() {
+    setWindowTitle(m_document.windowTitle());
+    setWindowModified(m_document.isModified());
+}
+
+bool MainWindow::maybeSave() {
+    if (!m_document.isModified())
+        return true;
+    switch (MessageBox::askSaveDiscardCancel(
+        this, tr("Unsaved Changes"), tr("The case %1 has unsaved changes. Save them?").arg(m_document.displayName()))) {
+    case MessageBox::Choice::Save:
+        return onSaveCase();
+    case MessageBox::Choice::Discard:
+        return true;
+    default:
+        return false;
+    }
+}
+
+void MainWindow::showCaseError(const QString& title, const Error& error) {
+    QString text;
+    switch (error.code) {
+    case ErrorCode::NotFound:
+        text = tr("The case file does not exist.");
+        break;
+    case ErrorCode::IoError:
+        text = tr("The case file could not be read or written.");
+        break;
+    case ErrorCode::Unsupported:
+        text = tr("The case file is of a version this program does not read.");
+        break;
+    case ErrorCode::LimitExceeded:
+        text = tr("The case file is larger than this program accepts.");
+        break;
+    case ErrorCode::InvalidInput:
+        text = tr("The case is not valid: a value is outside its allowed range (see the details).");
+        break;
+    default:
+        text = tr("The case could not be opened or saved.");
+        break;
+    }
+    MessageBox::critical(this, title, text, QString::fromStdString(error.message()));
+}
+
+void MainWindow::onNewCase() {
+    if (maybeSave())
+        m_document.newCase();
+}
+
+void MainWindow::onOpenCase() {
+    if (!maybeSave())
+        return;
+    const QString path = FileDialog::getOpenFileName(this, tr("Open Case"), m_lastFolder,
+                                                     tr("Cases (*.json)") + QStringLiteral(";;") + tr("All files (*)"));
+    if (path.isEmpty())
+        return;
+    m_lastFolder = QFileInfo(path).absolutePath();
+    if (const Status opened = m_document.open(path); !opened)
+        showCaseError(tr("Open Case"), opened.error());
+}
+
+bool MainWindow::onSaveCase() {
+    if (m_document.filePath().isEmpty())
+        return onSaveCaseAs();
+    if (const Status saved = m_document.save(); !saved) {
+        showCaseError(tr("Save Case"), saved.error());
+        return false;
+    }
+    return true;
+}
+
+bool MainWindow::onSaveCaseAs() {
+    const QString path = FileDialog::getSaveFileName(this, tr("Save Case"), m_lastFolder,
+                                                     tr("Cases (*.json)") + QStringLiteral(";;") + tr("All files (*)"));
+    if (path.isEmpty())
+        return false;
+    m_lastFolder = QFileInfo(path).absolutePath();
+    if (const Status saved = m_document.saveAs(path); !saved) {
+        showCaseError(tr("Save Case"), saved.error());
+        return false;
+    }
+    return true;
+}
+
+void MainWindow::autosave() {
+    if (!m_document.isModified())
+        return;
+    if (const Status written = m_document.writeRecovery(m_recoveryFolder); !written)
+        statusBar()->showMessage(tr("Autosave failed: %1").arg(QString::fromStdString(written.error().message())));
+}
+
+void MainWindow::offerRecovery() {
+    const auto found = widgets::CaseDocument::findRecovery(m_recoveryFolder);
+    if (!found)
+        return;
+    const QString name = found->origin.isEmpty() ? tr("Untitled") : QFileInfo(found->origin).fileName();
+    if (MessageBox::askYesNo(
+            this, tr("Recover Unsaved Changes"),
+            tr("The last session ended with unsaved changes to the case %1. Recover them?").arg(name)) ==
+        MessageBox::Choice::Yes) {
+        if (const Status restored = m_document.restore(*found); !restored) {
+            showCaseError(tr("Recover Unsaved Changes"), restored.error());
+            return;
+        }
+    }
+    widgets::CaseDocument::discardRecovery(m_recoveryFolder);
 }
 
 bool MainWindow::saveScreenshot(const QString& path) {
@@ -261,7 +423,6 @@ void MainWindow::showMesh(const LoadedMesh& loaded) {
     m_clipAction->setEnabled(m_display->isTetMesh());
     onResetCamera();
     m_currentFile = loaded.path;
-    setWindowTitle(tr("%1 - Hysteroscene").arg(QFileInfo(loaded.path).fileName()));
     m_pickLabel->clear();
     addRecentFile(loaded.path);
     updateStatus();

@@ -2,6 +2,7 @@
 
 #include <QMessageBox>
 
+#include <optional>
 #include <utility>
 
 namespace hs::workstation {
@@ -10,6 +11,7 @@ namespace {
 struct Recorder {
     bool recording = false;
     QList<MessageBox::Message> messages;
+    std::optional<MessageBox::Choice> answer;
 };
 
 Recorder& recorder() {
@@ -35,9 +37,36 @@ void MessageBox::about(QWidget* parent, const QString& title, const QString& tex
     QMessageBox::about(parent, title, text);
 }
 
+MessageBox::Choice MessageBox::askSaveDiscardCancel(QWidget* parent, const QString& title, const QString& text) {
+    if (recorder().recording) {
+        recorder().messages.append({Icon::Question, title, text, {}});
+        return std::exchange(recorder().answer, std::nullopt).value_or(Choice::Cancel);
+    }
+    const auto answer = QMessageBox::warning(
+        parent, title, text, QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    return answer == QMessageBox::Save ? Choice::Save
+                                       : (answer == QMessageBox::Discard ? Choice::Discard : Choice::Cancel);
+}
+
+MessageBox::Choice MessageBox::askYesNo(QWidget* parent, const QString& title, const QString& text) {
+    if (recorder().recording) {
+        recorder().messages.append({Icon::Question, title, text, {}});
+        return std::exchange(recorder().answer, std::nullopt).value_or(Choice::No);
+    }
+    return QMessageBox::question(parent, title, text, QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes) ==
+                   QMessageBox::Yes
+               ? Choice::Yes
+               : Choice::No;
+}
+
 void MessageBox::setRecording(bool recording) {
     recorder().recording = recording;
     recorder().messages.clear();
+    recorder().answer.reset();
+}
+
+void MessageBox::setNextAnswer(Choice answer) {
+    recorder().answer = answer;
 }
 
 QList<MessageBox::Message> MessageBox::takeRecorded() {
@@ -59,6 +88,9 @@ void MessageBox::show(QWidget* parent, const Message& message) {
         break;
     case Icon::Critical:
         box.setIcon(QMessageBox::Critical);
+        break;
+    case Icon::Question:
+        box.setIcon(QMessageBox::Question);
         break;
     }
     box.setWindowTitle(message.title);

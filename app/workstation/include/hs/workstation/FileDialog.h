@@ -13,7 +13,11 @@ public:
     static QString getOpenFileName(QWidget* parent, const QString& caption, const QString& folder,
                                    const QString& filter);
 
-    /// Test seam: the next getOpenFileName returns `fileName` (empty: as if cancelled) without showing a dialog.
+    /// The file the user chose to save to, or an empty string when they cancelled.
+    static QString getSaveFileName(QWidget* parent, const QString& caption, const QString& folder,
+                                   const QString& filter);
+    /// Test seam: the next getOpenFileName or getSaveFileName returns `fileName` (empty: as if cancelled) without
+    /// showing a dialog.
     static void setNextFileName(const QString& fileName);
 };
 

@@ -1,15 +1,18 @@
 #pragma once
-/// The workstation's main window: a 3-D view of one mesh (surface or tetrahedral), File/View/Help menus, a status
-/// bar with the mesh's counts. Files load on a worker thread; the window keeps its mesh when a file fails to load.
+/// The workstation's main window: the case being authored (widgets::CaseDocument: New/Open/Save of case.json, undo,
+/// autosave and recovery), a 3-D view of one mesh (surface or tetrahedral), File/Edit/View/Help menus, a status bar
+/// with the mesh's counts. Meshes load on a worker thread; the window keeps its mesh when a file fails to load.
 
 #include "hs/core/Error.h"
 #include "hs/io/MeshIO.h"
+#include "hs/widgets/document/CaseDocument.h"
 #include "hs/widgets/view/VtkView.h"
 
 #include <QFutureWatcher>
 #include <QMainWindow>
 #include <QString>
 #include <QStringList>
+#include <QTimer>
 
 #include <memory>
 #include <optional>
@@ -52,6 +55,18 @@ public:
     /// Renders the whole window (menus, view, status bar) to an image file; false when it cannot be written.
     bool saveScreenshot(const QString& path);
 
+    widgets::CaseDocument& document() { return m_document; }
+    /// Where autosave writes the case being edited (default: the application's data folder, "recovery").
+    QString recoveryFolder() const { return m_recoveryFolder; }
+    void setRecoveryFolder(const QString& folder) { m_recoveryFolder = folder; }
+    /// Autosave interval (ms); the case is written only while it has unsaved changes.
+    static constexpr int kAutosaveMs = 60 * 1000;
+    /// Writes the recovery file now when the case has unsaved changes (what the autosave timer calls).
+    void autosave();
+    /// After a crash: when the recovery folder holds the unsaved case of the last session, asks whether to recover
+    /// it and restores it (or discards it). main() calls it once the window is shown.
+    void offerRecovery();
+
     widgets::VtkView* view() const { return m_view; }
     const widgets::MeshDisplay& display() const { return *m_display; }
 
@@ -63,6 +78,11 @@ protected:
     void closeEvent(QCloseEvent* event) override;
 
 private slots:
+    void onNewCase();
+    void onOpenCase();
+    bool onSaveCase();
+    bool onSaveCaseAs();
+    void updateTitle();
     void onOpen();
     void onOpenRecent();
     void onClearRecent();
@@ -78,6 +98,10 @@ private:
     void createStatusBar();
     void readSettings();
     void writeSettings() const;
+    /// Before the case is replaced or the window closes: true when there are no unsaved changes, or the user saved
+    /// or discarded them; false when they cancelled.
+    bool maybeSave();
+    void showCaseError(const QString& title, const Error& error);
     void showMesh(const LoadedMesh& loaded);
     void showLoadError(const QString& path, const Error& error);
     void addRecentFile(const QString& path);
@@ -93,6 +117,16 @@ private:
     QString m_lastFolder;
     QStringList m_recentFiles;
 
+    widgets::CaseDocument m_document;
+    QString m_recoveryFolder;
+    QTimer m_autosaveTimer;
+
+    QAction* m_newCaseAction = nullptr;
+    QAction* m_openCaseAction = nullptr;
+    QAction* m_saveCaseAction = nullptr;
+    QAction* m_saveCaseAsAction = nullptr;
+    QAction* m_undoAction = nullptr;
+    QAction* m_redoAction = nullptr;
     QAction* m_openAction = nullptr;
     QAction* m_quitAction = nullptr;
     QAction* m_clipAction = nullptr;
