@@ -242,6 +242,10 @@
         <source>The last session ended with unsaved changes to the case %1. Recover them?</source>
         <translation>Die letzte Sitzung endete mit ungespeicherten Änderungen am Fall %1. Wiederherstellen?</translation>
     </message>
+    <message>
+        <source>Recen&amp;t Cases</source>
+        <translation>Zule&amp;tzt verwendete Fälle</translation>
+    </message>
 </context>
 <context>
     <name>main</name>

@@ -242,6 +242,10 @@
         <source>The last session ended with unsaved changes to the case %1. Recover them?</source>
         <translation>La dernière session s&apos;est terminée avec des modifications non enregistrées du cas %1. Les récupérer ?</translation>
     </message>
+    <message>
+        <source>Recen&amp;t Cases</source>
+        <translation>Cas récen&amp;ts</translation>
+    </message>
 </context>
 <context>
     <name>main</name>

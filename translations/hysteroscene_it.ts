@@ -242,6 +242,10 @@
         <source>The last session ended with unsaved changes to the case %1. Recover them?</source>
         <translation>L&apos;ultima sessione si è chiusa con modifiche non salvate al caso %1. Recuperarle?</translation>
     </message>
+    <message>
+        <source>Recen&amp;t Cases</source>
+        <translation>Casi recen&amp;ti</translation>
+    </message>
 </context>
 <context>
     <name>main</name>

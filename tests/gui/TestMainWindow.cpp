@@ -320,6 +320,13 @@ void TestMainWindow::caseTitleShowsFileAndUnsavedMark() {
     QCOMPARE(m_window->document().filePath(), QFileInfo(path).absoluteFilePath());
     find<QAction>("actionNewCase")->trigger();
     QVERIFY(m_window->document().filePath().isEmpty());
+    // Saved and opened cases are listed under Open Recent Case, and open from there (in the next session too).
+    m_window = std::make_unique<MainWindow>();
+    auto* recent = find<QAction>("recentCase0");
+    QVERIFY(recent);
+    QCOMPARE(recent->text(), QString("&1 authored.json"));
+    recent->trigger();
+    QCOMPARE(m_window->document().filePath(), QFileInfo(path).absoluteFilePath());
 }
 
 void TestMainWindow::undoAndRedoActionsFollowTheDocument() {

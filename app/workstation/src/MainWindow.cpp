@@ -88,6 +88,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     createStatusBar();
     readSettings();
     rebuildRecentMenu();
+    rebuildRecentCasesMenu();
     updateStatus();
 
     connect(&m_loadWatcher, &QFutureWatcher<LoadedMesh>::finished, this, &MainWindow::onLoadFinished);
@@ -176,6 +177,8 @@ void MainWindow::createMenus() {
     fileMenu->setObjectName("menuFile");
     fileMenu->addAction(m_newCaseAction);
     fileMenu->addAction(m_openCaseAction);
+    m_recentCasesMenu = fileMenu->addMenu(tr("Recen&t Cases"));
+    m_recentCasesMenu->setObjectName("menuRecentCases");
     fileMenu->addAction(m_saveCaseAction);
     fileMenu->addAction(m_saveCaseAsAction);
     fileMenu->addSeparator();
@@ -303,8 +306,37 @@ void MainWindow::onOpenCase() {
     if (path.isEmpty())
         return;
     m_lastFolder = QFileInfo(path).absolutePath();
-    if (const Status opened = m_document.open(path); !opened)
+    openCase(path);
+}
+
+void MainWindow::onOpenRecentCase() {
+    const auto* action = qobject_cast<QAction*>(sender());
+    if (action && maybeSave())
+        openCase(action->data().toString());
+}
+
+void MainWindow::openCase(const QString& path) {
+    if (const Status opened = m_document.open(path); !opened) {
         showCaseError(tr("Open Case"), opened.error());
+        return;
+    }
+    QSettings settings;
+    widgets::addRecentFile(settings, m_document.filePath());
+    rebuildRecentCasesMenu();
+}
+
+void MainWindow::rebuildRecentCasesMenu() {
+    m_recentCasesMenu->clear();
+    const QStringList cases = widgets::recentFiles(QSettings());
+    for (int i = 0; i < cases.size(); ++i) {
+        QAction* action =
+            m_recentCasesMenu->addAction(QStringLiteral("&%1 %2").arg(i + 1).arg(QFileInfo(cases.at(i)).fileName()));
+        action->setObjectName(QStringLiteral("recentCase%1").arg(i));
+        action->setData(cases.at(i));
+        action->setStatusTip(QDir::toNativeSeparators(cases.at(i)));
+        connect(action, &QAction::triggered, this, &MainWindow::onOpenRecentCase);
+    }
+    m_recentCasesMenu->setEnabled(!cases.isEmpty());
 }
 
 bool MainWindow::onSaveCase() {
@@ -327,6 +359,9 @@ bool MainWindow::onSaveCaseAs() {
         showCaseError(tr("Save Case"), saved.error());
         return false;
     }
+    QSettings settings;
+    widgets::addRecentFile(settings, m_document.filePath());
+    rebuildRecentCasesMenu();
     return true;
 }
 

@@ -154,7 +154,7 @@ Status CaseDocument::restore(const Recovery& recovery) {
 }
 
 QStringList recentFiles(const QSettings& settings) {
-    QStringList files = settings.value("recentFiles").toStringList();
+    QStringList files = settings.value(kRecentCasesKey).toStringList();
     files.removeDuplicates();
     while (files.size() > kMaxRecentFiles)
         files.removeLast();
@@ -168,7 +168,7 @@ void addRecentFile(QSettings& settings, const QString& path) {
     files.prepend(absolute);
     while (files.size() > kMaxRecentFiles)
         files.removeLast();
-    settings.setValue("recentFiles", files);
+    settings.setValue(kRecentCasesKey, files);
 }
 
 } // namespace hs::widgets

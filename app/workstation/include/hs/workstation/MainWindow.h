@@ -80,6 +80,7 @@ protected:
 private slots:
     void onNewCase();
     void onOpenCase();
+    void onOpenRecentCase();
     bool onSaveCase();
     bool onSaveCaseAs();
     void updateTitle();
@@ -102,6 +103,9 @@ private:
     /// or discarded them; false when they cancelled.
     bool maybeSave();
     void showCaseError(const QString& title, const Error& error);
+    /// Opens `path` as the case (after maybeSave) and lists it among the recent cases.
+    void openCase(const QString& path);
+    void rebuildRecentCasesMenu();
     void showMesh(const LoadedMesh& loaded);
     void showLoadError(const QString& path, const Error& error);
     void addRecentFile(const QString& path);
@@ -134,6 +138,7 @@ private:
     QAction* m_aboutAction = nullptr;
     QAction* m_clearRecentAction = nullptr;
     QMenu* m_recentMenu = nullptr;
+    QMenu* m_recentCasesMenu = nullptr;
     QLabel* m_fileLabel = nullptr;
     QLabel* m_countsLabel = nullptr;
     QLabel* m_pickLabel = nullptr;

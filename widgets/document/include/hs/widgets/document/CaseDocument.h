@@ -81,7 +81,8 @@ private:
     QUndoStack m_undo;
 };
 
-/// Recently used case files in QSettings ("recentFiles"), newest first, at most kMaxRecentFiles, each once.
+/// Recently used case files in QSettings (kRecentCasesKey), newest first, at most kMaxRecentFiles, each once.
+inline constexpr const char* kRecentCasesKey = "cases/recent";
 inline constexpr int kMaxRecentFiles = 8;
 QStringList recentFiles(const QSettings& settings);
 void addRecentFile(QSettings& settings, const QString& path);
