@@ -326,7 +326,17 @@ void TestMainWindow::caseTitleShowsFileAndUnsavedMark() {
     QVERIFY(recent);
     QCOMPARE(recent->text(), QString("&1 authored.json"));
     recent->trigger();
-    QCOMPARE(m_window->document().filePath(), QFileInfo(path).absoluteFilePath());
+    QTRY_COMPARE(m_window->document().filePath(), QFileInfo(path).absoluteFilePath());
+    // A case that is gone says so and is dropped from the list, as a mesh is.
+    m_window->document().newCase();
+    QVERIFY(QFile::remove(path));
+    find<QAction>("recentCase0")->trigger();
+    QTRY_VERIFY(!find<QAction>("recentCase0"));
+    const auto shown = MessageBox::takeRecorded();
+    QCOMPARE(shown.size(), 1);
+    QCOMPARE(shown.front().icon, MessageBox::Icon::Critical);
+    QVERIFY(!find<QAction>("recentCase0"));
+    QVERIFY(m_window->document().filePath().isEmpty());
 }
 
 void TestMainWindow::undoAndRedoActionsFollowTheDocument() {

@@ -178,13 +178,16 @@ void TestCaseDocument::recentFilesNewestFirstEachOnce() {
     QTemporaryDir dir;
     QSettings settings(dir.filePath("settings.ini"), QSettings::IniFormat);
     for (int i = 0; i < 10; ++i)
-        hs::widgets::addRecentFile(settings, dir.filePath(QString("case-%1.json").arg(i)));
-    hs::widgets::addRecentFile(settings, dir.filePath("case-5.json"));
-    const QStringList recent = hs::widgets::recentFiles(settings);
+        hs::widgets::addRecentFile(settings, hs::widgets::kRecentCasesKey,
+                                   dir.filePath(QString("case-%1.json").arg(i)));
+    hs::widgets::addRecentFile(settings, hs::widgets::kRecentCasesKey, dir.filePath("case-5.json"));
+    const QStringList recent = hs::widgets::recentFiles(settings, hs::widgets::kRecentCasesKey);
     QCOMPARE(recent.size(), hs::widgets::kMaxRecentFiles);
     QVERIFY(recent.front().endsWith("case-5.json"));
     QVERIFY(recent.at(1).endsWith("case-9.json"));
     QCOMPARE(recent.filter("case-5.json").size(), 1);
+    hs::widgets::removeRecentFile(settings, hs::widgets::kRecentCasesKey, dir.filePath("case-9.json"));
+    QCOMPARE(hs::widgets::recentFiles(settings, hs::widgets::kRecentCasesKey).filter("case-9.json").size(), 0);
 }
 
 QTEST_GUILESS_MAIN(TestCaseDocument)

@@ -223,9 +223,6 @@ void MainWindow::readSettings() {
     if (!restoreGeometry(settings.value(kGeometryKey).toByteArray()))
         resize(1100, 760);
     restoreState(settings.value(kStateKey).toByteArray());
-    m_recentFiles = settings.value(kRecentFilesKey).toStringList();
-    while (m_recentFiles.size() > kMaxRecentFiles)
-        m_recentFiles.removeLast();
     m_lastFolder = settings.value(kLastFolderKey, QDir::homePath()).toString();
 }
 
@@ -233,7 +230,6 @@ void MainWindow::writeSettings() const {
     QSettings settings;
     settings.setValue(kGeometryKey, saveGeometry());
     settings.setValue(kStateKey, saveState());
-    settings.setValue(kRecentFilesKey, m_recentFiles);
     settings.setValue(kLastFolderKey, m_lastFolder);
 }
 
@@ -311,31 +307,29 @@ void MainWindow::onOpenCase() {
 
 void MainWindow::onOpenRecentCase() {
     const auto* action = qobject_cast<QAction*>(sender());
-    if (action && maybeSave())
-        openCase(action->data().toString());
+    if (!action || !maybeSave())
+        return;
+    // Opening rebuilds this menu, which deletes the action that is still delivering its signal: open right after.
+    QMetaObject::invokeMethod(
+        this, [this, path = action->data().toString()] { openCase(path); }, Qt::QueuedConnection);
 }
 
 void MainWindow::openCase(const QString& path) {
+    QSettings settings;
     if (const Status opened = m_document.open(path); !opened) {
+        if (opened.error().code == ErrorCode::NotFound)
+            widgets::removeRecentFile(settings, widgets::kRecentCasesKey, path);
+        rebuildRecentCasesMenu();
         showCaseError(tr("Open Case"), opened.error());
         return;
     }
-    QSettings settings;
-    widgets::addRecentFile(settings, m_document.filePath());
+    widgets::addRecentFile(settings, widgets::kRecentCasesKey, m_document.filePath());
     rebuildRecentCasesMenu();
 }
 
 void MainWindow::rebuildRecentCasesMenu() {
-    m_recentCasesMenu->clear();
-    const QStringList cases = widgets::recentFiles(QSettings());
-    for (int i = 0; i < cases.size(); ++i) {
-        QAction* action =
-            m_recentCasesMenu->addAction(QStringLiteral("&%1 %2").arg(i + 1).arg(QFileInfo(cases.at(i)).fileName()));
-        action->setObjectName(QStringLiteral("recentCase%1").arg(i));
-        action->setData(cases.at(i));
-        action->setStatusTip(QDir::toNativeSeparators(cases.at(i)));
-        connect(action, &QAction::triggered, this, &MainWindow::onOpenRecentCase);
-    }
+    const QStringList cases = widgets::recentFiles(QSettings(), widgets::kRecentCasesKey);
+    fillRecentMenu(m_recentCasesMenu, cases, QStringLiteral("recentCase"), &MainWindow::onOpenRecentCase);
     m_recentCasesMenu->setEnabled(!cases.isEmpty());
 }
 
@@ -360,7 +354,7 @@ bool MainWindow::onSaveCaseAs() {
         return false;
     }
     QSettings settings;
-    widgets::addRecentFile(settings, m_document.filePath());
+    widgets::addRecentFile(settings, widgets::kRecentCasesKey, m_document.filePath());
     rebuildRecentCasesMenu();
     return true;
 }
@@ -492,35 +486,41 @@ void MainWindow::showLoadError(const QString& path, const Error& error) {
 
 // --- Recent files -------------------------------------------------------------------------------------------------
 
+QStringList MainWindow::recentFiles() const {
+    return widgets::recentFiles(QSettings(), kRecentFilesKey);
+}
+
 void MainWindow::addRecentFile(const QString& path) {
-    m_recentFiles.removeAll(path);
-    m_recentFiles.prepend(path);
-    while (m_recentFiles.size() > kMaxRecentFiles)
-        m_recentFiles.removeLast();
-    QSettings().setValue(kRecentFilesKey, m_recentFiles);
+    QSettings settings;
+    widgets::addRecentFile(settings, kRecentFilesKey, path);
     rebuildRecentMenu();
 }
 
 void MainWindow::removeRecentFile(const QString& path) {
-    if (m_recentFiles.removeAll(path) == 0)
-        return;
-    QSettings().setValue(kRecentFilesKey, m_recentFiles);
+    QSettings settings;
+    widgets::removeRecentFile(settings, kRecentFilesKey, path);
     rebuildRecentMenu();
 }
 
-void MainWindow::rebuildRecentMenu() {
-    m_recentMenu->clear();
-    for (int i = 0; i < m_recentFiles.size(); ++i) {
-        const QString& path = m_recentFiles.at(i);
-        QAction* action = m_recentMenu->addAction(QStringLiteral("&%1 %2").arg(i + 1).arg(QFileInfo(path).fileName()));
-        action->setObjectName(QStringLiteral("recentFile%1").arg(i));
+void MainWindow::fillRecentMenu(QMenu* menu, const QStringList& files, const QString& prefix,
+                                void (MainWindow::*slot)()) {
+    menu->clear();
+    for (int i = 0; i < files.size(); ++i) {
+        const QString& path = files.at(i);
+        QAction* action = menu->addAction(QStringLiteral("&%1 %2").arg(i + 1).arg(QFileInfo(path).fileName()));
+        action->setObjectName(prefix + QString::number(i));
         action->setData(path);
         action->setToolTip(QDir::toNativeSeparators(path));
-        connect(action, &QAction::triggered, this, &MainWindow::onOpenRecent);
+        connect(action, &QAction::triggered, this, slot);
     }
+}
+
+void MainWindow::rebuildRecentMenu() {
+    const QStringList files = recentFiles();
+    fillRecentMenu(m_recentMenu, files, QStringLiteral("recentFile"), &MainWindow::onOpenRecent);
     m_recentMenu->addSeparator();
     m_recentMenu->addAction(m_clearRecentAction);
-    m_clearRecentAction->setEnabled(!m_recentFiles.isEmpty());
+    m_clearRecentAction->setEnabled(!files.isEmpty());
 }
 
 void MainWindow::onOpenRecent() {
@@ -529,8 +529,7 @@ void MainWindow::onOpenRecent() {
 }
 
 void MainWindow::onClearRecent() {
-    m_recentFiles.clear();
-    QSettings().setValue(kRecentFilesKey, m_recentFiles);
+    QSettings().remove(kRecentFilesKey);
     rebuildRecentMenu();
 }
 

@@ -153,22 +153,28 @@ Status CaseDocument::restore(const Recovery& recovery) {
     return {};
 }
 
-QStringList recentFiles(const QSettings& settings) {
-    QStringList files = settings.value(kRecentCasesKey).toStringList();
+QStringList recentFiles(const QSettings& settings, const QString& key) {
+    QStringList files = settings.value(key).toStringList();
     files.removeDuplicates();
     while (files.size() > kMaxRecentFiles)
         files.removeLast();
     return files;
 }
 
-void addRecentFile(QSettings& settings, const QString& path) {
-    QStringList files = recentFiles(settings);
+void addRecentFile(QSettings& settings, const QString& key, const QString& path) {
+    QStringList files = recentFiles(settings, key);
     const QString absolute = QFileInfo(path).absoluteFilePath();
     files.removeAll(absolute);
     files.prepend(absolute);
     while (files.size() > kMaxRecentFiles)
         files.removeLast();
-    settings.setValue(kRecentCasesKey, files);
+    settings.setValue(key, files);
+}
+
+void removeRecentFile(QSettings& settings, const QString& key, const QString& path) {
+    QStringList files = recentFiles(settings, key);
+    if (files.removeAll(QFileInfo(path).absoluteFilePath()) > 0)
+        settings.setValue(key, files);
 }
 
 } // namespace hs::widgets

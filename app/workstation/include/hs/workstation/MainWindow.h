@@ -39,9 +39,6 @@ class MainWindow : public QMainWindow {
     Q_OBJECT
 
 public:
-    /// How many files File > Open Recent lists.
-    static constexpr int kMaxRecentFiles = 8;
-
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
@@ -50,7 +47,8 @@ public:
     bool isLoading() const;
     /// The file shown now; empty before the first successful load.
     QString currentFile() const { return m_currentFile; }
-    QStringList recentFiles() const { return m_recentFiles; }
+    /// File > Open Recent's meshes, newest first (at most widgets::kMaxRecentFiles).
+    QStringList recentFiles() const;
 
     /// Renders the whole window (menus, view, status bar) to an image file; false when it cannot be written.
     bool saveScreenshot(const QString& path);
@@ -105,6 +103,8 @@ private:
     void showCaseError(const QString& title, const Error& error);
     /// Opens `path` as the case (after maybeSave) and lists it among the recent cases.
     void openCase(const QString& path);
+    /// Fills `menu` with one action per file ("&1 name", object names prefix0, prefix1, ...) that calls `slot`.
+    void fillRecentMenu(QMenu* menu, const QStringList& files, const QString& prefix, void (MainWindow::*slot)());
     void rebuildRecentCasesMenu();
     void showMesh(const LoadedMesh& loaded);
     void showLoadError(const QString& path, const Error& error);
@@ -119,7 +119,6 @@ private:
     QFutureWatcher<LoadedMesh> m_loadWatcher;
     QString m_currentFile;
     QString m_lastFolder;
-    QStringList m_recentFiles;
 
     widgets::CaseDocument m_document;
     QString m_recoveryFolder;

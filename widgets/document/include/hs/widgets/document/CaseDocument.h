@@ -81,10 +81,13 @@ private:
     QUndoStack m_undo;
 };
 
-/// Recently used case files in QSettings (kRecentCasesKey), newest first, at most kMaxRecentFiles, each once.
+/// A list of recently used files in QSettings under `key` (absolute paths), newest first, at most kMaxRecentFiles,
+/// each once: the recent cases (kRecentCasesKey) and the window's recent meshes keep theirs so.
 inline constexpr const char* kRecentCasesKey = "cases/recent";
 inline constexpr int kMaxRecentFiles = 8;
-QStringList recentFiles(const QSettings& settings);
-void addRecentFile(QSettings& settings, const QString& path);
+QStringList recentFiles(const QSettings& settings, const QString& key);
+void addRecentFile(QSettings& settings, const QString& key, const QString& path);
+/// Drops `path` from the list (a file that no longer exists).
+void removeRecentFile(QSettings& settings, const QString& key, const QString& path);
 
 } // namespace hs::widgets
