@@ -215,10 +215,9 @@ int runGenerate(const GenerateOptions& options) {
     std::vector<VariantReport> reports(n);
     for (std::size_t i = 0; i < n; ++i) {
         reports[i].index = static_cast<int>(i);
-        reports[i].seed = n == 1 ? baseSeed : generate::variantSeed(baseSeed, i);
-        char name[32];
-        std::snprintf(name, sizeof name, "variant-%03zu", i);
-        reports[i].folder = n == 1 ? options.output : (std::filesystem::path(options.output) / name).string();
+        reports[i].seed = generate::exportSeed(baseSeed, i, n);
+        reports[i].folder =
+            n == 1 ? options.output : (std::filesystem::path(options.output) / generate::variantFolderName(i)).string();
     }
     { // the folder that will hold the package (or the variants)
         std::error_code ec;

@@ -23,6 +23,18 @@ constexpr double kAtrophyFloor = 0.45;
 /// AP diameter falls about 22 % across the menopause (2 years before to 2 years after).
 constexpr double kMenopauseApFactor = 0.78;
 
+// ---- Natural variation around the relations (SD, mm, at the reference size named; scaled with the organ) ----
+// Chosen so that the population spread matches the published SDs and 95 % ranges once the spread of ages and
+// parities is added (see docs/anatomy.md).
+constexpr double kCervixLengthSd = 2.8;   ///< mm at a 30 mm cervix
+constexpr double kCervixDiameterSd = 2.2; ///< mm at 29 mm
+constexpr double kCavityLengthSd = 2.0;   ///< mm, before atrophy
+constexpr double kCavityWidthSd = 2.2;    ///< mm, before atrophy; the organ's width follows it
+constexpr double kCavityDepthSd = 1.2;    ///< mm, before atrophy
+constexpr double kFundalWallSd = 1.2;     ///< mm at 12 mm
+constexpr double kWidthSd = 2.2;          ///< mm at 45 mm, besides the cavity's share
+constexpr double kApDepthSd = 3.5;        ///< mm at 40 mm
+
 double truncatedNormal(Rng& rng, double mean, double sd, double lo, double hi) {
     for (int i = 0; i < 64; ++i) {
         const double v = rng.normal(mean, sd);
@@ -150,6 +162,26 @@ UterusShapeParams expectedShape(const clinical::PatientParams& patient) {
     return relations(patient, kMenopauseMean).mean;
 }
 
+ExpectedDimensions expectedDimensions(const clinical::PatientParams& patient) {
+    const Relations r = relations(patient, kMenopauseMean);
+    const auto& m = r.mean;
+    const double shrink = atrophy(r.yearsPost, 1.0);
+    const double cervixSd = kCervixLengthSd * m.cervixLengthMm / 30.0;
+    const double cavityLengthSd = kCavityLengthSd * shrink;
+    const double cavityWidthSd = kCavityWidthSd * shrink;
+    const double fundalSd = kFundalWallSd * m.fundalWallMm / 12.0;
+    const double widthOwnSd = kWidthSd * m.widthMm / 45.0;
+    ExpectedDimensions e;
+    e.lengthMm = {m.lengthMm, std::sqrt(cervixSd * cervixSd + cavityLengthSd * cavityLengthSd + fundalSd * fundalSd)};
+    e.widthMm = {m.widthMm, std::sqrt(cavityWidthSd * cavityWidthSd + widthOwnSd * widthOwnSd)};
+    e.apDepthMm = {m.apDepthMm, kApDepthSd * m.apDepthMm / 40.0};
+    e.cavityLengthMm = {m.cavityLengthMm, cavityLengthSd};
+    e.cavityWidthMm = {m.cavityWidthMm, cavityWidthSd};
+    e.fundalWallMm = {m.fundalWallMm, fundalSd};
+    e.cervixLengthMm = {m.cervixLengthMm, cervixSd};
+    return e;
+}
+
 UterusShapeParams sampleShape(const clinical::PatientParams& patient, double menopauseAgeYears, Rng& rng) {
     const Relations r = relations(patient, menopauseAgeYears);
     UterusShapeParams s = r.mean;
@@ -158,19 +190,19 @@ UterusShapeParams sampleShape(const clinical::PatientParams& patient, double men
     // 95 % ranges once the spread of ages and parities is added (see docs/anatomy.md). The variation is
     // proportional to size (a constant coefficient of variation), so small atrophic organs vary less in mm.
     const auto& m = r.mean;
-    s.cervixLengthMm += rng.normal(0.0, 2.8) * m.cervixLengthMm / 30.0;
-    s.cervixDiameterMm += rng.normal(0.0, 2.2) * m.cervixDiameterMm / 29.0;
-    const double cavityWidthNoise = rng.normal(0.0, 2.2) * shrink;
-    s.cavityLengthMm += rng.normal(0.0, 2.0) * shrink;
+    s.cervixLengthMm += rng.normal(0.0, kCervixLengthSd) * m.cervixLengthMm / 30.0;
+    s.cervixDiameterMm += rng.normal(0.0, kCervixDiameterSd) * m.cervixDiameterMm / 29.0;
+    const double cavityWidthNoise = rng.normal(0.0, kCavityWidthSd) * shrink;
+    s.cavityLengthMm += rng.normal(0.0, kCavityLengthSd) * shrink;
     s.cavityWidthMm += cavityWidthNoise;
-    s.cavityDepthMm = std::max(2.0, s.cavityDepthMm + rng.normal(0.0, 1.2) * shrink);
+    s.cavityDepthMm = std::max(2.0, s.cavityDepthMm + rng.normal(0.0, kCavityDepthSd) * shrink);
     // The canal narrows with the atrophy after menopause, like the cavity.
     s.internalOsWidthMm = truncatedNormal(rng, 7.5, 1.75, 4.0, 11.0) * shrink;
     s.cornualAngleDeg = truncatedNormal(rng, 63.5, 12.3, 35.0, 92.0);
-    s.fundalWallMm = std::max(6.0, s.fundalWallMm + rng.normal(0.0, 1.2) * m.fundalWallMm / 12.0);
+    s.fundalWallMm = std::max(6.0, s.fundalWallMm + rng.normal(0.0, kFundalWallSd) * m.fundalWallMm / 12.0);
     // A wider cavity comes with a wider organ.
-    s.widthMm += cavityWidthNoise + rng.normal(0.0, 2.2) * m.widthMm / 45.0;
-    s.apDepthMm += rng.normal(0.0, 3.5) * m.apDepthMm / 40.0;
+    s.widthMm += cavityWidthNoise + rng.normal(0.0, kWidthSd) * m.widthMm / 45.0;
+    s.apDepthMm += rng.normal(0.0, kApDepthSd) * m.apDepthMm / 40.0;
     // Version and flexion: anteverted-anteflexed is most common, about 20 % are retroverted (UTERUS.md).
     const bool retroverted = rng.bernoulli(0.2);
     s.versionDeg =

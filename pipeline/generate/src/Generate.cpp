@@ -145,8 +145,9 @@ void clearFrom(Stage from, Generated& g) {
     g.scene.reset();
 }
 
-/// Runs `from` and the stages after it; the results of the stages before it must be set.
-Status runFrom(Stage from, Generated& g, const GenerateParams& params, Progress& progress) {
+/// Runs `from` through `last`; the results of the stages before `from` must be set. The results after `last` are
+/// cleared: they were made from the stages that rerun.
+Status runFrom(Stage from, Stage last, Generated& g, const GenerateParams& params, Progress& progress) {
     if (auto issues = scene::checkCase(g.spec); !issues.empty()) {
         std::string detail;
         for (const auto& issue : issues)
@@ -158,8 +159,9 @@ Status runFrom(Stage from, Generated& g, const GenerateParams& params, Progress&
     g.timings = {};
     // The stages that run share the whole range: a rerun from the texture goes from 0 to 1 too.
     const double first = kStageStart[indexOf(from)];
-    const auto scaled = [first](double f) { return first < 1.0 ? (f - first) / (1.0 - first) : 1.0; };
-    for (auto i = indexOf(from); i < static_cast<std::size_t>(kStageCount); ++i) {
+    const double end = kStageStart[indexOf(last) + 1];
+    const auto scaled = [first, end](double f) { return first < end ? (f - first) / (end - first) : 1.0; };
+    for (auto i = indexOf(from); i <= indexOf(last); ++i) {
         const auto stage = static_cast<Stage>(i);
         HS_TRY(progress.check("generation"));
         auto sub = progress.sub(scaled(kStageStart[i]), scaled(kStageStart[i + 1]));
@@ -197,7 +199,7 @@ bool Generated::has(Stage stage) const {
 Result<Generated> generateScene(const scene::CaseSpec& spec, const GenerateParams& params, Progress& progress) {
     Generated g;
     g.spec = spec;
-    HS_TRY(runFrom(Stage::Organ, g, params, progress));
+    HS_TRY(runFrom(Stage::Organ, Stage::Scene, g, params, progress));
     return g;
 }
 
@@ -247,7 +249,29 @@ Result<Generated> regenerateFrom(Stage from, Generated previous, const scene::Ca
                                                      std::string(toString(static_cast<Stage>(i))) +
                                                      " stage, which the previous run does not have");
     previous.spec = edited;
-    HS_TRY(runFrom(from, previous, params, progress));
+    HS_TRY(runFrom(from, Stage::Scene, previous, params, progress));
+    return previous;
+}
+
+Result<Generated> updateThrough(Stage last, Generated previous, const scene::CaseSpec& edited,
+                                const GenerateParams& params, Progress& progress) {
+    // The first stage to run: the earliest one the edit touches or whose result is missing.
+    const auto change = firstChangedStage(previous.spec, edited);
+    std::size_t from = change ? indexOf(change->stage) : static_cast<std::size_t>(kStageCount);
+    for (std::size_t i = 0; i < from; ++i)
+        if (!previous.has(static_cast<Stage>(i))) {
+            from = i;
+            break;
+        }
+    previous.spec = edited;
+    if (from > indexOf(last)) {
+        // Nothing through `last` to rerun; what the edit touches after it is no longer valid.
+        if (change)
+            clearFrom(change->stage, previous);
+        progress.report(toString(last), 1.0);
+        return previous;
+    }
+    HS_TRY(runFrom(static_cast<Stage>(from), last, previous, params, progress));
     return previous;
 }
 

@@ -3,6 +3,7 @@
 #include "hs/core/Rng.h"
 
 #include <array>
+#include <cstdio>
 
 namespace hs::generate {
 namespace {
@@ -35,6 +36,16 @@ std::uint64_t streamSeed(std::uint64_t caseSeed, Stream stream) {
 
 std::uint64_t variantSeed(std::uint64_t baseSeed, std::size_t index) {
     return Rng::deriveSeed(baseSeed, kVariantStreamBase + static_cast<std::uint64_t>(index));
+}
+
+std::string variantFolderName(std::size_t index) {
+    char name[32];
+    std::snprintf(name, sizeof name, "variant-%03zu", index);
+    return name;
+}
+
+std::uint64_t exportSeed(std::uint64_t baseSeed, std::size_t index, std::size_t count) {
+    return count == 1 ? baseSeed : variantSeed(baseSeed, index);
 }
 
 } // namespace hs::generate

@@ -234,4 +234,30 @@ QualityReport measureQuality(const TetMesh& mesh, const RegionModel* reference, 
     return report;
 }
 
+std::vector<TetShape> tetShapes(const TetMesh& mesh, int threads) {
+    std::vector<TetShape> shapes(mesh.tets.size());
+    parallelChunks(mesh.tets.size(), kChunk, threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+        for (std::size_t t = begin; t < end; ++t) {
+            const Tet& tet = mesh.tets[t];
+            shapes[t] =
+                tetShape(mesh.points[static_cast<std::size_t>(tet[0])], mesh.points[static_cast<std::size_t>(tet[1])],
+                         mesh.points[static_cast<std::size_t>(tet[2])], mesh.points[static_cast<std::size_t>(tet[3])]);
+        }
+    });
+    return shapes;
+}
+
+std::vector<std::size_t> worstTets(const std::vector<double>& value, std::size_t count) {
+    std::vector<std::size_t> order(value.size());
+    for (std::size_t i = 0; i < order.size(); ++i)
+        order[i] = i;
+    count = std::min(count, order.size());
+    const auto less = [&](std::size_t a, std::size_t b) {
+        return value[a] < value[b] || (value[a] == value[b] && a < b);
+    };
+    std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(count), order.end(), less);
+    order.resize(count);
+    return order;
+}
+
 } // namespace hs::meshing

@@ -5,8 +5,10 @@
 #include "Measure.h"
 #include "PathologySteps.h"
 
+#include "hs/clinical/Tissue.h"
 #include "hs/core/RegionModel.h"
 #include "hs/core/Rng.h"
+#include "hs/core/TriangleGeometry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -267,6 +269,43 @@ Result<PathologyResult> growPathologies(const SurfaceMesh& organ, const Patholog
     }
     progress.report("pathology.measure", 1.0);
     return result;
+}
+
+Result<clinical::SurfacePlacement> seatAt(const SurfaceMesh& organ, const Vec3& pointMm, clinical::PathologyKind kind,
+                                          double toleranceMm) {
+    if (!std::isfinite(pointMm.x) || !std::isfinite(pointMm.y) || !std::isfinite(pointMm.z))
+        return fail(ErrorCode::InvalidInput, "the picked point is not finite");
+    // The face under the point: the closest one (a pick lies on a face up to rounding, and the view may show the
+    // surface cut or re-triangulated, so its cell ids are not the organ's).
+    std::size_t face = organ.triangles.size();
+    double best = toleranceMm * toleranceMm;
+    for (std::size_t f = 0; f < organ.triangles.size(); ++f) {
+        const Triangle& t = organ.triangles[f];
+        const ClosestPoint c = closestPointOnTriangle(pointMm, organ.points[static_cast<std::size_t>(t[0])],
+                                                      organ.points[static_cast<std::size_t>(t[1])],
+                                                      organ.points[static_cast<std::size_t>(t[2])]);
+        if (c.distance2 <= best) {
+            best = c.distance2;
+            face = f;
+        }
+    }
+    if (face == organ.triangles.size())
+        return fail(ErrorCode::InvalidInput,
+                    "the point lies more than " + std::to_string(toleranceMm) + " mm from the organ's surface");
+    const Vec3 normal = faceNormal(organ, face);
+    if (norm(normal) == 0.0)
+        return fail(ErrorCode::InvalidInput, "face " + std::to_string(face) + " of the organ has no area");
+    const auto labels = organ.faceLabels.find(clinical::kSurfaceTissueLabel);
+    if (labels != organ.faceLabels.end() && face < labels->second.size()) {
+        const auto tissue = static_cast<clinical::SurfaceTissue>(labels->second[face]);
+        if (tissue == clinical::SurfaceTissue::CervicalCanal || tissue == clinical::SurfaceTissue::Ectocervix)
+            return fail(ErrorCode::Unsupported, "the point lies on the " + std::string(clinical::toString(tissue)) +
+                                                    ": cervical pathologies are not modelled");
+        if (kind == clinical::PathologyKind::Polyp && tissue == clinical::SurfaceTissue::Serosa)
+            return fail(ErrorCode::InvalidInput, "the point lies on the serosa: a polyp grows from the endometrium "
+                                                 "into the cavity");
+    }
+    return clinical::SurfacePlacement{pointMm, normal};
 }
 
 } // namespace hs::pathology

@@ -21,31 +21,6 @@ using nlohmann::json;
 
 constexpr std::size_t kMaxReportedIssues = 20;
 
-/// Deepest nesting of arrays and objects, scanned before parsing so that "[[[[..." never reaches the parser.
-int nestingDepth(std::string_view text) {
-    int depth = 0;
-    int deepest = 0;
-    bool inString = false;
-    bool escaped = false;
-    for (const char c : text) {
-        if (inString) {
-            if (escaped)
-                escaped = false;
-            else if (c == '\\')
-                escaped = true;
-            else if (c == '"')
-                inString = false;
-        } else if (c == '"') {
-            inString = true;
-        } else if (c == '[' || c == '{') {
-            deepest = std::max(deepest, ++depth);
-        } else if (c == ']' || c == '}') {
-            --depth;
-        }
-    }
-    return deepest;
-}
-
 /// Follows the parser's events to know the JSON path of each key: records keys repeated within one object
 /// (nlohmann keeps the last silently; a case file must not be ambiguous) and tells where a syntax error happened.
 class ParseTracker {

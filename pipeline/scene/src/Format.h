@@ -14,6 +14,9 @@ std::string formatNumber(double value);
 std::string formatRange(const Range& range);
 /// "\"text\"" with quotes and backslashes escaped, control characters as \uXXXX, long text cut at 60 bytes.
 std::string quoteText(std::string_view text);
+/// Deepest nesting of arrays and objects in JSON text, scanned before parsing so that "[[[[..." never reaches the
+/// parser.
+int nestingDepth(std::string_view text);
 /// Escapes one reference token of a JSON pointer ("~" -> "~0", "/" -> "~1", RFC 6901).
 std::string escapePointerToken(std::string_view token);
 

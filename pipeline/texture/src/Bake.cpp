@@ -35,16 +35,20 @@ Result<ImageU8> exemplarFor(const BakeParams& params, Appearance cls) {
     const std::string& file = params.exemplarFiles[static_cast<std::size_t>(cls)];
     if (file.empty())
         return makeExemplar(cls, 256, Rng::deriveSeed(params.seed, 100 + static_cast<std::uint64_t>(cls)));
-    ImageReadLimits limits;
-    limits.minSide = SynthesisParams::kMinExemplarSide;
-    limits.maxSide = SynthesisParams::kMaxExemplarSide;
-    auto image = readImageRgb8(file, limits);
+    auto image = readExemplarFile(file);
     if (!image.ok())
         return fail(image.error().code, appearanceName(cls) + " exemplar: " + image.error().detail);
     return image;
 }
 
 } // namespace
+
+Result<ImageU8> readExemplarFile(const std::string& path) {
+    ImageReadLimits limits;
+    limits.minSide = SynthesisParams::kMinExemplarSide;
+    limits.maxSide = SynthesisParams::kMaxExemplarSide;
+    return readImageRgb8(path, limits);
+}
 
 std::vector<Appearance> classifyFaces(const SurfaceMesh& surface, const AppearanceLabels& labels) {
     std::vector<Appearance> out(surface.triangles.size(), Appearance::Endometrium);

@@ -132,3 +132,32 @@ TEST(Morphometry, SampledGroupsMatchThePublishedMeansAndRanges) {
         std::printf("%-34s %-18s sampled %7.2f  published %7.2f +- %.2f\n", id.c_str(), name.c_str(), mean, target, sd);
     }
 }
+
+TEST(Morphometry, ExpectedDimensionsHoldNinetyFivePercentOfSampledShapes) {
+    // The 95 % range the workstation shows beside a patient's organ: sampled shapes of that patient fall in it.
+    PatientParams patient; // the default 35-year-old primipara
+    const ExpectedDimensions e = expectedDimensions(patient);
+    EXPECT_DOUBLE_EQ(e.cavityLengthMm.mean, expectedShape(patient).cavityLengthMm);
+    hs::Rng rng(7);
+    int inside = 0, total = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const UterusShapeParams s = sampleShape(patient, 51.0, rng);
+        for (const auto& [value, range] :
+             {std::pair{s.lengthMm, e.lengthMm}, std::pair{s.widthMm, e.widthMm}, std::pair{s.apDepthMm, e.apDepthMm},
+              std::pair{s.cavityLengthMm, e.cavityLengthMm}, std::pair{s.cavityWidthMm, e.cavityWidthMm},
+              std::pair{s.cervixLengthMm, e.cervixLengthMm}}) {
+            inside += value >= range.low() && value <= range.high();
+            ++total;
+        }
+    }
+    const double share = double(inside) / total;
+    EXPECT_GT(share, 0.93);
+    EXPECT_LT(share, 0.97);
+
+    // A postmenopausal patient's ranges are smaller.
+    PatientParams old = patient;
+    old.ageYears = 75.0;
+    old.menopausal = true;
+    old.cyclePhase.reset();
+    EXPECT_LT(expectedDimensions(old).lengthMm.high(), e.lengthMm.mean);
+}

@@ -158,6 +158,42 @@ TEST(Generate, RefusesToRegenerateWithoutTheEarlierResults) {
     EXPECT_NE(refused.error().detail.find("organ"), std::string::npos) << refused.error().detail;
 }
 
+TEST(Generate, UpdatingThroughAStageRunsOnlyFromTheEditAndClearsWhatFollows) {
+    // From nothing, through the merge: the first three stages run, nothing after them.
+    Generated empty;
+    empty.spec = lightCase();
+    auto merged = updateThrough(Stage::Merge, empty, lightCase());
+    ASSERT_TRUE(merged.ok()) << merged.error().message();
+    ASSERT_EQ(merged->timings.steps.size(), 3u);
+    EXPECT_TRUE(merged->has(Stage::Merge));
+    EXPECT_FALSE(merged->has(Stage::Meshing));
+    EXPECT_EQ(merged->body->body.surfaces[0].surface.points, baseRun().body->body.surfaces[0].surface.points);
+
+    // Up to date through the organ: nothing runs and the later results stay.
+    auto same = updateThrough(Stage::Organ, baseRun(), lightCase());
+    ASSERT_TRUE(same.ok()) << same.error().message();
+    EXPECT_TRUE(same->has(Stage::Scene));
+
+    // A texture edit, updated through the meshing: nothing runs, but the texture and scene are gone.
+    scene::CaseSpec edited = lightCase();
+    edited.texture.sizePx = 128;
+    auto meshed = updateThrough(Stage::Meshing, baseRun(), edited);
+    ASSERT_TRUE(meshed.ok()) << meshed.error().message();
+    EXPECT_TRUE(meshed->has(Stage::Tissue));
+    EXPECT_FALSE(meshed->has(Stage::Texture));
+    EXPECT_FALSE(meshed->has(Stage::Scene));
+    EXPECT_EQ(meshed->spec, edited);
+
+    // A pathology edit, through the pathology stage: only it runs, the organ is the previous one.
+    edited = lightCase();
+    edited.pathologies[0].sizeMm = 22.0;
+    auto grown = updateThrough(Stage::Pathology, baseRun(), edited);
+    ASSERT_TRUE(grown.ok()) << grown.error().message();
+    ASSERT_EQ(grown->timings.steps.size(), 1u);
+    EXPECT_EQ(grown->timings.steps[0].name, "pathology");
+    EXPECT_FALSE(grown->has(Stage::Merge));
+}
+
 TEST(Generate, FirstChangedStageNamesTheEarliestStageAndField) {
     const scene::CaseSpec a = lightCase();
     EXPECT_FALSE(firstChangedStage(a, a).has_value());

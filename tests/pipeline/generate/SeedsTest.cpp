@@ -52,3 +52,10 @@ TEST(Seeds, VariantSeedsAreAFunctionOfTheBaseSeedAndIndex) {
     EXPECT_NE(variantSeed(7, 3), variantSeed(8, 3));
     EXPECT_NE(variantSeed(7, 3), variantSeed(7, 4));
 }
+
+TEST(Seeds, ExportsNameVariantFoldersAndKeepTheBaseSeedForOne) {
+    EXPECT_EQ(variantFolderName(7), "variant-007");
+    EXPECT_EQ(variantFolderName(1234), "variant-1234");
+    EXPECT_EQ(exportSeed(42, 0, 1), 42u);
+    EXPECT_EQ(exportSeed(42, 3, 5), variantSeed(42, 3));
+}

@@ -116,3 +116,25 @@ TEST(QualityReport, MeasuresHausdorffAndVolumeAgainstTheReference) {
     EXPECT_NEAR(q.regions[0].inputVolume, 1.0, 1e-12);
     EXPECT_NEAR(q.boundingBoxDiagonal, std::sqrt(3.0), 1e-12);
 }
+
+TEST(QualityReport, ListsEveryTetsShapeAndTheWorstFirst) {
+    // A regular tet and a flattened one: the flat one is the worst, and the histogram agrees with the shapes.
+    TetMesh mesh;
+    mesh.points = {{0, 0, 0},
+                   {1, 0, 0},
+                   {0.5, std::sqrt(3.0) / 2.0, 0},
+                   {0.5, std::sqrt(3.0) / 6.0, std::sqrt(2.0 / 3.0)},
+                   {0.5, std::sqrt(3.0) / 6.0, 0.05}};
+    mesh.tets = {{0, 1, 2, 3}, {0, 1, 2, 4}};
+    for (int threads : {1, 2}) {
+        const std::vector<TetShape> shapes = tetShapes(mesh, threads);
+        ASSERT_EQ(shapes.size(), 2u);
+        EXPECT_NEAR(shapes[0].radiusRatio, 1.0, 1e-9);
+        EXPECT_LT(shapes[1].radiusRatio, 0.5);
+        const std::vector<double> ratios{shapes[0].radiusRatio, shapes[1].radiusRatio};
+        EXPECT_EQ(worstTets(ratios, 5), (std::vector<std::size_t>{1, 0}));
+        EXPECT_EQ(worstTets(ratios, 1), (std::vector<std::size_t>{1}));
+    }
+    const QualityReport report = measureQuality(mesh);
+    EXPECT_EQ(report.radiusRatioHistogram[9], 1u);
+}

@@ -436,3 +436,40 @@ TEST(Pathology, MeasuresAHeadThatRestsOnAWallFromItsStalksRoot) {
 
 } // namespace
 } // namespace hs::pathology
+
+namespace hs::pathology {
+
+TEST(Pathology, SeatsAClickOnTheWallAndRefusesTheCervixAPolypOnTheSerosaAndAMiss) {
+    const SurfaceMesh organ = test::testOrgan(3);
+    const auto& tissue = organ.faceLabels.at(clinical::kSurfaceTissueLabel);
+    const auto faceOf = [&](clinical::SurfaceTissue t) {
+        return static_cast<std::size_t>(std::find(tissue.begin(), tissue.end(), clinical::labelValue(t)) -
+                                        tissue.begin());
+    };
+    const auto centre = [&](std::size_t f) {
+        const Triangle& t = organ.triangles[f];
+        return (organ.points[static_cast<std::size_t>(t[0])] + organ.points[static_cast<std::size_t>(t[1])] +
+                organ.points[static_cast<std::size_t>(t[2])]) /
+               3.0;
+    };
+    const std::size_t wall = faceOf(clinical::SurfaceTissue::Endometrium);
+    auto seat = seatAt(organ, centre(wall), clinical::PathologyKind::Polyp);
+    ASSERT_TRUE(seat.ok()) << seat.error().message();
+    EXPECT_EQ(seat->pointMm, centre(wall));
+    EXPECT_NEAR(norm(seat->normal), 1.0, 1e-9);
+
+    const std::size_t serosa = faceOf(clinical::SurfaceTissue::Serosa);
+    EXPECT_TRUE(seatAt(organ, centre(serosa), clinical::PathologyKind::Myoma).ok());
+    auto polypOutside = seatAt(organ, centre(serosa), clinical::PathologyKind::Polyp);
+    ASSERT_FALSE(polypOutside.ok());
+    EXPECT_NE(polypOutside.error().detail.find("serosa"), std::string::npos);
+
+    const std::size_t canal = faceOf(clinical::SurfaceTissue::CervicalCanal);
+    auto cervix = seatAt(organ, centre(canal), clinical::PathologyKind::Myoma);
+    ASSERT_FALSE(cervix.ok());
+    EXPECT_EQ(cervix.error().code, ErrorCode::Unsupported);
+    // A click beside the organ seats nothing.
+    EXPECT_FALSE(seatAt(organ, centre(serosa) + faceNormal(organ, serosa) * 3.0, clinical::PathologyKind::Myoma).ok());
+}
+
+} // namespace hs::pathology

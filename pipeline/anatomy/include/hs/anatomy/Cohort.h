@@ -58,6 +58,28 @@ clinical::PatientParams sampleSupportedPatient(Rng& rng);
 /// population's mean flexion; menopause assumed at 51 years). The reference of the conditioning error.
 UterusShapeParams expectedShape(const clinical::PatientParams& patient);
 
+/// A dimension as the published relations expect it for a patient: the mean and the standard deviation of the
+/// natural variation around it (mm). mean +- 1.96 sd is the patient's 95 % range.
+struct ExpectedDimension {
+    double mean = 0.0;
+    double sd = 0.0;
+    double low() const { return mean - 1.96 * sd; }
+    double high() const { return mean + 1.96 * sd; }
+};
+
+/// The clinical dimensions of a patient's uterus by the published relations, with the spread of the natural
+/// variation that sampleShape() draws (menopause assumed at 51 years, as expectedShape()).
+struct ExpectedDimensions {
+    ExpectedDimension lengthMm;
+    ExpectedDimension widthMm;
+    ExpectedDimension apDepthMm;
+    ExpectedDimension cavityLengthMm;
+    ExpectedDimension cavityWidthMm;
+    ExpectedDimension fundalWallMm;
+    ExpectedDimension cervixLengthMm;
+};
+ExpectedDimensions expectedDimensions(const clinical::PatientParams& patient);
+
 /// A shape for a patient: the relations plus natural variation.
 UterusShapeParams sampleShape(const clinical::PatientParams& patient, double menopauseAgeYears, Rng& rng);
 

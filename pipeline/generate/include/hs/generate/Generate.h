@@ -73,4 +73,11 @@ std::optional<CaseChange> firstChangedStage(const scene::CaseSpec& before, const
                                                const GenerateParams& params = {},
                                                Progress& progress = Progress::none());
 
+/// Brings `previous` up to date with `edited` through stage `last`, as an editor does: runs the earliest stage whose
+/// inputs the edit changed or whose result is missing, and every stage after it through `last`; the results after
+/// `last` are then cleared (they came from the old inputs). Runs nothing when the results through `last` are
+/// already those of `edited` (the later ones are kept). The results equal those of generateScene(edited).
+[[nodiscard]] Result<Generated> updateThrough(Stage last, Generated previous, const scene::CaseSpec& edited,
+                                              const GenerateParams& params = {}, Progress& progress = Progress::none());
+
 } // namespace hs::generate

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <string_view>
 
 namespace hs::generate {
@@ -39,5 +40,9 @@ inline constexpr std::uint64_t kVariantStreamBase = std::uint64_t{1} << 62;
 
 /// The seed of variant `index` of a case whose seed is `baseSeed` (`Rng::deriveSeed(baseSeed, 2^62 + index)`).
 std::uint64_t variantSeed(std::uint64_t baseSeed, std::size_t index);
+/// The folder name of variant `index` among several ("variant-007"): the CLI's and the workstation's exports agree.
+std::string variantFolderName(std::size_t index);
+/// The seed of variant `index` of `count` variants: the base seed itself when there is only one.
+std::uint64_t exportSeed(std::uint64_t baseSeed, std::size_t index, std::size_t count);
 
 } // namespace hs::generate

@@ -4,6 +4,7 @@
 
 #include "hs/core/RegionModel.h"
 #include "hs/core/TetMesh.h"
+#include "hs/meshing/Geometry.h"
 
 #include <array>
 #include <cstddef>
@@ -53,6 +54,14 @@ struct QualityReport {
 /// errors against the enclosed volumes of the reference (RegionModel semantics: the innermost surface decides).
 /// Runs on `threads` threads (0: hardware concurrency); the result does not depend on the thread count.
 QualityReport measureQuality(const TetMesh& mesh, const RegionModel* reference = nullptr, int threads = 0);
+
+/// The shape of every tet (what measureQuality summarises), for an inspector that colours or lists tets. Runs on
+/// `threads` threads (0: hardware concurrency); the result does not depend on the thread count.
+std::vector<TetShape> tetShapes(const TetMesh& mesh, int threads = 0);
+
+/// The indices of the `count` tets with the smallest `value` (e.g. the radius ratios of tetShapes), smallest first,
+/// ties by index.
+std::vector<std::size_t> worstTets(const std::vector<double>& value, std::size_t count);
 
 /// Volume enclosed per region id by a region model (void regions are left out), mm^3.
 std::vector<RegionVolume> inputRegionVolumes(const RegionModel& model);

@@ -95,6 +95,14 @@ struct PathologyResult {
 [[nodiscard]] Result<PathologyResult> growPathologies(const SurfaceMesh& organ, const PathologyParams& params,
                                                       Progress& progress = Progress::none());
 
+/// Where a click at `pointMm` on `organ` (the organ the case's patient, anatomy and seed give, as a 3-D view shows
+/// it) seats a pathology of `kind`: the point and the outward normal of the organ's face under it (the closest face
+/// within `toleranceMm`). Refuses, naming the tissue, the cervix (Unsupported: cervical pathologies are not
+/// modelled) and, for a polyp, the serosa (a polyp grows from the endometrium); InvalidInput for a point off the
+/// organ or not finite.
+[[nodiscard]] Result<clinical::SurfacePlacement> seatAt(const SurfaceMesh& organ, const Vec3& pointMm,
+                                                        clinical::PathologyKind kind, double toleranceMm = 0.5);
+
 /// Measures one pathology against an organ (the displaced organ of a PathologyResult). `root`: where it grows from
 /// when known (GrownPathology::anchor), so a head that also rests on a wall is measured from its stalk's root
 /// (WallContact::root). Fails with InvalidInput for an open surface.

@@ -88,6 +88,10 @@ struct BakeResult {
 /// Which class each face is, from the labels (see above).
 std::vector<Appearance> classifyFaces(const SurfaceMesh& surface, const AppearanceLabels& labels);
 
+/// An exemplar image file as the texture stage reads it: 8-bit RGB, each side within the synthesis' exemplar limits
+/// (SynthesisParams::kMinExemplarSide..kMaxExemplarSide). Errors name the file and the allowed range.
+[[nodiscard]] Result<ImageU8> readExemplarFile(const std::string& path);
+
 /// Bakes the maps of `surface`. Fails with InvalidInput for an invalid or empty surface or an unreadable exemplar
 /// (naming the file), LimitExceeded for sizes out of range (naming the parameter), Cancelled on request.
 [[nodiscard]] Result<BakeResult> bakeAppearance(const SurfaceMesh& surface, const BakeParams& params,
