@@ -7,8 +7,8 @@ set -euo pipefail
 packages=(
     # toolchain
     build-essential cmake ninja-build pkg-config git
-    # Qt 6 (Widgets, OpenGLWidgets, Concurrent, Test, LinguistTools)
-    qt6-base-dev qt6-base-dev-tools qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
+    # Qt 6 (Widgets, OpenGLWidgets, Concurrent, Test, LinguistTools, Charts)
+    qt6-base-dev qt6-base-dev-tools qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-charts-dev
     libqt6opengl6-dev libgl-dev libglx-dev
     # VTK 9.1 (core modules only; the Qt view is the project's own widget)
     libvtk9-dev

@@ -2,6 +2,69 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de">
 <context>
+    <name>hs::widgets</name>
+    <message>
+        <source>Gravidity counts every pregnancy, so it cannot be less than the parity.</source>
+        <translation>Die Gravidität zählt jede Schwangerschaft und kann daher nicht kleiner als die Parität sein.</translation>
+    </message>
+    <message>
+        <source>A postmenopausal patient is at least 40 years old, a premenopausal one at most 60.</source>
+        <translation>Eine postmenopausale Patientin ist mindestens 40 Jahre alt, eine prämenopausale höchstens 60.</translation>
+    </message>
+    <message>
+        <source>Only a premenopausal patient has a cycle phase.</source>
+        <translation>Nur eine prämenopausale Patientin hat eine Zyklusphase.</translation>
+    </message>
+    <message>
+        <source>The cavity must be shorter than the uterus.</source>
+        <translation>Das Cavum muss kürzer sein als der Uterus.</translation>
+    </message>
+    <message>
+        <source>The cavity must be narrower than the uterus.</source>
+        <translation>Das Cavum muss schmaler sein als der Uterus.</translation>
+    </message>
+    <message>
+        <source>Myomas are 5 – 100 mm, polyps 3 – 40 mm in size.</source>
+        <translation>Myome sind 5 – 100 mm groß, Polypen 3 – 40 mm.</translation>
+    </message>
+    <message>
+        <source>A case holds at most %1 pathologies.</source>
+        <translation>Ein Fall enthält höchstens %1 Pathologien.</translation>
+    </message>
+    <message>
+        <source>This value is not allowed here (%1).</source>
+        <translation>Dieser Wert ist hier nicht zulässig (%1).</translation>
+    </message>
+    <message>
+        <source>An id is 1 – 32 letters, digits, &apos;-&apos; or &apos;_&apos;, starts with a letter or digit, and is unique in the case.</source>
+        <translation>Eine Kennung besteht aus 1 – 32 Buchstaben, Ziffern, &apos;-&apos; oder &apos;_&apos;, beginnt mit einem Buchstaben oder einer Ziffer und ist im Fall eindeutig.</translation>
+    </message>
+    <message>
+        <source>Young&apos;s modulus must be in the range %1.</source>
+        <translation>Der Elastizitätsmodul muss im Bereich %1 liegen.</translation>
+    </message>
+    <message>
+        <source>The Poisson ratio must be in the range %1.</source>
+        <translation>Die Poissonzahl muss im Bereich %1 liegen.</translation>
+    </message>
+    <message>
+        <source>The density must be in the range %1.</source>
+        <translation>Die Dichte muss im Bereich %1 liegen.</translation>
+    </message>
+    <message>
+        <source>The heterogeneity must be in the range %1.</source>
+        <translation>Die Heterogenität muss im Bereich %1 liegen.</translation>
+    </message>
+    <message>
+        <source>The hydrometra pressure must be in the range %1.</source>
+        <translation>Der Hydrometra-Druck muss im Bereich %1 liegen.</translation>
+    </message>
+    <message>
+        <source>%1 must be in the range %2.</source>
+        <translation>%1 muss im Bereich %2 liegen.</translation>
+    </message>
+</context>
+<context>
     <name>hs::widgets::CaseDocument</name>
     <message>
         <source>Untitled</source>
@@ -14,6 +77,1392 @@
     <message>
         <source>%1[*] - Hysteroscene</source>
         <translation>%1[*] - Hysteroscene</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::CaseEdits</name>
+    <message>
+        <source>Age</source>
+        <translation>Alter</translation>
+    </message>
+    <message>
+        <source>years</source>
+        <translation>Jahre</translation>
+    </message>
+    <message>
+        <source>Parity</source>
+        <translation>Parität</translation>
+    </message>
+    <message>
+        <source>births</source>
+        <translation>Geburten</translation>
+    </message>
+    <message>
+        <source>Gravidity</source>
+        <translation>Gravidität</translation>
+    </message>
+    <message>
+        <source>pregnancies</source>
+        <translation>Schwangerschaften</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Körpergröße</translation>
+    </message>
+    <message>
+        <source>Weight</source>
+        <translation>Gewicht</translation>
+    </message>
+    <message>
+        <source>Uterine length</source>
+        <translation>Uteruslänge</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Breite</translation>
+    </message>
+    <message>
+        <source>AP depth</source>
+        <translation>AP-Tiefe</translation>
+    </message>
+    <message>
+        <source>Cavity length</source>
+        <translation>Cavumlänge</translation>
+    </message>
+    <message>
+        <source>Cavity width</source>
+        <translation>Cavumbreite</translation>
+    </message>
+    <message>
+        <source>Cervix length</source>
+        <translation>Zervixlänge</translation>
+    </message>
+    <message>
+        <source>Stalk length</source>
+        <translation>Stiellänge</translation>
+    </message>
+    <message>
+        <source>Target vertices</source>
+        <translation>Zielanzahl Eckpunkte</translation>
+    </message>
+    <message>
+        <source>Vessel density</source>
+        <translation>Gefäßdichte</translation>
+    </message>
+    <message>
+        <source>Fundal wall thickness</source>
+        <translation>Dicke der Funduswand</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::ExportPanel</name>
+    <message>
+        <source>Scene package</source>
+        <translation>Szenenpaket</translation>
+    </message>
+    <message>
+        <source>Folder of the package</source>
+        <translation>Ordner des Pakets</translation>
+    </message>
+    <message>
+        <source>The package is written to this folder (created; an existing package is replaced)</source>
+        <translation>Das Paket wird in diesen Ordner geschrieben (er wird angelegt; ein vorhandenes Paket wird ersetzt)</translation>
+    </message>
+    <message>
+        <source>&amp;Browse...</source>
+        <translation>&amp;Durchsuchen...</translation>
+    </message>
+    <message>
+        <source>&amp;Folder</source>
+        <translation>&amp;Ordner</translation>
+    </message>
+    <message>
+        <source>Also as a .zip</source>
+        <translation>Auch als .zip</translation>
+    </message>
+    <message>
+        <source>More than one: a new patient of the same description per variant, each in folder/variant-NNN with its own seed</source>
+        <translation>Mehr als eine: pro Variante eine neue Patientin mit derselben Beschreibung, jeweils in Ordner/variant-NNN mit eigenem Startwert</translation>
+    </message>
+    <message>
+        <source>&amp;Variants</source>
+        <translation>&amp;Varianten</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>&amp;Exportieren</translation>
+    </message>
+    <message>
+        <source>Run what is not current, write the package and validate it (Ctrl+E)</source>
+        <translation>Nicht aktuelle Schritte ausführen, das Paket schreiben und validieren (Ctrl+E)</translation>
+    </message>
+    <message>
+        <source>Open in &amp;Simulator</source>
+        <translation>Im &amp;Simulator öffnen</translation>
+    </message>
+    <message>
+        <source>The preview simulator is not installed with this workstation</source>
+        <translation>Der Vorschau-Simulator ist mit dieser Arbeitsstation nicht installiert</translation>
+    </message>
+    <message>
+        <source>Start the preview simulator on the exported package</source>
+        <translation>Den Vorschau-Simulator mit dem exportierten Paket starten</translation>
+    </message>
+    <message>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;Choose a folder for the package first.&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;Zuerst einen Ordner für das Paket wählen.&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>Exporting...</source>
+        <translation>Export läuft...</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;: valid, %2 files with matching checksums (seed %3).</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;: gültig, %2 Dateien mit übereinstimmenden Prüfsummen (Startwert %3).</translation>
+    </message>
+    <message>
+        <source>Zipped as %1.</source>
+        <translation>Als %1 gezippt.</translation>
+    </message>
+    <message>
+        <source>The scope&apos;s passage could not be checked.</source>
+        <translation>Der Durchgang des Hysteroskops konnte nicht geprüft werden.</translation>
+    </message>
+    <message>
+        <source>A 2.9 mm scope reaches the fundus (narrowest %1 mm).</source>
+        <translation>Ein 2,9-mm-Hysteroskop erreicht den Fundus (engste Stelle %1 mm).</translation>
+    </message>
+    <message>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;A 2.9 mm scope does not reach the fundus (narrowest %1 mm).&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;Ein 2,9-mm-Hysteroskop erreicht den Fundus nicht (engste Stelle %1 mm).&lt;/span&gt;</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s) in scene.json.</source>
+        <translation>
+            <numerusform>%n Warnung in scene.json.</numerusform>
+            <numerusform>%n Warnungen in scene.json.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The simulator could not be started.&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;Der Simulator konnte nicht gestartet werden.&lt;/span&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::GenerationSession</name>
+    <message>
+        <source>Building the organ</source>
+        <translation>Organ wird aufgebaut</translation>
+    </message>
+    <message>
+        <source>Growing the pathologies</source>
+        <translation>Pathologien wachsen</translation>
+    </message>
+    <message>
+        <source>Merging the body</source>
+        <translation>Körper wird vereinigt</translation>
+    </message>
+    <message>
+        <source>Meshing</source>
+        <translation>Vernetzung</translation>
+    </message>
+    <message>
+        <source>Texturing</source>
+        <translation>Texturierung</translation>
+    </message>
+    <message>
+        <source>Assembling the scene</source>
+        <translation>Szene wird zusammengestellt</translation>
+    </message>
+    <message>
+        <source>Exporting the scene</source>
+        <translation>Szene wird exportiert</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::HysteroscopicPreview</name>
+    <message>
+        <source>How far the scope&apos;s tip is beyond the external os (mm)</source>
+        <translation>Wie weit die Spitze des Hysteroskops über den äußeren Muttermund hinaus eingeführt ist (mm)</translation>
+    </message>
+    <message>
+        <source>&amp;Insertion</source>
+        <translation>&amp;Einführtiefe</translation>
+    </message>
+    <message>
+        <source>%1°</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <source>The optic&apos;s angle off the shaft; office scopes are typically 30°</source>
+        <translation>Winkel der Optik zur Schaftachse; Office-Hysteroskope haben meist 30°</translation>
+    </message>
+    <message>
+        <source>&amp;Optic</source>
+        <translation>&amp;Optik</translation>
+    </message>
+    <message>
+        <source>The light post&apos;s rotation about the shaft (degrees; 0 looks anterior)</source>
+        <translation>Drehung des Lichtleiteranschlusses um den Schaft (Grad; 0 blickt nach anterior)</translation>
+    </message>
+    <message>
+        <source>&amp;Roll</source>
+        <translation>&amp;Drehung</translation>
+    </message>
+    <message>
+        <source>Texture the case to see the cavity.</source>
+        <translation>Den Fall texturieren, um das Cavum zu sehen.</translation>
+    </message>
+    <message>
+        <source>This scene has no cervical canal or ostium labels: the scope cannot be placed.</source>
+        <translation>Diese Szene hat keine Markierungen für Zervikalkanal oder Muttermund: Das Hysteroskop kann nicht platziert werden.</translation>
+    </message>
+    <message>
+        <source>Tip %1 mm beyond the external os, %2 optic, roll %3°</source>
+        <translation>Spitze %1 mm hinter dem äußeren Muttermund, Optik %2, Drehung %3°</translation>
+    </message>
+    <message>
+        <source>Looking at region %1 from %2 mm inside the cavity</source>
+        <translation>Blick auf Region %1 aus %2 mm Abstand innerhalb des Cavums</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::JobRunner</name>
+    <message>
+        <source>The case asks for something the pipeline cannot make: a value is outside its allowed range or a pathology does not fit (see the details).</source>
+        <translation>Der Fall verlangt etwas, das die Pipeline nicht erzeugen kann: Ein Wert liegt außerhalb seines zulässigen Bereichs oder eine Pathologie passt nicht hinein (siehe Details).</translation>
+    </message>
+    <message>
+        <source>A file the case names does not exist.</source>
+        <translation>Eine im Fall genannte Datei existiert nicht.</translation>
+    </message>
+    <message>
+        <source>A file could not be read or written.</source>
+        <translation>Eine Datei konnte nicht gelesen oder geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>The case asks for something this version does not support.</source>
+        <translation>Der Fall verlangt etwas, das diese Version nicht unterstützt.</translation>
+    </message>
+    <message>
+        <source>The result would be larger than this program accepts.</source>
+        <translation>Das Ergebnis wäre größer, als dieses Programm zulässt.</translation>
+    </message>
+    <message>
+        <source>The job was cancelled.</source>
+        <translation>Der Auftrag wurde abgebrochen.</translation>
+    </message>
+    <message>
+        <source>A geometry or image library failed on this case.</source>
+        <translation>Eine Geometrie- oder Bildbibliothek ist bei diesem Fall fehlgeschlagen.</translation>
+    </message>
+    <message>
+        <source>An internal error stopped the job.</source>
+        <translation>Ein interner Fehler hat den Auftrag angehalten.</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::JobStatusWidget</name>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Stop the running job (Esc)</source>
+        <translation>Den laufenden Auftrag abbrechen (Esc)</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::MaterialsPanel</name>
+    <message>
+        <source>Myometrium</source>
+        <translation>Myometrium</translation>
+    </message>
+    <message>
+        <source>Endometrium</source>
+        <translation>Endometrium</translation>
+    </message>
+    <message>
+        <source>Cervix</source>
+        <translation>Zervix</translation>
+    </message>
+    <message>
+        <source>Myoma</source>
+        <translation>Myom</translation>
+    </message>
+    <message>
+        <source>Polyp</source>
+        <translation>Polyp</translation>
+    </message>
+    <message>
+        <source>Young&apos;s modulus (kPa)</source>
+        <translation>Elastizitätsmodul (kPa)</translation>
+    </message>
+    <message>
+        <source>Poisson ratio</source>
+        <translation>Poissonzahl</translation>
+    </message>
+    <message>
+        <source>Density (kg/m³)</source>
+        <translation>Dichte (kg/m³)</translation>
+    </message>
+    <message>
+        <source>Heterogeneity</source>
+        <translation>Heterogenität</translation>
+    </message>
+    <message>
+        <source>Default %1; allowed %2</source>
+        <translation>Standard %1; zulässig %2</translation>
+    </message>
+    <message>
+        <source>Material</source>
+        <translation>Material</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Standard</translation>
+    </message>
+    <message>
+        <source>Use the literature values for this tissue</source>
+        <translation>Die Literaturwerte für dieses Gewebe verwenden</translation>
+    </message>
+    <message>
+        <source>Default material</source>
+        <translation>Standardmaterial</translation>
+    </message>
+    <message>
+        <source> kPa</source>
+        <translation> kPa</translation>
+    </message>
+    <message>
+        <source>Distension pressure the scene&apos;s hydrometra curve is computed for, %1 (8 kPa = 60 mmHg)</source>
+        <translation>Distensionsdruck, für den die Hydrometra-Kurve der Szene berechnet wird, %1 (8 kPa = 60 mmHg)</translation>
+    </message>
+    <message>
+        <source>&amp;Hydrometra pressure</source>
+        <translation>&amp;Hydrometra-Druck</translation>
+    </message>
+    <message>
+        <source>Hydrometra pressure</source>
+        <translation>Hydrometra-Druck</translation>
+    </message>
+    <message>
+        <source>Defaults: myometrium 30 kPa, endometrium 26.2 kPa (proliferative), myoma 65 kPa, polyp 15 kPa; Poisson ratio 0.47; 1050 kg/m³ (see docs/scene-format.md).</source>
+        <translation>Standardwerte: Myometrium 30 kPa, Endometrium 26,2 kPa (Proliferationsphase), Myom 65 kPa, Polyp 15 kPa; Poissonzahl 0,47; 1050 kg/m³ (siehe docs/scene-format.md).</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::MeshPanel</name>
+    <message>
+        <source>tets</source>
+        <translation>Tetraeder</translation>
+    </message>
+    <message>
+        <source>Meshing</source>
+        <translation>Vernetzung</translation>
+    </message>
+    <message>
+        <source>Particles (Sierra et al. 2004)</source>
+        <translation>Partikel (Sierra et al. 2004)</translation>
+    </message>
+    <message>
+        <source>TetGen</source>
+        <translation>TetGen</translation>
+    </message>
+    <message>
+        <source>CGAL Mesh_3</source>
+        <translation>CGAL Mesh_3</translation>
+    </message>
+    <message>
+        <source>The particle mesher is the method of the paper; TetGen and CGAL are baselines</source>
+        <translation>Der Partikel-Vernetzer ist das Verfahren der Publikation; TetGen und CGAL dienen als Vergleichsbasis</translation>
+    </message>
+    <message>
+        <source>Vertices the mesh aims at: %1</source>
+        <translation>Angestrebte Anzahl Eckpunkte des Netzes: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Target vertices</source>
+        <translation>&amp;Zielanzahl Eckpunkte</translation>
+    </message>
+    <message>
+        <source>Lattice</source>
+        <translation>Gitter</translation>
+    </message>
+    <message>
+        <source>Random, 2 per voxel</source>
+        <translation>Zufällig, 2 pro Voxel</translation>
+    </message>
+    <message>
+        <source>How particles are seeded inside the body (particle method)</source>
+        <translation>Wie die Partikel anfangs im Körper verteilt werden (Partikelverfahren)</translation>
+    </message>
+    <message>
+        <source>&amp;Seeding</source>
+        <translation>&amp;Startverteilung</translation>
+    </message>
+    <message>
+        <source>Most relaxation iterations (%1); relaxation also stops when it converges</source>
+        <translation>Höchstzahl der Relaxationsiterationen (%1); die Relaxation endet auch, sobald sie konvergiert</translation>
+    </message>
+    <message>
+        <source>&amp;Relaxation</source>
+        <translation>&amp;Relaxation</translation>
+    </message>
+    <message>
+        <source>&amp;Mesh</source>
+        <translation>Ver&amp;netzen</translation>
+    </message>
+    <message>
+        <source>Mesh the merged body and split the wall into its tissues (Ctrl+M)</source>
+        <translation>Den vereinigten Körper vernetzen und die Wand in ihre Gewebe aufteilen (Ctrl+M)</translation>
+    </message>
+    <message>
+        <source>Meshing method</source>
+        <translation>Vernetzungsverfahren</translation>
+    </message>
+    <message>
+        <source>Target vertices</source>
+        <translation>Zielanzahl Eckpunkte</translation>
+    </message>
+    <message>
+        <source>Seeding</source>
+        <translation>Startverteilung</translation>
+    </message>
+    <message>
+        <source>Relaxation iterations</source>
+        <translation>Relaxationsiterationen</translation>
+    </message>
+    <message>
+        <source>Quality</source>
+        <translation>Qualität</translation>
+    </message>
+    <message>
+        <source>Not meshed yet.</source>
+        <translation>Noch nicht vernetzt.</translation>
+    </message>
+    <message>
+        <source>Radius ratio</source>
+        <translation>Radienverhältnis</translation>
+    </message>
+    <message>
+        <source>3 × inradius / circumradius: 1 for the regular tetrahedron</source>
+        <translation>3 × Inkugelradius / Umkugelradius: 1 für das reguläre Tetraeder</translation>
+    </message>
+    <message>
+        <source>Smallest dihedral angle</source>
+        <translation>Kleinster Diederwinkel</translation>
+    </message>
+    <message>
+        <source>Degrees; below 10° a tet is a sliver</source>
+        <translation>Grad; unter 10° ist ein Tetraeder ein Sliver (flaches Tetraeder)</translation>
+    </message>
+    <message>
+        <source>Colour by</source>
+        <translation>Einfärben nach</translation>
+    </message>
+    <message>
+        <source>Tissue</source>
+        <translation>Gewebe</translation>
+    </message>
+    <message>
+        <source>Smallest dihedral</source>
+        <translation>Kleinster Diederwinkel</translation>
+    </message>
+    <message>
+        <source>Blue: poor, red: good (radius ratio 0 – 1, dihedral 0 – 70.5°)</source>
+        <translation>Blau: schlecht, Rot: gut (Radienverhältnis 0 – 1, Diederwinkel 0 – 70,5°)</translation>
+    </message>
+    <message>
+        <source>Regions shown</source>
+        <translation>Angezeigte Regionen</translation>
+    </message>
+    <message>
+        <source>Tet</source>
+        <translation>Tetraeder</translation>
+    </message>
+    <message>
+        <source>Region</source>
+        <translation>Region</translation>
+    </message>
+    <message>
+        <source>Dihedral</source>
+        <translation>Diederwinkel</translation>
+    </message>
+    <message>
+        <source>The worst tets by radius ratio; double-click or Show frames one in the view</source>
+        <translation>Die schlechtesten Tetraeder nach Radienverhältnis; Doppelklick oder „Anzeigen“ holt eines in der Ansicht ins Bild</translation>
+    </message>
+    <message>
+        <source>&amp;Show</source>
+        <translation>&amp;Anzeigen</translation>
+    </message>
+    <message>
+        <source>%1 vertices, %2 tets. Radius ratio: min %3, mean %4. Smallest dihedral %5°, %6 slivers. Boundary within %7 mm of the body; volume error %8 %.</source>
+        <translation>%1 Eckpunkte, %2 Tetraeder. Radienverhältnis: min. %3, Mittel %4. Kleinster Diederwinkel %5°, %6 Sliver. Rand innerhalb von %7 mm zum Körper; Volumenfehler %8 %.</translation>
+    </message>
+    <message>
+        <source>Inspecting the mesh</source>
+        <translation>Netz wird untersucht</translation>
+    </message>
+    <message>
+        <source>radius ratio</source>
+        <translation>Radienverhältnis</translation>
+    </message>
+    <message>
+        <source>Me&amp;thod</source>
+        <translation>Me&amp;thode</translation>
+    </message>
+    <message>
+        <source>smallest dihedral (°)</source>
+        <translation>kleinster Diederwinkel (°)</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::PathologyPanel</name>
+    <message>
+        <source>0 – pedunculated, intracavitary</source>
+        <translation>0 – gestielt, intrakavitär</translation>
+    </message>
+    <message>
+        <source>1 – submucosal, &lt; 50 % intramural</source>
+        <translation>1 – submukös, &lt; 50 % intramural</translation>
+    </message>
+    <message>
+        <source>2 – submucosal, ≥ 50 % intramural</source>
+        <translation>2 – submukös, ≥ 50 % intramural</translation>
+    </message>
+    <message>
+        <source>3 – intramural, touching the endometrium</source>
+        <translation>3 – intramural, mit Kontakt zum Endometrium</translation>
+    </message>
+    <message>
+        <source>4 – intramural</source>
+        <translation>4 – intramural</translation>
+    </message>
+    <message>
+        <source>5 – subserosal, ≥ 50 % intramural</source>
+        <translation>5 – subserös, ≥ 50 % intramural</translation>
+    </message>
+    <message>
+        <source>6 – subserosal, &lt; 50 % intramural</source>
+        <translation>6 – subserös, &lt; 50 % intramural</translation>
+    </message>
+    <message>
+        <source>7 – subserosal, pedunculated</source>
+        <translation>7 – subserös, gestielt</translation>
+    </message>
+    <message>
+        <source>1-5 – hybrid, submucosal and subserosal</source>
+        <translation>1-5 – hybrid, submukös und subserös</translation>
+    </message>
+    <message>
+        <source>2-5 – hybrid, submucosal and subserosal</source>
+        <translation>2-5 – hybrid, submukös und subserös</translation>
+    </message>
+    <message>
+        <source>3-5 – hybrid, intramural and subserosal</source>
+        <translation>3-5 – hybrid, intramural und subserös</translation>
+    </message>
+    <message>
+        <source>Anterior wall</source>
+        <translation>Vorderwand</translation>
+    </message>
+    <message>
+        <source>Posterior wall</source>
+        <translation>Hinterwand</translation>
+    </message>
+    <message>
+        <source>Left lateral wall</source>
+        <translation>Linke Seitenwand</translation>
+    </message>
+    <message>
+        <source>Right lateral wall</source>
+        <translation>Rechte Seitenwand</translation>
+    </message>
+    <message>
+        <source>Left cornu</source>
+        <translation>Linker Tubenwinkel</translation>
+    </message>
+    <message>
+        <source>Right cornu</source>
+        <translation>Rechter Tubenwinkel</translation>
+    </message>
+    <message>
+        <source>Isthmus</source>
+        <translation>Isthmus</translation>
+    </message>
+    <message>
+        <source>Myoma</source>
+        <translation>Myom</translation>
+    </message>
+    <message>
+        <source>Polyp</source>
+        <translation>Polyp</translation>
+    </message>
+    <message>
+        <source>Add &amp;Myoma</source>
+        <translation>&amp;Myom hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add a 20 mm FIGO 2 myoma at a free wall</source>
+        <translation>Ein Myom FIGO 2 von 20 mm an einer freien Wand hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add &amp;Polyp</source>
+        <translation>&amp;Polyp hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add a 10 mm sessile polyp at a free wall</source>
+        <translation>Einen breitbasigen Polypen von 10 mm an einer freien Wand hinzufügen</translation>
+    </message>
+    <message>
+        <source>D&amp;uplicate</source>
+        <translation>&amp;Duplizieren</translation>
+    </message>
+    <message>
+        <source>Copy the selected pathology to a free wall</source>
+        <translation>Die ausgewählte Pathologie an eine freie Wand kopieren</translation>
+    </message>
+    <message>
+        <source>&amp;Remove</source>
+        <translation>&amp;Entfernen</translation>
+    </message>
+    <message>
+        <source>Selected pathology</source>
+        <translation>Ausgewählte Pathologie</translation>
+    </message>
+    <message>
+        <source>Names the pathology&apos;s region and files in the scene</source>
+        <translation>Benennt die Region und die Dateien der Pathologie in der Szene</translation>
+    </message>
+    <message>
+        <source>&amp;Id</source>
+        <translation>&amp;ID</translation>
+    </message>
+    <message>
+        <source>&amp;Kind</source>
+        <translation>&amp;Art</translation>
+    </message>
+    <message>
+        <source>Cellular automaton</source>
+        <translation>Zellulärer Automat</translation>
+    </message>
+    <message>
+        <source>Skeleton and contours</source>
+        <translation>Skelett und Konturen</translation>
+    </message>
+    <message>
+        <source>Particles</source>
+        <translation>Partikel</translation>
+    </message>
+    <message>
+        <source>How the pathology grows (Sierra et al. 2004); the automaton grows myomas only</source>
+        <translation>Wie die Pathologie wächst (Sierra et al. 2004); der Automat lässt nur Myome wachsen</translation>
+    </message>
+    <message>
+        <source>FIGO type: how deep the myoma sits in the wall (myomas only)</source>
+        <translation>FIGO-Typ: wie tief das Myom in der Wand liegt (nur Myome)</translation>
+    </message>
+    <message>
+        <source>&amp;FIGO type</source>
+        <translation>&amp;FIGO-Typ</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Largest diameter in mm (a pedunculated polyp: of its head). Myomas 5 – 100 mm, polyps 3 – 40 mm</source>
+        <translation>Größter Durchmesser in mm (bei einem gestielten Polypen: der des Kopfes). Myome 5 – 100 mm, Polypen 3 – 40 mm</translation>
+    </message>
+    <message>
+        <source>Si&amp;ze</source>
+        <translation>&amp;Größe</translation>
+    </message>
+    <message>
+        <source>Sessile</source>
+        <translation>Breitbasig</translation>
+    </message>
+    <message>
+        <source>Pedunculated</source>
+        <translation>Gestielt</translation>
+    </message>
+    <message>
+        <source>&amp;Attachment</source>
+        <translation>Ansat&amp;z</translation>
+    </message>
+    <message>
+        <source>Stalk length in mm, %1 (pedunculated polyps)</source>
+        <translation>Stiellänge in mm, %1 (gestielte Polypen)</translation>
+    </message>
+    <message>
+        <source>S&amp;talk</source>
+        <translation>S&amp;tiel</translation>
+    </message>
+    <message>
+        <source>Placement</source>
+        <translation>Platzierung</translation>
+    </message>
+    <message>
+        <source>At a point</source>
+        <translation>An einem Punkt</translation>
+    </message>
+    <message>
+        <source>Click on Wall</source>
+        <translation>Auf Wand klicken</translation>
+    </message>
+    <message>
+        <source>Then click on the organ&apos;s wall in the 3-D view to seat the pathology there (Ctrl+P; Esc cancels)</source>
+        <translation>Danach in der 3-D-Ansicht auf die Wand des Organs klicken, um die Pathologie dort zu platzieren (Ctrl+P; Esc bricht ab)</translation>
+    </message>
+    <message>
+        <source>Grown</source>
+        <translation>Wachstum</translation>
+    </message>
+    <message>
+        <source>&amp;Grow</source>
+        <translation>Wachsen &amp;lassen</translation>
+    </message>
+    <message>
+        <source>Grow every pathology in the organ (Ctrl+G)</source>
+        <translation>Alle Pathologien im Organ wachsen lassen (Ctrl+G)</translation>
+    </message>
+    <message>
+        <source>M&amp;erge</source>
+        <translation>&amp;Vereinigen</translation>
+    </message>
+    <message>
+        <source>Merge the organ and the pathologies into one body with contact labels</source>
+        <translation>Organ und Pathologien zu einem Körper mit Kontaktmarkierungen vereinigen</translation>
+    </message>
+    <message>
+        <source>Pathology id</source>
+        <translation>Pathologie-ID</translation>
+    </message>
+    <message>
+        <source>Pathology kind</source>
+        <translation>Art der Pathologie</translation>
+    </message>
+    <message>
+        <source>Growth model</source>
+        <translation>Wachstumsmodell</translation>
+    </message>
+    <message>
+        <source>FIGO type</source>
+        <translation>FIGO-Typ</translation>
+    </message>
+    <message>
+        <source>Pathology size</source>
+        <translation>Größe der Pathologie</translation>
+    </message>
+    <message>
+        <source>Polyp attachment</source>
+        <translation>Ansatz des Polypen</translation>
+    </message>
+    <message>
+        <source>Stalk length</source>
+        <translation>Stiellänge</translation>
+    </message>
+    <message>
+        <source>The organ is still being built: click again once it is shown.</source>
+        <translation>Das Organ wird noch aufgebaut: Erneut klicken, sobald es angezeigt wird.</translation>
+    </message>
+    <message>
+        <source>Nothing placed: the click missed the organ. Click on its wall.</source>
+        <translation>Nichts platziert: Der Klick hat das Organ verfehlt. Auf seine Wand klicken.</translation>
+    </message>
+    <message>
+        <source>Nothing placed: that is the cervix, where pathologies are not modelled.</source>
+        <translation>Nichts platziert: Das ist die Zervix, an der keine Pathologien modelliert werden.</translation>
+    </message>
+    <message>
+        <source>Nothing placed: a polyp grows from the endometrium. Click on the cavity&apos;s wall (View &gt; Clip opens the organ).</source>
+        <translation>Nichts platziert: Ein Polyp wächst aus dem Endometrium. Auf die Wand des Cavums klicken (Ansicht &gt; Schnitt öffnet das Organ).</translation>
+    </message>
+    <message>
+        <source>Nothing placed: the click is not on the organ&apos;s wall.</source>
+        <translation>Nichts platziert: Der Klick liegt nicht auf der Wand des Organs.</translation>
+    </message>
+    <message>
+        <source>Place on wall</source>
+        <translation>Auf der Wand platzieren</translation>
+    </message>
+    <message>
+        <source>A case holds at most %1 pathologies.</source>
+        <translation>Ein Fall enthält höchstens %1 Pathologien.</translation>
+    </message>
+    <message>
+        <source>Add myoma</source>
+        <translation>Myom hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add polyp</source>
+        <translation>Polyp hinzufügen</translation>
+    </message>
+    <message>
+        <source>Duplicate pathology</source>
+        <translation>Pathologie duplizieren</translation>
+    </message>
+    <message>
+        <source>Remove pathology</source>
+        <translation>Pathologie entfernen</translation>
+    </message>
+    <message>
+        <source>(%1, %2, %3) mm</source>
+        <translation>(%1; %2; %3) mm</translation>
+    </message>
+    <message>
+        <source>Not grown yet.</source>
+        <translation>Noch nicht gewachsen.</translation>
+    </message>
+    <message>
+        <source>Measured: FIGO &lt;b&gt;%1&lt;/b&gt;, %2 mm, %3 % in the wall, %4 % in the cavity</source>
+        <translation>Gemessen: FIGO &lt;b&gt;%1&lt;/b&gt;, %2 mm, %3 % in der Wand, %4 % im Cavum</translation>
+    </message>
+    <message>
+        <source>Lasmar score &lt;b&gt;%1&lt;/b&gt; (size %2, topography %3, extension %4, penetration %5, wall %6)</source>
+        <translation>Lasmar-Score &lt;b&gt;%1&lt;/b&gt; (Größe %2, Topographie %3, Ausdehnung %4, Penetration %5, Wand %6)</translation>
+    </message>
+    <message>
+        <source>Measured: a %1 mm head on a %2 mm stalk</source>
+        <translation>Gemessen: Kopf von %1 mm an einem Stiel von %2 mm</translation>
+    </message>
+    <message>
+        <source>Measured: sessile, %1 mm, base %2 mm</source>
+        <translation>Gemessen: breitbasig, %1 mm, Basis %2 mm</translation>
+    </message>
+    <message>
+        <source>From before the last edit: grow again.</source>
+        <translation>Stand vor der letzten Änderung: Erneut wachsen lassen.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n note(s) from the stage</source>
+        <translation>
+            <numerusform>%n Hinweis der Stufe</numerusform>
+            <numerusform>%n Hinweise der Stufe</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Fundus</source>
+        <translation>Fundus</translation>
+    </message>
+    <message>
+        <source>Gro&amp;wth model</source>
+        <translation>&amp;Wachstumsmodell</translation>
+    </message>
+    <message>
+        <source>Site</source>
+        <translation>Lokalisation</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::PatientPanel</name>
+    <message>
+        <source>Uterine length</source>
+        <translation>Uteruslänge</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Breite</translation>
+    </message>
+    <message>
+        <source>AP depth</source>
+        <translation>AP-Tiefe</translation>
+    </message>
+    <message>
+        <source>Cavity length</source>
+        <translation>Cavumlänge</translation>
+    </message>
+    <message>
+        <source>Cavity width</source>
+        <translation>Cavumbreite</translation>
+    </message>
+    <message>
+        <source>Cervix length</source>
+        <translation>Zervixlänge</translation>
+    </message>
+    <message>
+        <source>Patient</source>
+        <translation>Patientin</translation>
+    </message>
+    <message>
+        <source> years</source>
+        <translation> Jahre</translation>
+    </message>
+    <message>
+        <source>Age in years</source>
+        <translation>Alter in Jahren</translation>
+    </message>
+    <message>
+        <source>&amp;Age</source>
+        <translation>&amp;Alter</translation>
+    </message>
+    <message>
+        <source>years</source>
+        <translation>Jahre</translation>
+    </message>
+    <message>
+        <source>Births after 20 weeks of gestation</source>
+        <translation>Geburten nach der 20. Schwangerschaftswoche</translation>
+    </message>
+    <message>
+        <source>&amp;Parity</source>
+        <translation>&amp;Parität</translation>
+    </message>
+    <message>
+        <source>births</source>
+        <translation>Geburten</translation>
+    </message>
+    <message>
+        <source>Pregnancies, including those that ended in a birth (at least the parity)</source>
+        <translation>Schwangerschaften, einschließlich derer, die mit einer Geburt endeten (mindestens die Parität)</translation>
+    </message>
+    <message>
+        <source>&amp;Gravidity</source>
+        <translation>&amp;Gravidität</translation>
+    </message>
+    <message>
+        <source>pregnancies</source>
+        <translation>Schwangerschaften</translation>
+    </message>
+    <message>
+        <source> cm</source>
+        <translation> cm</translation>
+    </message>
+    <message>
+        <source>Height in centimetres</source>
+        <translation>Körpergröße in Zentimetern</translation>
+    </message>
+    <message>
+        <source>&amp;Height</source>
+        <translation>&amp;Körpergröße</translation>
+    </message>
+    <message>
+        <source>cm</source>
+        <translation>cm</translation>
+    </message>
+    <message>
+        <source> kg</source>
+        <translation> kg</translation>
+    </message>
+    <message>
+        <source>Weight in kilograms</source>
+        <translation>Gewicht in Kilogramm</translation>
+    </message>
+    <message>
+        <source>&amp;Weight</source>
+        <translation>Ge&amp;wicht</translation>
+    </message>
+    <message>
+        <source>kg</source>
+        <translation>kg</translation>
+    </message>
+    <message>
+        <source>Postmenopausal</source>
+        <translation>Postmenopausal</translation>
+    </message>
+    <message>
+        <source>Postmenopausal patients are 40 years or older; premenopausal ones at most 60</source>
+        <translation>Postmenopausale Patientinnen sind 40 Jahre oder älter, prämenopausale höchstens 60</translation>
+    </message>
+    <message>
+        <source>Menstrual</source>
+        <translation>Menstruationsphase</translation>
+    </message>
+    <message>
+        <source>Proliferative</source>
+        <translation>Proliferationsphase</translation>
+    </message>
+    <message>
+        <source>Secretory</source>
+        <translation>Sekretionsphase</translation>
+    </message>
+    <message>
+        <source>Phase of the cycle on the day of the hysteroscopy; it sets the endometrium&apos;s thickness (premenopausal patients only)</source>
+        <translation>Zyklusphase am Tag der Hysteroskopie; sie bestimmt die Dicke des Endometriums (nur prämenopausale Patientinnen)</translation>
+    </message>
+    <message>
+        <source>C&amp;ycle phase</source>
+        <translation>&amp;Zyklusphase</translation>
+    </message>
+    <message>
+        <source>Sample for this patient</source>
+        <translation>Stichprobe für diese Patientin</translation>
+    </message>
+    <message>
+        <source>Mean for this patient</source>
+        <translation>Mittelwert für diese Patientin</translation>
+    </message>
+    <message>
+        <source>A seeded organ of the statistical shape model, or the model&apos;s mean for the patient</source>
+        <translation>Ein aus dem Startwert erzeugtes Organ des statistischen Formmodells oder der Mittelwert des Modells für die Patientin</translation>
+    </message>
+    <message>
+        <source>&amp;Organ</source>
+        <translation>&amp;Organ</translation>
+    </message>
+    <message>
+        <source>Every random choice of every stage derives from the seed: the same seed gives the same scene</source>
+        <translation>Jede Zufallsentscheidung jeder Stufe leitet sich vom Startwert ab: Derselbe Startwert ergibt dieselbe Szene</translation>
+    </message>
+    <message>
+        <source>New</source>
+        <translation>Neu</translation>
+    </message>
+    <message>
+        <source>Draw a new seed: a new patient of the same description</source>
+        <translation>Einen neuen Startwert ziehen: eine neue Patientin mit derselben Beschreibung</translation>
+    </message>
+    <message>
+        <source>&amp;Seed</source>
+        <translation>&amp;Startwert</translation>
+    </message>
+    <message>
+        <source>Dimensions</source>
+        <translation>Maße</translation>
+    </message>
+    <message>
+        <source>Set a dimension to a measured value (ultrasound) and the organ is fitted to it</source>
+        <translation>Ein Maß auf einen gemessenen Wert (Ultraschall) setzen; das Organ wird daran angepasst</translation>
+    </message>
+    <message>
+        <source>This organ</source>
+        <translation>Dieses Organ</translation>
+    </message>
+    <message>
+        <source>Expected (95 %)</source>
+        <translation>Erwartet (95 %)</translation>
+    </message>
+    <message>
+        <source>Measured</source>
+        <translation>Gemessen</translation>
+    </message>
+    <message>
+        <source>The published relations for this patient, mean ± 1.96 SD</source>
+        <translation>Die publizierten Zusammenhänge für diese Patientin, Mittelwert ± 1,96 SD</translation>
+    </message>
+    <message>
+        <source>Fit the organ to a measured value</source>
+        <translation>Organ an einen gemessenen Wert anpassen</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Allowed: %1</source>
+        <translation>Zulässig: %1</translation>
+    </message>
+    <message>
+        <source>Age</source>
+        <translation>Alter</translation>
+    </message>
+    <message>
+        <source>Parity</source>
+        <translation>Parität</translation>
+    </message>
+    <message>
+        <source>Gravidity</source>
+        <translation>Gravidität</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Körpergröße</translation>
+    </message>
+    <message>
+        <source>Weight</source>
+        <translation>Gewicht</translation>
+    </message>
+    <message>
+        <source>Menopausal state</source>
+        <translation>Menopausenstatus</translation>
+    </message>
+    <message>
+        <source>Cycle phase</source>
+        <translation>Zyklusphase</translation>
+    </message>
+    <message>
+        <source>Organ mode</source>
+        <translation>Organmodus</translation>
+    </message>
+    <message>
+        <source>Seed</source>
+        <translation>Startwert</translation>
+    </message>
+    <message>
+        <source>New seed</source>
+        <translation>Neuer Startwert</translation>
+    </message>
+    <message>
+        <source>%1 – %2 mm</source>
+        <translation>%1 – %2 mm</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>Outside the expected range for this patient</source>
+        <translation>Außerhalb des erwarteten Bereichs für diese Patientin</translation>
+    </message>
+    <message>
+        <source>Fundal wall thickness</source>
+        <translation>Dicke der Funduswand</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::ReviewPanel</name>
+    <message>
+        <source>cellular automaton</source>
+        <translation>zellulärer Automat</translation>
+    </message>
+    <message>
+        <source>skeleton</source>
+        <translation>Skelett</translation>
+    </message>
+    <message>
+        <source>particles</source>
+        <translation>Partikel</translation>
+    </message>
+    <message>
+        <source>–</source>
+        <translation>–</translation>
+    </message>
+    <message>
+        <source>1: not realistic … 5: indistinguishable from a real one; – not rated</source>
+        <translation>1: nicht realistisch … 5: von einem echten nicht zu unterscheiden; – nicht bewertet</translation>
+    </message>
+    <message>
+        <source>No package opened for review (File &gt; Review Scene Package).</source>
+        <translation>Kein Paket zur Begutachtung geöffnet (Datei &gt; Szenenpaket begutachten).</translation>
+    </message>
+    <message>
+        <source>Reviewer</source>
+        <translation>Gutachter/in</translation>
+    </message>
+    <message>
+        <source>Pathologies</source>
+        <translation>Pathologien</translation>
+    </message>
+    <message>
+        <source>Id</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <source>Growth</source>
+        <translation>Wachstum</translation>
+    </message>
+    <message>
+        <source>Realism</source>
+        <translation>Realismus</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Kommentar</translation>
+    </message>
+    <message>
+        <source>Textures</source>
+        <translation>Texturen</translation>
+    </message>
+    <message>
+        <source>Appearance</source>
+        <translation>Erscheinungsbild</translation>
+    </message>
+    <message>
+        <source>Save &amp;Review</source>
+        <translation>Begutachtung &amp;speichern</translation>
+    </message>
+    <message>
+        <source>Write the ratings beside the package (the package itself is not changed)</source>
+        <translation>Die Bewertungen neben das Paket schreiben (das Paket selbst wird nicht verändert)</translation>
+    </message>
+    <message>
+        <source>All reviews in this folder</source>
+        <translation>Alle Begutachtungen in diesem Ordner</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>Gruppe</translation>
+    </message>
+    <message>
+        <source>Ratings</source>
+        <translation>Bewertungen</translation>
+    </message>
+    <message>
+        <source>Mean</source>
+        <translation>Mittelwert</translation>
+    </message>
+    <message>
+        <source>Lowest</source>
+        <translation>Minimum</translation>
+    </message>
+    <message>
+        <source>Highest</source>
+        <translation>Maximum</translation>
+    </message>
+    <message>
+        <source>The review beside the package belongs to another version of it; saving replaces it.</source>
+        <translation>Die Begutachtung neben dem Paket gehört zu einer anderen Version des Pakets; Speichern ersetzt sie.</translation>
+    </message>
+    <message>
+        <source>Reviewing %1 (read-only)</source>
+        <translation>Begutachtung von %1 (schreibgeschützt)</translation>
+    </message>
+    <message>
+        <source>myoma</source>
+        <translation>Myom</translation>
+    </message>
+    <message>
+        <source>polyp</source>
+        <translation>Polyp</translation>
+    </message>
+    <message>
+        <source>Visit</source>
+        <translation>Ansehen</translation>
+    </message>
+    <message>
+        <source>Look at this pathology from inside the cavity</source>
+        <translation>Diese Pathologie aus dem Inneren des Cavums betrachten</translation>
+    </message>
+    <message>
+        <source>The pathology %1 is not a region of this scene.</source>
+        <translation>Die Pathologie %1 ist keine Region dieser Szene.</translation>
+    </message>
+    <message>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The review could not be written beside the package (is the folder read-only?).&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;Die Begutachtung konnte nicht neben das Paket geschrieben werden (ist der Ordner schreibgeschützt?).&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>Saved to %1.</source>
+        <translation>Gespeichert unter %1.</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::TexturePanel</name>
+    <message>
+        <source>Endometrium</source>
+        <translation>Endometrium</translation>
+    </message>
+    <message>
+        <source>Myoma</source>
+        <translation>Myom</translation>
+    </message>
+    <message>
+        <source>Polyp</source>
+        <translation>Polyp</translation>
+    </message>
+    <message>
+        <source>Texture</source>
+        <translation>Textur</translation>
+    </message>
+    <message>
+        <source>%1 × %1 px</source>
+        <translation>%1 × %1 px</translation>
+    </message>
+    <message>
+        <source>Side of each square map in pixels</source>
+        <translation>Seitenlänge jeder quadratischen Karte in Pixeln</translation>
+    </message>
+    <message>
+        <source>Map &amp;size</source>
+        <translation>&amp;Kartengröße</translation>
+    </message>
+    <message>
+        <source>Vessels relative to the default network, %1; 0: none</source>
+        <translation>Gefäße relativ zum Standard-Gefäßnetz, %1; 0: keine</translation>
+    </message>
+    <message>
+        <source>&amp;Vessel density</source>
+        <translation>&amp;Gefäßdichte</translation>
+    </message>
+    <message>
+        <source>Choose...</source>
+        <translation>Auswählen...</translation>
+    </message>
+    <message>
+        <source>Bundled</source>
+        <translation>Mitgeliefert</translation>
+    </message>
+    <message>
+        <source>Use the bundled procedural exemplar</source>
+        <translation>Die mitgelieferte prozedurale Vorlage verwenden</translation>
+    </message>
+    <message>
+        <source>Bundled exemplar</source>
+        <translation>Mitgelieferte Vorlage</translation>
+    </message>
+    <message>
+        <source>&amp;Texture</source>
+        <translation>&amp;Texturieren</translation>
+    </message>
+    <message>
+        <source>Synthesize and bake the maps on the final surface (Ctrl+T)</source>
+        <translation>Die Karten synthetisieren und auf die endgültige Oberfläche backen (Ctrl+T)</translation>
+    </message>
+    <message>
+        <source>Maps</source>
+        <translation>Karten</translation>
+    </message>
+    <message>
+        <source>Albedo</source>
+        <translation>Albedo</translation>
+    </message>
+    <message>
+        <source>Normal</source>
+        <translation>Normalen</translation>
+    </message>
+    <message>
+        <source>Roughness</source>
+        <translation>Rauheit</translation>
+    </message>
+    <message>
+        <source>Zoom in</source>
+        <translation>Vergrößern</translation>
+    </message>
+    <message>
+        <source>Zoom out</source>
+        <translation>Verkleinern</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Einpassen</translation>
+    </message>
+    <message>
+        <source>Map size</source>
+        <translation>Kartengröße</translation>
+    </message>
+    <message>
+        <source>Vessel density</source>
+        <translation>Gefäßdichte</translation>
+    </message>
+    <message>
+        <source>The file %1 does not exist.</source>
+        <translation>Die Datei %1 existiert nicht.</translation>
+    </message>
+    <message>
+        <source>The image %1 is too small or too large: each side must be %2 – %3 px.</source>
+        <translation>Das Bild %1 ist zu klein oder zu groß: Jede Seite muss %2 – %3 px lang sein.</translation>
+    </message>
+    <message>
+        <source>The file %1 is not an image this program reads (PNG, JPEG, EXR, TIFF).</source>
+        <translation>Die Datei %1 ist kein Bild, das dieses Programm lesen kann (PNG, JPEG, EXR, TIFF).</translation>
+    </message>
+    <message>
+        <source>Exemplar image</source>
+        <translation>Vorlagenbild</translation>
+    </message>
+    <message>
+        <source>The bundled procedural exemplar</source>
+        <translation>Die mitgelieferte prozedurale Vorlage</translation>
+    </message>
+    <message>
+        <source>Use your own image (PNG, JPEG, EXR, TIFF; %1 – %2 px a side): a crop of a real hysteroscopic view</source>
+        <translation>Eigenes Bild verwenden (PNG, JPEG, EXR, TIFF; %1 – %2 px je Seite): ein Ausschnitt eines echten hysteroskopischen Bildes</translation>
     </message>
 </context>
 <context>
@@ -143,10 +1592,6 @@
         <translation>Über Hysteroscene</translation>
     </message>
     <message>
-        <source>&lt;h3&gt;Hysteroscene %1&lt;/h3&gt;&lt;p&gt;A scenario authoring workstation for hysteroscopy training simulators.&lt;/p&gt;&lt;p&gt;Licensed under the GNU General Public License, version 3 or later.&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;Hysteroscene %1&lt;/h3&gt;&lt;p&gt;Eine Arbeitsstation zum Erstellen von Szenarien für Hysteroskopie-Trainingssimulatoren.&lt;/p&gt;&lt;p&gt;Lizenziert unter der GNU General Public License, Version 3 oder später.&lt;/p&gt;</translation>
-    </message>
-    <message>
         <source>&amp;New Case</source>
         <translation>&amp;Neuer Fall</translation>
     </message>
@@ -245,6 +1690,118 @@
     <message>
         <source>Recen&amp;t Cases</source>
         <translation>Zule&amp;tzt verwendete Fälle</translation>
+    </message>
+    <message>
+        <source>Review Scene Package</source>
+        <translation>Szenenpaket begutachten</translation>
+    </message>
+    <message>
+        <source>The folder is not a scene package (it has no manifest.json).</source>
+        <translation>Der Ordner ist kein Szenenpaket (er enthält keine manifest.json).</translation>
+    </message>
+    <message>
+        <source>The scene package cannot be read: a file is missing, changed or breaks its format (see the details).</source>
+        <translation>Das Szenenpaket kann nicht gelesen werden: Eine Datei fehlt, wurde geändert oder verletzt ihr Format (siehe Details).</translation>
+    </message>
+    <message>
+        <source>Open an exported scene package read-only and rate how real it looks</source>
+        <translation>Ein exportiertes Szenenpaket schreibgeschützt öffnen und bewerten, wie echt es aussieht</translation>
+    </message>
+    <message>
+        <source>Close Re&amp;view</source>
+        <translation>Begutachtung sch&amp;ließen</translation>
+    </message>
+    <message>
+        <source>&amp;Panels</source>
+        <translation>&amp;Bedienfelder</translation>
+    </message>
+    <message>
+        <source>Patient</source>
+        <translation>Patientin</translation>
+    </message>
+    <message>
+        <source>Pathologies</source>
+        <translation>Pathologien</translation>
+    </message>
+    <message>
+        <source>Materials</source>
+        <translation>Materialien</translation>
+    </message>
+    <message>
+        <source>Mesh</source>
+        <translation>Netz</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Export</translation>
+    </message>
+    <message>
+        <source>Texture</source>
+        <translation>Textur</translation>
+    </message>
+    <message>
+        <source>Review</source>
+        <translation>Begutachtung</translation>
+    </message>
+    <message>
+        <source>Hysteroscopic View</source>
+        <translation>Hysteroskopische Ansicht</translation>
+    </message>
+    <message>
+        <source>Exemplar Image</source>
+        <translation>Vorlagenbild</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.jpeg *.exr *.tif *.tiff)</source>
+        <translation>Bilder (*.png *.jpg *.jpeg *.exr *.tif *.tiff)</translation>
+    </message>
+    <message>
+        <source>Export Scene Package</source>
+        <translation>Szenenpaket exportieren</translation>
+    </message>
+    <message>
+        <source>Reading the scene package</source>
+        <translation>Szenenpaket wird gelesen</translation>
+    </message>
+    <message>
+        <source>Unsaved Ratings</source>
+        <translation>Ungespeicherte Bewertungen</translation>
+    </message>
+    <message>
+        <source>The review of %1 has unsaved ratings. Save them?</source>
+        <translation>Die Begutachtung von %1 hat ungespeicherte Bewertungen. Speichern?</translation>
+    </message>
+    <message>
+        <source>Organ</source>
+        <translation>Organ</translation>
+    </message>
+    <message>
+        <source>Grown pathologies</source>
+        <translation>Gewachsene Pathologien</translation>
+    </message>
+    <message>
+        <source>Merged body</source>
+        <translation>Vereinigter Körper</translation>
+    </message>
+    <message>
+        <source>Tetrahedral mesh</source>
+        <translation>Tetraedernetz</translation>
+    </message>
+    <message>
+        <source>Textured surface</source>
+        <translation>Texturierte Oberfläche</translation>
+    </message>
+    <message>
+        <source>The case&apos;s %1, as the pipeline made it</source>
+        <translation>%1 des Falls, Ergebnis der Pipeline</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Hysteroscene %1&lt;/h3&gt;&lt;p&gt;A scenario authoring workstation for hysteroscopy training simulators.&lt;/p&gt;&lt;p&gt;Licensed under the GNU General Public License, version 3 or later.&lt;/p&gt;&lt;p&gt;&lt;small&gt;Built with %2.&lt;/small&gt;&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Hysteroscene %1&lt;/h3&gt;&lt;p&gt;Eine Arbeitsstation zum Erstellen von Szenarien für Hysteroskopie-Trainingssimulatoren.&lt;/p&gt;&lt;p&gt;Lizenziert unter der GNU General Public License, Version 3 oder später.&lt;/p&gt;&lt;p&gt;&lt;small&gt;Erstellt mit %2.&lt;/small&gt;&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Revie&amp;w Scene Package...</source>
+        <translation>Szenenpaket &amp;begutachten...</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,69 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="fr">
 <context>
+    <name>hs::widgets</name>
+    <message>
+        <source>Gravidity counts every pregnancy, so it cannot be less than the parity.</source>
+        <translation>La gestité compte toutes les grossesses ; elle ne peut donc pas être inférieure à la parité.</translation>
+    </message>
+    <message>
+        <source>A postmenopausal patient is at least 40 years old, a premenopausal one at most 60.</source>
+        <translation>Une patiente ménopausée a au moins 40 ans, une patiente non ménopausée au plus 60.</translation>
+    </message>
+    <message>
+        <source>Only a premenopausal patient has a cycle phase.</source>
+        <translation>Seule une patiente non ménopausée a une phase du cycle.</translation>
+    </message>
+    <message>
+        <source>The cavity must be shorter than the uterus.</source>
+        <translation>La cavité doit être plus courte que l&apos;utérus.</translation>
+    </message>
+    <message>
+        <source>The cavity must be narrower than the uterus.</source>
+        <translation>La cavité doit être plus étroite que l&apos;utérus.</translation>
+    </message>
+    <message>
+        <source>Myomas are 5 – 100 mm, polyps 3 – 40 mm in size.</source>
+        <translation>Les myomes mesurent de 5 à 100 mm, les polypes de 3 à 40 mm.</translation>
+    </message>
+    <message>
+        <source>A case holds at most %1 pathologies.</source>
+        <translation>Un cas contient au plus %1 pathologies.</translation>
+    </message>
+    <message>
+        <source>This value is not allowed here (%1).</source>
+        <translation>Cette valeur n&apos;est pas autorisée ici (%1).</translation>
+    </message>
+    <message>
+        <source>An id is 1 – 32 letters, digits, &apos;-&apos; or &apos;_&apos;, starts with a letter or digit, and is unique in the case.</source>
+        <translation>Un identifiant compte 1 – 32 lettres, chiffres, &apos;-&apos; ou &apos;_&apos;, commence par une lettre ou un chiffre et est unique dans le cas.</translation>
+    </message>
+    <message>
+        <source>Young&apos;s modulus must be in the range %1.</source>
+        <translation>Le module de Young doit être dans la plage %1.</translation>
+    </message>
+    <message>
+        <source>The Poisson ratio must be in the range %1.</source>
+        <translation>Le coefficient de Poisson doit être dans la plage %1.</translation>
+    </message>
+    <message>
+        <source>The density must be in the range %1.</source>
+        <translation>La densité doit être dans la plage %1.</translation>
+    </message>
+    <message>
+        <source>The heterogeneity must be in the range %1.</source>
+        <translation>L&apos;hétérogénéité doit être dans la plage %1.</translation>
+    </message>
+    <message>
+        <source>The hydrometra pressure must be in the range %1.</source>
+        <translation>La pression d&apos;hydromètre doit être dans la plage %1.</translation>
+    </message>
+    <message>
+        <source>%1 must be in the range %2.</source>
+        <translation>« %1 » doit être dans la plage %2.</translation>
+    </message>
+</context>
+<context>
     <name>hs::widgets::CaseDocument</name>
     <message>
         <source>Untitled</source>
@@ -14,6 +77,1392 @@
     <message>
         <source>%1[*] - Hysteroscene</source>
         <translation>%1[*] - Hysteroscene</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::CaseEdits</name>
+    <message>
+        <source>Age</source>
+        <translation>Âge</translation>
+    </message>
+    <message>
+        <source>years</source>
+        <translation>ans</translation>
+    </message>
+    <message>
+        <source>Parity</source>
+        <translation>Parité</translation>
+    </message>
+    <message>
+        <source>births</source>
+        <translation>accouchements</translation>
+    </message>
+    <message>
+        <source>Gravidity</source>
+        <translation>Gestité</translation>
+    </message>
+    <message>
+        <source>pregnancies</source>
+        <translation>grossesses</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Taille</translation>
+    </message>
+    <message>
+        <source>Weight</source>
+        <translation>Poids</translation>
+    </message>
+    <message>
+        <source>Uterine length</source>
+        <translation>Longueur utérine</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Largeur</translation>
+    </message>
+    <message>
+        <source>AP depth</source>
+        <translation>Profondeur AP</translation>
+    </message>
+    <message>
+        <source>Cavity length</source>
+        <translation>Longueur de la cavité</translation>
+    </message>
+    <message>
+        <source>Cavity width</source>
+        <translation>Largeur de la cavité</translation>
+    </message>
+    <message>
+        <source>Cervix length</source>
+        <translation>Longueur du col utérin</translation>
+    </message>
+    <message>
+        <source>Stalk length</source>
+        <translation>Longueur du pédicule</translation>
+    </message>
+    <message>
+        <source>Target vertices</source>
+        <translation>Sommets cibles</translation>
+    </message>
+    <message>
+        <source>Vessel density</source>
+        <translation>Densité vasculaire</translation>
+    </message>
+    <message>
+        <source>Fundal wall thickness</source>
+        <translation>Épaisseur de la paroi fundique</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::ExportPanel</name>
+    <message>
+        <source>Scene package</source>
+        <translation>Paquet de scène</translation>
+    </message>
+    <message>
+        <source>Folder of the package</source>
+        <translation>Dossier du paquet</translation>
+    </message>
+    <message>
+        <source>The package is written to this folder (created; an existing package is replaced)</source>
+        <translation>Le paquet est écrit dans ce dossier (créé au besoin ; un paquet existant est remplacé)</translation>
+    </message>
+    <message>
+        <source>&amp;Browse...</source>
+        <translation>&amp;Parcourir...</translation>
+    </message>
+    <message>
+        <source>&amp;Folder</source>
+        <translation>&amp;Dossier</translation>
+    </message>
+    <message>
+        <source>Also as a .zip</source>
+        <translation>Également en .zip</translation>
+    </message>
+    <message>
+        <source>More than one: a new patient of the same description per variant, each in folder/variant-NNN with its own seed</source>
+        <translation>Plus d&apos;une : une nouvelle patiente de même description par variante, chacune dans dossier/variant-NNN avec sa propre graine</translation>
+    </message>
+    <message>
+        <source>&amp;Variants</source>
+        <translation>&amp;Variantes</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>&amp;Exporter</translation>
+    </message>
+    <message>
+        <source>Run what is not current, write the package and validate it (Ctrl+E)</source>
+        <translation>Exécuter ce qui n&apos;est pas à jour, écrire le paquet et le valider (Ctrl+E)</translation>
+    </message>
+    <message>
+        <source>Open in &amp;Simulator</source>
+        <translation>Ouvrir dans le &amp;simulateur</translation>
+    </message>
+    <message>
+        <source>The preview simulator is not installed with this workstation</source>
+        <translation>Le simulateur d&apos;aperçu n&apos;est pas installé avec ce poste de travail</translation>
+    </message>
+    <message>
+        <source>Start the preview simulator on the exported package</source>
+        <translation>Lancer le simulateur d&apos;aperçu sur le paquet exporté</translation>
+    </message>
+    <message>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;Choose a folder for the package first.&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;Choisissez d&apos;abord un dossier pour le paquet.&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>Exporting...</source>
+        <translation>Exportation...</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt;: valid, %2 files with matching checksums (seed %3).</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt; : valide, %2 fichiers aux sommes de contrôle concordantes (graine %3).</translation>
+    </message>
+    <message>
+        <source>Zipped as %1.</source>
+        <translation>Compressé en %1.</translation>
+    </message>
+    <message>
+        <source>The scope&apos;s passage could not be checked.</source>
+        <translation>Le passage de l&apos;hystéroscope n&apos;a pas pu être vérifié.</translation>
+    </message>
+    <message>
+        <source>A 2.9 mm scope reaches the fundus (narrowest %1 mm).</source>
+        <translation>Un hystéroscope de 2,9 mm atteint le fond utérin (passage le plus étroit %1 mm).</translation>
+    </message>
+    <message>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;A 2.9 mm scope does not reach the fundus (narrowest %1 mm).&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;Un hystéroscope de 2,9 mm n&apos;atteint pas le fond utérin (passage le plus étroit %1 mm).&lt;/span&gt;</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s) in scene.json.</source>
+        <translation>
+            <numerusform>%n avertissement dans scene.json.</numerusform>
+            <numerusform>%n avertissements dans scene.json.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The simulator could not be started.&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;Le simulateur n&apos;a pas pu être lancé.&lt;/span&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::GenerationSession</name>
+    <message>
+        <source>Building the organ</source>
+        <translation>Construction de l&apos;organe</translation>
+    </message>
+    <message>
+        <source>Growing the pathologies</source>
+        <translation>Croissance des pathologies</translation>
+    </message>
+    <message>
+        <source>Merging the body</source>
+        <translation>Fusion du corps</translation>
+    </message>
+    <message>
+        <source>Meshing</source>
+        <translation>Maillage</translation>
+    </message>
+    <message>
+        <source>Texturing</source>
+        <translation>Texturation</translation>
+    </message>
+    <message>
+        <source>Assembling the scene</source>
+        <translation>Assemblage de la scène</translation>
+    </message>
+    <message>
+        <source>Exporting the scene</source>
+        <translation>Export de la scène</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::HysteroscopicPreview</name>
+    <message>
+        <source>How far the scope&apos;s tip is beyond the external os (mm)</source>
+        <translation>Distance de la pointe de l&apos;hystéroscope au-delà de l&apos;orifice externe du col (mm)</translation>
+    </message>
+    <message>
+        <source>&amp;Insertion</source>
+        <translation>&amp;Insertion</translation>
+    </message>
+    <message>
+        <source>%1°</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <source>The optic&apos;s angle off the shaft; office scopes are typically 30°</source>
+        <translation>Angle de l&apos;optique par rapport à l&apos;axe de la gaine ; les hystéroscopes de consultation ont généralement 30°</translation>
+    </message>
+    <message>
+        <source>&amp;Optic</source>
+        <translation>&amp;Optique</translation>
+    </message>
+    <message>
+        <source>The light post&apos;s rotation about the shaft (degrees; 0 looks anterior)</source>
+        <translation>Rotation du raccord de lumière autour de la gaine (degrés ; 0 regarde vers l&apos;avant)</translation>
+    </message>
+    <message>
+        <source>&amp;Roll</source>
+        <translation>&amp;Rotation</translation>
+    </message>
+    <message>
+        <source>Texture the case to see the cavity.</source>
+        <translation>Texturez le cas pour voir la cavité.</translation>
+    </message>
+    <message>
+        <source>This scene has no cervical canal or ostium labels: the scope cannot be placed.</source>
+        <translation>Cette scène n&apos;a pas d&apos;étiquettes de canal cervical ni d&apos;orifice : l&apos;hystéroscope ne peut pas être placé.</translation>
+    </message>
+    <message>
+        <source>Tip %1 mm beyond the external os, %2 optic, roll %3°</source>
+        <translation>Pointe à %1 mm au-delà de l&apos;orifice externe, optique %2, rotation %3°</translation>
+    </message>
+    <message>
+        <source>Looking at region %1 from %2 mm inside the cavity</source>
+        <translation>Vue de la région %1 à %2 mm de distance, depuis l&apos;intérieur de la cavité</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::JobRunner</name>
+    <message>
+        <source>The case asks for something the pipeline cannot make: a value is outside its allowed range or a pathology does not fit (see the details).</source>
+        <translation>Le cas demande quelque chose que le pipeline ne peut pas produire : une valeur est hors de sa plage autorisée ou une pathologie n&apos;a pas la place (voir les détails).</translation>
+    </message>
+    <message>
+        <source>A file the case names does not exist.</source>
+        <translation>Un fichier désigné par le cas n&apos;existe pas.</translation>
+    </message>
+    <message>
+        <source>A file could not be read or written.</source>
+        <translation>Un fichier n&apos;a pas pu être lu ou écrit.</translation>
+    </message>
+    <message>
+        <source>The case asks for something this version does not support.</source>
+        <translation>Le cas demande quelque chose que cette version ne prend pas en charge.</translation>
+    </message>
+    <message>
+        <source>The result would be larger than this program accepts.</source>
+        <translation>Le résultat dépasserait la taille acceptée par ce programme.</translation>
+    </message>
+    <message>
+        <source>The job was cancelled.</source>
+        <translation>La tâche a été annulée.</translation>
+    </message>
+    <message>
+        <source>A geometry or image library failed on this case.</source>
+        <translation>Une bibliothèque de géométrie ou d&apos;image a échoué sur ce cas.</translation>
+    </message>
+    <message>
+        <source>An internal error stopped the job.</source>
+        <translation>Une erreur interne a arrêté la tâche.</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::JobStatusWidget</name>
+    <message>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <source>Stop the running job (Esc)</source>
+        <translation>Arrêter la tâche en cours (Esc)</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::MaterialsPanel</name>
+    <message>
+        <source>Myometrium</source>
+        <translation>Myomètre</translation>
+    </message>
+    <message>
+        <source>Endometrium</source>
+        <translation>Endomètre</translation>
+    </message>
+    <message>
+        <source>Cervix</source>
+        <translation>Col utérin</translation>
+    </message>
+    <message>
+        <source>Myoma</source>
+        <translation>Myome</translation>
+    </message>
+    <message>
+        <source>Polyp</source>
+        <translation>Polype</translation>
+    </message>
+    <message>
+        <source>Young&apos;s modulus (kPa)</source>
+        <translation>Module de Young (kPa)</translation>
+    </message>
+    <message>
+        <source>Poisson ratio</source>
+        <translation>Coefficient de Poisson</translation>
+    </message>
+    <message>
+        <source>Density (kg/m³)</source>
+        <translation>Masse volumique (kg/m³)</translation>
+    </message>
+    <message>
+        <source>Heterogeneity</source>
+        <translation>Hétérogénéité</translation>
+    </message>
+    <message>
+        <source>Default %1; allowed %2</source>
+        <translation>Par défaut %1 ; autorisé %2</translation>
+    </message>
+    <message>
+        <source>Material</source>
+        <translation>Matériau</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Par défaut</translation>
+    </message>
+    <message>
+        <source>Use the literature values for this tissue</source>
+        <translation>Utiliser les valeurs de la littérature pour ce tissu</translation>
+    </message>
+    <message>
+        <source>Default material</source>
+        <translation>Matériau par défaut</translation>
+    </message>
+    <message>
+        <source> kPa</source>
+        <translation> kPa</translation>
+    </message>
+    <message>
+        <source>Distension pressure the scene&apos;s hydrometra curve is computed for, %1 (8 kPa = 60 mmHg)</source>
+        <translation>Pression de distension pour laquelle la courbe d&apos;hydromètre de la scène est calculée, %1 (8 kPa = 60 mmHg)</translation>
+    </message>
+    <message>
+        <source>&amp;Hydrometra pressure</source>
+        <translation>Pression d&apos;&amp;hydromètre</translation>
+    </message>
+    <message>
+        <source>Hydrometra pressure</source>
+        <translation>Pression d&apos;hydromètre</translation>
+    </message>
+    <message>
+        <source>Defaults: myometrium 30 kPa, endometrium 26.2 kPa (proliferative), myoma 65 kPa, polyp 15 kPa; Poisson ratio 0.47; 1050 kg/m³ (see docs/scene-format.md).</source>
+        <translation>Valeurs par défaut : myomètre 30 kPa, endomètre 26,2 kPa (phase proliférative), myome 65 kPa, polype 15 kPa ; coefficient de Poisson 0,47 ; 1050 kg/m³ (voir docs/scene-format.md).</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::MeshPanel</name>
+    <message>
+        <source>tets</source>
+        <translation>tétraèdres</translation>
+    </message>
+    <message>
+        <source>Meshing</source>
+        <translation>Maillage</translation>
+    </message>
+    <message>
+        <source>Particles (Sierra et al. 2004)</source>
+        <translation>Particules (Sierra et al. 2004)</translation>
+    </message>
+    <message>
+        <source>TetGen</source>
+        <translation>TetGen</translation>
+    </message>
+    <message>
+        <source>CGAL Mesh_3</source>
+        <translation>CGAL Mesh_3</translation>
+    </message>
+    <message>
+        <source>The particle mesher is the method of the paper; TetGen and CGAL are baselines</source>
+        <translation>Le mailleur à particules est la méthode de l&apos;article ; TetGen et CGAL servent de référence</translation>
+    </message>
+    <message>
+        <source>Vertices the mesh aims at: %1</source>
+        <translation>Nombre de sommets visé pour le maillage : %1</translation>
+    </message>
+    <message>
+        <source>&amp;Target vertices</source>
+        <translation>Sommets &amp;cibles</translation>
+    </message>
+    <message>
+        <source>Lattice</source>
+        <translation>Grille</translation>
+    </message>
+    <message>
+        <source>Random, 2 per voxel</source>
+        <translation>Aléatoire, 2 par voxel</translation>
+    </message>
+    <message>
+        <source>How particles are seeded inside the body (particle method)</source>
+        <translation>Comment les particules sont placées initialement dans le corps (méthode à particules)</translation>
+    </message>
+    <message>
+        <source>&amp;Seeding</source>
+        <translation>Placement &amp;initial</translation>
+    </message>
+    <message>
+        <source>Most relaxation iterations (%1); relaxation also stops when it converges</source>
+        <translation>Nombre maximal d&apos;itérations de relaxation (%1) ; la relaxation s&apos;arrête aussi dès qu&apos;elle converge</translation>
+    </message>
+    <message>
+        <source>&amp;Relaxation</source>
+        <translation>&amp;Relaxation</translation>
+    </message>
+    <message>
+        <source>&amp;Mesh</source>
+        <translation>M&amp;ailler</translation>
+    </message>
+    <message>
+        <source>Mesh the merged body and split the wall into its tissues (Ctrl+M)</source>
+        <translation>Mailler le corps fusionné et séparer la paroi en ses tissus (Ctrl+M)</translation>
+    </message>
+    <message>
+        <source>Meshing method</source>
+        <translation>Méthode de maillage</translation>
+    </message>
+    <message>
+        <source>Target vertices</source>
+        <translation>Sommets cibles</translation>
+    </message>
+    <message>
+        <source>Seeding</source>
+        <translation>Placement initial</translation>
+    </message>
+    <message>
+        <source>Relaxation iterations</source>
+        <translation>Itérations de relaxation</translation>
+    </message>
+    <message>
+        <source>Quality</source>
+        <translation>Qualité</translation>
+    </message>
+    <message>
+        <source>Not meshed yet.</source>
+        <translation>Pas encore maillé.</translation>
+    </message>
+    <message>
+        <source>Radius ratio</source>
+        <translation>Rapport des rayons</translation>
+    </message>
+    <message>
+        <source>3 × inradius / circumradius: 1 for the regular tetrahedron</source>
+        <translation>3 × rayon inscrit / rayon circonscrit : 1 pour le tétraèdre régulier</translation>
+    </message>
+    <message>
+        <source>Smallest dihedral angle</source>
+        <translation>Plus petit angle dièdre</translation>
+    </message>
+    <message>
+        <source>Degrees; below 10° a tet is a sliver</source>
+        <translation>Degrés ; en dessous de 10°, un tétraèdre est un sliver (tétraèdre aplati)</translation>
+    </message>
+    <message>
+        <source>Colour by</source>
+        <translation>Colorer selon</translation>
+    </message>
+    <message>
+        <source>Tissue</source>
+        <translation>Tissu</translation>
+    </message>
+    <message>
+        <source>Smallest dihedral</source>
+        <translation>Plus petit angle dièdre</translation>
+    </message>
+    <message>
+        <source>Blue: poor, red: good (radius ratio 0 – 1, dihedral 0 – 70.5°)</source>
+        <translation>Bleu : mauvais, rouge : bon (rapport des rayons 0 – 1, angle dièdre 0 – 70,5°)</translation>
+    </message>
+    <message>
+        <source>Regions shown</source>
+        <translation>Régions affichées</translation>
+    </message>
+    <message>
+        <source>Tet</source>
+        <translation>Tétraèdre</translation>
+    </message>
+    <message>
+        <source>Region</source>
+        <translation>Région</translation>
+    </message>
+    <message>
+        <source>Dihedral</source>
+        <translation>Angle dièdre</translation>
+    </message>
+    <message>
+        <source>The worst tets by radius ratio; double-click or Show frames one in the view</source>
+        <translation>Les pires tétraèdres selon le rapport des rayons ; un double-clic ou « Afficher » en cadre un dans la vue</translation>
+    </message>
+    <message>
+        <source>&amp;Show</source>
+        <translation>A&amp;fficher</translation>
+    </message>
+    <message>
+        <source>%1 vertices, %2 tets. Radius ratio: min %3, mean %4. Smallest dihedral %5°, %6 slivers. Boundary within %7 mm of the body; volume error %8 %.</source>
+        <translation>%1 sommets, %2 tétraèdres. Rapport des rayons : min %3, moyenne %4. Plus petit angle dièdre %5°, %6 slivers. Bord à moins de %7 mm du corps ; erreur de volume %8 %.</translation>
+    </message>
+    <message>
+        <source>Inspecting the mesh</source>
+        <translation>Inspection du maillage</translation>
+    </message>
+    <message>
+        <source>radius ratio</source>
+        <translation>rapport des rayons</translation>
+    </message>
+    <message>
+        <source>Me&amp;thod</source>
+        <translation>Mé&amp;thode</translation>
+    </message>
+    <message>
+        <source>smallest dihedral (°)</source>
+        <translation>plus petit angle dièdre (°)</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::PathologyPanel</name>
+    <message>
+        <source>0 – pedunculated, intracavitary</source>
+        <translation>0 – pédiculé, intracavitaire</translation>
+    </message>
+    <message>
+        <source>1 – submucosal, &lt; 50 % intramural</source>
+        <translation>1 – sous-muqueux, &lt; 50 % intramural</translation>
+    </message>
+    <message>
+        <source>2 – submucosal, ≥ 50 % intramural</source>
+        <translation>2 – sous-muqueux, ≥ 50 % intramural</translation>
+    </message>
+    <message>
+        <source>3 – intramural, touching the endometrium</source>
+        <translation>3 – intramural, au contact de l&apos;endomètre</translation>
+    </message>
+    <message>
+        <source>4 – intramural</source>
+        <translation>4 – intramural</translation>
+    </message>
+    <message>
+        <source>5 – subserosal, ≥ 50 % intramural</source>
+        <translation>5 – sous-séreux, ≥ 50 % intramural</translation>
+    </message>
+    <message>
+        <source>6 – subserosal, &lt; 50 % intramural</source>
+        <translation>6 – sous-séreux, &lt; 50 % intramural</translation>
+    </message>
+    <message>
+        <source>7 – subserosal, pedunculated</source>
+        <translation>7 – sous-séreux, pédiculé</translation>
+    </message>
+    <message>
+        <source>1-5 – hybrid, submucosal and subserosal</source>
+        <translation>1-5 – hybride, sous-muqueux et sous-séreux</translation>
+    </message>
+    <message>
+        <source>2-5 – hybrid, submucosal and subserosal</source>
+        <translation>2-5 – hybride, sous-muqueux et sous-séreux</translation>
+    </message>
+    <message>
+        <source>3-5 – hybrid, intramural and subserosal</source>
+        <translation>3-5 – hybride, intramural et sous-séreux</translation>
+    </message>
+    <message>
+        <source>Anterior wall</source>
+        <translation>Paroi antérieure</translation>
+    </message>
+    <message>
+        <source>Posterior wall</source>
+        <translation>Paroi postérieure</translation>
+    </message>
+    <message>
+        <source>Left lateral wall</source>
+        <translation>Paroi latérale gauche</translation>
+    </message>
+    <message>
+        <source>Right lateral wall</source>
+        <translation>Paroi latérale droite</translation>
+    </message>
+    <message>
+        <source>Left cornu</source>
+        <translation>Corne utérine gauche</translation>
+    </message>
+    <message>
+        <source>Right cornu</source>
+        <translation>Corne utérine droite</translation>
+    </message>
+    <message>
+        <source>Isthmus</source>
+        <translation>Isthme</translation>
+    </message>
+    <message>
+        <source>Myoma</source>
+        <translation>Myome</translation>
+    </message>
+    <message>
+        <source>Polyp</source>
+        <translation>Polype</translation>
+    </message>
+    <message>
+        <source>Add &amp;Myoma</source>
+        <translation>Ajouter un &amp;myome</translation>
+    </message>
+    <message>
+        <source>Add a 20 mm FIGO 2 myoma at a free wall</source>
+        <translation>Ajouter un myome FIGO 2 de 20 mm sur une paroi libre</translation>
+    </message>
+    <message>
+        <source>Add &amp;Polyp</source>
+        <translation>Ajouter un &amp;polype</translation>
+    </message>
+    <message>
+        <source>Add a 10 mm sessile polyp at a free wall</source>
+        <translation>Ajouter un polype sessile de 10 mm sur une paroi libre</translation>
+    </message>
+    <message>
+        <source>D&amp;uplicate</source>
+        <translation>&amp;Dupliquer</translation>
+    </message>
+    <message>
+        <source>Copy the selected pathology to a free wall</source>
+        <translation>Copier la pathologie sélectionnée sur une paroi libre</translation>
+    </message>
+    <message>
+        <source>&amp;Remove</source>
+        <translation>&amp;Supprimer</translation>
+    </message>
+    <message>
+        <source>Selected pathology</source>
+        <translation>Pathologie sélectionnée</translation>
+    </message>
+    <message>
+        <source>Names the pathology&apos;s region and files in the scene</source>
+        <translation>Nomme la région et les fichiers de la pathologie dans la scène</translation>
+    </message>
+    <message>
+        <source>&amp;Id</source>
+        <translation>&amp;Identifiant</translation>
+    </message>
+    <message>
+        <source>&amp;Kind</source>
+        <translation>&amp;Nature</translation>
+    </message>
+    <message>
+        <source>Cellular automaton</source>
+        <translation>Automate cellulaire</translation>
+    </message>
+    <message>
+        <source>Skeleton and contours</source>
+        <translation>Squelette et contours</translation>
+    </message>
+    <message>
+        <source>Particles</source>
+        <translation>Particules</translation>
+    </message>
+    <message>
+        <source>How the pathology grows (Sierra et al. 2004); the automaton grows myomas only</source>
+        <translation>Comment la pathologie croît (Sierra et al. 2004) ; l&apos;automate ne fait croître que les myomes</translation>
+    </message>
+    <message>
+        <source>FIGO type: how deep the myoma sits in the wall (myomas only)</source>
+        <translation>Type FIGO : profondeur du myome dans la paroi (myomes uniquement)</translation>
+    </message>
+    <message>
+        <source>&amp;FIGO type</source>
+        <translation>Type &amp;FIGO</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Largest diameter in mm (a pedunculated polyp: of its head). Myomas 5 – 100 mm, polyps 3 – 40 mm</source>
+        <translation>Plus grand diamètre en mm (pour un polype pédiculé : celui de sa tête). Myomes 5 – 100 mm, polypes 3 – 40 mm</translation>
+    </message>
+    <message>
+        <source>Si&amp;ze</source>
+        <translation>Tai&amp;lle</translation>
+    </message>
+    <message>
+        <source>Sessile</source>
+        <translation>Sessile</translation>
+    </message>
+    <message>
+        <source>Pedunculated</source>
+        <translation>Pédiculé</translation>
+    </message>
+    <message>
+        <source>&amp;Attachment</source>
+        <translation>Implan&amp;tation</translation>
+    </message>
+    <message>
+        <source>Stalk length in mm, %1 (pedunculated polyps)</source>
+        <translation>Longueur du pédicule en mm, %1 (polypes pédiculés)</translation>
+    </message>
+    <message>
+        <source>S&amp;talk</source>
+        <translation>Pédicul&amp;e</translation>
+    </message>
+    <message>
+        <source>Placement</source>
+        <translation>Placement</translation>
+    </message>
+    <message>
+        <source>At a point</source>
+        <translation>En un point</translation>
+    </message>
+    <message>
+        <source>Click on Wall</source>
+        <translation>Cliquer sur la paroi</translation>
+    </message>
+    <message>
+        <source>Then click on the organ&apos;s wall in the 3-D view to seat the pathology there (Ctrl+P; Esc cancels)</source>
+        <translation>Puis cliquer sur la paroi de l&apos;organe dans la vue 3D pour y placer la pathologie (Ctrl+P ; Esc annule)</translation>
+    </message>
+    <message>
+        <source>Grown</source>
+        <translation>Croissance</translation>
+    </message>
+    <message>
+        <source>&amp;Grow</source>
+        <translation>Cr&amp;oître</translation>
+    </message>
+    <message>
+        <source>Grow every pathology in the organ (Ctrl+G)</source>
+        <translation>Faire croître toutes les pathologies de l&apos;organe (Ctrl+G)</translation>
+    </message>
+    <message>
+        <source>M&amp;erge</source>
+        <translation>F&amp;usionner</translation>
+    </message>
+    <message>
+        <source>Merge the organ and the pathologies into one body with contact labels</source>
+        <translation>Fusionner l&apos;organe et les pathologies en un seul corps avec des étiquettes de contact</translation>
+    </message>
+    <message>
+        <source>Pathology id</source>
+        <translation>Identifiant de la pathologie</translation>
+    </message>
+    <message>
+        <source>Pathology kind</source>
+        <translation>Nature de la pathologie</translation>
+    </message>
+    <message>
+        <source>Growth model</source>
+        <translation>Modèle de croissance</translation>
+    </message>
+    <message>
+        <source>FIGO type</source>
+        <translation>Type FIGO</translation>
+    </message>
+    <message>
+        <source>Pathology size</source>
+        <translation>Taille de la pathologie</translation>
+    </message>
+    <message>
+        <source>Polyp attachment</source>
+        <translation>Implantation du polype</translation>
+    </message>
+    <message>
+        <source>Stalk length</source>
+        <translation>Longueur du pédicule</translation>
+    </message>
+    <message>
+        <source>The organ is still being built: click again once it is shown.</source>
+        <translation>L&apos;organe est encore en construction : cliquez à nouveau dès qu&apos;il est affiché.</translation>
+    </message>
+    <message>
+        <source>Nothing placed: the click missed the organ. Click on its wall.</source>
+        <translation>Rien n&apos;a été placé : le clic n&apos;a pas touché l&apos;organe. Cliquez sur sa paroi.</translation>
+    </message>
+    <message>
+        <source>Nothing placed: that is the cervix, where pathologies are not modelled.</source>
+        <translation>Rien n&apos;a été placé : c&apos;est le col utérin, où les pathologies ne sont pas modélisées.</translation>
+    </message>
+    <message>
+        <source>Nothing placed: a polyp grows from the endometrium. Click on the cavity&apos;s wall (View &gt; Clip opens the organ).</source>
+        <translation>Rien n&apos;a été placé : un polype naît de l&apos;endomètre. Cliquez sur la paroi de la cavité (Affichage &gt; Coupe ouvre l&apos;organe).</translation>
+    </message>
+    <message>
+        <source>Nothing placed: the click is not on the organ&apos;s wall.</source>
+        <translation>Rien n&apos;a été placé : le clic n&apos;est pas sur la paroi de l&apos;organe.</translation>
+    </message>
+    <message>
+        <source>Place on wall</source>
+        <translation>Placer sur la paroi</translation>
+    </message>
+    <message>
+        <source>A case holds at most %1 pathologies.</source>
+        <translation>Un cas contient au plus %1 pathologies.</translation>
+    </message>
+    <message>
+        <source>Add myoma</source>
+        <translation>Ajouter un myome</translation>
+    </message>
+    <message>
+        <source>Add polyp</source>
+        <translation>Ajouter un polype</translation>
+    </message>
+    <message>
+        <source>Duplicate pathology</source>
+        <translation>Dupliquer la pathologie</translation>
+    </message>
+    <message>
+        <source>Remove pathology</source>
+        <translation>Supprimer la pathologie</translation>
+    </message>
+    <message>
+        <source>(%1, %2, %3) mm</source>
+        <translation>(%1 ; %2 ; %3) mm</translation>
+    </message>
+    <message>
+        <source>Not grown yet.</source>
+        <translation>Croissance pas encore effectuée.</translation>
+    </message>
+    <message>
+        <source>Measured: FIGO &lt;b&gt;%1&lt;/b&gt;, %2 mm, %3 % in the wall, %4 % in the cavity</source>
+        <translation>Mesuré : FIGO &lt;b&gt;%1&lt;/b&gt;, %2 mm, %3 % dans la paroi, %4 % dans la cavité</translation>
+    </message>
+    <message>
+        <source>Lasmar score &lt;b&gt;%1&lt;/b&gt; (size %2, topography %3, extension %4, penetration %5, wall %6)</source>
+        <translation>Score de Lasmar &lt;b&gt;%1&lt;/b&gt; (taille %2, topographie %3, extension %4, pénétration %5, paroi %6)</translation>
+    </message>
+    <message>
+        <source>Measured: a %1 mm head on a %2 mm stalk</source>
+        <translation>Mesuré : tête de %1 mm sur un pédicule de %2 mm</translation>
+    </message>
+    <message>
+        <source>Measured: sessile, %1 mm, base %2 mm</source>
+        <translation>Mesuré : sessile, %1 mm, base %2 mm</translation>
+    </message>
+    <message>
+        <source>From before the last edit: grow again.</source>
+        <translation>Antérieur à la dernière modification : relancez la croissance.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n note(s) from the stage</source>
+        <translation>
+            <numerusform>%n remarque de l&apos;étape</numerusform>
+            <numerusform>%n remarques de l&apos;étape</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Fundus</source>
+        <translation>Fond utérin</translation>
+    </message>
+    <message>
+        <source>Gro&amp;wth model</source>
+        <translation>&amp;Modèle de croissance</translation>
+    </message>
+    <message>
+        <source>Site</source>
+        <translation>Localisation</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::PatientPanel</name>
+    <message>
+        <source>Uterine length</source>
+        <translation>Longueur utérine</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Largeur</translation>
+    </message>
+    <message>
+        <source>AP depth</source>
+        <translation>Profondeur AP</translation>
+    </message>
+    <message>
+        <source>Cavity length</source>
+        <translation>Longueur de la cavité</translation>
+    </message>
+    <message>
+        <source>Cavity width</source>
+        <translation>Largeur de la cavité</translation>
+    </message>
+    <message>
+        <source>Cervix length</source>
+        <translation>Longueur du col utérin</translation>
+    </message>
+    <message>
+        <source>Patient</source>
+        <translation>Patiente</translation>
+    </message>
+    <message>
+        <source> years</source>
+        <translation> ans</translation>
+    </message>
+    <message>
+        <source>Age in years</source>
+        <translation>Âge en années</translation>
+    </message>
+    <message>
+        <source>&amp;Age</source>
+        <translation>Âg&amp;e</translation>
+    </message>
+    <message>
+        <source>years</source>
+        <translation>ans</translation>
+    </message>
+    <message>
+        <source>Births after 20 weeks of gestation</source>
+        <translation>Accouchements après 20 semaines de grossesse</translation>
+    </message>
+    <message>
+        <source>&amp;Parity</source>
+        <translation>&amp;Parité</translation>
+    </message>
+    <message>
+        <source>births</source>
+        <translation>accouchements</translation>
+    </message>
+    <message>
+        <source>Pregnancies, including those that ended in a birth (at least the parity)</source>
+        <translation>Grossesses, y compris celles qui ont abouti à un accouchement (au moins la parité)</translation>
+    </message>
+    <message>
+        <source>&amp;Gravidity</source>
+        <translation>&amp;Gestité</translation>
+    </message>
+    <message>
+        <source>pregnancies</source>
+        <translation>grossesses</translation>
+    </message>
+    <message>
+        <source> cm</source>
+        <translation> cm</translation>
+    </message>
+    <message>
+        <source>Height in centimetres</source>
+        <translation>Taille en centimètres</translation>
+    </message>
+    <message>
+        <source>&amp;Height</source>
+        <translation>&amp;Taille</translation>
+    </message>
+    <message>
+        <source>cm</source>
+        <translation>cm</translation>
+    </message>
+    <message>
+        <source> kg</source>
+        <translation> kg</translation>
+    </message>
+    <message>
+        <source>Weight in kilograms</source>
+        <translation>Poids en kilogrammes</translation>
+    </message>
+    <message>
+        <source>&amp;Weight</source>
+        <translation>Poi&amp;ds</translation>
+    </message>
+    <message>
+        <source>kg</source>
+        <translation>kg</translation>
+    </message>
+    <message>
+        <source>Postmenopausal</source>
+        <translation>Ménopausée</translation>
+    </message>
+    <message>
+        <source>Postmenopausal patients are 40 years or older; premenopausal ones at most 60</source>
+        <translation>Les patientes ménopausées ont 40 ans ou plus ; les non ménopausées au plus 60</translation>
+    </message>
+    <message>
+        <source>Menstrual</source>
+        <translation>Menstruelle</translation>
+    </message>
+    <message>
+        <source>Proliferative</source>
+        <translation>Proliférative</translation>
+    </message>
+    <message>
+        <source>Secretory</source>
+        <translation>Sécrétoire</translation>
+    </message>
+    <message>
+        <source>Phase of the cycle on the day of the hysteroscopy; it sets the endometrium&apos;s thickness (premenopausal patients only)</source>
+        <translation>Phase du cycle le jour de l&apos;hystéroscopie ; elle détermine l&apos;épaisseur de l&apos;endomètre (patientes non ménopausées uniquement)</translation>
+    </message>
+    <message>
+        <source>C&amp;ycle phase</source>
+        <translation>Phase du &amp;cycle</translation>
+    </message>
+    <message>
+        <source>Sample for this patient</source>
+        <translation>Échantillon pour cette patiente</translation>
+    </message>
+    <message>
+        <source>Mean for this patient</source>
+        <translation>Moyenne pour cette patiente</translation>
+    </message>
+    <message>
+        <source>A seeded organ of the statistical shape model, or the model&apos;s mean for the patient</source>
+        <translation>Un organe du modèle statistique de forme tiré selon la graine, ou la moyenne du modèle pour la patiente</translation>
+    </message>
+    <message>
+        <source>&amp;Organ</source>
+        <translation>&amp;Organe</translation>
+    </message>
+    <message>
+        <source>Every random choice of every stage derives from the seed: the same seed gives the same scene</source>
+        <translation>Chaque choix aléatoire de chaque étape découle de la graine : la même graine donne la même scène</translation>
+    </message>
+    <message>
+        <source>New</source>
+        <translation>Nouvelle</translation>
+    </message>
+    <message>
+        <source>Draw a new seed: a new patient of the same description</source>
+        <translation>Tirer une nouvelle graine : une nouvelle patiente de même description</translation>
+    </message>
+    <message>
+        <source>&amp;Seed</source>
+        <translation>Grai&amp;ne</translation>
+    </message>
+    <message>
+        <source>Dimensions</source>
+        <translation>Dimensions</translation>
+    </message>
+    <message>
+        <source>Set a dimension to a measured value (ultrasound) and the organ is fitted to it</source>
+        <translation>Fixez une dimension à une valeur mesurée (échographie) et l&apos;organe s&apos;y ajuste</translation>
+    </message>
+    <message>
+        <source>This organ</source>
+        <translation>Cet organe</translation>
+    </message>
+    <message>
+        <source>Expected (95 %)</source>
+        <translation>Attendu (95 %)</translation>
+    </message>
+    <message>
+        <source>Measured</source>
+        <translation>Mesuré</translation>
+    </message>
+    <message>
+        <source>The published relations for this patient, mean ± 1.96 SD</source>
+        <translation>Les relations publiées pour cette patiente, moyenne ± 1,96 ET</translation>
+    </message>
+    <message>
+        <source>Fit the organ to a measured value</source>
+        <translation>Ajuster l&apos;organe à une valeur mesurée</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Allowed: %1</source>
+        <translation>Autorisé : %1</translation>
+    </message>
+    <message>
+        <source>Age</source>
+        <translation>Âge</translation>
+    </message>
+    <message>
+        <source>Parity</source>
+        <translation>Parité</translation>
+    </message>
+    <message>
+        <source>Gravidity</source>
+        <translation>Gestité</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Taille</translation>
+    </message>
+    <message>
+        <source>Weight</source>
+        <translation>Poids</translation>
+    </message>
+    <message>
+        <source>Menopausal state</source>
+        <translation>Statut ménopausique</translation>
+    </message>
+    <message>
+        <source>Cycle phase</source>
+        <translation>Phase du cycle</translation>
+    </message>
+    <message>
+        <source>Organ mode</source>
+        <translation>Mode de l&apos;organe</translation>
+    </message>
+    <message>
+        <source>Seed</source>
+        <translation>Graine</translation>
+    </message>
+    <message>
+        <source>New seed</source>
+        <translation>Nouvelle graine</translation>
+    </message>
+    <message>
+        <source>%1 – %2 mm</source>
+        <translation>%1 – %2 mm</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>Outside the expected range for this patient</source>
+        <translation>Hors de la plage attendue pour cette patiente</translation>
+    </message>
+    <message>
+        <source>Fundal wall thickness</source>
+        <translation>Épaisseur de la paroi fundique</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::ReviewPanel</name>
+    <message>
+        <source>cellular automaton</source>
+        <translation>automate cellulaire</translation>
+    </message>
+    <message>
+        <source>skeleton</source>
+        <translation>squelette</translation>
+    </message>
+    <message>
+        <source>particles</source>
+        <translation>particules</translation>
+    </message>
+    <message>
+        <source>–</source>
+        <translation>–</translation>
+    </message>
+    <message>
+        <source>1: not realistic … 5: indistinguishable from a real one; – not rated</source>
+        <translation>1 : pas réaliste … 5 : impossible à distinguer d&apos;un vrai ; – non noté</translation>
+    </message>
+    <message>
+        <source>No package opened for review (File &gt; Review Scene Package).</source>
+        <translation>Aucun paquet ouvert pour évaluation (Fichier &gt; Évaluer un paquet de scène).</translation>
+    </message>
+    <message>
+        <source>Reviewer</source>
+        <translation>Évaluateur</translation>
+    </message>
+    <message>
+        <source>Pathologies</source>
+        <translation>Pathologies</translation>
+    </message>
+    <message>
+        <source>Id</source>
+        <translation>Identifiant</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Nature</translation>
+    </message>
+    <message>
+        <source>Growth</source>
+        <translation>Croissance</translation>
+    </message>
+    <message>
+        <source>Realism</source>
+        <translation>Réalisme</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Commentaire</translation>
+    </message>
+    <message>
+        <source>Textures</source>
+        <translation>Textures</translation>
+    </message>
+    <message>
+        <source>Appearance</source>
+        <translation>Aspect</translation>
+    </message>
+    <message>
+        <source>Save &amp;Review</source>
+        <translation>&amp;Enregistrer l&apos;évaluation</translation>
+    </message>
+    <message>
+        <source>Write the ratings beside the package (the package itself is not changed)</source>
+        <translation>Écrire les notes à côté du paquet (le paquet lui-même n&apos;est pas modifié)</translation>
+    </message>
+    <message>
+        <source>All reviews in this folder</source>
+        <translation>Toutes les évaluations de ce dossier</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>Groupe</translation>
+    </message>
+    <message>
+        <source>Ratings</source>
+        <translation>Notes</translation>
+    </message>
+    <message>
+        <source>Mean</source>
+        <translation>Moyenne</translation>
+    </message>
+    <message>
+        <source>Lowest</source>
+        <translation>Minimum</translation>
+    </message>
+    <message>
+        <source>Highest</source>
+        <translation>Maximum</translation>
+    </message>
+    <message>
+        <source>The review beside the package belongs to another version of it; saving replaces it.</source>
+        <translation>L&apos;évaluation à côté du paquet concerne une autre version de celui-ci ; l&apos;enregistrement la remplace.</translation>
+    </message>
+    <message>
+        <source>Reviewing %1 (read-only)</source>
+        <translation>Évaluation de %1 (lecture seule)</translation>
+    </message>
+    <message>
+        <source>myoma</source>
+        <translation>myome</translation>
+    </message>
+    <message>
+        <source>polyp</source>
+        <translation>polype</translation>
+    </message>
+    <message>
+        <source>Visit</source>
+        <translation>Observer</translation>
+    </message>
+    <message>
+        <source>Look at this pathology from inside the cavity</source>
+        <translation>Observer cette pathologie depuis l&apos;intérieur de la cavité</translation>
+    </message>
+    <message>
+        <source>The pathology %1 is not a region of this scene.</source>
+        <translation>La pathologie %1 n&apos;est pas une région de cette scène.</translation>
+    </message>
+    <message>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The review could not be written beside the package (is the folder read-only?).&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;L&apos;évaluation n&apos;a pas pu être écrite à côté du paquet (le dossier est-il en lecture seule ?).&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>Saved to %1.</source>
+        <translation>Enregistré dans %1.</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::TexturePanel</name>
+    <message>
+        <source>Endometrium</source>
+        <translation>Endomètre</translation>
+    </message>
+    <message>
+        <source>Myoma</source>
+        <translation>Myome</translation>
+    </message>
+    <message>
+        <source>Polyp</source>
+        <translation>Polype</translation>
+    </message>
+    <message>
+        <source>Texture</source>
+        <translation>Texture</translation>
+    </message>
+    <message>
+        <source>%1 × %1 px</source>
+        <translation>%1 × %1 px</translation>
+    </message>
+    <message>
+        <source>Side of each square map in pixels</source>
+        <translation>Côté de chaque carte carrée en pixels</translation>
+    </message>
+    <message>
+        <source>Map &amp;size</source>
+        <translation>Taille des &amp;cartes</translation>
+    </message>
+    <message>
+        <source>Vessels relative to the default network, %1; 0: none</source>
+        <translation>Vaisseaux par rapport au réseau par défaut, %1 ; 0 : aucun</translation>
+    </message>
+    <message>
+        <source>&amp;Vessel density</source>
+        <translation>&amp;Densité vasculaire</translation>
+    </message>
+    <message>
+        <source>Choose...</source>
+        <translation>Choisir...</translation>
+    </message>
+    <message>
+        <source>Bundled</source>
+        <translation>Fourni</translation>
+    </message>
+    <message>
+        <source>Use the bundled procedural exemplar</source>
+        <translation>Utiliser l&apos;exemple procédural fourni</translation>
+    </message>
+    <message>
+        <source>Bundled exemplar</source>
+        <translation>Exemple fourni</translation>
+    </message>
+    <message>
+        <source>&amp;Texture</source>
+        <translation>&amp;Texturer</translation>
+    </message>
+    <message>
+        <source>Synthesize and bake the maps on the final surface (Ctrl+T)</source>
+        <translation>Synthétiser les cartes et les précalculer (bake) sur la surface finale (Ctrl+T)</translation>
+    </message>
+    <message>
+        <source>Maps</source>
+        <translation>Cartes</translation>
+    </message>
+    <message>
+        <source>Albedo</source>
+        <translation>Albédo</translation>
+    </message>
+    <message>
+        <source>Normal</source>
+        <translation>Normales</translation>
+    </message>
+    <message>
+        <source>Roughness</source>
+        <translation>Rugosité</translation>
+    </message>
+    <message>
+        <source>Zoom in</source>
+        <translation>Zoom avant</translation>
+    </message>
+    <message>
+        <source>Zoom out</source>
+        <translation>Zoom arrière</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Ajuster</translation>
+    </message>
+    <message>
+        <source>Map size</source>
+        <translation>Taille des cartes</translation>
+    </message>
+    <message>
+        <source>Vessel density</source>
+        <translation>Densité vasculaire</translation>
+    </message>
+    <message>
+        <source>The file %1 does not exist.</source>
+        <translation>Le fichier %1 n&apos;existe pas.</translation>
+    </message>
+    <message>
+        <source>The image %1 is too small or too large: each side must be %2 – %3 px.</source>
+        <translation>L&apos;image %1 est trop petite ou trop grande : chaque côté doit mesurer %2 – %3 px.</translation>
+    </message>
+    <message>
+        <source>The file %1 is not an image this program reads (PNG, JPEG, EXR, TIFF).</source>
+        <translation>Le fichier %1 n&apos;est pas une image que ce programme lit (PNG, JPEG, EXR, TIFF).</translation>
+    </message>
+    <message>
+        <source>Exemplar image</source>
+        <translation>Image d&apos;exemple</translation>
+    </message>
+    <message>
+        <source>The bundled procedural exemplar</source>
+        <translation>L&apos;exemple procédural fourni</translation>
+    </message>
+    <message>
+        <source>Use your own image (PNG, JPEG, EXR, TIFF; %1 – %2 px a side): a crop of a real hysteroscopic view</source>
+        <translation>Utiliser votre propre image (PNG, JPEG, EXR, TIFF ; %1 – %2 px de côté) : un extrait d&apos;une vue hystéroscopique réelle</translation>
     </message>
 </context>
 <context>
@@ -143,10 +1592,6 @@
         <translation>À propos de Hysteroscene</translation>
     </message>
     <message>
-        <source>&lt;h3&gt;Hysteroscene %1&lt;/h3&gt;&lt;p&gt;A scenario authoring workstation for hysteroscopy training simulators.&lt;/p&gt;&lt;p&gt;Licensed under the GNU General Public License, version 3 or later.&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;Hysteroscene %1&lt;/h3&gt;&lt;p&gt;Un poste de création de scénarios pour les simulateurs de formation à l&apos;hystéroscopie.&lt;/p&gt;&lt;p&gt;Distribué sous la licence publique générale GNU (GPL), version 3 ou ultérieure.&lt;/p&gt;</translation>
-    </message>
-    <message>
         <source>&amp;New Case</source>
         <translation>&amp;Nouveau cas</translation>
     </message>
@@ -245,6 +1690,118 @@
     <message>
         <source>Recen&amp;t Cases</source>
         <translation>Cas récen&amp;ts</translation>
+    </message>
+    <message>
+        <source>Review Scene Package</source>
+        <translation>Évaluer un paquet de scène</translation>
+    </message>
+    <message>
+        <source>The folder is not a scene package (it has no manifest.json).</source>
+        <translation>Le dossier n&apos;est pas un paquet de scène (il n&apos;a pas de manifest.json).</translation>
+    </message>
+    <message>
+        <source>The scene package cannot be read: a file is missing, changed or breaks its format (see the details).</source>
+        <translation>Le paquet de scène ne peut pas être lu : un fichier manque, a été modifié ou ne respecte pas son format (voir les détails).</translation>
+    </message>
+    <message>
+        <source>Open an exported scene package read-only and rate how real it looks</source>
+        <translation>Ouvrir un paquet de scène exporté en lecture seule et noter son réalisme</translation>
+    </message>
+    <message>
+        <source>Close Re&amp;view</source>
+        <translation>&amp;Fermer l&apos;évaluation</translation>
+    </message>
+    <message>
+        <source>&amp;Panels</source>
+        <translation>&amp;Panneaux</translation>
+    </message>
+    <message>
+        <source>Patient</source>
+        <translation>Patiente</translation>
+    </message>
+    <message>
+        <source>Pathologies</source>
+        <translation>Pathologies</translation>
+    </message>
+    <message>
+        <source>Materials</source>
+        <translation>Matériaux</translation>
+    </message>
+    <message>
+        <source>Mesh</source>
+        <translation>Maillage</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Export</translation>
+    </message>
+    <message>
+        <source>Texture</source>
+        <translation>Texture</translation>
+    </message>
+    <message>
+        <source>Review</source>
+        <translation>Évaluation</translation>
+    </message>
+    <message>
+        <source>Hysteroscopic View</source>
+        <translation>Vue hystéroscopique</translation>
+    </message>
+    <message>
+        <source>Exemplar Image</source>
+        <translation>Image d&apos;exemple</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.jpg *.jpeg *.exr *.tif *.tiff)</source>
+        <translation>Images (*.png *.jpg *.jpeg *.exr *.tif *.tiff)</translation>
+    </message>
+    <message>
+        <source>Export Scene Package</source>
+        <translation>Exporter le paquet de scène</translation>
+    </message>
+    <message>
+        <source>Reading the scene package</source>
+        <translation>Lecture du paquet de scène</translation>
+    </message>
+    <message>
+        <source>Unsaved Ratings</source>
+        <translation>Notes non enregistrées</translation>
+    </message>
+    <message>
+        <source>The review of %1 has unsaved ratings. Save them?</source>
+        <translation>L&apos;évaluation de %1 a des notes non enregistrées. Les enregistrer ?</translation>
+    </message>
+    <message>
+        <source>Organ</source>
+        <translation>Organe</translation>
+    </message>
+    <message>
+        <source>Grown pathologies</source>
+        <translation>Pathologies après croissance</translation>
+    </message>
+    <message>
+        <source>Merged body</source>
+        <translation>Corps fusionné</translation>
+    </message>
+    <message>
+        <source>Tetrahedral mesh</source>
+        <translation>Maillage tétraédrique</translation>
+    </message>
+    <message>
+        <source>Textured surface</source>
+        <translation>Surface texturée</translation>
+    </message>
+    <message>
+        <source>The case&apos;s %1, as the pipeline made it</source>
+        <translation>%1 du cas, résultat du pipeline</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Hysteroscene %1&lt;/h3&gt;&lt;p&gt;A scenario authoring workstation for hysteroscopy training simulators.&lt;/p&gt;&lt;p&gt;Licensed under the GNU General Public License, version 3 or later.&lt;/p&gt;&lt;p&gt;&lt;small&gt;Built with %2.&lt;/small&gt;&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Hysteroscene %1&lt;/h3&gt;&lt;p&gt;Un poste de création de scénarios pour les simulateurs de formation à l&apos;hystéroscopie.&lt;/p&gt;&lt;p&gt;Distribué sous la licence publique générale GNU (GPL), version 3 ou ultérieure.&lt;/p&gt;&lt;p&gt;&lt;small&gt;Compilé avec %2.&lt;/small&gt;&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Revie&amp;w Scene Package...</source>
+        <translation>É&amp;valuer un paquet de scène...</translation>
     </message>
 </context>
 <context>

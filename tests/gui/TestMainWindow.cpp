@@ -104,7 +104,7 @@ void TestMainWindow::init() {
     MessageBox::takeRecorded();
     m_window = std::make_unique<MainWindow>();
     m_window->setRecoveryFolder(m_dir.filePath("recovery"));
-    m_window->resize(800, 600);
+    m_window->resize(1280, 1000); // the panels take the sides; the view keeps the centre
     m_window->show();
     QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
     QTRY_VERIFY(m_window->view()->renderCount() > 0);
@@ -286,6 +286,9 @@ void TestMainWindow::aboutGoesThroughMessageBox() {
     const QList<MessageBox::Message> messages = MessageBox::takeRecorded();
     QCOMPARE(messages.size(), 1);
     QVERIFY(messages.first().text.contains(QStringLiteral(HS_VERSION)));
+    // The versions of the libraries that shape a scene, and Qt's.
+    QVERIFY(messages.first().text.contains(QStringLiteral("vtk ")));
+    QVERIFY(messages.first().text.contains(QStringLiteral("qt %1").arg(qVersion())));
 }
 
 void TestMainWindow::closingSavesWindowGeometry() {

@@ -34,6 +34,15 @@ QString FileDialog::getSaveFileName(QWidget* parent, const QString& caption, con
     return QFileDialog::getSaveFileName(parent, caption, folder, filter);
 }
 
+QString FileDialog::getExistingDirectory(QWidget* parent, const QString& caption, const QString& folder) {
+    if (std::optional<QString>& next = nextFileName(); next.has_value()) {
+        const QString answer = *next;
+        next.reset();
+        return answer;
+    }
+    return QFileDialog::getExistingDirectory(parent, caption, folder);
+}
+
 void FileDialog::setNextFileName(const QString& fileName) {
     nextFileName() = fileName;
 }

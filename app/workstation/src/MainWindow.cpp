@@ -1,18 +1,32 @@
 #include "hs/workstation/MainWindow.h"
 
+#include "hs/scene/Review.h"
+#include "hs/scene/ScenePackage.h"
+#include "hs/widgets/jobs/JobStatusWidget.h"
+#include "hs/widgets/panels/ExportPanel.h"
+#include "hs/widgets/panels/MaterialsPanel.h"
+#include "hs/widgets/panels/MeshPanel.h"
+#include "hs/widgets/panels/PathologyPanel.h"
+#include "hs/widgets/panels/PatientPanel.h"
+#include "hs/widgets/panels/ReviewPanel.h"
+#include "hs/widgets/panels/TexturePanel.h"
+#include "hs/widgets/view/HysteroscopicPreview.h"
 #include "hs/widgets/view/MeshDisplay.h"
 #include "hs/workstation/FileDialog.h"
 #include "hs/workstation/MessageBox.h"
 
 #include <QAction>
 #include <QCloseEvent>
+#include <QCoreApplication>
 #include <QDir>
+#include <QDockWidget>
 #include <QFile>
 #include <QFileInfo>
 #include <QLabel>
 #include <QLocale>
 #include <QMenu>
 #include <QMenuBar>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -86,6 +100,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     createActions();
     createMenus();
     createStatusBar();
+    createPanels();
     readSettings();
     rebuildRecentMenu();
     rebuildRecentCasesMenu();
@@ -95,16 +110,33 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_document.undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     connect(&m_document, &widgets::CaseDocument::filePathChanged, this, &MainWindow::updateTitle);
     connect(&m_document, &widgets::CaseDocument::changed, this, &MainWindow::updateTitle);
+    connect(&m_document, &widgets::CaseDocument::changed, this, [this] { m_currentFile.clear(); });
     m_autosaveTimer.setInterval(kAutosaveMs);
     connect(&m_autosaveTimer, &QTimer::timeout, this, &MainWindow::autosave);
     m_autosaveTimer.start();
     updateTitle();
     connect(m_view, &widgets::VtkView::picked, this, &MainWindow::onPicked);
+    connect(&m_session, &widgets::GenerationSession::resultsChanged, this, &MainWindow::onResultsChanged);
+    connect(&m_session.runner(), &widgets::JobRunner::failed, this, &MainWindow::onJobFailed);
+    connect(&m_reviewJobs, &widgets::JobRunner::failed, this, [this](const QString&, const Error& error) {
+        // The package is untrusted: the details name the file, the field and the allowed range.
+        MessageBox::critical(this, tr("Review Scene Package"),
+                             error.code == ErrorCode::NotFound
+                                 ? tr("The folder is not a scene package (it has no manifest.json).")
+                                 : tr("The scene package cannot be read: a file is missing, changed or breaks its "
+                                      "format (see the details)."),
+                             QString::fromStdString(error.message()));
+    });
+    connect(m_pathologyPanel, &widgets::PathologyPanel::placingChanged, this, &MainWindow::showResults);
+    // The organ of the case the window starts with.
+    m_session.runThrough(generate::Stage::Organ);
 }
 
 MainWindow::~MainWindow() {
-    // The worker touches nothing of the window, but it should not outlive it either.
+    // The workers touch nothing of the window, but they should not outlive it either.
     m_loadWatcher.waitForFinished();
+    m_session.runner().cancel();
+    m_reviewJobs.cancel();
 }
 
 void MainWindow::createActions() {
@@ -166,6 +198,16 @@ void MainWindow::createActions() {
     m_resetCameraAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
     connect(m_resetCameraAction, &QAction::triggered, this, &MainWindow::onResetCamera);
 
+    m_reviewAction = new QAction(tr("Revie&w Scene Package..."), this);
+    m_reviewAction->setObjectName("actionReviewPackage");
+    m_reviewAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
+    m_reviewAction->setStatusTip(tr("Open an exported scene package read-only and rate how real it looks"));
+    connect(m_reviewAction, &QAction::triggered, this, &MainWindow::onReviewPackage);
+    m_closeReviewAction = new QAction(tr("Close Re&view"), this);
+    m_closeReviewAction->setObjectName("actionCloseReview");
+    m_closeReviewAction->setEnabled(false);
+    connect(m_closeReviewAction, &QAction::triggered, this, &MainWindow::onCloseReview);
+
     m_aboutAction = new QAction(tr("&About Hysteroscene"), this);
     m_aboutAction->setObjectName("actionAbout");
     m_aboutAction->setMenuRole(QAction::AboutRole);
@@ -186,6 +228,9 @@ void MainWindow::createMenus() {
     m_recentMenu = fileMenu->addMenu(tr("Open &Recent"));
     m_recentMenu->setObjectName("menuRecent");
     fileMenu->addSeparator();
+    fileMenu->addAction(m_reviewAction);
+    fileMenu->addAction(m_closeReviewAction);
+    fileMenu->addSeparator();
     fileMenu->addAction(m_quitAction);
 
     QMenu* editMenu = menuBar()->addMenu(tr("&Edit"));
@@ -197,6 +242,9 @@ void MainWindow::createMenus() {
     viewMenu->setObjectName("menuView");
     viewMenu->addAction(m_clipAction);
     viewMenu->addAction(m_resetCameraAction);
+    viewMenu->addSeparator();
+    m_panelsMenu = viewMenu->addMenu(tr("&Panels"));
+    m_panelsMenu->setObjectName("menuPanels");
 
     QMenu* helpMenu = menuBar()->addMenu(tr("&Help"));
     helpMenu->setObjectName("menuHelp");
@@ -212,8 +260,182 @@ void MainWindow::createStatusBar() {
     m_fileLabel->setObjectName("fileLabel");
     m_fileLabel->setContentsMargins(12, 0, 4, 0);
     statusBar()->addWidget(m_pickLabel, 1);
+    statusBar()->addPermanentWidget(new widgets::JobStatusWidget(m_session.runner(), this));
     statusBar()->addPermanentWidget(m_countsLabel);
     statusBar()->addPermanentWidget(m_fileLabel);
+}
+
+// --- Panels and results ------------------------------------------------------------------------------------------
+
+QDockWidget* MainWindow::addPanel(QWidget* panel, const QString& title, const QString& name, Qt::DockWidgetArea area) {
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidget(panel);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    auto* dock = new QDockWidget(title, this);
+    dock->setObjectName(name); // saveState() keeps the layout by object name
+    dock->setWidget(scroll);
+    addDockWidget(area, dock);
+    m_panelsMenu->addAction(dock->toggleViewAction());
+    return dock;
+}
+
+void MainWindow::createPanels() {
+    // Left: what the case asks for (patient, pathologies, materials), one tab each.
+    m_patientPanel = new widgets::PatientPanel(m_document, m_session, this);
+    m_pathologyPanel = new widgets::PathologyPanel(m_document, m_session, this);
+    m_materialsPanel = new widgets::MaterialsPanel(m_document, this);
+    QDockWidget* patient = addPanel(m_patientPanel, tr("Patient"), "patientDock", Qt::LeftDockWidgetArea);
+    QDockWidget* pathologies = addPanel(m_pathologyPanel, tr("Pathologies"), "pathologyDock", Qt::LeftDockWidgetArea);
+    QDockWidget* materials = addPanel(m_materialsPanel, tr("Materials"), "materialsDock", Qt::LeftDockWidgetArea);
+    tabifyDockWidget(patient, pathologies);
+    tabifyDockWidget(pathologies, materials);
+    patient->raise();
+
+    // Right: the stages that make the scene (mesh, texture, export) and the review, as tabs over the hysteroscopic
+    // view; the outside view keeps the centre.
+    m_meshPanel = new widgets::MeshPanel(m_document, m_session, this);
+    m_meshPanel->setDisplay(m_display.get(), m_view);
+    m_texturePanel = new widgets::TexturePanel(m_document, m_session, this);
+    m_exportPanel = new widgets::ExportPanel(m_document, m_session, this);
+    m_reviewPanel = new widgets::ReviewPanel(this);
+    m_preview = new widgets::HysteroscopicPreview(this);
+    m_reviewPanel->setPreview(m_preview);
+    QDockWidget* mesh = addPanel(m_meshPanel, tr("Mesh"), "meshDock", Qt::RightDockWidgetArea);
+    QDockWidget* preview = addPanel(m_preview, tr("Hysteroscopic View"), "previewDock", Qt::RightDockWidgetArea);
+    splitDockWidget(mesh, preview, Qt::Vertical); // before the tabs: a tabbed dock cannot be split
+    QDockWidget* texture = addPanel(m_texturePanel, tr("Texture"), "textureDock", Qt::RightDockWidgetArea);
+    QDockWidget* exportDock = addPanel(m_exportPanel, tr("Export"), "exportDock", Qt::RightDockWidgetArea);
+    m_reviewDock = addPanel(m_reviewPanel, tr("Review"), "reviewDock", Qt::RightDockWidgetArea);
+    tabifyDockWidget(mesh, texture);
+    tabifyDockWidget(texture, exportDock);
+    tabifyDockWidget(exportDock, m_reviewDock);
+    mesh->raise();
+    m_authoringDocks = {patient, pathologies, materials, mesh, texture, exportDock};
+    connect(m_texturePanel, &widgets::TexturePanel::exemplarBrowseRequested, this, [this](int index) {
+        const QString path = FileDialog::getOpenFileName(this, tr("Exemplar Image"), m_lastFolder,
+                                                         tr("Images (*.png *.jpg *.jpeg *.exr *.tif *.tiff)") +
+                                                             QStringLiteral(";;") + tr("All files (*)"));
+        if (!path.isEmpty())
+            m_texturePanel->setExemplar(index, path);
+    });
+    // The preview simulator, when it is installed beside the workstation.
+    const QString simulator = QDir(QCoreApplication::applicationDirPath()).filePath("hysteroscene-sim");
+    if (QFileInfo(simulator).isExecutable())
+        m_exportPanel->setSimulatorPath(simulator);
+    connect(m_exportPanel, &widgets::ExportPanel::browseRequested, this, [this] {
+        const QString folder = FileDialog::getExistingDirectory(this, tr("Export Scene Package"), m_lastFolder);
+        if (!folder.isEmpty())
+            m_exportPanel->setFolder(folder);
+    });
+}
+
+void MainWindow::onResultsChanged() {
+    // A mesh file the user opened stays in the view until the case is edited.
+    if (!m_currentFile.isEmpty())
+        return;
+    const bool first = m_shownLayer == widgets::ResultLayer::None;
+    showResults();
+    if (first && m_shownLayer != widgets::ResultLayer::None)
+        onResetCamera();
+}
+
+void MainWindow::showResults() {
+    const auto results = m_session.results();
+    if (!results)
+        return;
+    // The preview shares the results' scene (no copy): it lives as long as the preview holds it.
+    m_preview->setScene(results->scene ? std::shared_ptr<const scene::Scene>(results, &*results->scene) : nullptr);
+    const widgets::ResultLayer layer =
+        widgets::showResults(*m_display, *results,
+                             m_pathologyPanel->isPlacing() ? std::optional(widgets::ResultLayer::Organ) : std::nullopt);
+    if (layer == widgets::ResultLayer::None)
+        return;
+    m_shownLayer = layer;
+    m_currentFile.clear();
+    m_clipAction->setEnabled(true); // cuts a tet mesh or opens a surface (to click on the cavity's wall)
+    m_meshPanel->applyToDisplay();
+    m_view->requestRender();
+    updateStatus();
+}
+
+bool MainWindow::isReviewing() const {
+    return m_reviewPanel->isOpen();
+}
+
+void MainWindow::onReviewPackage() {
+    if (!maybeSaveReview())
+        return;
+    const QString folder = FileDialog::getExistingDirectory(this, tr("Review Scene Package"), m_lastFolder);
+    if (!folder.isEmpty())
+        reviewPackage(folder);
+}
+
+void MainWindow::reviewPackage(const QString& folder) {
+    struct Opened {
+        std::shared_ptr<const scene::Scene> scene;
+        QString identity;
+    };
+    const QString absolute = QFileInfo(folder).absoluteFilePath();
+    m_reviewJobs.start<Opened>(
+        tr("Reading the scene package"), 0,
+        [absolute](Progress&) -> Result<Opened> {
+            const std::string path = QFile::encodeName(absolute).toStdString();
+            auto read = scene::readScenePackage(path);
+            if (!read)
+                return read.failure();
+            auto identity = scene::packageIdentity(path);
+            if (!identity)
+                return identity.failure();
+            return Opened{std::make_shared<const scene::Scene>(std::move(read).value()),
+                          QString::fromStdString(*identity)};
+        },
+        [this, absolute](Opened&& opened) {
+            m_reviewPanel->open(opened.scene, absolute, opened.identity);
+            for (QDockWidget* dock : m_authoringDocks)
+                dock->setEnabled(false);
+            m_reviewDock->show();
+            m_reviewDock->raise();
+            m_preview->setScene(opened.scene);
+            m_preview->setInsertion(0.0);
+            m_display->showTetMesh(opened.scene->tets);
+            m_shownLayer = widgets::ResultLayer::None;
+            m_currentFile = absolute;
+            m_closeReviewAction->setEnabled(true);
+            onResetCamera();
+            updateStatus();
+            emit reviewOpened(absolute);
+        });
+}
+
+bool MainWindow::maybeSaveReview() {
+    if (!m_reviewPanel->isModified())
+        return true;
+    switch (MessageBox::askSaveDiscardCancel(this, tr("Unsaved Ratings"),
+                                             tr("The review of %1 has unsaved ratings. Save them?")
+                                                 .arg(QFileInfo(m_reviewPanel->packageFolder()).fileName()))) {
+    case MessageBox::Choice::Save:
+        return m_reviewPanel->save();
+    case MessageBox::Choice::Discard:
+        return true;
+    default:
+        return false;
+    }
+}
+
+void MainWindow::onCloseReview() {
+    if (!maybeSaveReview())
+        return;
+    m_reviewPanel->close();
+    for (QDockWidget* dock : m_authoringDocks)
+        dock->setEnabled(true);
+    m_closeReviewAction->setEnabled(false);
+    m_currentFile.clear();
+    showResults();
+}
+
+void MainWindow::onJobFailed(const QString& title, const Error& error) {
+    MessageBox::critical(this, title, widgets::describeError(error.code), QString::fromStdString(error.message()));
 }
 
 // --- Settings -----------------------------------------------------------------------------------------------------
@@ -234,7 +456,7 @@ void MainWindow::writeSettings() const {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
-    if (!maybeSave()) {
+    if (!maybeSaveReview() || !maybeSave()) {
         event->ignore();
         return;
     }
@@ -452,6 +674,7 @@ void MainWindow::showMesh(const LoadedMesh& loaded) {
     m_clipAction->setEnabled(m_display->isTetMesh());
     onResetCamera();
     m_currentFile = loaded.path;
+    m_shownLayer = widgets::ResultLayer::None;
     m_pickLabel->clear();
     addRecentFile(loaded.path);
     updateStatus();
@@ -553,6 +776,10 @@ void MainWindow::onResetCamera() {
 }
 
 void MainWindow::onPicked(const widgets::PickResult& result) {
+    if (m_pathologyPanel->isPlacing()) {
+        m_pathologyPanel->placeAt(result.hit, result.point);
+        return;
+    }
     if (!result.hit) {
         m_pickLabel->setText(tr("Nothing picked"));
         return;
@@ -562,6 +789,24 @@ void MainWindow::onPicked(const widgets::PickResult& result) {
                              .arg(locale.toString(double(result.point.x()), 'f', 2),
                                   locale.toString(double(result.point.y()), 'f', 2),
                                   locale.toString(double(result.point.z()), 'f', 2)));
+}
+
+QString MainWindow::layerName(widgets::ResultLayer layer) {
+    switch (layer) {
+    case widgets::ResultLayer::Organ:
+        return tr("Organ");
+    case widgets::ResultLayer::Pathologies:
+        return tr("Grown pathologies");
+    case widgets::ResultLayer::Body:
+        return tr("Merged body");
+    case widgets::ResultLayer::Tissues:
+        return tr("Tetrahedral mesh");
+    case widgets::ResultLayer::Textured:
+        return tr("Textured surface");
+    case widgets::ResultLayer::None:
+        break;
+    }
+    return QString();
 }
 
 void MainWindow::updateStatus() {
@@ -582,16 +827,27 @@ void MainWindow::updateStatus() {
                    .arg(formatCount(counts.vertices), formatCount(counts.triangles), formatCount(counts.regions));
     }
     m_countsLabel->setText(text);
+    if (m_shownLayer != widgets::ResultLayer::None) {
+        m_fileLabel->setText(layerName(m_shownLayer));
+        m_fileLabel->setToolTip(tr("The case's %1, as the pipeline made it").arg(layerName(m_shownLayer)));
+        return;
+    }
     m_fileLabel->setText(QFileInfo(m_currentFile).fileName());
     m_fileLabel->setToolTip(QDir::toNativeSeparators(m_currentFile));
 }
 
 void MainWindow::onAbout() {
+    // Every library that shapes a scene (as scene.json records them), then the GUI's own.
+    QStringList libraries;
+    for (const auto& [name, version] : generate::toolVersionsFor(m_document.spec()))
+        libraries << QStringLiteral("%1 %2").arg(QString::fromStdString(name), QString::fromStdString(version));
+    libraries << QStringLiteral("qt %1").arg(QString::fromLatin1(qVersion()));
     MessageBox::about(this, tr("About Hysteroscene"),
                       tr("<h3>Hysteroscene %1</h3>"
                          "<p>A scenario authoring workstation for hysteroscopy training simulators.</p>"
-                         "<p>Licensed under the GNU General Public License, version 3 or later.</p>")
-                          .arg(QStringLiteral(HS_VERSION)));
+                         "<p>Licensed under the GNU General Public License, version 3 or later.</p>"
+                         "<p><small>Built with %2.</small></p>")
+                          .arg(QStringLiteral(HS_VERSION), libraries.join(QStringLiteral(", ")).toHtmlEscaped()));
 }
 
 } // namespace hs::workstation

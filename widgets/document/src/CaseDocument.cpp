@@ -70,12 +70,14 @@ void CaseDocument::edit(const QString& text, const std::function<void(scene::Cas
 
 void CaseDocument::setSpec(const scene::CaseSpec& spec) {
     m_spec = spec;
+    ++m_revision;
     emit changed();
 }
 
 void CaseDocument::reset(const scene::CaseSpec& spec, const QString& path) {
     m_undo.clear();
     m_spec = spec;
+    ++m_revision;
     const bool moved = path != m_path;
     m_path = path;
     m_undo.setClean();

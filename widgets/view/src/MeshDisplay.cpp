@@ -1,12 +1,18 @@
 #include "hs/widgets/view/MeshDisplay.h"
 
 #include <vtkActor.h>
+#include <vtkCell.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCellType.h>
+#include <vtkClipPolyData.h>
 #include <vtkDataSetSurfaceFilter.h>
+#include <vtkExtractCells.h>
 #include <vtkExtractGeometry.h>
+#include <vtkFloatArray.h>
+#include <vtkIdList.h>
 #include <vtkIdTypeArray.h>
+#include <vtkImageData.h>
 #include <vtkIntArray.h>
 #include <vtkPlane.h>
 #include <vtkPointData.h>
@@ -16,9 +22,11 @@
 #include <vtkPolyDataNormals.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
+#include <vtkTexture.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <set>
@@ -172,7 +180,9 @@ MeshDisplay::MeshDisplay(vtkRenderer* renderer)
     : m_renderer(renderer), m_actor(vtkSmartPointer<vtkActor>::New()),
       m_mapper(vtkSmartPointer<vtkPolyDataMapper>::New()), m_plane(vtkSmartPointer<vtkPlane>::New()),
       m_clip(vtkSmartPointer<vtkExtractGeometry>::New()),
-      m_gridSurface(vtkSmartPointer<vtkDataSetSurfaceFilter>::New()) {
+      m_gridSurface(vtkSmartPointer<vtkDataSetSurfaceFilter>::New()),
+      m_surfaceClip(vtkSmartPointer<vtkClipPolyData>::New()), m_regionFilter(vtkSmartPointer<vtkExtractCells>::New()),
+      m_highlight(vtkSmartPointer<vtkActor>::New()) {
     // Whole tetrahedra with any point on the kept side stay: the cut shows the tets themselves, not sliced ones.
     m_clip->SetImplicitFunction(m_plane);
     m_clip->ExtractInsideOn();
@@ -186,30 +196,96 @@ MeshDisplay::MeshDisplay(vtkRenderer* renderer)
     m_actor->SetMapper(m_mapper);
     m_actor->VisibilityOff();
     m_renderer->AddActor(m_actor);
+    m_surfaceClip->SetClipFunction(m_plane);
+    m_surfaceClip->InsideOutOn(); // keep the side opposite the normal, as the tet clip does
+    m_highlight->VisibilityOff();
+    m_highlight->GetProperty()->SetRepresentationToWireframe();
+    m_highlight->GetProperty()->SetColor(1.0, 0.1, 0.1);
+    m_highlight->GetProperty()->SetLineWidth(3.0);
+    m_highlight->GetProperty()->LightingOff();
+    m_renderer->AddActor(m_highlight);
 }
 
 MeshDisplay::~MeshDisplay() {
     m_renderer->RemoveActor(m_actor);
+    m_renderer->RemoveActor(m_highlight);
 }
 
 vtkActor* MeshDisplay::actor() const {
     return m_actor;
 }
 
+void MeshDisplay::showTexturedSurface(const SurfaceMesh& mesh, const std::vector<std::array<float, 2>>& uvs,
+                                      const std::vector<Vec3>& normals, const ImageU8& albedo) {
+    showSurface(mesh);
+    if (uvs.size() != mesh.points.size() || albedo.empty() || albedo.channels() < 3)
+        return;
+    auto tcoords = vtkSmartPointer<vtkFloatArray>::New();
+    tcoords->SetName("uv");
+    tcoords->SetNumberOfComponents(2);
+    tcoords->SetNumberOfTuples(static_cast<vtkIdType>(uvs.size()));
+    for (std::size_t i = 0; i < uvs.size(); ++i) // VTK's texture origin is the image's bottom left
+        tcoords->SetTuple2(static_cast<vtkIdType>(i), uvs[i][0], 1.0f - uvs[i][1]);
+    m_surface->GetPointData()->SetTCoords(tcoords);
+    if (normals.size() == mesh.points.size()) {
+        auto n = vtkSmartPointer<vtkFloatArray>::New();
+        n->SetName("normals");
+        n->SetNumberOfComponents(3);
+        n->SetNumberOfTuples(static_cast<vtkIdType>(normals.size()));
+        for (std::size_t i = 0; i < normals.size(); ++i)
+            n->SetTuple3(static_cast<vtkIdType>(i), normals[i].x, normals[i].y, normals[i].z);
+        m_surface->GetPointData()->SetNormals(n);
+    }
+    // The colours by region would tint the texture: the albedo alone gives the colour.
+    m_surface->GetCellData()->SetScalars(nullptr);
+    m_surface->GetPointData()->SetScalars(nullptr);
+    auto image = vtkSmartPointer<vtkImageData>::New();
+    image->SetDimensions(albedo.width(), albedo.height(), 1);
+    image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+    auto* pixels = static_cast<unsigned char*>(image->GetScalarPointer());
+    for (int y = 0; y < albedo.height(); ++y)
+        for (int x = 0; x < albedo.width(); ++x)
+            for (int c = 0; c < 3; ++c)
+                pixels[(static_cast<std::size_t>(albedo.height() - 1 - y) * static_cast<std::size_t>(albedo.width()) +
+                        static_cast<std::size_t>(x)) *
+                           3 +
+                       static_cast<std::size_t>(c)] = albedo.at(x, y, c);
+    m_texture = vtkSmartPointer<vtkTexture>::New();
+    m_texture->SetInputData(image);
+    m_texture->InterpolateOn();
+    m_texture->MipmapOn();
+    m_texture->RepeatOff();
+    m_actor->SetTexture(m_texture);
+    m_actor->GetProperty()->SetColor(1.0, 1.0, 1.0);
+    m_actor->GetProperty()->SetSpecular(0.25);
+    m_actor->GetProperty()->SetSpecularPower(30.0);
+    m_textured = true;
+    connectSurfacePipeline();
+}
+
 void MeshDisplay::showSurface(const SurfaceMesh& mesh) {
-    m_surfaceNormals->SetInputDataObject(toPolyData(mesh));
-    m_mapper->SetInputConnection(m_surfaceNormals->GetOutputPort());
+    m_actor->SetTexture(nullptr);
+    m_textured = false;
+    m_surface = toPolyData(mesh);
     m_grid = nullptr;
     m_kind = Kind::Surface;
     m_counts = countsOf(mesh);
+    m_highlight->VisibilityOff();
+    const Bounds box = bounds(mesh);
+    setClipPlane(box.empty() ? Vec3{} : box.center(), {0.0, 1.0, 0.0});
+    connectSurfacePipeline();
     setUniformLook(m_actor->GetProperty());
     m_actor->GetProperty()->EdgeVisibilityOff();
     m_actor->VisibilityOn();
 }
 
 void MeshDisplay::showTetMesh(const TetMesh& mesh) {
+    m_actor->SetTexture(nullptr);
+    m_textured = false;
     m_grid = toUnstructuredGrid(mesh);
     m_kind = Kind::Tets;
+    m_highlight->VisibilityOff();
+    m_hiddenRegions.clear();
     m_counts = countsOf(mesh);
     const Bounds box = bounds(mesh);
     setClipPlane(box.empty() ? Vec3{} : box.center(), {1.0, 0.0, 0.0});
@@ -231,6 +307,80 @@ void MeshDisplay::setClipEnabled(bool enabled) {
     m_clipEnabled = enabled;
     if (m_kind == Kind::Tets)
         connectTetPipeline();
+    else if (m_kind == Kind::Surface)
+        connectSurfacePipeline();
+}
+
+void MeshDisplay::connectSurfacePipeline() {
+    if (m_clipEnabled) {
+        m_surfaceClip->SetInputData(m_surface);
+        m_surfaceNormals->SetInputConnection(m_surfaceClip->GetOutputPort());
+    } else {
+        m_surfaceNormals->SetInputDataObject(m_surface);
+    }
+    m_mapper->SetInputConnection(m_surfaceNormals->GetOutputPort());
+}
+
+void MeshDisplay::colourTets(const std::vector<double>& values, double low, double high) {
+    if (m_kind != Kind::Tets)
+        return;
+    vtkCellData* cells = m_grid->GetCellData();
+    if (values.size() != static_cast<std::size_t>(m_grid->GetNumberOfCells())) {
+        auto* regions = vtkIntArray::SafeDownCast(cells->GetArray(kRegionLabel));
+        std::vector<std::int32_t> ids(static_cast<std::size_t>(regions ? regions->GetNumberOfTuples() : 0));
+        for (std::size_t i = 0; i < ids.size(); ++i)
+            ids[i] = regions->GetValue(static_cast<vtkIdType>(i));
+        cells->SetScalars(toColours(ids));
+    } else {
+        auto colours = vtkSmartPointer<vtkUnsignedCharArray>::New();
+        colours->SetName("colour");
+        colours->SetNumberOfComponents(3);
+        colours->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+        const double span = high > low ? high - low : 1.0;
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            // Blue - white - red diverging scale (Moreland 2009) through its three anchor colours.
+            const double t = std::clamp((values[i] - low) / span, 0.0, 1.0);
+            const double a = t < 0.5 ? t * 2.0 : (t - 0.5) * 2.0;
+            const std::array<double, 3> from =
+                t < 0.5 ? std::array<double, 3>{59, 76, 192} : std::array<double, 3>{221, 221, 221};
+            const std::array<double, 3> to =
+                t < 0.5 ? std::array<double, 3>{221, 221, 221} : std::array<double, 3>{180, 4, 38};
+            for (int c = 0; c < 3; ++c)
+                colours->SetComponent(static_cast<vtkIdType>(i), c,
+                                      from[static_cast<std::size_t>(c)] +
+                                          a * (to[static_cast<std::size_t>(c)] - from[static_cast<std::size_t>(c)]));
+        }
+        cells->SetScalars(colours);
+    }
+    m_grid->Modified();
+}
+
+void MeshDisplay::setHiddenRegions(const std::set<std::int32_t>& regions) {
+    m_hiddenRegions = regions;
+    if (m_kind == Kind::Tets)
+        connectTetPipeline();
+}
+
+std::array<double, 6> MeshDisplay::highlightTet(std::int64_t tet) {
+    std::array<double, 6> box{0, 0, 0, 0, 0, 0};
+    if (m_kind != Kind::Tets || tet < 0 || tet >= m_grid->GetNumberOfCells()) {
+        m_highlight->VisibilityOff();
+        return box;
+    }
+    auto one = vtkSmartPointer<vtkExtractCells>::New();
+    one->SetInputData(m_grid);
+    auto ids = vtkSmartPointer<vtkIdList>::New();
+    ids->InsertNextId(static_cast<vtkIdType>(tet));
+    one->SetCellList(ids);
+    auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
+    surface->SetInputConnection(one->GetOutputPort());
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputConnection(surface->GetOutputPort());
+    mapper->ScalarVisibilityOff();
+    m_highlight->SetMapper(mapper);
+    m_highlight->VisibilityOn();
+    m_grid->GetCell(static_cast<vtkIdType>(tet))->GetBounds(box.data());
+    return box;
 }
 
 void MeshDisplay::setClipPlane(const Vec3& origin, const Vec3& normal) {
@@ -239,9 +389,25 @@ void MeshDisplay::setClipPlane(const Vec3& origin, const Vec3& normal) {
 }
 
 void MeshDisplay::connectTetPipeline() {
+    vtkSmartPointer<vtkAlgorithm> source;
+    if (!m_hiddenRegions.empty()) {
+        auto* regions = vtkIntArray::SafeDownCast(m_grid->GetCellData()->GetArray(kRegionLabel));
+        auto keep = vtkSmartPointer<vtkIdList>::New();
+        for (vtkIdType c = 0; c < m_grid->GetNumberOfCells(); ++c)
+            if (!regions || m_hiddenRegions.count(regions->GetValue(c)) == 0)
+                keep->InsertNextId(c);
+        m_regionFilter->SetInputData(m_grid);
+        m_regionFilter->SetCellList(keep);
+        source = m_regionFilter;
+    }
     if (m_clipEnabled) {
-        m_clip->SetInputData(m_grid);
+        if (source)
+            m_clip->SetInputConnection(source->GetOutputPort());
+        else
+            m_clip->SetInputData(m_grid);
         m_gridSurface->SetInputConnection(m_clip->GetOutputPort());
+    } else if (source) {
+        m_gridSurface->SetInputConnection(source->GetOutputPort());
     } else {
         m_gridSurface->SetInputData(m_grid);
     }
@@ -257,10 +423,15 @@ std::size_t MeshDisplay::visibleCellCount() const {
     case Kind::Surface:
         return m_counts.triangles;
     case Kind::Tets:
-        if (!m_clipEnabled)
-            return m_counts.tets;
-        m_clip->Update();
-        return static_cast<std::size_t>(m_clip->GetOutput()->GetNumberOfCells());
+        if (m_clipEnabled) {
+            m_clip->Update();
+            return static_cast<std::size_t>(m_clip->GetOutput()->GetNumberOfCells());
+        }
+        if (!m_hiddenRegions.empty()) {
+            m_regionFilter->Update();
+            return static_cast<std::size_t>(m_regionFilter->GetOutput()->GetNumberOfCells());
+        }
+        return m_counts.tets;
     }
     return 0;
 }

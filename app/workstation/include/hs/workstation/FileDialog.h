@@ -16,8 +16,10 @@ public:
     /// The file the user chose to save to, or an empty string when they cancelled.
     static QString getSaveFileName(QWidget* parent, const QString& caption, const QString& folder,
                                    const QString& filter);
-    /// Test seam: the next getOpenFileName or getSaveFileName returns `fileName` (empty: as if cancelled) without
-    /// showing a dialog.
+    /// The folder the user chose, or an empty string when they cancelled.
+    static QString getExistingDirectory(QWidget* parent, const QString& caption, const QString& folder);
+    /// Test seam: the next getOpenFileName, getSaveFileName or getExistingDirectory returns `fileName` (empty: as if
+    /// cancelled) without showing a dialog.
     static void setNextFileName(const QString& fileName);
 };
 

@@ -6,6 +6,8 @@
 #include "hs/core/Error.h"
 #include "hs/io/MeshIO.h"
 #include "hs/widgets/document/CaseDocument.h"
+#include "hs/widgets/jobs/GenerationSession.h"
+#include "hs/widgets/view/ResultsDisplay.h"
 #include "hs/widgets/view/VtkView.h"
 
 #include <QFutureWatcher>
@@ -16,14 +18,24 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 class QAction;
+class QDockWidget;
 class QLabel;
 class QMenu;
 
 namespace hs::widgets {
+class ExportPanel;
+class HysteroscopicPreview;
+class MaterialsPanel;
 class MeshDisplay;
-}
+class MeshPanel;
+class PathologyPanel;
+class PatientPanel;
+class ReviewPanel;
+class TexturePanel;
+} // namespace hs::widgets
 
 namespace hs::workstation {
 
@@ -54,6 +66,14 @@ public:
     bool saveScreenshot(const QString& path);
 
     widgets::CaseDocument& document() { return m_document; }
+    /// The pipeline's results for the document; its jobs run on worker threads.
+    widgets::GenerationSession& session() { return m_session; }
+    /// What the 3-D view shows of the session's results (None while it shows a mesh file or nothing).
+    widgets::ResultLayer shownLayer() const { return m_shownLayer; }
+    /// Opens the scene package `folder` read-only for a clinician's review (on a worker thread); reviewOpened or a
+    /// message box naming the file and the problem follows.
+    void reviewPackage(const QString& folder);
+    bool isReviewing() const;
     /// Where autosave writes the case being edited (default: the application's data folder, "recovery").
     QString recoveryFolder() const { return m_recoveryFolder; }
     void setRecoveryFolder(const QString& folder) { m_recoveryFolder = folder; }
@@ -66,9 +86,11 @@ public:
     void offerRecovery();
 
     widgets::VtkView* view() const { return m_view; }
+    widgets::HysteroscopicPreview* preview() const { return m_preview; }
     const widgets::MeshDisplay& display() const { return *m_display; }
 
 signals:
+    void reviewOpened(const QString& folder);
     void fileLoaded(const QString& path);
     void loadFailed(const QString& path);
 
@@ -90,16 +112,26 @@ private slots:
     void onAbout();
     void onLoadFinished();
     void onPicked(const hs::widgets::PickResult& result);
+    void onResultsChanged();
+    void onJobFailed(const QString& title, const hs::Error& error);
+    void onReviewPackage();
+    void onCloseReview();
 
 private:
     void createActions();
     void createMenus();
     void createStatusBar();
+    void createPanels();
+    /// A dock for `panel` on `area`, listed in View > Panels.
+    QDockWidget* addPanel(QWidget* panel, const QString& title, const QString& name, Qt::DockWidgetArea area);
+    void showResults();
     void readSettings();
     void writeSettings() const;
     /// Before the case is replaced or the window closes: true when there are no unsaved changes, or the user saved
     /// or discarded them; false when they cancelled.
     bool maybeSave();
+    /// The same for the ratings of a review in progress.
+    bool maybeSaveReview();
     void showCaseError(const QString& title, const Error& error);
     /// Opens `path` as the case (after maybeSave) and lists it among the recent cases.
     void openCase(const QString& path);
@@ -112,6 +144,7 @@ private:
     void removeRecentFile(const QString& path);
     void rebuildRecentMenu();
     void updateStatus();
+    static QString layerName(widgets::ResultLayer layer);
     QString openFilter() const;
 
     widgets::VtkView* m_view = nullptr;
@@ -121,6 +154,22 @@ private:
     QString m_lastFolder;
 
     widgets::CaseDocument m_document;
+    widgets::GenerationSession m_session{m_document};
+    widgets::ResultLayer m_shownLayer = widgets::ResultLayer::None;
+    widgets::PatientPanel* m_patientPanel = nullptr;
+    widgets::PathologyPanel* m_pathologyPanel = nullptr;
+    widgets::MeshPanel* m_meshPanel = nullptr;
+    widgets::ExportPanel* m_exportPanel = nullptr;
+    widgets::MaterialsPanel* m_materialsPanel = nullptr;
+    widgets::TexturePanel* m_texturePanel = nullptr;
+    widgets::HysteroscopicPreview* m_preview = nullptr;
+    widgets::ReviewPanel* m_reviewPanel = nullptr;
+    QDockWidget* m_reviewDock = nullptr;
+    std::vector<QDockWidget*> m_authoringDocks; ///< disabled while a package is reviewed
+    widgets::JobRunner m_reviewJobs;
+    QAction* m_reviewAction = nullptr;
+    QAction* m_closeReviewAction = nullptr;
+    QMenu* m_panelsMenu = nullptr;
     QString m_recoveryFolder;
     QTimer m_autosaveTimer;
 

@@ -11,6 +11,7 @@
 #include <QStringList>
 #include <QUndoStack>
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 
@@ -33,6 +34,9 @@ public:
 
     const scene::CaseSpec& spec() const { return m_spec; }
     QUndoStack* undoStack() { return &m_undo; }
+    /// Counts every change of the case (edit, undo, redo, open, new): results computed for another revision are
+    /// stale.
+    std::uint64_t revision() const { return m_revision; }
     /// The case.json the document was read from or last saved to; empty for an untitled case.
     QString filePath() const { return m_path; }
     /// The file's name, or "Untitled" (translated).
@@ -79,6 +83,7 @@ private:
     scene::CaseSpec m_spec;
     QString m_path;
     QUndoStack m_undo;
+    std::uint64_t m_revision = 0;
 };
 
 /// A list of recently used files in QSettings under `key` (absolute paths), newest first, at most kMaxRecentFiles,

@@ -2,22 +2,30 @@
 /// Shows a surface or a tetrahedral mesh in one renderer: colours by the "region" label when there is one, and for
 /// a tet mesh a clipping plane that keeps whole tetrahedra (a crinkle cut), so the inside of the mesh can be read.
 
+#include "hs/core/Image.h"
 #include "hs/core/SurfaceMesh.h"
 #include "hs/core/TetMesh.h"
 #include "hs/core/Vec3.h"
 
 #include <vtkSmartPointer.h>
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
+#include <set>
+#include <vector>
 
 class vtkActor;
 class vtkAlgorithm;
+class vtkClipPolyData;
+class vtkExtractCells;
 class vtkDataSetSurfaceFilter;
 class vtkExtractGeometry;
 class vtkPlane;
 class vtkPolyData;
 class vtkPolyDataMapper;
 class vtkRenderer;
+class vtkTexture;
 class vtkUnstructuredGrid;
 
 namespace hs::widgets {
@@ -47,6 +55,11 @@ public:
     MeshDisplay& operator=(const MeshDisplay&) = delete;
 
     void showSurface(const SurfaceMesh& mesh);
+    /// Shows `mesh` with `albedo` mapped by `uvs` (one per point, origin at the image's top left) and smooth
+    /// `normals` (one per point; empty: computed), lit as tissue under a lamp.
+    void showTexturedSurface(const SurfaceMesh& mesh, const std::vector<std::array<float, 2>>& uvs,
+                             const std::vector<Vec3>& normals, const ImageU8& albedo);
+    bool isTextured() const { return m_textured; }
     /// Shows the outer surface of `mesh`; with the clip on, the tetrahedra on one side of the clipping plane.
     void showTetMesh(const TetMesh& mesh);
     void clear();
@@ -55,7 +68,8 @@ public:
     bool isTetMesh() const { return m_kind == Kind::Tets; }
     const MeshCounts& counts() const { return m_counts; }
 
-    /// Only affects tet meshes; the setting is kept when another mesh is shown.
+    /// Tet meshes keep whole tetrahedra on one side; surfaces are cut open (to see and click the cavity's wall).
+    /// The setting is kept when another mesh is shown.
     void setClipEnabled(bool enabled);
     bool clipEnabled() const { return m_clipEnabled; }
     /// Keeps the tetrahedra with at least one point on the side opposite `normal`. showTetMesh resets the plane to
@@ -64,12 +78,23 @@ public:
     /// Tetrahedra drawn (all of them with the clip off) for a tet mesh; triangles for a surface.
     std::size_t visibleCellCount() const;
 
+    /// Tet meshes: colours each tet by `values` (one per tet) on a blue (low) to red (high) scale over [low, high];
+    /// an empty `values` goes back to the region colours.
+    void colourTets(const std::vector<double>& values, double low, double high);
+    /// Tet meshes: hides the tets of the given regions (the others stay, cut by the clip when it is on).
+    void setHiddenRegions(const std::set<std::int32_t>& regions);
+    const std::set<std::int32_t>& hiddenRegions() const { return m_hiddenRegions; }
+    /// Outlines one tet (of the mesh shown) in a second actor; a negative index removes the outline. Returns the
+    /// tet's bounds (xmin, xmax, ymin, ymax, zmin, zmax) for framing the camera.
+    std::array<double, 6> highlightTet(std::int64_t tet);
+
     vtkActor* actor() const;
 
 private:
     enum class Kind { None, Surface, Tets };
 
     void connectTetPipeline();
+    void connectSurfacePipeline();
 
     vtkRenderer* m_renderer;
     vtkSmartPointer<vtkActor> m_actor;
@@ -79,6 +104,13 @@ private:
     vtkSmartPointer<vtkExtractGeometry> m_clip;
     vtkSmartPointer<vtkDataSetSurfaceFilter> m_gridSurface;
     vtkSmartPointer<vtkAlgorithm> m_surfaceNormals;
+    vtkSmartPointer<vtkPolyData> m_surface;
+    vtkSmartPointer<vtkClipPolyData> m_surfaceClip;
+    vtkSmartPointer<vtkExtractCells> m_regionFilter;
+    vtkSmartPointer<vtkActor> m_highlight;
+    vtkSmartPointer<vtkTexture> m_texture;
+    bool m_textured = false;
+    std::set<std::int32_t> m_hiddenRegions;
     Kind m_kind = Kind::None;
     bool m_clipEnabled = false;
     MeshCounts m_counts;

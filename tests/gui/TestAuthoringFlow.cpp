@@ -1,0 +1,275 @@
+// Qt Test of the whole authoring flow in the workstation, as a supervisor does it, finding widgets by object name:
+// a new case, the patient's values, a myoma placed by a click on the organ's wall in the 3-D view, grow, merge,
+// mesh, the quality histogram, texture, export, the package validated; a running mesh job cancelled from the status
+// bar; a clinician's review written beside the package. Needs a display (xvfb-run -a).
+#include "hs/scene/Review.h"
+#include "hs/scene/ScenePackage.h"
+#include "hs/widgets/jobs/GenerationSession.h"
+#include "hs/widgets/panels/PathologyPanel.h"
+#include "hs/widgets/view/HysteroscopicPreview.h"
+#include "hs/widgets/view/MeshDisplay.h"
+#include "hs/widgets/view/VtkView.h"
+#include "hs/workstation/FileDialog.h"
+#include "hs/workstation/MainWindow.h"
+#include "hs/workstation/MessageBox.h"
+
+#include <QAction>
+#include <QBarSeries>
+#include <QBarSet>
+#include <QChartView>
+#include <QComboBox>
+#include <QDir>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QToolButton>
+
+#include <vtkCamera.h>
+#include <vtkRenderer.h>
+
+#include <variant>
+
+using hs::workstation::FileDialog;
+using hs::workstation::MainWindow;
+using hs::workstation::MessageBox;
+
+namespace {
+
+constexpr int kStageTimeoutMs = 180000;
+
+} // namespace
+
+class TestAuthoringFlow : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void init();
+    void cleanup();
+    void authorsTheDefaultCaseFromNewToAValidatedPackage();
+    void cancelsARunningMeshJobFromTheStatusBar();
+    void refusesAnOutOfRangeValueAndKeepsTheCase();
+    void aClinicianReviewsTheExportedPackage();
+    void aBrokenPackageOpensWithAMessageAndChangesNothing();
+
+private:
+    template <class T>
+    T* find(const QString& name) const {
+        T* child = m_window->findChild<T*>(name);
+        if (!child)
+            qFatal("no widget %s", qPrintable(name));
+        return child;
+    }
+    /// Clicks `button` and waits until the session's job has ended with new results.
+    bool runStage(const QString& button);
+    hs::widgets::GenerationSession& session() { return m_window->session(); }
+    /// With HS_SCREENSHOT_DIR set, saves the window (with `dock` raised) there as `name`.png: the docs' pictures.
+    void shot(const QString& name, const QString& dock = {});
+
+    QTemporaryDir m_dir;
+    QTemporaryDir m_settingsDir;
+    std::unique_ptr<MainWindow> m_window;
+    QString m_exported; ///< the package the first test wrote, for the review test
+};
+
+void TestAuthoringFlow::initTestCase() {
+    QVERIFY(m_dir.isValid() && m_settingsDir.isValid());
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settingsDir.path());
+    QCoreApplication::setOrganizationName("hysteroscene-test");
+    QCoreApplication::setApplicationName("test_authoring_flow");
+    MessageBox::setRecording(true);
+}
+
+void TestAuthoringFlow::init() {
+    QSettings().clear();
+    MessageBox::takeRecorded();
+    m_window = std::make_unique<MainWindow>();
+    m_window->setRecoveryFolder(m_dir.filePath("recovery"));
+    m_window->resize(1280, 1000);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    // The window builds the organ of its case on its own.
+    QTRY_VERIFY_WITH_TIMEOUT(session().isCurrent(hs::generate::Stage::Organ), 60000);
+}
+
+void TestAuthoringFlow::cleanup() {
+    if (m_window)
+        m_window->document().undoStack()->setClean();
+    m_window.reset();
+    hs::widgets::CaseDocument::discardRecovery(m_dir.filePath("recovery"));
+}
+
+void TestAuthoringFlow::shot(const QString& name, const QString& dock) {
+    const QString folder = qEnvironmentVariable("HS_SCREENSHOT_DIR");
+    if (folder.isEmpty())
+        return;
+    if (!dock.isEmpty())
+        find<QDockWidget>(dock)->raise();
+    QTest::qWait(200); // let the raised dock and the views paint
+    QVERIFY(m_window->saveScreenshot(QDir(folder).filePath(name + ".png")));
+}
+
+bool TestAuthoringFlow::runStage(const QString& button) {
+    QSignalSpy idle(&session().runner(), &hs::widgets::JobRunner::idle);
+    QSignalSpy failed(&session().runner(), &hs::widgets::JobRunner::failed);
+    find<QPushButton>(button)->click();
+    if (!idle.wait(kStageTimeoutMs))
+        return false;
+    if (!failed.isEmpty())
+        qWarning("%s failed: %s", qPrintable(button), failed.at(0).at(1).value<hs::Error>().message().c_str());
+    return failed.isEmpty();
+}
+
+void TestAuthoringFlow::authorsTheDefaultCaseFromNewToAValidatedPackage() {
+    find<QAction>("actionNewCase")->trigger();
+    // The patient: a 42-year-old multipara.
+    find<QDoubleSpinBox>("ageSpin")->setValue(42.0);
+    find<QSpinBox>("graviditySpin")->setValue(3);
+    find<QSpinBox>("paritySpin")->setValue(2);
+    QCOMPARE(m_window->document().spec().patient.parity, 2);
+    // A lighter mesh and smaller maps keep the test short; the flow is the same.
+    find<QSpinBox>("verticesSpin")->setValue(6000);
+    auto* size = find<QComboBox>("textureSizeCombo");
+    size->setCurrentIndex(size->findData(256));
+    QTRY_VERIFY_WITH_TIMEOUT(session().isCurrent(hs::generate::Stage::Organ), 60000);
+
+    // A myoma placed by a click on the organ's wall.
+    const auto before = m_window->document().spec().pathologies.size();
+    find<QPushButton>("addMyomaButton")->click();
+    auto* figo = find<QComboBox>("figoCombo");
+    figo->setCurrentIndex(4); // FIGO 4: intramural
+    find<QDoubleSpinBox>("sizeSpin")->setValue(15.0);
+    find<QToolButton>("placeButton")->click();
+    QVERIFY(m_window->shownLayer() == hs::widgets::ResultLayer::Organ);
+    // Turn the view to the anterior wall (+y) of the upper corpus, as the supervisor does, and click its middle.
+    const hs::Bounds box = hs::bounds(session().results()->organ->mesh);
+    const hs::Vec3 target{box.center().x, box.center().y, box.min.z + 0.65 * (box.max.z - box.min.z)};
+    hs::widgets::VtkView* view = m_window->view();
+    vtkCamera* camera = view->renderer()->GetActiveCamera();
+    camera->SetFocalPoint(target.x, target.y, target.z);
+    camera->SetPosition(target.x, target.y + 200.0, target.z);
+    camera->SetViewUp(0.0, 0.0, 1.0);
+    view->renderer()->ResetCameraClippingRange();
+    view->requestRender();
+    shot("workstation-place", "pathologyDock");
+    QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, view->rect().center());
+    const auto& added = m_window->document().spec().pathologies.back();
+    QCOMPARE(m_window->document().spec().pathologies.size(), before + 1);
+    QVERIFY2(std::holds_alternative<hs::clinical::SurfacePlacement>(added.placement),
+             qPrintable(find<QLabel>("pathologyMessageLabel")->text()));
+
+    QVERIFY(runStage("growButton"));
+    QVERIFY(session().isCurrent(hs::generate::Stage::Pathology));
+    QVERIFY(find<QLabel>("pathologyResultLabel")->text().contains("FIGO"));
+    shot("workstation-pathologies", "pathologyDock");
+    QVERIFY(runStage("mergeButton"));
+    QVERIFY(m_window->shownLayer() == hs::widgets::ResultLayer::Body);
+    QVERIFY(runStage("meshButton"));
+    QVERIFY(m_window->shownLayer() == hs::widgets::ResultLayer::Tissues);
+    auto* histogram = qobject_cast<QBarSeries*>(find<QChartView>("radiusRatioChart")->chart()->series().value(0));
+    QVERIFY(histogram && histogram->barSets().value(0)->sum() > 0);
+    find<QAction>("actionResetCamera")->trigger();
+    find<QAction>("actionClip")->trigger();
+    shot("workstation-mesh", "meshDock");
+    find<QAction>("actionClip")->trigger();
+    QVERIFY(runStage("textureButton"));
+    QVERIFY(m_window->shownLayer() == hs::widgets::ResultLayer::Textured);
+    QVERIFY(m_window->preview()->hasScene());
+    m_window->preview()->setInsertion(25.0);
+    shot("workstation-texture", "textureDock");
+    shot("workstation-materials", "materialsDock");
+
+    // Export: the folder comes from the file dialog seam.
+    m_exported = m_dir.filePath("authored");
+    FileDialog::setNextFileName(m_exported);
+    find<QPushButton>("exportBrowseButton")->click();
+    QCOMPARE(find<QLineEdit>("exportFolderEdit")->text(), m_exported);
+    QSignalSpy exported(&session(), &hs::widgets::GenerationSession::exported);
+    find<QPushButton>("exportButton")->click();
+    QVERIFY(exported.wait(kStageTimeoutMs));
+    QVERIFY(hs::scene::verifyScenePackage(QFile::encodeName(m_exported).toStdString()).ok());
+    QVERIFY(find<QLabel>("exportResultLabel")->text().contains("valid"));
+    find<QDockWidget>("patientDock")->raise();
+    shot("workstation-export", "exportDock");
+    QCOMPARE(MessageBox::takeRecorded().size(), 0);
+}
+
+void TestAuthoringFlow::cancelsARunningMeshJobFromTheStatusBar() {
+    hs::widgets::JobRunner& runner = session().runner();
+    QSignalSpy cancelled(&runner, &hs::widgets::JobRunner::cancelled);
+    QString key;
+    const QMetaObject::Connection watch =
+        connect(&runner, &hs::widgets::JobRunner::progressChanged, this, [&](double, const QString& k) { key = k; });
+    find<QPushButton>("meshButton")->click();
+    QTRY_VERIFY_WITH_TIMEOUT(key.startsWith("meshing"), 120000);
+    auto* cancel = find<QToolButton>("jobCancelButton");
+    QVERIFY(cancel->isVisible());
+    cancel->click();
+    QVERIFY(cancelled.wait(10000));
+    qInfo("cancel latency of the mesh job: %.1f ms", cancelled.at(0).at(1).toDouble());
+    QVERIFY(!session().isCurrent(hs::generate::Stage::Meshing));
+    QTRY_VERIFY(!find<QToolButton>("jobCancelButton")->isVisible());
+    QCOMPARE(MessageBox::takeRecorded().size(), 0); // a cancel is no error
+    disconnect(watch);
+}
+
+void TestAuthoringFlow::refusesAnOutOfRangeValueAndKeepsTheCase() {
+    const std::string before = hs::scene::toJson(m_window->document().spec());
+    find<QDoubleSpinBox>("weightSpin")->setValue(250.0);
+    QVERIFY(find<QLabel>("patientMessageLabel")->text().contains("160"));
+    QCOMPARE(hs::scene::toJson(m_window->document().spec()), before);
+    QVERIFY(!m_window->isWindowModified());
+}
+
+void TestAuthoringFlow::aClinicianReviewsTheExportedPackage() {
+    if (m_exported.isEmpty())
+        QSKIP("the authoring test did not export a package");
+    QSignalSpy opened(m_window.get(), &MainWindow::reviewOpened);
+    FileDialog::setNextFileName(m_exported);
+    find<QAction>("actionReviewPackage")->trigger();
+    QVERIFY(opened.wait(60000));
+    QVERIFY(m_window->isReviewing());
+    QVERIFY(!find<QPushButton>("meshButton")->isEnabled()); // the package is read-only
+    QVERIFY(find<QPushButton>("visitButton0")->isEnabled());
+    find<QPushButton>("visitButton0")->click();
+    find<QSpinBox>("pathologyScore0")->setValue(5);
+    find<QSpinBox>("textureScore0")->setValue(4);
+    find<QPushButton>("saveReviewButton")->click();
+    auto review = hs::scene::loadReview(hs::scene::reviewPathFor(QFile::encodeName(m_exported).toStdString()));
+    QVERIFY(review.ok());
+    QCOMPARE(*review->pathologies[0].rating.score, 5);
+    QVERIFY(hs::scene::verifyScenePackage(QFile::encodeName(m_exported).toStdString()).ok());
+    shot("workstation-review", "reviewDock");
+    find<QAction>("actionCloseReview")->trigger();
+    QVERIFY(!m_window->isReviewing());
+    QVERIFY(find<QPushButton>("meshButton")->isEnabled());
+}
+
+void TestAuthoringFlow::aBrokenPackageOpensWithAMessageAndChangesNothing() {
+    const QString broken = m_dir.filePath("broken");
+    QVERIFY(QDir().mkpath(broken));
+    QFile manifest(QDir(broken).filePath("manifest.json"));
+    QVERIFY(manifest.open(QIODevice::WriteOnly));
+    manifest.write("{\"format\": \"hysteroscene-scene\", \"schemaVersion\": 1, \"files\": []}");
+    manifest.close();
+    const std::string before = hs::scene::toJson(m_window->document().spec());
+    m_window->reviewPackage(broken);
+    QList<MessageBox::Message> messages;
+    QTRY_VERIFY_WITH_TIMEOUT((messages += MessageBox::takeRecorded(), !messages.isEmpty()), 20000);
+    // The message names the file and what is wrong with it (under Show Details).
+    QVERIFY2(messages.first().details.contains("manifest.json"), qPrintable(messages.first().details));
+    QVERIFY(!m_window->isReviewing());
+    QCOMPARE(hs::scene::toJson(m_window->document().spec()), before);
+}
+
+QTEST_MAIN(TestAuthoringFlow)
+#include "TestAuthoringFlow.moc"

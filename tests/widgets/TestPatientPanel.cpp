@@ -1,0 +1,145 @@
+// Qt Test for the Patient panel: accepted values become undoable edits (a run of steps is one), values outside
+// their range or against another field are refused inline with the document unchanged, and the organ's dimensions
+// are shown beside the patient's expected range once the organ is rebuilt.
+#include "hs/anatomy/Cohort.h"
+#include "hs/widgets/document/CaseDocument.h"
+#include "hs/widgets/jobs/GenerationSession.h"
+#include "hs/widgets/panels/PatientPanel.h"
+
+#include <QCheckBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QTest>
+
+using hs::widgets::CaseDocument;
+using hs::widgets::GenerationSession;
+using hs::widgets::PatientPanel;
+
+class TestPatientPanel : public QObject {
+    Q_OBJECT
+
+private slots:
+    void init();
+    void cleanup();
+    void showsTheCase();
+    void anAcceptedValueIsOneUndoableEdit();
+    void refusesAnAgeOutOfRangeAndSaysWhy();
+    void refusesAContradictionBetweenFields();
+    void aMeasuredDimensionIsSetAndCleared();
+    void showsTheOrgansDimensionsBesideTheExpectedRange();
+
+private:
+    template <class T>
+    T* find(const QString& name) const {
+        T* child = m_panel->findChild<T*>(name);
+        if (!child)
+            qFatal("no widget %s", qPrintable(name));
+        return child;
+    }
+
+    std::unique_ptr<CaseDocument> m_document;
+    std::unique_ptr<GenerationSession> m_session;
+    std::unique_ptr<PatientPanel> m_panel;
+};
+
+void TestPatientPanel::init() {
+    m_document = std::make_unique<CaseDocument>();
+    m_session = std::make_unique<GenerationSession>(*m_document);
+    m_session->setAutoUpdate(false);
+    m_panel = std::make_unique<PatientPanel>(*m_document, *m_session);
+    m_panel->show();
+}
+
+void TestPatientPanel::cleanup() {
+    m_panel.reset();
+    m_session.reset();
+    m_document.reset();
+}
+
+void TestPatientPanel::showsTheCase() {
+    QCOMPARE(find<QDoubleSpinBox>("ageSpin")->value(), 35.0);
+    QCOMPARE(find<QSpinBox>("paritySpin")->value(), 1);
+    QCOMPARE(find<QLineEdit>("seedEdit")->text(), QString("1"));
+    QVERIFY(!find<QCheckBox>("menopausalCheck")->isChecked());
+    QVERIFY(!find<QLabel>("lengthExpectedLabel")->text().isEmpty());
+}
+
+void TestPatientPanel::anAcceptedValueIsOneUndoableEdit() {
+    auto* age = find<QDoubleSpinBox>("ageSpin");
+    age->setFocus();
+    for (int i = 0; i < 5; ++i) // five steps of the spin box: one command
+        age->stepUp();
+    QCOMPARE(m_document->spec().patient.ageYears, 40.0);
+    QCOMPARE(m_document->undoStack()->count(), 1);
+    m_document->undoStack()->undo();
+    QCOMPARE(m_document->spec().patient.ageYears, 35.0);
+    QCOMPARE(age->value(), 35.0); // the field follows the document
+}
+
+void TestPatientPanel::refusesAnAgeOutOfRangeAndSaysWhy() {
+    auto* age = find<QDoubleSpinBox>("ageSpin");
+    age->setValue(130.0);
+    QCOMPARE(m_document->spec().patient.ageYears, 35.0);
+    QCOMPARE(m_document->undoStack()->count(), 0);
+    auto* message = find<QLabel>("patientMessageLabel");
+    QVERIFY(message->isVisibleTo(m_panel.get()));
+    QVERIFY2(message->text().contains("Age") && message->text().contains("18") && message->text().contains("80"),
+             qPrintable(message->text()));
+    QVERIFY(age->property("invalid").toBool());
+    age->setValue(50.0); // a good value clears the message
+    QCOMPARE(m_document->spec().patient.ageYears, 50.0);
+    QVERIFY(!message->isVisibleTo(m_panel.get()));
+}
+
+void TestPatientPanel::refusesAContradictionBetweenFields() {
+    find<QSpinBox>("paritySpin")->setValue(3); // gravidity 1 < parity 3
+    QCOMPARE(m_document->spec().patient.parity, 1);
+    QVERIFY(find<QLabel>("patientMessageLabel")->text().contains("parity"));
+    find<QCheckBox>("menopausalCheck")->setChecked(true); // a 35-year-old is premenopausal here
+    QVERIFY(!m_document->spec().patient.menopausal);
+    QVERIFY(!find<QCheckBox>("menopausalCheck")->isChecked());
+    // An age beyond 60 makes the patient postmenopausal (no cycle); 45 lets either state be chosen.
+    find<QDoubleSpinBox>("ageSpin")->setValue(62.0);
+    QVERIFY(m_document->spec().patient.menopausal);
+    QVERIFY(!m_document->spec().patient.cyclePhase.has_value());
+    QVERIFY(find<QCheckBox>("menopausalCheck")->isChecked());
+    find<QDoubleSpinBox>("ageSpin")->setValue(45.0);
+    find<QCheckBox>("menopausalCheck")->setChecked(false);
+    QVERIFY(!m_document->spec().patient.menopausal);
+    QVERIFY(m_document->spec().patient.cyclePhase.has_value());
+}
+
+void TestPatientPanel::aMeasuredDimensionIsSetAndCleared() {
+    auto* check = find<QCheckBox>("cavityLengthCheck");
+    auto* spin = find<QDoubleSpinBox>("cavityLengthSpin");
+    QVERIFY(!spin->isEnabled());
+    check->setChecked(true); // starts from the value expected for the patient
+    QVERIFY(m_document->spec().anatomy.dimensions.cavityLengthMm.has_value());
+    QVERIFY(std::abs(*m_document->spec().anatomy.dimensions.cavityLengthMm -
+                     hs::anatomy::expectedDimensions(m_document->spec().patient).cavityLengthMm.mean) < 0.05);
+    spin->setValue(36.0);
+    QCOMPARE(*m_document->spec().anatomy.dimensions.cavityLengthMm, 36.0);
+    spin->setValue(80.0); // beyond 20 - 55 mm
+    QCOMPARE(*m_document->spec().anatomy.dimensions.cavityLengthMm, 36.0);
+    QVERIFY(find<QLabel>("patientMessageLabel")->text().contains("55"));
+    check->setChecked(false);
+    QVERIFY(!m_document->spec().anatomy.dimensions.cavityLengthMm.has_value());
+}
+
+void TestPatientPanel::showsTheOrgansDimensionsBesideTheExpectedRange() {
+    auto* organ = find<QLabel>("cavityLengthOrganLabel");
+    QCOMPARE(organ->text(), QStringLiteral("–"));
+    QSignalSpy changed(m_session.get(), &GenerationSession::resultsChanged);
+    m_session->runThrough(hs::generate::Stage::Organ);
+    QVERIFY(changed.wait(30000));
+    QVERIFY2(organ->text().endsWith(" mm"), qPrintable(organ->text()));
+    QVERIFY(organ->isEnabled());
+    find<QDoubleSpinBox>("ageSpin")->setValue(45.0);
+    QVERIFY(!organ->isEnabled()); // grey: the organ is of the case before the edit
+}
+
+QTEST_MAIN(TestPatientPanel)
+#include "TestPatientPanel.moc"

@@ -1,0 +1,31 @@
+#pragma once
+/// The status bar's view of a JobRunner: what runs, how far it is (the pipeline step and a bar) and a Cancel button
+/// (Esc while the window has focus). Hidden while no job runs.
+
+#include <QWidget>
+
+class QLabel;
+class QProgressBar;
+class QToolButton;
+
+namespace hs::widgets {
+
+class JobRunner;
+
+class JobStatusWidget : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit JobStatusWidget(JobRunner& runner, QWidget* parent = nullptr);
+
+private:
+    void onStarted(const QString& title);
+    void onProgress(double fraction, const QString& stageKey);
+
+    JobRunner& m_runner;
+    QLabel* m_titleLabel = nullptr;
+    QProgressBar* m_progressBar = nullptr;
+    QToolButton* m_cancelButton = nullptr;
+};
+
+} // namespace hs::widgets

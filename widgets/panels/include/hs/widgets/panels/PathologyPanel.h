@@ -1,0 +1,95 @@
+#pragma once
+/// The Pathologies panel: the case's pathologies as a list (add a myoma or a polyp, duplicate, remove) and an editor
+/// for the selected one: kind, growth model, FIGO type, size, polyp attachment and stalk, and where it sits, by
+/// clinical location or by a click on the organ wall in the 3-D view (pathology::seatAt turns the click into a seat
+/// point and its normal). Grow and Merge run those stages in the background; what the pathology stage measured on
+/// each grown pathology (FIGO type, size, Lasmar score) and the stage's warnings are shown beside the request.
+
+#include "hs/scene/CaseSpec.h"
+
+#include <QVector3D>
+#include <QWidget>
+
+class QButtonGroup;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QListWidget;
+class QPushButton;
+class QRadioButton;
+class QToolButton;
+
+namespace hs::widgets {
+
+class CaseDocument;
+class GenerationSession;
+
+class PathologyPanel : public QWidget {
+    Q_OBJECT
+
+public:
+    PathologyPanel(CaseDocument& document, GenerationSession& session, QWidget* parent = nullptr);
+
+    /// The selected pathology's index in the case; -1 when none.
+    int currentIndex() const;
+    void setCurrentIndex(int index);
+    /// Whether the next click in the 3-D view places the selected pathology.
+    bool isPlacing() const;
+
+public slots:
+    /// A click in the 3-D view while placing: `hit` false when it missed every surface; `point` in mm.
+    void placeAt(bool hit, const QVector3D& point);
+
+signals:
+    /// Placing by a click starts (the view shows the organ to click on) or ends.
+    void placingChanged(bool placing);
+
+private:
+    void buildList();
+    void buildEditor();
+    void buildResults();
+    void connectEditor();
+    void refresh();
+    void refreshEditor();
+    void refreshResults();
+    void setPlacing(bool placing);
+    /// One edit of the selected pathology; refused with a reason when the case would break a rule.
+    void editCurrent(const QString& text, const std::function<void(scene::PathologySpec&)>& change, int mergeKey = 0);
+    void addPathology(clinical::PathologyKind kind);
+    void duplicateCurrent();
+    void removeCurrent();
+    void showMessage(const QString& text);
+
+    CaseDocument& m_document;
+    GenerationSession& m_session;
+    bool m_refreshing = false;
+
+    QListWidget* m_list = nullptr;
+    QPushButton* m_addMyomaButton = nullptr;
+    QPushButton* m_addPolypButton = nullptr;
+    QPushButton* m_duplicateButton = nullptr;
+    QPushButton* m_removeButton = nullptr;
+
+    QWidget* m_editor = nullptr;
+    QLineEdit* m_idEdit = nullptr;
+    QComboBox* m_kindCombo = nullptr;
+    QComboBox* m_modelCombo = nullptr;
+    QComboBox* m_figoCombo = nullptr;
+    QDoubleSpinBox* m_sizeSpin = nullptr;
+    QComboBox* m_attachmentCombo = nullptr;
+    QDoubleSpinBox* m_stalkSpin = nullptr;
+    QRadioButton* m_locationRadio = nullptr;
+    QComboBox* m_locationCombo = nullptr;
+    QRadioButton* m_pointRadio = nullptr;
+    QToolButton* m_placeButton = nullptr;
+    QLabel* m_pointLabel = nullptr;
+
+    QPushButton* m_growButton = nullptr;
+    QPushButton* m_mergeButton = nullptr;
+    QLabel* m_resultLabel = nullptr;
+    QLabel* m_warningsLabel = nullptr;
+    QLabel* m_messageLabel = nullptr;
+};
+
+} // namespace hs::widgets

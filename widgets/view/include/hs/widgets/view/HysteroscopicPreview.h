@@ -1,0 +1,67 @@
+#pragma once
+/// The hysteroscopic preview: the textured cavity as the trainee will see it, through a rigid scope whose tip stands
+/// at the external os (or further in) and looks up the canal through an oblique optic, lit by a lamp at the tip whose
+/// light falls off with distance. Insertion, optic and roll are set by the controls; the camera pose is
+/// scene::scopeView's, so the simulator's scope shows the same picture for the same pose. A review visits a
+/// pathology by lookAtRegion().
+
+#include "hs/scene/Scene.h"
+#include "hs/scene/ScopePassage.h"
+#include "hs/widgets/view/MeshDisplay.h"
+
+#include <QImage>
+#include <QWidget>
+
+#include <memory>
+#include <optional>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QSlider;
+
+namespace hs::widgets {
+
+class VtkView;
+
+class HysteroscopicPreview : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit HysteroscopicPreview(QWidget* parent = nullptr);
+    ~HysteroscopicPreview() override;
+
+    /// Shows `scene` (null: nothing). Without the canal and ostium labels the preview says it cannot place the scope.
+    void setScene(std::shared_ptr<const scene::Scene> scene);
+    bool hasScene() const { return m_scene != nullptr && m_landmarks.has_value(); }
+
+    /// mm beyond the external os (negative: outside it).
+    void setInsertion(double mm);
+    double insertion() const;
+    /// degrees off the shaft: 0, 12, 30 (default) or 70.
+    void setOptic(double degrees);
+    /// degrees about the shaft; 0 looks anterior.
+    void setRoll(double degrees);
+    /// Looks at region `regionId` from `distanceMm` inside the cavity; false when the region has no tets.
+    bool lookAtRegion(std::int32_t regionId, double distanceMm = 12.0);
+
+    VtkView* view() const { return m_view; }
+    QImage grabImage();
+
+    /// The scope's field of view, degrees (office hysteroscopes see 70-110).
+    static constexpr double kFieldOfViewDeg = 90.0;
+
+private:
+    void updateCamera();
+
+    VtkView* m_view = nullptr;
+    std::unique_ptr<MeshDisplay> m_display;
+    std::shared_ptr<const scene::Scene> m_scene;
+    std::optional<scene::ScopeLandmarks> m_landmarks;
+    QSlider* m_insertionSlider = nullptr;
+    QComboBox* m_opticCombo = nullptr;
+    QSlider* m_rollSlider = nullptr;
+    QLabel* m_statusLabel = nullptr;
+};
+
+} // namespace hs::widgets

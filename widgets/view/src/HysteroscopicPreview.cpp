@@ -1,0 +1,172 @@
+#include "hs/widgets/view/HysteroscopicPreview.h"
+
+#include "hs/scene/ScopeView.h"
+#include "hs/widgets/view/VtkView.h"
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLocale>
+#include <QSlider>
+#include <QVBoxLayout>
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkLight.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+
+#include <cmath>
+
+namespace hs::widgets {
+
+namespace {
+
+/// Insertion slider steps: 0.5 mm from 5 mm outside the external os to 70 mm in (beyond any cavity's fundus).
+constexpr int kInsertionStepsPerMm = 2;
+constexpr double kInsertionMinMm = -5.0;
+constexpr double kInsertionMaxMm = 70.0;
+
+} // namespace
+
+HysteroscopicPreview::HysteroscopicPreview(QWidget* parent) : QWidget(parent) {
+    setObjectName("hysteroscopicPreview");
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    m_view = new VtkView(this);
+    m_view->setObjectName("previewView");
+    m_view->setMinimumSize(240, 240);
+    vtkRenderer* renderer = m_view->renderer();
+    renderer->SetBackground(0.0, 0.0, 0.0);
+    // The only light is the scope's, at its tip: a headlight that falls off with distance.
+    renderer->AutomaticLightCreationOff();
+    auto lamp = vtkSmartPointer<vtkLight>::New();
+    lamp->SetLightTypeToHeadlight();
+    lamp->PositionalOn();
+    lamp->SetConeAngle(kFieldOfViewDeg);
+    lamp->SetAttenuationValues(1.0, 0.04, 0.002); // half the light at about 14 mm
+    lamp->SetIntensity(1.4);
+    renderer->AddLight(lamp);
+    m_display = std::make_unique<MeshDisplay>(renderer);
+    layout->addWidget(m_view, 1);
+
+    auto* controls = new QFormLayout;
+    m_insertionSlider = new QSlider(Qt::Horizontal, this);
+    m_insertionSlider->setObjectName("insertionSlider");
+    m_insertionSlider->setRange(int(kInsertionMinMm * kInsertionStepsPerMm),
+                                int(kInsertionMaxMm * kInsertionStepsPerMm));
+    m_insertionSlider->setToolTip(tr("How far the scope's tip is beyond the external os (mm)"));
+    controls->addRow(tr("&Insertion"), m_insertionSlider);
+    m_opticCombo = new QComboBox(this);
+    m_opticCombo->setObjectName("opticCombo");
+    for (int optic : {0, 12, 30, 70})
+        m_opticCombo->addItem(tr("%1°").arg(optic), optic);
+    m_opticCombo->setCurrentIndex(2);
+    m_opticCombo->setToolTip(tr("The optic's angle off the shaft; office scopes are typically 30°"));
+    controls->addRow(tr("&Optic"), m_opticCombo);
+    m_rollSlider = new QSlider(Qt::Horizontal, this);
+    m_rollSlider->setObjectName("rollSlider");
+    m_rollSlider->setRange(-180, 180);
+    m_rollSlider->setToolTip(tr("The light post's rotation about the shaft (degrees; 0 looks anterior)"));
+    controls->addRow(tr("&Roll"), m_rollSlider);
+    layout->addLayout(controls);
+    m_statusLabel = new QLabel(tr("Texture the case to see the cavity."), this);
+    m_statusLabel->setObjectName("previewStatusLabel");
+    m_statusLabel->setWordWrap(true);
+    layout->addWidget(m_statusLabel);
+
+    connect(m_insertionSlider, &QSlider::valueChanged, this, &HysteroscopicPreview::updateCamera);
+    connect(m_opticCombo, &QComboBox::currentIndexChanged, this, &HysteroscopicPreview::updateCamera);
+    connect(m_rollSlider, &QSlider::valueChanged, this, &HysteroscopicPreview::updateCamera);
+}
+
+HysteroscopicPreview::~HysteroscopicPreview() = default;
+
+void HysteroscopicPreview::setScene(std::shared_ptr<const scene::Scene> scene) {
+    m_scene = std::move(scene);
+    m_landmarks.reset();
+    if (!m_scene) {
+        m_display->clear();
+        m_statusLabel->setText(tr("Texture the case to see the cavity."));
+        m_view->requestRender();
+        return;
+    }
+    const scene::VisualSurface& v = m_scene->surface;
+    m_display->showTexturedSurface(v.mesh, v.uvs, v.normals, v.albedo);
+    // Inside the organ the scope sees the surfaces' backs as well as their fronts.
+    m_display->actor()->GetProperty()->BackfaceCullingOff();
+    auto landmarks = scene::findScopeLandmarks(*m_scene);
+    if (!landmarks) {
+        m_statusLabel->setText(tr("This scene has no cervical canal or ostium labels: the scope cannot be placed."));
+        m_view->requestRender();
+        return;
+    }
+    m_landmarks = *landmarks;
+    updateCamera();
+}
+
+void HysteroscopicPreview::setInsertion(double mm) {
+    m_insertionSlider->setValue(int(std::lround(mm * kInsertionStepsPerMm)));
+}
+
+double HysteroscopicPreview::insertion() const {
+    return double(m_insertionSlider->value()) / kInsertionStepsPerMm;
+}
+
+void HysteroscopicPreview::setOptic(double degrees) {
+    const int index = m_opticCombo->findData(int(std::lround(degrees)));
+    if (index >= 0)
+        m_opticCombo->setCurrentIndex(index);
+}
+
+void HysteroscopicPreview::setRoll(double degrees) {
+    m_rollSlider->setValue(int(std::lround(degrees)));
+}
+
+void HysteroscopicPreview::updateCamera() {
+    if (!hasScene())
+        return;
+    auto pose = scene::scopeView(*m_landmarks, insertion(), m_opticCombo->currentData().toDouble(),
+                                 double(m_rollSlider->value()));
+    if (!pose)
+        return;
+    vtkCamera* camera = m_view->renderer()->GetActiveCamera();
+    const Vec3 focal = pose->eyeMm + pose->direction * 10.0;
+    camera->SetPosition(pose->eyeMm.x, pose->eyeMm.y, pose->eyeMm.z);
+    camera->SetFocalPoint(focal.x, focal.y, focal.z);
+    camera->SetViewUp(pose->up.x, pose->up.y, pose->up.z);
+    camera->SetViewAngle(kFieldOfViewDeg);
+    camera->SetClippingRange(0.1, 200.0);
+    const QLocale locale;
+    m_statusLabel->setText(tr("Tip %1 mm beyond the external os, %2 optic, roll %3°")
+                               .arg(locale.toString(insertion(), 'f', 1), m_opticCombo->currentText())
+                               .arg(m_rollSlider->value()));
+    m_view->requestRender();
+}
+
+bool HysteroscopicPreview::lookAtRegion(std::int32_t regionId, double distanceMm) {
+    if (!hasScene())
+        return false;
+    auto pose = scene::viewOfRegion(*m_scene, *m_landmarks, regionId, distanceMm);
+    if (!pose)
+        return false;
+    vtkCamera* camera = m_view->renderer()->GetActiveCamera();
+    const Vec3 focal = pose->eyeMm + pose->direction * distanceMm;
+    camera->SetPosition(pose->eyeMm.x, pose->eyeMm.y, pose->eyeMm.z);
+    camera->SetFocalPoint(focal.x, focal.y, focal.z);
+    camera->SetViewUp(pose->up.x, pose->up.y, pose->up.z);
+    camera->SetViewAngle(kFieldOfViewDeg);
+    camera->SetClippingRange(0.1, 200.0);
+    m_statusLabel->setText(tr("Looking at region %1 from %2 mm inside the cavity")
+                               .arg(regionId)
+                               .arg(QLocale().toString(distanceMm, 'f', 0)));
+    m_view->requestRender();
+    return true;
+}
+
+QImage HysteroscopicPreview::grabImage() {
+    return m_view->grabImage();
+}
+
+} // namespace hs::widgets
