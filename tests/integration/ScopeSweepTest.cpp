@@ -59,7 +59,7 @@ TEST_P(ScopeSweep, CaseGeneratesAndAnOfficeScopeReachesTheFundus) {
     ASSERT_TRUE(spec.ok()) << spec.error().message();
     scene::CaseSpec s = *spec;
     s.texture.sizePx = 256;
-    auto generated = generate::generateScene(s, {file.string(), 2});
+    auto generated = generate::generateScene(s, {file.string(), 2, {}});
     ASSERT_TRUE(generated.ok()) << name << ": " << generated.error().message();
     ASSERT_TRUE(generated->scene.has_value());
     auto landmarks = scene::findScopeLandmarks(*generated->scene);

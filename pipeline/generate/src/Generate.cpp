@@ -41,7 +41,8 @@ Status runOrgan(Generated& g, const GenerateParams& params) {
 }
 
 Status runPathology(Generated& g, const GenerateParams& params, Progress& progress) {
-    auto result = pathology::growPathologies(g.organ->mesh, pathologyParamsFor(g.spec), progress);
+    auto result =
+        pathology::growPathologies(g.organ->mesh, pathologyParamsFor(g.spec), progress, params.growthObserver);
     if (!result)
         return inCase(params, result.error());
     g.pathologies = std::move(result).value();

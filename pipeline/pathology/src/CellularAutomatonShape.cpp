@@ -100,6 +100,21 @@ SurfaceMesh automatonSurface(const std::vector<std::uint8_t>& occ, const Grid& g
     return mesh;
 }
 
+/// Sweeps between two frames shown to a viewer.
+constexpr int kFrameSweeps = 4;
+
+/// The centres of the occupied cells within [lo - 1, hi + 1].
+std::vector<Vec3> cellCentres(const std::vector<std::uint8_t>& occ, const Grid& g, const std::array<int, 3>& lo,
+                              const std::array<int, 3>& hi) {
+    std::vector<Vec3> centres;
+    for (int k = std::max(0, lo[2] - 1); k <= std::min(g.nz - 1, hi[2] + 1); ++k)
+        for (int j = std::max(0, lo[1] - 1); j <= std::min(g.ny - 1, hi[1] + 1); ++j)
+            for (int i = std::max(0, lo[0] - 1); i <= std::min(g.nx - 1, hi[0] + 1); ++i)
+                if (occ[g.index(i, j, k)])
+                    centres.push_back(g.center(i, j, k));
+    return centres;
+}
+
 } // namespace
 
 Result<SurfaceMesh> cellularAutomatonShape(const ShapeSpec& spec, const SurfaceMesh& organ, const GrowthTuning& tuning,
@@ -161,6 +176,10 @@ Result<SurfaceMesh> cellularAutomatonShape(const ShapeSpec& spec, const SurfaceM
         for (std::size_t id : born)
             occ[id] = 1;
         count += born.size();
+        // Every few sweeps (and the last one) a viewer sees the cells so far.
+        if (tuning.observe && (sweep % kFrameSweeps == 0 || static_cast<double>(count) >= target))
+            emitFrame(tuning, clinical::GrowthModel::CellularAutomaton, sweep, static_cast<double>(count) >= target,
+                      cellCentres(occ, g, lo, hi));
     }
     SurfaceMesh mesh = automatonSurface(occ, g, spec, spec.radius / tuning.surfaceCellsPerRadius);
     // The placement owns the position, the automaton the shape: a tumour that drifted into yielding tissue keeps

@@ -47,7 +47,7 @@ Result<SurfaceMesh> particleShape(const ShapeSpec& spec, const SurfaceMesh& orga
         const auto z = static_cast<std::int64_t>(std::floor(p.z / cell)) + dz;
         return (x * 73856093) ^ (y * 19349663) ^ (z * 83492791);
     };
-    while (cells.size() < n) {
+    for (int generation = 0; cells.size() < n; ++generation) {
         HS_TRY(progress.check("pathology growth"));
         // Division: faster where the surroundings yield (cavity, outside) than in the resisting wall.
         const std::size_t current = cells.size();
@@ -100,6 +100,7 @@ Result<SurfaceMesh> particleShape(const ShapeSpec& spec, const SurfaceMesh& orga
             for (std::size_t i = 0; i < cells.size(); ++i)
                 cells[i] += disp[i];
         }
+        emitFrame(tuning, clinical::GrowthModel::Particles, generation, cells.size() >= n, cells);
     }
     std::vector<float> field(g.size(), 0.0f);
     const double reach = 1.45 * rho;

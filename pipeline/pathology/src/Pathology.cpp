@@ -62,11 +62,16 @@ std::vector<const SurfaceMesh*> surfacesOf(const std::vector<Planned>& plans, co
 }
 
 Result<SurfaceMesh> grow(const PathologyRequest& r, const ShapeSpec& spec, const SurfaceMesh& organ, Rng& rng,
-                         Progress& progress) {
+                         Progress& progress, const GrowthObserver& observe, std::size_t index) {
     GrowthTuning tuning;
+    tuning.observe = observe ? &observe : nullptr;
+    tuning.pathology = index;
     switch (r.model) {
-    case clinical::GrowthModel::Skeleton:
-        return skeletonShape(spec, rng);
+    case clinical::GrowthModel::Skeleton: {
+        SurfaceMesh shape = skeletonShape(spec, rng);
+        emitSweptFrames(tuning, shape, spec);
+        return shape;
+    }
     case clinical::GrowthModel::CellularAutomaton:
         return cellularAutomatonShape(spec, organ, tuning, rng, progress);
     case clinical::GrowthModel::Particles:
@@ -79,7 +84,7 @@ Result<SurfaceMesh> grow(const PathologyRequest& r, const ShapeSpec& spec, const
 /// to the requested size and fits its depth to the FIGO type.
 Status growAt(std::vector<Planned>& plans, std::size_t i, const std::vector<std::size_t>& others, const Seat& seat,
               const SurfaceMesh& organ, const OrganInfo& info, const PathologyParams& params, const Rng& root,
-              StageTimings& timings, Progress& progress) {
+              StageTimings& timings, Progress& progress, const GrowthObserver& observe) {
     Planned& p = plans[i];
     const PathologyRequest& r = *p.request;
     {
@@ -93,7 +98,7 @@ Status growAt(std::vector<Planned>& plans, std::size_t i, const std::vector<std:
     {
         ScopedStepTimer timer(timings, "grow");
         Rng rng = root.derive(i);
-        auto shape = grow(r, p.spec, organ, rng, progress);
+        auto shape = grow(r, p.spec, organ, rng, progress, observe, i);
         if (!shape.ok())
             return shape.failure();
         p.surface = std::move(*shape);
@@ -125,7 +130,8 @@ std::optional<std::size_t> overlapsAny(const std::vector<Planned>& plans, std::s
 /// click) is never moved: it stays where it was put, and the overlap check refuses the case.
 Result<bool> resiteClearOf(std::vector<Planned>& plans, std::size_t i, const std::vector<std::size_t>& others,
                            const SurfaceMesh& organ, const OrganInfo& info, const PathologyParams& params,
-                           const Rng& root, PathologyResult& result, Progress& progress) {
+                           const Rng& root, PathologyResult& result, Progress& progress,
+                           const GrowthObserver& observe) {
     const auto blocker = overlapsAny(plans, i, others, params.minimumGapMm);
     if (!blocker)
         return true;
@@ -159,7 +165,7 @@ Result<bool> resiteClearOf(std::vector<Planned>& plans, std::size_t i, const std
             continue;
         ++grown;
         HS_TRY(progress.check("pathology stage"));
-        HS_TRY(growAt(plans, i, others, seat, organ, info, params, root, result.timings, progress));
+        HS_TRY(growAt(plans, i, others, seat, organ, info, params, root, result.timings, progress, observe));
         if (!overlapsAny(plans, i, others, params.minimumGapMm)) {
             result.warnings.push_back(who(r) + ": at its nominal seat it overlaps " + who(*plans[*blocker].request) +
                                       "; seated " + fmt(distance(seat.endometrium, nominal.endometrium)) +
@@ -176,9 +182,9 @@ Result<bool> resiteClearOf(std::vector<Planned>& plans, std::size_t i, const std
 /// of those before it, if it was placed by a clinical location too (a big head on a stalk can fill the room a later,
 /// smaller pathology's wall has, while its own wall has more). Otherwise both stay and the overlap check names them.
 Status resiteClearOfEarlier(std::vector<Planned>& plans, std::size_t i, const SurfaceMesh& organ, const OrganInfo& info,
-                            const PathologyParams& params, const Rng& root, PathologyResult& result,
-                            Progress& progress) {
-    auto cleared = resiteClearOf(plans, i, othersOf(i), organ, info, params, root, result, progress);
+                            const PathologyParams& params, const Rng& root, PathologyResult& result, Progress& progress,
+                            const GrowthObserver& observe) {
+    auto cleared = resiteClearOf(plans, i, othersOf(i), organ, info, params, root, result, progress, observe);
     if (!cleared.ok())
         return cleared.failure();
     if (*cleared)
@@ -191,7 +197,7 @@ Status resiteClearOfEarlier(std::vector<Planned>& plans, std::size_t i, const Su
     for (std::size_t k = 0; k <= i; ++k)
         if (k != j)
             others.push_back(k);
-    auto moved = resiteClearOf(plans, j, others, organ, info, params, root, result, progress);
+    auto moved = resiteClearOf(plans, j, others, organ, info, params, root, result, progress, observe);
     if (!moved.ok())
         return moved.failure();
     return {};
@@ -199,7 +205,8 @@ Status resiteClearOfEarlier(std::vector<Planned>& plans, std::size_t i, const Su
 
 } // namespace
 
-Result<PathologyResult> growPathologies(const SurfaceMesh& organ, const PathologyParams& params, Progress& progress) {
+Result<PathologyResult> growPathologies(const SurfaceMesh& organ, const PathologyParams& params, Progress& progress,
+                                        const GrowthObserver& observe) {
     PathologyResult result;
     auto organInfo = analyzeOrgan(organ);
     if (!organInfo.ok())
@@ -227,9 +234,9 @@ Result<PathologyResult> growPathologies(const SurfaceMesh& organ, const Patholog
         }
         const double di = static_cast<double>(i);
         auto sub = progress.sub(di / n * 0.8, (di + 1.0) / n * 0.8);
-        HS_TRY(growAt(plans, i, othersOf(i), seat, organ, info, params, root, result.timings, sub));
+        HS_TRY(growAt(plans, i, othersOf(i), seat, organ, info, params, root, result.timings, sub, observe));
         if (std::holds_alternative<clinical::ClinicalPlacement>(r.placement))
-            HS_TRY(resiteClearOfEarlier(plans, i, organ, info, params, root, result, sub));
+            HS_TRY(resiteClearOfEarlier(plans, i, organ, info, params, root, result, sub, observe));
         result.timings.step("grow").counts.emplace_back(r.id + ".triangles",
                                                         static_cast<std::int64_t>(p.surface.triangles.size()));
         progress.report("pathology.grow", (di + 1.0) / n * 0.8);

@@ -57,4 +57,37 @@ double headDiameter(const std::vector<Vec3>& points, const Vec3& base, const Vec
     return diameter(head);
 }
 
+void emitFrame(const GrowthTuning& tuning, clinical::GrowthModel model, int step, bool last, std::vector<Vec3> points) {
+    if (!tuning.observe || !*tuning.observe)
+        return;
+    GrowthFrame frame;
+    frame.pathology = tuning.pathology;
+    frame.model = model;
+    frame.step = step;
+    frame.last = last;
+    frame.points = std::move(points);
+    (*tuning.observe)(frame);
+}
+
+void emitSweptFrames(const GrowthTuning& tuning, const SurfaceMesh& shape, const ShapeSpec& spec) {
+    if (!tuning.observe || !*tuning.observe || shape.points.empty())
+        return;
+    // The contour is revolved station by station along the skeleton, from its root (a stalk's base, or one pole of
+    // a myoma's axis): the points in that order, a quarter more each step.
+    const Vec3 root = spec.polyp || spec.pedunculated ? spec.base : spec.center;
+    const Vec3 axis = spec.polyp || spec.pedunculated ? normalized(spec.center - spec.base) : spec.intoWall;
+    std::vector<std::pair<double, Vec3>> along;
+    for (const Vec3& p : shape.points)
+        along.emplace_back(dot(p - root, axis), p);
+    std::sort(along.begin(), along.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    constexpr int kSteps = 4;
+    for (int step = 1; step <= kSteps; ++step) {
+        std::vector<Vec3> points;
+        const std::size_t n = along.size() * static_cast<std::size_t>(step) / kSteps;
+        for (std::size_t i = 0; i < n; ++i)
+            points.push_back(along[i].second);
+        emitFrame(tuning, clinical::GrowthModel::Skeleton, step, step == kSteps, std::move(points));
+    }
+}
+
 } // namespace hs::pathology::detail

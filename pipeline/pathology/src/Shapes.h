@@ -6,6 +6,7 @@
 #include "hs/core/Result.h"
 #include "hs/core/Rng.h"
 #include "hs/core/SurfaceMesh.h"
+#include "hs/pathology/Pathology.h"
 
 namespace hs::pathology::detail {
 
@@ -36,7 +37,14 @@ struct GrowthTuning {
     int cellsPerDiameter = 26;          ///< CA voxels across the requested size
     double surfaceCellsPerRadius = 5.5; ///< CA surface: polygonization cells per nominal radius (about 4000 triangles)
     int particleCount = 1500;           ///< particles at the target volume
+    const GrowthObserver* observe = nullptr; ///< shown the growth as it happens; never changes it
+    std::size_t pathology = 0;               ///< the index the observer is told
 };
+
+/// Tells the observer (if any) one step of pathology `tuning.pathology`'s growth.
+void emitFrame(const GrowthTuning& tuning, clinical::GrowthModel model, int step, bool last, std::vector<Vec3> points);
+/// The skeleton model's frames: its finished surface's points, swept from the skeleton's root in four steps.
+void emitSweptFrames(const GrowthTuning& tuning, const SurfaceMesh& shape, const ShapeSpec& spec);
 
 /// Cellular automaton (Eden-type growth with surface tension): every step each empty face-neighbour of the tumour
 /// becomes tumour with probability p0 (1 + 2 q) / r * (1 + a (d.t)^2), q the fraction of its neighbours already

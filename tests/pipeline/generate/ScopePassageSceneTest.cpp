@@ -14,7 +14,7 @@ TEST(ScopePassageScene, MeasuresTheNarrowestWidthOfTheDefaultScene) {
     ASSERT_TRUE(spec.ok()) << spec.error().message();
     scene::CaseSpec s = *spec;
     s.texture.sizePx = 256; // the tets are those of the default scene; only the maps are smaller
-    auto generated = generate::generateScene(s, {HS_DEFAULT_CASE_FILE, 2});
+    auto generated = generate::generateScene(s, {HS_DEFAULT_CASE_FILE, 2, {}});
     ASSERT_TRUE(generated.ok()) << generated.error().message();
     ASSERT_TRUE(generated->scene.has_value());
     const scene::Scene& sc = *generated->scene;

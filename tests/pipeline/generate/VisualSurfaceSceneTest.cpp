@@ -24,7 +24,7 @@ const generate::Generated& defaultScene() {
         EXPECT_TRUE(spec.ok()) << spec.error().message();
         scene::CaseSpec s = *spec;
         s.texture.sizePx = 512; // the geometry is that of the default scene; only the maps are smaller
-        auto g = generate::generateScene(s, {HS_DEFAULT_CASE_FILE, 2});
+        auto g = generate::generateScene(s, {HS_DEFAULT_CASE_FILE, 2, {}});
         EXPECT_TRUE(g.ok()) << g.error().message();
         return std::move(g).value();
     }();

@@ -473,3 +473,39 @@ TEST(Pathology, SeatsAClickOnTheWallAndRefusesTheCervixAPolypOnTheSerosaAndAMiss
 }
 
 } // namespace hs::pathology
+
+namespace hs::pathology {
+
+TEST(Pathology, ShowsEachModelsGrowthAsItHappensWithoutChangingIt) {
+    const SurfaceMesh organ = test::testOrgan(3);
+    PathologyParams params;
+    params.pathologies = {
+        test::myoma("ca", clinical::GrowthModel::CellularAutomaton, {4, -1}, 15.0),
+        test::myoma("particles", clinical::GrowthModel::Particles, {4, -1}, 15.0, clinical::UterineLocation::Anterior),
+        test::polyp("skeleton", clinical::GrowthModel::Skeleton, 8.0, false, 0.0)};
+    std::vector<GrowthFrame> frames;
+    auto watched = growPathologies(organ, params, Progress::none(), [&](const GrowthFrame& f) { frames.push_back(f); });
+    ASSERT_TRUE(watched.ok()) << watched.error().message();
+    auto unwatched = growPathologies(organ, params);
+    ASSERT_TRUE(unwatched.ok());
+    for (std::size_t i = 0; i < params.pathologies.size(); ++i)
+        EXPECT_EQ(watched->pathologies[i].surface.points, unwatched->pathologies[i].surface.points) << i;
+
+    for (std::size_t i = 0; i < params.pathologies.size(); ++i) {
+        std::vector<const GrowthFrame*> mine;
+        for (const GrowthFrame& f : frames)
+            if (f.pathology == i)
+                mine.push_back(&f);
+        ASSERT_GE(mine.size(), 3u) << i;
+        EXPECT_EQ(mine.front()->model, params.pathologies[i].model);
+        EXPECT_TRUE(mine.back()->last) << i;
+        // It grows: more points at the end than at the start, around where it was seated.
+        EXPECT_GT(mine.back()->points.size(), mine.front()->points.size()) << i;
+        Vec3 centre{};
+        for (const Vec3& p : mine.back()->points)
+            centre += p / static_cast<double>(mine.back()->points.size());
+        EXPECT_LT(distance(centre, bounds(watched->pathologies[i].surface).center()), 10.0) << i;
+    }
+}
+
+} // namespace hs::pathology

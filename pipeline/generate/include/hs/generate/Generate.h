@@ -31,6 +31,8 @@ struct GenerateParams {
     std::string caseFile;
     /// Replaces the case's meshing.threads for every stage (0: all cores); never changes the result.
     std::optional<int> threads;
+    /// Shown the pathologies' growth as it happens (pathology::GrowthFrame); never changes the result.
+    pathology::GrowthObserver growthObserver;
 };
 
 /// Every stage's result for one case. A stage's result is set once the stage has run.

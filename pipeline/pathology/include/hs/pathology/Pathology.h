@@ -16,6 +16,7 @@
 #include "hs/core/Timings.h"
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -87,13 +88,29 @@ struct PathologyResult {
     std::vector<std::string> warnings;
 };
 
+/// One step of a pathology's growth as it happens, for a viewer (the workstation's Grow): the points the model grows
+/// at that step, in the organ frame (mm), before the shape is scaled to its size and fitted to its depth. Cellular
+/// automaton: the centres of its cells every few sweeps; particles: the cells after each division; skeleton: the
+/// revolved contour swept along the skeleton from its root, in four steps. A pathology moved to another seat grows
+/// again there, so its frames start over.
+struct GrowthFrame {
+    std::size_t pathology = 0; ///< index in PathologyParams::pathologies
+    clinical::GrowthModel model = clinical::GrowthModel::Skeleton;
+    int step = 0;
+    bool last = false; ///< the model's final state at this seat
+    std::vector<Vec3> points;
+};
+/// Called on the stage's thread; it must be quick (copy what it keeps) and never changes the result.
+using GrowthObserver = std::function<void(const GrowthFrame&)>;
+
 /// Places, grows and measures every requested pathology in `organ` (a uterus-template surface with the "tissue"
 /// label). The organ yields where a pathology pushes (mass effect: tissue displaced radially, the surface a
 /// pathology is meant to break through stays). Fails with InvalidInput on a request that is impossible (FIGO 9, a
 /// myoma larger than the corpus, a polyp outside the cavity, overlapping pathologies, CA polyps) saying why,
 /// Unsupported for FIGO 8 and cervical sites, Cancelled on request.
 [[nodiscard]] Result<PathologyResult> growPathologies(const SurfaceMesh& organ, const PathologyParams& params,
-                                                      Progress& progress = Progress::none());
+                                                      Progress& progress = Progress::none(),
+                                                      const GrowthObserver& observe = {});
 
 /// Where a click at `pointMm` on `organ` (the organ the case's patient, anatomy and seed give, as a 3-D view shows
 /// it) seats a pathology of `kind`: the point and the outward normal of the organ's face under it (the closest face
