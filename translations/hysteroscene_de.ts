@@ -1466,6 +1466,29 @@
     </message>
 </context>
 <context>
+    <name>hs::widgets::VariantsView</name>
+    <message>
+        <source>How far every scope&apos;s tip is beyond its external os (mm)</source>
+        <translation>Wie weit die Spitze jedes Hysteroskops hinter dem äußeren Muttermund liegt (mm)</translation>
+    </message>
+    <message>
+        <source>&amp;Insertion</source>
+        <translation>&amp;Einführtiefe</translation>
+    </message>
+    <message>
+        <source>%1°</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <source>&amp;Optic</source>
+        <translation>&amp;Optik</translation>
+    </message>
+    <message>
+        <source>&amp;Roll</source>
+        <translation>&amp;Drehung</translation>
+    </message>
+</context>
+<context>
     <name>hs::workstation::MainWindow</name>
     <message>
         <source>&amp;Open...</source>
@@ -1696,10 +1719,6 @@
         <translation>Szenenpaket begutachten</translation>
     </message>
     <message>
-        <source>The folder is not a scene package (it has no manifest.json).</source>
-        <translation>Der Ordner ist kein Szenenpaket (er enthält keine manifest.json).</translation>
-    </message>
-    <message>
         <source>The scene package cannot be read: a file is missing, changed or breaks its format (see the details).</source>
         <translation>Das Szenenpaket kann nicht gelesen werden: Eine Datei fehlt, wurde geändert oder verletzt ihr Format (siehe Details).</translation>
     </message>
@@ -1802,6 +1821,30 @@
     <message>
         <source>Revie&amp;w Scene Package...</source>
         <translation>Szenenpaket &amp;begutachten...</translation>
+    </message>
+    <message>
+        <source>The folder holds no scene package (no manifest.json).</source>
+        <translation>Der Ordner enthält kein Szenenpaket (keine manifest.json).</translation>
+    </message>
+    <message>
+        <source>Compare &amp;Variants...</source>
+        <translation>&amp;Varianten vergleichen...</translation>
+    </message>
+    <message>
+        <source>Show the variants of a case side by side, as the scope sees them</source>
+        <translation>Die Varianten eines Falls nebeneinander zeigen, wie das Hysteroskop sie sieht</translation>
+    </message>
+    <message>
+        <source>Compare Variants</source>
+        <translation>Varianten vergleichen</translation>
+    </message>
+    <message>
+        <source>Reading the variants</source>
+        <translation>Varianten werden gelesen</translation>
+    </message>
+    <message>
+        <source>Variants - %1</source>
+        <translation>Varianten - %1</translation>
     </message>
 </context>
 <context>

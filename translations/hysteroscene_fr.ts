@@ -1466,6 +1466,29 @@
     </message>
 </context>
 <context>
+    <name>hs::widgets::VariantsView</name>
+    <message>
+        <source>How far every scope&apos;s tip is beyond its external os (mm)</source>
+        <translation>Distance de la pointe de chaque hystéroscope au-delà de l&apos;orifice externe (mm)</translation>
+    </message>
+    <message>
+        <source>&amp;Insertion</source>
+        <translation>&amp;Insertion</translation>
+    </message>
+    <message>
+        <source>%1°</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <source>&amp;Optic</source>
+        <translation>&amp;Optique</translation>
+    </message>
+    <message>
+        <source>&amp;Roll</source>
+        <translation>&amp;Rotation</translation>
+    </message>
+</context>
+<context>
     <name>hs::workstation::MainWindow</name>
     <message>
         <source>&amp;Open...</source>
@@ -1696,10 +1719,6 @@
         <translation>Évaluer un paquet de scène</translation>
     </message>
     <message>
-        <source>The folder is not a scene package (it has no manifest.json).</source>
-        <translation>Le dossier n&apos;est pas un paquet de scène (il n&apos;a pas de manifest.json).</translation>
-    </message>
-    <message>
         <source>The scene package cannot be read: a file is missing, changed or breaks its format (see the details).</source>
         <translation>Le paquet de scène ne peut pas être lu : un fichier manque, a été modifié ou ne respecte pas son format (voir les détails).</translation>
     </message>
@@ -1802,6 +1821,30 @@
     <message>
         <source>Revie&amp;w Scene Package...</source>
         <translation>É&amp;valuer un paquet de scène...</translation>
+    </message>
+    <message>
+        <source>The folder holds no scene package (no manifest.json).</source>
+        <translation>Le dossier ne contient aucun paquet de scène (pas de manifest.json).</translation>
+    </message>
+    <message>
+        <source>Compare &amp;Variants...</source>
+        <translation>Comparer les &amp;variantes...</translation>
+    </message>
+    <message>
+        <source>Show the variants of a case side by side, as the scope sees them</source>
+        <translation>Afficher côte à côte les variantes d&apos;un cas, telles que l&apos;hystéroscope les voit</translation>
+    </message>
+    <message>
+        <source>Compare Variants</source>
+        <translation>Comparer les variantes</translation>
+    </message>
+    <message>
+        <source>Reading the variants</source>
+        <translation>Lecture des variantes</translation>
+    </message>
+    <message>
+        <source>Variants - %1</source>
+        <translation>Variantes - %1</translation>
     </message>
 </context>
 <context>

@@ -1466,6 +1466,29 @@
     </message>
 </context>
 <context>
+    <name>hs::widgets::VariantsView</name>
+    <message>
+        <source>How far every scope&apos;s tip is beyond its external os (mm)</source>
+        <translation>Quanto la punta di ogni isteroscopio è oltre l&apos;orifizio uterino esterno (mm)</translation>
+    </message>
+    <message>
+        <source>&amp;Insertion</source>
+        <translation>&amp;Inserimento</translation>
+    </message>
+    <message>
+        <source>%1°</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <source>&amp;Optic</source>
+        <translation>&amp;Ottica</translation>
+    </message>
+    <message>
+        <source>&amp;Roll</source>
+        <translation>&amp;Rotazione</translation>
+    </message>
+</context>
+<context>
     <name>hs::workstation::MainWindow</name>
     <message>
         <source>&amp;Open...</source>
@@ -1696,10 +1719,6 @@
         <translation>Valuta pacchetto di scena</translation>
     </message>
     <message>
-        <source>The folder is not a scene package (it has no manifest.json).</source>
-        <translation>La cartella non è un pacchetto di scena (non contiene manifest.json).</translation>
-    </message>
-    <message>
         <source>The scene package cannot be read: a file is missing, changed or breaks its format (see the details).</source>
         <translation>Impossibile leggere il pacchetto di scena: un file manca, è stato modificato o non rispetta il suo formato (vedi i dettagli).</translation>
     </message>
@@ -1802,6 +1821,30 @@
     <message>
         <source>Revie&amp;w Scene Package...</source>
         <translation>&amp;Valuta pacchetto di scena...</translation>
+    </message>
+    <message>
+        <source>The folder holds no scene package (no manifest.json).</source>
+        <translation>La cartella non contiene alcun pacchetto di scena (nessun manifest.json).</translation>
+    </message>
+    <message>
+        <source>Compare &amp;Variants...</source>
+        <translation>Confronta &amp;varianti...</translation>
+    </message>
+    <message>
+        <source>Show the variants of a case side by side, as the scope sees them</source>
+        <translation>Mostrare affiancate le varianti di un caso, come le vede l&apos;isteroscopio</translation>
+    </message>
+    <message>
+        <source>Compare Variants</source>
+        <translation>Confronta varianti</translation>
+    </message>
+    <message>
+        <source>Reading the variants</source>
+        <translation>Lettura delle varianti</translation>
+    </message>
+    <message>
+        <source>Variants - %1</source>
+        <translation>Varianti - %1</translation>
     </message>
 </context>
 <context>

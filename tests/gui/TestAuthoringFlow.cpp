@@ -8,12 +8,15 @@
 #include "hs/widgets/panels/PathologyPanel.h"
 #include "hs/widgets/view/HysteroscopicPreview.h"
 #include "hs/widgets/view/MeshDisplay.h"
+#include "hs/widgets/view/SurfaceHandles.h"
+#include "hs/widgets/view/VariantsView.h"
 #include "hs/widgets/view/VtkView.h"
 #include "hs/workstation/FileDialog.h"
 #include "hs/workstation/MainWindow.h"
 #include "hs/workstation/MessageBox.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QBarSeries>
 #include <QBarSet>
 #include <QChartView>
@@ -24,6 +27,7 @@
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMouseEvent>
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
@@ -34,6 +38,8 @@
 
 #include <vtkCamera.h>
 #include <vtkRenderer.h>
+
+#include <QUndoStack>
 
 #include <variant>
 
@@ -59,6 +65,7 @@ private slots:
     void refusesAnOutOfRangeValueAndKeepsTheCase();
     void aClinicianReviewsTheExportedPackage();
     void aBrokenPackageOpensWithAMessageAndChangesNothing();
+    void showsTwoVariantsSideBySide();
 
 private:
     template <class T>
@@ -106,6 +113,29 @@ void TestAuthoringFlow::cleanup() {
         m_window->document().undoStack()->setClean();
     m_window.reset();
     hs::widgets::CaseDocument::discardRecovery(m_dir.filePath("recovery"));
+}
+
+/// Where the world point `p` (mm) is on `view`, in its logical pixels.
+QPoint onScreen(hs::widgets::VtkView* view, const hs::Vec3& p) {
+    vtkRenderer* renderer = view->renderer();
+    renderer->SetWorldPoint(p.x, p.y, p.z, 1.0);
+    renderer->WorldToDisplay();
+    double d[3];
+    renderer->GetDisplayPoint(d);
+    const double ratio = view->devicePixelRatioF();
+    return QPoint(int(d[0] / ratio), int((view->height() * ratio - d[1]) / ratio));
+}
+
+/// A left-button drag on `view` from `from` to `to`, in small steps, as a hand does it.
+void drag(QWidget* view, const QPoint& from, const QPoint& to) {
+    const auto send = [view](QEvent::Type type, const QPoint& at, Qt::MouseButton button, Qt::MouseButtons buttons) {
+        QMouseEvent event(type, QPointF(at), view->mapToGlobal(QPointF(at)), button, buttons, Qt::NoModifier);
+        QApplication::sendEvent(view, &event);
+    };
+    send(QEvent::MouseButtonPress, from, Qt::LeftButton, Qt::LeftButton);
+    for (int i = 1; i <= 8; ++i)
+        send(QEvent::MouseMove, from + (to - from) * i / 8, Qt::NoButton, Qt::LeftButton);
+    send(QEvent::MouseButtonRelease, to, Qt::LeftButton, Qt::NoButton);
 }
 
 void TestAuthoringFlow::shot(const QString& name, const QString& dock) {
@@ -167,7 +197,38 @@ void TestAuthoringFlow::authorsTheDefaultCaseFromNewToAValidatedPackage() {
     QVERIFY2(std::holds_alternative<hs::clinical::SurfacePlacement>(added.placement),
              qPrintable(find<QLabel>("pathologyMessageLabel")->text()));
 
+    // Placing again shows the seat and size handles on the organ; dragging the size handle resizes the myoma, as
+    // one edit when the drag ends.
+    find<QToolButton>("placeButton")->click();
+    QVERIFY(m_window->handles()->isShown());
+    QVERIFY(hs::distance(m_window->handles()->seatPosition(),
+                         std::get<hs::clinical::SurfacePlacement>(added.placement).pointMm) < 1e-6);
+    const int renders = view->renderCount();
+    QTRY_VERIFY(view->renderCount() > renders); // the handles are drawn where the press will find them
+    const QPoint grip = onScreen(view, m_window->handles()->sizePosition());
+    const QPoint seatOnScreen = onScreen(view, m_window->handles()->seatPosition());
+    QVERIFY((grip - seatOnScreen).manhattanLength() > 20); // the two handles apart on the screen
+    const int editsBefore = m_window->document().undoStack()->count();
+    const QPoint outward = (grip - seatOnScreen) * 16 / std::max(1, (grip - seatOnScreen).manhattanLength());
+    drag(view, grip, grip + outward); // pulled away from the seat: bigger
+    QCOMPARE(m_window->document().undoStack()->count(), editsBefore + 1);
+    const double resized = m_window->document().spec().pathologies.back().sizeMm;
+    QVERIFY2(resized > 15.0 && resized <= 100.0, qPrintable(QString::number(resized)));
+    find<QToolButton>("placeButton")->click(); // done placing
+    QVERIFY(!m_window->handles()->isShown());
+    find<QDoubleSpinBox>("sizeSpin")->setValue(15.0);
+
+    // Grow shows the pathologies growing (frames of each model over the organ), then the grown result.
+    QSignalSpy frames(&session(), &hs::widgets::GenerationSession::growthFrame);
+    std::size_t largestCloud = 0;
+    const QMetaObject::Connection watchGrowth =
+        connect(&session(), &hs::widgets::GenerationSession::growthFrame, this,
+                [&] { largestCloud = std::max(largestCloud, m_window->growthDisplay().pointCount()); });
     QVERIFY(runStage("growButton"));
+    disconnect(watchGrowth);
+    QVERIFY2(frames.count() >= 3, qPrintable(QString::number(frames.count())));
+    QVERIFY(largestCloud > 0);
+    QCOMPARE(m_window->growthDisplay().pointCount(), std::size_t{0});
     QVERIFY(session().isCurrent(hs::generate::Stage::Pathology));
     QVERIFY(find<QLabel>("pathologyResultLabel")->text().contains("FIGO"));
     shot("workstation-pathologies", "pathologyDock");
@@ -269,6 +330,35 @@ void TestAuthoringFlow::aBrokenPackageOpensWithAMessageAndChangesNothing() {
     QVERIFY2(messages.first().details.contains("manifest.json"), qPrintable(messages.first().details));
     QVERIFY(!m_window->isReviewing());
     QCOMPARE(hs::scene::toJson(m_window->document().spec()), before);
+}
+
+void TestAuthoringFlow::showsTwoVariantsSideBySide() {
+    // Two variants of a light case, exported from the Export panel.
+    find<QSpinBox>("verticesSpin")->setValue(4000);
+    auto* size = find<QComboBox>("textureSizeCombo");
+    size->setCurrentIndex(size->findData(256));
+    const QString folder = m_dir.filePath("variants");
+    find<QLineEdit>("exportFolderEdit")->setText(folder);
+    find<QSpinBox>("exportVariantsSpin")->setValue(2);
+    QSignalSpy exported(&session(), &hs::widgets::GenerationSession::exported);
+    find<QPushButton>("exportButton")->click();
+    QVERIFY(exported.wait(kStageTimeoutMs));
+
+    QSignalSpy opened(m_window.get(), &MainWindow::variantsOpened);
+    FileDialog::setNextFileName(folder);
+    find<QAction>("actionCompareVariants")->trigger();
+    QVERIFY(opened.wait(60000));
+    QCOMPARE(opened.at(0).at(0).toInt(), 2);
+    hs::widgets::VariantsView* variants = m_window->variantsView();
+    QVERIFY(variants->isVisible());
+    variants->setInsertion(30.0);
+    QVERIFY(variants->preview(0)->hasScene() && variants->preview(1)->hasScene());
+    QCOMPARE(variants->preview(1)->insertion(), 30.0);
+    // Two patients: the two views differ.
+    QVERIFY(variants->preview(0)->grabImage() != variants->preview(1)->grabImage());
+    if (!qEnvironmentVariable("HS_SCREENSHOT_DIR").isEmpty())
+        QVERIFY(variants->grab().save(
+            QDir(qEnvironmentVariable("HS_SCREENSHOT_DIR")).filePath("workstation-variants.png")));
 }
 
 QTEST_MAIN(TestAuthoringFlow)

@@ -50,6 +50,7 @@ private slots:
     void addsDuplicatesAndRemoves();
     void refusesASizeOutOfRange();
     void switchingTheKindKeepsTheCaseValid();
+    void differentEditsAreDifferentUndoSteps();
     void placesByAClickOnTheWall();
     void growShowsTheMeasuredDescriptors();
 
@@ -133,6 +134,21 @@ void TestPathologyPanel::switchingTheKindKeepsTheCaseValid() {
     QVERIFY(p.attachment.has_value());
     QVERIFY(hs::scene::checkCase(m_document->spec()).empty());
     QVERIFY(!find<QComboBox>("figoCombo")->isEnabled());
+}
+
+void TestPathologyPanel::differentEditsAreDifferentUndoSteps() {
+    m_panel->setCurrentIndex(0);
+    auto* model = find<QComboBox>("modelCombo");
+    model->setCurrentIndex(model->findData(static_cast<int>(hs::clinical::GrowthModel::Particles)));
+    auto* figo = find<QComboBox>("figoCombo");
+    figo->setCurrentIndex(3);
+    auto* size = find<QDoubleSpinBox>("sizeSpin");
+    size->stepUp();
+    size->stepUp(); // steps of the size merge into one
+    QCOMPARE(m_document->undoStack()->count(), 3);
+    m_document->undoStack()->undo();
+    QCOMPARE(m_document->spec().pathologies[0].sizeMm, 20.0);
+    QVERIFY(m_document->spec().pathologies[0].figo->type == 3);
 }
 
 void TestPathologyPanel::placesByAClickOnTheWall() {

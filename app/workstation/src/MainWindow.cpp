@@ -12,6 +12,8 @@
 #include "hs/widgets/panels/TexturePanel.h"
 #include "hs/widgets/view/HysteroscopicPreview.h"
 #include "hs/widgets/view/MeshDisplay.h"
+#include "hs/widgets/view/SurfaceHandles.h"
+#include "hs/widgets/view/VariantsView.h"
 #include "hs/workstation/FileDialog.h"
 #include "hs/workstation/MessageBox.h"
 
@@ -96,6 +98,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_view->renderer()->SetBackground2(kBackgroundTop[0], kBackgroundTop[1], kBackgroundTop[2]);
     setCentralWidget(m_view);
     m_display = std::make_unique<widgets::MeshDisplay>(m_view->renderer());
+    m_growth = std::make_unique<widgets::GrowthDisplay>(m_view->renderer());
+    m_handles = new widgets::SurfaceHandles(m_view, this);
 
     createActions();
     createMenus();
@@ -117,17 +121,34 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     updateTitle();
     connect(m_view, &widgets::VtkView::picked, this, &MainWindow::onPicked);
     connect(&m_session, &widgets::GenerationSession::resultsChanged, this, &MainWindow::onResultsChanged);
+    // Grow shows the pathologies growing over the organ; the stage's result replaces them.
+    connect(&m_session, &widgets::GenerationSession::growthFrame, this, [this](const pathology::GrowthFrame& frame) {
+        if (!m_currentFile.isEmpty())
+            return;
+        m_growth->show(frame);
+        m_view->requestRender();
+    });
+    connect(&m_session.runner(), &widgets::JobRunner::idle, this, [this] {
+        m_growth->clear();
+        m_view->requestRender();
+    });
     connect(&m_session.runner(), &widgets::JobRunner::failed, this, &MainWindow::onJobFailed);
     connect(&m_reviewJobs, &widgets::JobRunner::failed, this, [this](const QString&, const Error& error) {
         // The package is untrusted: the details name the file, the field and the allowed range.
         MessageBox::critical(this, tr("Review Scene Package"),
                              error.code == ErrorCode::NotFound
-                                 ? tr("The folder is not a scene package (it has no manifest.json).")
+                                 ? tr("The folder holds no scene package (no manifest.json).")
                                  : tr("The scene package cannot be read: a file is missing, changed or breaks its "
                                       "format (see the details)."),
                              QString::fromStdString(error.message()));
     });
     connect(m_pathologyPanel, &widgets::PathologyPanel::placingChanged, this, &MainWindow::showResults);
+    connect(m_pathologyPanel, &widgets::PathologyPanel::currentChanged, this, &MainWindow::updateHandles);
+    // A handle dropped is one edit: the seat moves along the wall (seated as a click there is), or the size changes.
+    connect(m_handles, &widgets::SurfaceHandles::seatMoved, this,
+            [this](const QVector3D& point) { m_pathologyPanel->placeAt(true, point); });
+    connect(m_handles, &widgets::SurfaceHandles::sizeChanged, this,
+            [this](double sizeMm) { m_pathologyPanel->resizeCurrent(sizeMm); });
     // The organ of the case the window starts with.
     m_session.runThrough(generate::Stage::Organ);
 }
@@ -208,6 +229,11 @@ void MainWindow::createActions() {
     m_closeReviewAction->setEnabled(false);
     connect(m_closeReviewAction, &QAction::triggered, this, &MainWindow::onCloseReview);
 
+    m_compareAction = new QAction(tr("Compare &Variants..."), this);
+    m_compareAction->setObjectName("actionCompareVariants");
+    m_compareAction->setStatusTip(tr("Show the variants of a case side by side, as the scope sees them"));
+    connect(m_compareAction, &QAction::triggered, this, &MainWindow::onCompareVariants);
+
     m_aboutAction = new QAction(tr("&About Hysteroscene"), this);
     m_aboutAction->setObjectName("actionAbout");
     m_aboutAction->setMenuRole(QAction::AboutRole);
@@ -230,6 +256,7 @@ void MainWindow::createMenus() {
     fileMenu->addSeparator();
     fileMenu->addAction(m_reviewAction);
     fileMenu->addAction(m_closeReviewAction);
+    fileMenu->addAction(m_compareAction);
     fileMenu->addSeparator();
     fileMenu->addAction(m_quitAction);
 
@@ -353,6 +380,7 @@ void MainWindow::showResults() {
         return;
     m_shownLayer = layer;
     m_currentFile.clear();
+    updateHandles();
     m_clipAction->setEnabled(true); // cuts a tet mesh or opens a surface (to click on the cavity's wall)
     m_meshPanel->applyToDisplay();
     m_view->requestRender();
@@ -423,6 +451,54 @@ bool MainWindow::maybeSaveReview() {
     }
 }
 
+void MainWindow::onCompareVariants() {
+    const QString folder = FileDialog::getExistingDirectory(this, tr("Compare Variants"), m_lastFolder);
+    if (!folder.isEmpty())
+        compareVariants(folder);
+}
+
+void MainWindow::compareVariants(const QString& folder) {
+    struct Opened {
+        std::vector<std::shared_ptr<const scene::Scene>> scenes;
+        QStringList names;
+    };
+    const QString absolute = QFileInfo(folder).absoluteFilePath();
+    m_reviewJobs.start<Opened>(
+        tr("Reading the variants"), 0,
+        [absolute](Progress& progress) -> Result<Opened> {
+            Opened opened;
+            const QDir dir(absolute);
+            QStringList packages;
+            for (const QString& name : dir.entryList(QDir::Dirs | QDir::NoDotAndDotDot, QDir::Name))
+                if (QFileInfo::exists(dir.filePath(name + QStringLiteral("/manifest.json"))))
+                    packages << name;
+            if (packages.isEmpty())
+                return fail(ErrorCode::NotFound,
+                            QFile::encodeName(absolute).toStdString() + ": no scene package in its subfolders");
+            for (const QString& name : packages.mid(0, widgets::VariantsView::kMaxVariants)) {
+                HS_TRY(progress.check("reading the variants"));
+                auto read = scene::readScenePackage(QFile::encodeName(dir.filePath(name)).toStdString());
+                if (!read)
+                    return read.failure();
+                opened.scenes.push_back(std::make_shared<const scene::Scene>(std::move(read).value()));
+                opened.names << name;
+            }
+            return opened;
+        },
+        [this, absolute](Opened&& opened) {
+            if (!m_variantsView) {
+                m_variantsView = new widgets::VariantsView(this);
+                m_variantsView->setWindowFlag(Qt::Window);
+                m_variantsView->resize(1000, 720);
+            }
+            m_variantsView->setWindowTitle(tr("Variants - %1").arg(QDir::toNativeSeparators(absolute)));
+            m_variantsView->setScenes(opened.scenes, opened.names);
+            m_variantsView->show();
+            m_variantsView->raise();
+            emit variantsOpened(m_variantsView->count());
+        });
+}
+
 void MainWindow::onCloseReview() {
     if (!maybeSaveReview())
         return;
@@ -432,6 +508,16 @@ void MainWindow::onCloseReview() {
     m_closeReviewAction->setEnabled(false);
     m_currentFile.clear();
     showResults();
+}
+
+void MainWindow::updateHandles() {
+    const auto seat = m_pathologyPanel->currentSeat();
+    if (!seat || !m_pathologyPanel->isPlacing() || m_shownLayer != widgets::ResultLayer::Organ) {
+        if (m_handles->isShown())
+            m_handles->hide();
+        return;
+    }
+    m_handles->show(m_display->actor(), seat->pointMm, seat->normal, seat->sizeMm);
 }
 
 void MainWindow::onJobFailed(const QString& title, const Error& error) {

@@ -4,10 +4,14 @@
 #include "hs/widgets/document/CaseDocument.h"
 
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
+#include <QPointer>
 
 #include <algorithm>
+#include <map>
+#include <mutex>
 
 namespace hs::widgets {
 
@@ -37,6 +41,7 @@ QString stageTitle(generate::Stage stage) {
 GenerationSession::GenerationSession(CaseDocument& document, QObject* parent)
     : QObject(parent), m_document(document), m_runner(this) {
     qRegisterMetaType<hs::widgets::ExportResult>();
+    qRegisterMetaType<hs::pathology::GrowthFrame>();
     m_runner.setRevisionSource([this] { return m_document.revision(); });
     m_autoTimer.setSingleShot(true);
     m_autoTimer.setInterval(kAutoUpdateDelayMs);
@@ -44,12 +49,37 @@ GenerationSession::GenerationSession(CaseDocument& document, QObject* parent)
     connect(&m_document, &CaseDocument::changed, this, &GenerationSession::onDocumentChanged);
 }
 
-GenerationSession::~GenerationSession() = default;
+GenerationSession::~GenerationSession() {
+    m_runner.cancel(); // the runner waits for its worker when it goes
+}
 
 generate::GenerateParams GenerationSession::params() const {
     generate::GenerateParams p;
     p.caseFile = QFile::encodeName(m_document.filePath()).toStdString();
     p.threads = m_threads;
+    // Growth frames go to the GUI thread, thinned out: a few dozen a second are all a viewer can show.
+    struct Throttle {
+        std::mutex mutex;
+        std::map<std::size_t, QElapsedTimer> last;
+    };
+    auto throttle = std::make_shared<Throttle>();
+    QPointer<GenerationSession> self(const_cast<GenerationSession*>(this));
+    p.growthObserver = [self, throttle](const pathology::GrowthFrame& frame) {
+        {
+            std::lock_guard<std::mutex> lock(throttle->mutex);
+            QElapsedTimer& timer = throttle->last[frame.pathology];
+            if (!frame.last && timer.isValid() && timer.elapsed() < kGrowthFrameMs)
+                return;
+            timer.start();
+        }
+        QMetaObject::invokeMethod(
+            self.data(),
+            [self, frame] {
+                if (self)
+                    emit self->growthFrame(frame);
+            },
+            Qt::QueuedConnection);
+    };
     return p;
 }
 

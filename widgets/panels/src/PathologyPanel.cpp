@@ -276,7 +276,9 @@ void PathologyPanel::connectEditor() {
         setPlacing(false);
         refreshEditor();
         refreshResults();
+        emit currentChanged();
     });
+    connect(&m_document, &CaseDocument::changed, this, &PathologyPanel::currentChanged);
     connect(m_addMyomaButton, &QPushButton::clicked, this, [this] { addPathology(PathologyKind::Myoma); });
     connect(m_addPolypButton, &QPushButton::clicked, this, [this] { addPathology(PathologyKind::Polyp); });
     connect(m_duplicateButton, &QPushButton::clicked, this, &PathologyPanel::duplicateCurrent);
@@ -366,6 +368,21 @@ bool PathologyPanel::isPlacing() const {
     return m_placeButton->isChecked();
 }
 
+std::optional<PathologyPanel::Seat> PathologyPanel::currentSeat() const {
+    const int index = currentIndex();
+    if (index < 0 || index >= static_cast<int>(m_document.spec().pathologies.size()))
+        return std::nullopt;
+    const PathologySpec& p = m_document.spec().pathologies[static_cast<std::size_t>(index)];
+    const auto* s = std::get_if<clinical::SurfacePlacement>(&p.placement);
+    if (!s)
+        return std::nullopt;
+    return Seat{s->pointMm, s->normal, p.sizeMm};
+}
+
+void PathologyPanel::resizeCurrent(double sizeMm) {
+    editCurrent(tr("Pathology size"), [sizeMm](PathologySpec& p) { p.sizeMm = sizeMm; });
+}
+
 void PathologyPanel::setPlacing(bool placing) {
     if (placing && currentIndex() < 0)
         placing = false;
@@ -429,7 +446,8 @@ void PathologyPanel::editCurrent(const QString& text, const std::function<void(P
     const auto i = static_cast<std::size_t>(index);
     tryEdit(
         m_document, text, [&change, i](CaseSpec& s) { change(s.pathologies[i]); },
-        QStringLiteral("/pathologies/%1").arg(index), m_messageLabel, nullptr, mergeKey + 1000 * index);
+        QStringLiteral("/pathologies/%1").arg(index), m_messageLabel, nullptr,
+        mergeKey == 0 ? 0 : mergeKey + 1000 * index); // steps of one field of one pathology merge; other edits never
 }
 
 void PathologyPanel::addPathology(PathologyKind kind) {

@@ -51,26 +51,28 @@ HysteroscopicPreview::HysteroscopicPreview(QWidget* parent) : QWidget(parent) {
     m_display = std::make_unique<MeshDisplay>(renderer);
     layout->addWidget(m_view, 1);
 
-    auto* controls = new QFormLayout;
-    m_insertionSlider = new QSlider(Qt::Horizontal, this);
+    m_controls = new QWidget(this);
+    auto* controls = new QFormLayout(m_controls);
+    controls->setContentsMargins(0, 0, 0, 0);
+    m_insertionSlider = new QSlider(Qt::Horizontal, m_controls);
     m_insertionSlider->setObjectName("insertionSlider");
     m_insertionSlider->setRange(int(kInsertionMinMm * kInsertionStepsPerMm),
                                 int(kInsertionMaxMm * kInsertionStepsPerMm));
     m_insertionSlider->setToolTip(tr("How far the scope's tip is beyond the external os (mm)"));
     controls->addRow(tr("&Insertion"), m_insertionSlider);
-    m_opticCombo = new QComboBox(this);
+    m_opticCombo = new QComboBox(m_controls);
     m_opticCombo->setObjectName("opticCombo");
     for (int optic : {0, 12, 30, 70})
         m_opticCombo->addItem(tr("%1°").arg(optic), optic);
     m_opticCombo->setCurrentIndex(2);
     m_opticCombo->setToolTip(tr("The optic's angle off the shaft; office scopes are typically 30°"));
     controls->addRow(tr("&Optic"), m_opticCombo);
-    m_rollSlider = new QSlider(Qt::Horizontal, this);
+    m_rollSlider = new QSlider(Qt::Horizontal, m_controls);
     m_rollSlider->setObjectName("rollSlider");
     m_rollSlider->setRange(-180, 180);
     m_rollSlider->setToolTip(tr("The light post's rotation about the shaft (degrees; 0 looks anterior)"));
     controls->addRow(tr("&Roll"), m_rollSlider);
-    layout->addLayout(controls);
+    layout->addWidget(m_controls);
     m_statusLabel = new QLabel(tr("Texture the case to see the cavity."), this);
     m_statusLabel->setObjectName("previewStatusLabel");
     m_statusLabel->setWordWrap(true);
@@ -104,6 +106,10 @@ void HysteroscopicPreview::setScene(std::shared_ptr<const scene::Scene> scene) {
     }
     m_landmarks = *landmarks;
     updateCamera();
+}
+
+void HysteroscopicPreview::setControlsVisible(bool visible) {
+    m_controls->setVisible(visible);
 }
 
 void HysteroscopicPreview::setInsertion(double mm) {

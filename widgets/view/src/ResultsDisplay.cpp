@@ -2,6 +2,18 @@
 
 #include "hs/widgets/view/MeshDisplay.h"
 
+#include <vtkActor.h>
+#include <vtkCellArray.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <array>
+
 namespace hs::widgets {
 
 SurfaceMesh combineRegions(const std::vector<std::pair<const SurfaceMesh*, int>>& parts) {
@@ -77,6 +89,62 @@ ResultLayer showResults(MeshDisplay& display, const generate::Generated& results
         break;
     }
     return *layer;
+}
+
+GrowthDisplay::GrowthDisplay(vtkRenderer* renderer)
+    : m_renderer(renderer), m_actor(vtkSmartPointer<vtkActor>::New()), m_points(vtkSmartPointer<vtkPolyData>::New()) {
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputData(m_points);
+    mapper->SetColorModeToDirectScalars();
+    m_actor->SetMapper(mapper);
+    m_actor->GetProperty()->SetPointSize(4.0f);
+    m_actor->GetProperty()->RenderPointsAsSpheresOn();
+    m_actor->VisibilityOff();
+    m_renderer->AddActor(m_actor);
+}
+
+GrowthDisplay::~GrowthDisplay() {
+    m_renderer->RemoveActor(m_actor);
+}
+
+void GrowthDisplay::show(const pathology::GrowthFrame& frame) {
+    m_latest[frame.pathology] = frame.points;
+    rebuild();
+}
+
+void GrowthDisplay::clear() {
+    m_latest.clear();
+    rebuild();
+}
+
+std::size_t GrowthDisplay::pointCount() const {
+    std::size_t n = 0;
+    for (const auto& [index, points] : m_latest)
+        n += points.size();
+    return n;
+}
+
+void GrowthDisplay::rebuild() {
+    // One colour per pathology, as the merged body shows its regions (pathology i is region i + 1).
+    constexpr std::array<std::array<unsigned char, 3>, 4> kColours{
+        {{240, 210, 120}, {130, 180, 230}, {150, 210, 140}, {200, 140, 210}}};
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto verts = vtkSmartPointer<vtkCellArray>::New();
+    auto colours = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    colours->SetNumberOfComponents(3);
+    for (const auto& [index, cloud] : m_latest) {
+        const auto& c = kColours[index % kColours.size()];
+        for (const Vec3& p : cloud) {
+            const vtkIdType id = points->InsertNextPoint(p.x, p.y, p.z);
+            verts->InsertNextCell(1, &id);
+            colours->InsertNextTypedTuple(c.data());
+        }
+    }
+    m_points->SetPoints(points);
+    m_points->SetVerts(verts);
+    m_points->GetPointData()->SetScalars(colours);
+    m_points->Modified();
+    m_actor->SetVisibility(points->GetNumberOfPoints() > 0);
 }
 
 } // namespace hs::widgets

@@ -28,6 +28,8 @@ class QMenu;
 namespace hs::widgets {
 class ExportPanel;
 class HysteroscopicPreview;
+class SurfaceHandles;
+class VariantsView;
 class MaterialsPanel;
 class MeshDisplay;
 class MeshPanel;
@@ -74,6 +76,10 @@ public:
     /// message box naming the file and the problem follows.
     void reviewPackage(const QString& folder);
     bool isReviewing() const;
+    /// Reads the scene packages in `folder`'s subfolders (the variants of a case, variant-NNN) on a worker thread and
+    /// shows up to VariantsView::kMaxVariants side by side in their own window; variantsOpened follows.
+    void compareVariants(const QString& folder);
+    widgets::VariantsView* variantsView() const { return m_variantsView; }
     /// Where autosave writes the case being edited (default: the application's data folder, "recovery").
     QString recoveryFolder() const { return m_recoveryFolder; }
     void setRecoveryFolder(const QString& folder) { m_recoveryFolder = folder; }
@@ -88,9 +94,14 @@ public:
     widgets::VtkView* view() const { return m_view; }
     widgets::HysteroscopicPreview* preview() const { return m_preview; }
     const widgets::MeshDisplay& display() const { return *m_display; }
+    /// The pathologies' growth while Grow runs.
+    const widgets::GrowthDisplay& growthDisplay() const { return *m_growth; }
+    /// The seat and size handles of the selected pathology, shown while it is being placed.
+    widgets::SurfaceHandles* handles() const { return m_handles; }
 
 signals:
     void reviewOpened(const QString& folder);
+    void variantsOpened(int count);
     void fileLoaded(const QString& path);
     void loadFailed(const QString& path);
 
@@ -116,6 +127,7 @@ private slots:
     void onJobFailed(const QString& title, const hs::Error& error);
     void onReviewPackage();
     void onCloseReview();
+    void onCompareVariants();
 
 private:
     void createActions();
@@ -125,6 +137,8 @@ private:
     /// A dock for `panel` on `area`, listed in View > Panels.
     QDockWidget* addPanel(QWidget* panel, const QString& title, const QString& name, Qt::DockWidgetArea area);
     void showResults();
+    /// Shows the handles of the selected pathology when the view shows the organ it is seated on.
+    void updateHandles();
     void readSettings();
     void writeSettings() const;
     /// Before the case is replaced or the window closes: true when there are no unsaved changes, or the user saved
@@ -149,6 +163,8 @@ private:
 
     widgets::VtkView* m_view = nullptr;
     std::unique_ptr<widgets::MeshDisplay> m_display;
+    std::unique_ptr<widgets::GrowthDisplay> m_growth;
+    widgets::SurfaceHandles* m_handles = nullptr;
     QFutureWatcher<LoadedMesh> m_loadWatcher;
     QString m_currentFile;
     QString m_lastFolder;
@@ -169,6 +185,8 @@ private:
     widgets::JobRunner m_reviewJobs;
     QAction* m_reviewAction = nullptr;
     QAction* m_closeReviewAction = nullptr;
+    QAction* m_compareAction = nullptr;
+    widgets::VariantsView* m_variantsView = nullptr; ///< a window of its own, made on first use
     QMenu* m_panelsMenu = nullptr;
     QString m_recoveryFolder;
     QTimer m_autosaveTimer;

@@ -66,6 +66,8 @@ public:
     /// Rebuilds the organ after each edit (default on); the delay lets edits in a row end first.
     void setAutoUpdate(bool enabled) { m_autoUpdate = enabled; }
     static constexpr int kAutoUpdateDelayMs = 250;
+    /// Shortest time between two growth frames of one pathology shown to the GUI (ms).
+    static constexpr int kGrowthFrameMs = 60;
 
     /// Threads of the parallel stages (0: all cores; see scene::MeshingParams::threads). Never changes a result.
     void setThreads(std::optional<int> threads) { m_threads = threads; }
@@ -75,6 +77,9 @@ signals:
     void resultsChanged();
     /// A package was written and verified.
     void exported(const hs::widgets::ExportResult& result);
+    /// A step of a pathology's growth while the pathology stage runs (at most one every kGrowthFrameMs per
+    /// pathology, and each model's last one); results of the stage follow with resultsChanged.
+    void growthFrame(const hs::pathology::GrowthFrame& frame);
 
 private:
     void onDocumentChanged();
@@ -91,3 +96,4 @@ private:
 } // namespace hs::widgets
 
 Q_DECLARE_METATYPE(hs::widgets::ExportResult)
+Q_DECLARE_METATYPE(hs::pathology::GrowthFrame)

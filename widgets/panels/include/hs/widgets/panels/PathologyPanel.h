@@ -10,6 +10,8 @@
 #include <QVector3D>
 #include <QWidget>
 
+#include <optional>
+
 class QButtonGroup;
 class QComboBox;
 class QDoubleSpinBox;
@@ -36,6 +38,15 @@ public:
     void setCurrentIndex(int index);
     /// Whether the next click in the 3-D view places the selected pathology.
     bool isPlacing() const;
+    /// The selected pathology's seat when it is placed at a point (the handles in the 3-D view show it).
+    struct Seat {
+        Vec3 pointMm;
+        Vec3 normal;
+        double sizeMm = 0.0;
+    };
+    std::optional<Seat> currentSeat() const;
+    /// Resizes the selected pathology (a drag of the size handle); refused with a reason when out of range.
+    void resizeCurrent(double sizeMm);
 
 public slots:
     /// A click in the 3-D view while placing: `hit` false when it missed every surface; `point` in mm.
@@ -44,6 +55,8 @@ public slots:
 signals:
     /// Placing by a click starts (the view shows the organ to click on) or ends.
     void placingChanged(bool placing);
+    /// Another pathology was selected, or the selected one changed.
+    void currentChanged();
 
 private:
     void buildList();

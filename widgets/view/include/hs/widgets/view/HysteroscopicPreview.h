@@ -45,6 +45,8 @@ public:
     /// Looks at region `regionId` from `distanceMm` inside the cavity; false when the region has no tets.
     bool lookAtRegion(std::int32_t regionId, double distanceMm = 12.0);
 
+    /// Hides the insertion, optic and roll controls (a side-by-side comparison drives them all at once).
+    void setControlsVisible(bool visible);
     VtkView* view() const { return m_view; }
     QImage grabImage();
 
@@ -62,6 +64,7 @@ private:
     QComboBox* m_opticCombo = nullptr;
     QSlider* m_rollSlider = nullptr;
     QLabel* m_statusLabel = nullptr;
+    QWidget* m_controls = nullptr;
 };
 
 } // namespace hs::widgets

@@ -6,10 +6,18 @@
 
 #include "hs/core/SurfaceMesh.h"
 #include "hs/generate/Generate.h"
+#include "hs/pathology/Pathology.h"
 
+#include <vtkSmartPointer.h>
+
+#include <map>
 #include <optional>
 #include <utility>
 #include <vector>
+
+class vtkActor;
+class vtkPolyData;
+class vtkRenderer;
 
 namespace hs::widgets {
 
@@ -27,5 +35,29 @@ bool hasLayer(const generate::Generated& results, ResultLayer layer);
 /// it showed; None when there is nothing to show (the display is then left as it was).
 ResultLayer showResults(MeshDisplay& display, const generate::Generated& results,
                         std::optional<ResultLayer> layer = std::nullopt);
+
+/// The pathologies' growth as it happens (the frames of pathology::GrowthObserver): the latest points of each
+/// pathology as small dots in its region's colour, over whatever the view shows. clear() when the stage has ended.
+class GrowthDisplay {
+public:
+    explicit GrowthDisplay(vtkRenderer* renderer);
+    ~GrowthDisplay();
+    GrowthDisplay(const GrowthDisplay&) = delete;
+    GrowthDisplay& operator=(const GrowthDisplay&) = delete;
+
+    /// Replaces pathology `frame.pathology`'s points by the frame's.
+    void show(const pathology::GrowthFrame& frame);
+    void clear();
+    /// Points shown now, over every pathology.
+    std::size_t pointCount() const;
+
+private:
+    void rebuild();
+
+    vtkRenderer* m_renderer;
+    vtkSmartPointer<vtkActor> m_actor;
+    vtkSmartPointer<vtkPolyData> m_points;
+    std::map<std::size_t, std::vector<Vec3>> m_latest;
+};
 
 } // namespace hs::widgets
