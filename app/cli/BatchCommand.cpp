@@ -7,6 +7,7 @@
 #include "hs/batch/Job.h"
 #include "hs/batch/LocalRunner.h"
 #include "hs/batch/Manifest.h"
+#include "hs/batch/Slurm.h"
 #include "hs/io/AtomicFile.h"
 
 #include <CLI/CLI.hpp>
@@ -37,6 +38,12 @@ struct RunOptions {
     int jobs = 1;
     std::optional<int> threads;
     CommonOptions common;
+};
+
+struct SlurmOptions {
+    std::string folder;
+    batch::SlurmParams params;
+    bool dryRun = false;
 };
 
 struct StatusOptions {
@@ -125,14 +132,22 @@ void printRunnerProgress(const batch::RunnerProgress& p, bool tty) {
     std::fflush(stderr);
 }
 
-int runLocal(const RunOptions& o, const batch::Manifest& manifest) {
+/// This program's absolute path, for the job processes and the sbatch scripts to run.
+Result<std::string> thisProgram() {
     std::error_code ec;
     const fs::path self = fs::read_symlink("/proc/self/exe", ec);
     if (ec)
-        return reportError("batch run", Error{ErrorCode::Internal, "cannot find this program: " + ec.message()});
+        return fail(ErrorCode::Internal, "cannot find this program: " + ec.message());
+    return self.string();
+}
+
+int runLocal(const RunOptions& o, const batch::Manifest& manifest) {
+    auto self = thisProgram();
+    if (!self)
+        return reportError("batch run", self.error());
     batch::LocalRunParams params;
     params.jobs = o.jobs;
-    params.executable = self.string();
+    params.executable = *self;
     params.threadsPerJob = o.threads;
     if (!params.threadsPerJob && o.jobs > 1) // share the cores between the job processes
         params.threadsPerJob = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / o.jobs);
@@ -178,6 +193,64 @@ int runRun(const RunOptions& o) {
     return o.taskIndex ? runTasks(o, *manifest) : runLocal(o, *manifest);
 }
 
+int runSlurm(SlurmOptions o) {
+    auto manifest = batch::readManifest(o.folder);
+    if (!manifest)
+        return reportError("batch slurm", manifest.error());
+    auto self = thisProgram();
+    if (!self)
+        return reportError("batch slurm", self.error());
+    o.params.executable = *self;
+    if (const auto maxArraySize = batch::clusterMaxArraySize(); maxArraySize && o.params.arrayChunk > *maxArraySize) {
+        std::printf("note        the cluster's MaxArraySize is %zu: %zu array tasks per script\n", *maxArraySize,
+                    *maxArraySize);
+        o.params.arrayChunk = *maxArraySize;
+    }
+    auto scripts = batch::planSlurmScripts(o.folder, *manifest, o.params);
+    if (!scripts)
+        return reportError("batch slurm", scripts.error());
+    if (scripts->empty()) {
+        std::printf("nothing     every job of %s is done\n", o.folder.c_str());
+        return kExitOk;
+    }
+    if (auto written = batch::writeSlurmScripts(*scripts); !written)
+        return reportError("batch slurm", written.error());
+    for (const batch::SlurmScript& script : *scripts) {
+        if (o.dryRun) {
+            std::printf("would run   sbatch --parsable %s (%zu array tasks: --array=%s)\n", script.path.c_str(),
+                        script.tasks, script.arraySpec.c_str());
+            continue;
+        }
+        auto id = batch::submitSlurmScript(o.folder, script);
+        if (!id)
+            return reportError("batch slurm", id.error());
+        std::printf("submitted   %s as Slurm job %s (%zu array tasks)\n", script.path.c_str(), id->c_str(),
+                    script.tasks);
+        std::fflush(stdout);
+    }
+    return kExitOk;
+}
+
+/// sacct's view of the submitted array tasks, "" when nothing was submitted or sacct cannot say.
+std::string slurmLine(const std::string& folder, nlohmann::ordered_json& j) {
+    const auto ids = batch::submittedSlurmJobs(folder);
+    if (ids.empty())
+        return {};
+    auto states = batch::slurmTaskStates(ids);
+    if (!states) {
+        j["slurm"] = {{"jobs", ids}, {"error", states.error().message()}};
+        return "slurm       " + std::to_string(ids.size()) + " submitted; sacct: " + states.error().message();
+    }
+    std::string line = "slurm       " + std::to_string(ids.size()) + " submitted;";
+    nlohmann::ordered_json counts = nlohmann::ordered_json::object();
+    for (const auto& [state, count] : *states) {
+        line += " " + std::to_string(count) + " " + state;
+        counts[state] = count;
+    }
+    j["slurm"] = {{"jobs", ids}, {"states", counts}};
+    return line;
+}
+
 int runStatus(const StatusOptions& o) {
     auto manifest = batch::readManifest(o.folder);
     if (!manifest)
@@ -206,6 +279,8 @@ int runStatus(const StatusOptions& o) {
         }
     }
     const double mean = ok ? okSeconds / static_cast<double>(ok) : 0.0;
+    nlohmann::ordered_json slurm;
+    const std::string slurmText = slurmLine(o.folder, slurm);
     if (o.common.json) {
         nlohmann::ordered_json j;
         j["folder"] = o.folder;
@@ -217,12 +292,16 @@ int runStatus(const StatusOptions& o) {
         j["meanSecondsPerJob"] = mean;
         j["peakMemoryMb"] = peakMb;
         j["failures"] = failures;
+        if (slurm.contains("slurm"))
+            j["slurm"] = slurm["slurm"];
         printJson(std::cout, j);
     } else {
         std::printf("batch       %s: %zu jobs\n", o.folder.c_str(), manifest->jobs.size());
         std::printf("status      %zu ok, %zu failed, %zu running, %zu pending\n", ok, failed, running, pending);
         if (ok)
             std::printf("jobs        %.1f s per ok job on average, peak memory %.0f MiB\n", mean, peakMb);
+        if (!slurmText.empty())
+            std::printf("%s\n", slurmText.c_str());
         for (const auto& line : lines)
             std::printf("%s\n", line.c_str());
     }
@@ -257,6 +336,24 @@ void addBatchCommand(CLI::App& app, int& exitCode) {
         ->check(CLI::Range(0, 256));
     runCmd->add_flag("--json", run->common.json, "local runner: print a JSON summary (and no progress bar)");
     runCmd->callback([run, &exitCode] { exitCode = runRun(*run); });
+
+    auto slurm = std::make_shared<SlurmOptions>();
+    auto* slurmCmd = batch->add_subcommand("slurm", "Write sbatch array scripts for the jobs not done and submit them");
+    slurmCmd->add_option("BATCH", slurm->folder, "batch folder")->required();
+    slurmCmd->add_option("--partition", slurm->params.partition, "partition (default: the cluster's)");
+    slurmCmd->add_option("--time", slurm->params.time, "time limit per array task")->capture_default_str();
+    slurmCmd->add_option("--mem", slurm->params.memory, "memory per array task")->capture_default_str();
+    slurmCmd->add_option("--array-chunk", slurm->params.arrayChunk, "array tasks per script (<= MaxArraySize)")
+        ->check(CLI::Range(std::size_t{1}, std::size_t{1000000}))
+        ->capture_default_str();
+    slurmCmd->add_option("--tasks-per-index", slurm->params.tasksPerIndex, "jobs per array task")
+        ->check(CLI::Range(std::size_t{1}, batch::kMaxJobs))
+        ->capture_default_str();
+    slurmCmd->add_option("--threads", slurm->params.threads, "CPUs per array task and threads per stage")
+        ->check(CLI::Range(1, 256))
+        ->capture_default_str();
+    slurmCmd->add_flag("--dry-run", slurm->dryRun, "write the scripts and print the sbatch commands; submit nothing");
+    slurmCmd->callback([slurm, &exitCode] { exitCode = runSlurm(*slurm); });
 
     auto status = std::make_shared<StatusOptions>();
     auto* statusCmd = batch->add_subcommand("status", "Summarise a batch from its status records");
