@@ -7,6 +7,7 @@
 #include "hs/batch/Job.h"
 #include "hs/batch/LocalRunner.h"
 #include "hs/batch/Manifest.h"
+#include "hs/batch/Report.h"
 #include "hs/batch/Slurm.h"
 #include "hs/io/AtomicFile.h"
 
@@ -44,6 +45,12 @@ struct SlurmOptions {
     std::string folder;
     batch::SlurmParams params;
     bool dryRun = false;
+};
+
+struct ReportOptions {
+    std::string folder;
+    batch::ReportParams params;
+    CommonOptions common;
 };
 
 struct StatusOptions {
@@ -308,6 +315,30 @@ int runStatus(const StatusOptions& o) {
     return kExitOk;
 }
 
+int runReport(const ReportOptions& o) {
+    auto manifest = batch::readManifest(o.folder);
+    if (!manifest)
+        return reportError("batch report", manifest.error());
+    auto report = batch::writeBatchReport(o.folder, *manifest, o.params);
+    if (!report)
+        return reportError("batch report", report.error());
+    if (o.common.json) {
+        nlohmann::ordered_json j;
+        j["csv"] = report->csvPath;
+        j["html"] = report->htmlPath;
+        j["rows"] = report->rows;
+        j["charts"] = report->charts;
+        j["warnings"] = report->warnings;
+        printJson(std::cout, j);
+        return kExitOk;
+    }
+    std::printf("wrote       %s (%zu rows)\n", report->csvPath.c_str(), report->rows);
+    std::printf("wrote       %s (%zu charts)\n", report->htmlPath.c_str(), report->charts);
+    for (const auto& w : report->warnings)
+        std::printf("warning     %s\n", w.c_str());
+    return kExitOk;
+}
+
 } // namespace
 
 void addBatchCommand(CLI::App& app, int& exitCode) {
@@ -354,6 +385,14 @@ void addBatchCommand(CLI::App& app, int& exitCode) {
         ->capture_default_str();
     slurmCmd->add_flag("--dry-run", slurm->dryRun, "write the scripts and print the sbatch commands; submit nothing");
     slurmCmd->callback([slurm, &exitCode] { exitCode = runSlurm(*slurm); });
+
+    auto report = std::make_shared<ReportOptions>();
+    auto* reportCmd = batch->add_subcommand("report", "Write BATCH/report/report.csv and report.html");
+    reportCmd->add_option("BATCH", report->folder, "batch folder")->required();
+    reportCmd->add_option("--chart-library", report->params.chartLibrary, "Chart.js to inline in the page")
+        ->capture_default_str();
+    reportCmd->add_flag("--json", report->common.json, "print JSON");
+    reportCmd->callback([report, &exitCode] { exitCode = runReport(*report); });
 
     auto status = std::make_shared<StatusOptions>();
     auto* statusCmd = batch->add_subcommand("status", "Summarise a batch from its status records");

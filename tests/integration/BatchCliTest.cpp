@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <csignal>
@@ -177,4 +178,36 @@ TEST(BatchCli, ResumesAfterTheRunnerIsKilled) {
     expectAllPackagesValid(folder);
     for (const auto& entry : fs::directory_iterator(folder / "packages"))
         EXPECT_FALSE(hs::scene::isPackageTempName(entry.path().filename().string())) << entry.path();
+}
+
+TEST(BatchCli, ReportsEveryCaseAndThePagePlotsInHeadlessChromium) {
+    hs::test::TempDir dir;
+    const fs::path folder = dir.path() / "r";
+    ASSERT_EQ(cli("batch plan " + quote(curriculum()) + " -o " + quote(folder.string())).exitCode, 0);
+    ASSERT_EQ(cli("batch run " + quote(folder.string()) + " --task-index 0 --tasks-per-index 2").exitCode, 0);
+    const CliRun report = cli("batch report " + quote(folder.string()));
+    ASSERT_EQ(report.exitCode, 0) << report.out;
+    const std::string csv = readText(folder / "report" / "report.csv");
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 4) << csv; // the header and 3 jobs
+    EXPECT_NE(csv.find("polyp-0000-v00,polyp,ok,"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("healthy-0000-v00,healthy,pending,"), std::string::npos) << csv;
+    const std::string html = readText(folder / "report" / "report.html");
+    EXPECT_NE(html.find("data:image/png;base64,"), std::string::npos); // organ thumbnails, inlined
+    EXPECT_EQ(html.find("src=\"http"), std::string::npos);             // self-contained
+    EXPECT_EQ(html.find("src=\"file"), std::string::npos);
+
+    const hs::test::CommandRun which = hs::test::runCommand("command -v chromium");
+    if (which.exitCode != 0)
+        GTEST_SKIP() << "chromium is not installed (tools/setup.sh installs it): the page was not opened";
+    if (report.out.find("charts)") == std::string::npos || report.out.find("(0 charts)") != std::string::npos)
+        GTEST_SKIP() << "libjs-chart.js is not installed: the page has no plots to check";
+    const hs::test::CommandRun dom =
+        hs::test::runCommand("timeout 120 chromium --headless --no-sandbox --disable-gpu --dump-dom " +
+                             quote("file://" + (folder / "report" / "report.html").string()) + " 2>/dev/null");
+    ASSERT_EQ(dom.exitCode, 0) << dom.out;
+    EXPECT_EQ(dom.out.find("data-chart-error"), std::string::npos) << dom.out.substr(0, 2000);
+    // The page's script sets data-charts to the number of charts drawn once Chart.js has drawn them all.
+    const auto at = dom.out.find("data-charts=\"");
+    ASSERT_NE(at, std::string::npos) << dom.out.substr(0, 2000);
+    EXPECT_GT(std::stoi(dom.out.substr(at + 13)), 0);
 }
