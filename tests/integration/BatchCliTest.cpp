@@ -185,12 +185,19 @@ TEST(BatchCli, ReportsEveryCaseAndThePagePlotsInHeadlessChromium) {
     const fs::path folder = dir.path() / "r";
     ASSERT_EQ(cli("batch plan " + quote(curriculum()) + " -o " + quote(folder.string())).exitCode, 0);
     ASSERT_EQ(cli("batch run " + quote(folder.string()) + " --task-index 0 --tasks-per-index 2").exitCode, 0);
+    // A case file broken by hand: its job fails with a named error, recorded in its status.
+    std::string broken = readText(folder / "cases" / "healthy-0000.json");
+    broken.replace(broken.find("\"ageYears\": "), 12, "\"ageYears\": 130, \"x\": ");
+    std::ofstream(folder / "cases" / "healthy-0000.json") << broken;
+    const CliRun failed = cli("batch run " + quote(folder.string()) + " --task-index 2");
+    EXPECT_EQ(failed.exitCode, 3) << failed.out;
+    EXPECT_NE(failed.out.find("failed      healthy-0000-v00: invalid-input: "), std::string::npos) << failed.out;
     const CliRun report = cli("batch report " + quote(folder.string()));
     ASSERT_EQ(report.exitCode, 0) << report.out;
     const std::string csv = readText(folder / "report" / "report.csv");
     EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 4) << csv; // the header and 3 jobs
     EXPECT_NE(csv.find("polyp-0000-v00,polyp,ok,"), std::string::npos) << csv;
-    EXPECT_NE(csv.find("healthy-0000-v00,healthy,pending,"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("healthy-0000-v00,healthy,failed,\"invalid-input: "), std::string::npos) << csv;
     const std::string html = readText(folder / "report" / "report.html");
     EXPECT_NE(html.find("data:image/png;base64,"), std::string::npos); // organ thumbnails, inlined
     EXPECT_EQ(html.find("src=\"http"), std::string::npos);             // self-contained

@@ -53,9 +53,9 @@ std::string number(double value, int decimals) {
 }
 
 std::string stateOf(const Row& r) {
-    if (!r.problem.empty())
-        return "unreadable";
-    return r.record ? std::string(toString(r.record->state)) : "pending";
+    if (r.record)
+        return std::string(toString(r.record->state));
+    return r.problem.empty() ? "pending" : "unreadable";
 }
 
 std::string askedPathologies(const scene::CaseSpec& spec) {
@@ -131,11 +131,15 @@ std::vector<std::string> cells(const Row& r) {
     return c;
 }
 
+/// One line per row: line breaks (multi-line errors) become "; ", and fields with commas or quotes are quoted.
 std::string csvField(const std::string& text) {
-    if (text.find_first_of(",\"\n\r") == std::string::npos)
-        return text;
-    std::string quoted = "\"";
+    std::string flat;
     for (char ch : text)
+        flat += ch == '\n' ? std::string("; ") : ch == '\r' ? std::string() : std::string(1, ch);
+    if (flat.find_first_of(",\"") == std::string::npos)
+        return flat;
+    std::string quoted = "\"";
+    for (char ch : flat)
         quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
     return quoted + "\"";
 }
