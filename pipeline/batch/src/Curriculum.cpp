@@ -464,6 +464,16 @@ Result<LoadedCurriculum> loadCurriculum(const std::string& path) {
             loaded.bases.push_back(scene::defaultCase());
             continue;
         }
+        // The drawn cases are saved in the batch folder: the base's relative paths must keep pointing where they did.
+        const std::filesystem::path baseFolder = basePath.parent_path();
+        const auto absolute = [&baseFolder](std::optional<std::string>& file) {
+            if (file && std::filesystem::path(*file).is_relative())
+                file = std::filesystem::absolute(baseFolder / *file).lexically_normal().string();
+        };
+        absolute(spec->anatomy.modelPath);
+        absolute(spec->texture.exemplars.endometrium);
+        absolute(spec->texture.exemplars.myoma);
+        absolute(spec->texture.exemplars.polyp);
         loaded.bases.push_back(std::move(*spec));
     }
     for (CaseIssue& issue : checkCurriculum(loaded.curriculum, loaded.bases))

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -178,4 +179,19 @@ TEST(Curriculum, NamesAMissingBaseCase) {
     ASSERT_FALSE(l.ok());
     EXPECT_NE(l.error().detail.find("/templates/0/base: "), std::string::npos) << l.error().detail;
     EXPECT_NE(l.error().detail.find("nowhere.json"), std::string::npos) << l.error().detail;
+}
+
+TEST(Curriculum, KeepsTheBaseCasesRelativePathsPointingWhereTheyDid) {
+    hs::test::TempDir dir;
+    std::filesystem::create_directories(dir.path() / "bases");
+    scene::CaseSpec base = scene::defaultCase();
+    base.anatomy.modelPath = "../models/uterus.h5";
+    base.texture.exemplars.myoma = "/abs/myoma.png";
+    ASSERT_TRUE(scene::saveCase(base, dir.file("bases/base.json")).ok());
+    { std::ofstream(dir.file("c.json")) << curriculumWith(R"({"name": "a", "cases": 1, "base": "bases/base.json"})"); }
+    auto l = loadCurriculum(dir.file("c.json"));
+    ASSERT_TRUE(l.ok()) << l.error().detail;
+    EXPECT_EQ(*l->bases[0].anatomy.modelPath, (dir.path() / "models" / "uterus.h5").string());
+    EXPECT_EQ(*l->bases[0].texture.exemplars.myoma, "/abs/myoma.png");
+    EXPECT_EQ(sampleCase(*l, 0, 0).anatomy.modelPath, l->bases[0].anatomy.modelPath);
 }
