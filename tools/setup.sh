@@ -24,6 +24,10 @@ packages=(
     # tools/test.sh installs from npm) and Gmsh, the speed anchor of the meshing benchmark.
     # Not python3-paraview: on Debian 12 it conflicts with libvtk9-dev.
     libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth libgl1-mesa-dri python3-meshio python3-vtk9 gmsh
+    # batch on a real single-node Slurm (the test starts its own munged, slurmctld and slurmd; no systemd)
+    slurm-wlm munge
+    # batch report: Chart.js inlined into the page, and the browser that checks the page in a test
+    libjs-chart.js chromium
 )
 
 # Node.js and npm come from Debian only where no other installation provides them (Debian's npm conflicts with

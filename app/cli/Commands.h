@@ -18,5 +18,6 @@ void addGenerateCommand(CLI::App& app, int& exitCode);
 void addMeshCommand(CLI::App& app, int& exitCode);
 void addQualityCommand(CLI::App& app, int& exitCode);
 void addPathologyCommand(CLI::App& app, int& exitCode);
+void addBatchCommand(CLI::App& app, int& exitCode);
 
 } // namespace hs::cli

@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
     hs::cli::addMeshCommand(app, exitCode);
     hs::cli::addQualityCommand(app, exitCode);
     hs::cli::addPathologyCommand(app, exitCode);
+    hs::cli::addBatchCommand(app, exitCode);
 
     try {
         app.parse(argc, argv);

@@ -21,31 +21,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Run {
-    int exitCode = -1;
-    std::string out; ///< stdout and stderr together
-};
+using Run = hs::test::CommandRun;
+using hs::test::shellQuote;
 
 std::string quote(const std::string& s) {
-    std::string q = "'";
-    for (char c : s)
-        q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
+    return shellQuote(s);
 }
 
 Run cli(const std::string& args) {
-    Run run;
-    const std::string command = quote(HS_CLI_PATH) + " " + args + " 2>&1";
-    std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
-    if (!pipe)
-        return run;
-    std::array<char, 4096> buffer{};
-    size_t n = 0;
-    while ((n = fread(buffer.data(), 1, buffer.size(), pipe.get())) > 0)
-        run.out.append(buffer.data(), n);
-    const int status = pclose(pipe.release());
-    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return run;
+    return hs::test::runCommand(quote(HS_CLI_PATH) + " " + args);
 }
 
 std::vector<fs::path> sharedMeshes(bool bad) {

@@ -1,8 +1,12 @@
 #include "TestSupport.h"
 
+#include <array>
 #include <atomic>
+#include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <random>
+#include <sys/wait.h>
 #include <system_error>
 
 namespace hs::test {
@@ -17,6 +21,28 @@ std::filesystem::path sharedDataDir() {
     std::filesystem::path p = dir ? std::filesystem::path(dir) : std::filesystem::path("../shared/data");
     std::error_code ec;
     return std::filesystem::is_directory(p, ec) ? p : std::filesystem::path();
+}
+
+CommandRun runCommand(const std::string& command) {
+    CommandRun run;
+    const std::string folded = command + " 2>&1";
+    std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(folded.c_str(), "r"), pclose);
+    if (!pipe)
+        return run;
+    std::array<char, 4096> buffer{};
+    std::size_t n = 0;
+    while ((n = fread(buffer.data(), 1, buffer.size(), pipe.get())) > 0)
+        run.out.append(buffer.data(), n);
+    const int status = pclose(pipe.release());
+    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return run;
+}
+
+std::string shellQuote(const std::string& text) {
+    std::string q = "'";
+    for (char c : text)
+        q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
 }
 
 TempDir::TempDir(const std::string& prefix) {

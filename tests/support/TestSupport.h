@@ -10,6 +10,16 @@ namespace hs::test {
 std::filesystem::path testDataDir();
 /// The public test surfaces (from HS_SHARED_DATA_DIR); empty path when they are not present.
 std::filesystem::path sharedDataDir();
+/// What a shell command printed (stdout and stderr together) and its exit code (-1 when it did not exit).
+struct CommandRun {
+    int exitCode = -1;
+    std::string out;
+};
+/// Runs `command` with /bin/sh, stderr folded into stdout.
+CommandRun runCommand(const std::string& command);
+/// `text` in single quotes for the shell.
+std::string shellQuote(const std::string& text);
+
 /// A fresh, empty folder under the system temp dir, removed when the object dies.
 class TempDir {
 public:

@@ -11,13 +11,6 @@
 
 namespace hs::pathology::detail {
 
-namespace {
-
-constexpr double kMaxSizeToCorpus = 1.25; ///< largest myoma against the smallest corpus dimension
-constexpr double kMaxPolypToCavity = 0.8; ///< largest polyp head against the cavity length
-
-} // namespace
-
 Status checkRequest(const PathologyRequest& r) {
     if (!std::isfinite(r.sizeMm) || r.sizeMm <= 0.0)
         return fail(ErrorCode::InvalidInput, who(r) + ": size " + fmt(r.sizeMm) + " mm must be positive");
@@ -55,18 +48,18 @@ Status checkRequest(const PathologyRequest& r) {
 Status checkSize(const PathologyRequest& r, const OrganInfo& info) {
     if (r.kind == clinical::PathologyKind::Myoma) {
         const double smallest = std::min({info.corpusWidthMm, info.corpusDepthMm, info.corpusLengthMm});
-        if (r.sizeMm > kMaxSizeToCorpus * smallest)
+        if (r.sizeMm > kMaxMyomaToCorpus * smallest)
             return fail(ErrorCode::InvalidInput, who(r) + ": a " + fmt(r.sizeMm, 0) +
                                                      " mm myoma cannot grow in this uterus: its corpus measures " +
                                                      fmt(info.corpusWidthMm, 0) + " x " + fmt(info.corpusDepthMm, 0) +
                                                      " x " + fmt(info.corpusLengthMm, 0) +
                                                      " mm (width x depth x length), room for at most " +
-                                                     fmt(kMaxSizeToCorpus * smallest, 0) + " mm");
+                                                     fmt(kMaxMyomaToCorpus * smallest, 0) + " mm");
     } else {
         const double room = kMaxPolypToCavity * info.cavityLengthMm;
         const double length =
             r.sizeMm + (r.attachment == clinical::PolypAttachment::Pedunculated ? r.stalkLengthMm : 0.0);
-        if (r.sizeMm > room || length > 1.2 * info.cavityLengthMm)
+        if (r.sizeMm > room || length > kMaxPolypReachToCavity * info.cavityLengthMm)
             return fail(ErrorCode::InvalidInput,
                         who(r) + ": a " + fmt(r.sizeMm, 0) + " mm polyp" +
                             (r.stalkLengthMm > 0.0 ? " on a " + fmt(r.stalkLengthMm, 0) + " mm stalk" : "") +

@@ -1,8 +1,8 @@
 // Review files: a clinician's ratings beside a scene package.
 #include "hs/scene/Review.h"
 
-#include "Format.h"
 #include "hs/io/AtomicFile.h"
+#include "hs/scene/JsonText.h"
 #include "hs/scene/Scene.h"
 #include "hs/scene/Sha256.h"
 
@@ -16,6 +16,7 @@ namespace hs::scene {
 
 namespace {
 
+using nlohmann::json;
 using nlohmann::ordered_json;
 
 constexpr std::size_t kMaxReviewerLength = 200;
@@ -34,7 +35,7 @@ ordered_json ratingJson(const Rating& r) {
 }
 
 /// Reads {"score": 1..5 | null, "comment": "..."} at `path`.
-Result<Rating> readRating(const ordered_json& j, const std::string& source, const std::string& path) {
+Result<Rating> readRating(const json& j, const std::string& source, const std::string& path) {
     if (!j.is_object())
         return invalid(source, path, "must be an object with score and comment");
     Rating r;
@@ -83,11 +84,18 @@ Status check(const Review& review, const std::string& source) {
 }
 
 Result<Review> parseChecked(std::string_view text, const std::string& source) {
-    if (detail::nestingDepth(text) > kMaxReviewNesting)
-        return invalid(source, "", "nested deeper than " + std::to_string(kMaxReviewNesting) + " levels");
-    ordered_json j = ordered_json::parse(text, nullptr, false);
-    if (j.is_discarded() || !j.is_object())
-        return invalid(source, "", "not a JSON object");
+    // The case files' strict reader: size and nesting checked before parsing, repeated keys refused.
+    JsonDocumentLimits limits;
+    limits.maxBytes = kMaxReviewFileBytes;
+    limits.maxDepth = kMaxReviewNesting;
+    limits.kind = "review file";
+    std::vector<CaseIssue> issues;
+    auto parsed = parseJsonObject(text, source, limits, issues);
+    if (!parsed)
+        return parsed.failure();
+    if (!issues.empty())
+        return failWithIssues(source, issues);
+    const json& j = *parsed;
     if (j.value("format", std::string()) != kReviewFormat)
         return invalid(source, "/format", "must be \"" + std::string(kReviewFormat) + "\"");
     if (!j.contains("schemaVersion") || !j["schemaVersion"].is_number_integer())
@@ -105,7 +113,7 @@ Result<Review> parseChecked(std::string_view text, const std::string& source) {
             return invalid(source, "/reviewer", "must be a string");
         review.reviewer = j["reviewer"].get<std::string>();
     }
-    const auto readList = [&](const char* key) -> Result<const ordered_json*> {
+    const auto readList = [&](const char* key) -> Result<const json*> {
         if (!j.contains(key) || !j[key].is_array())
             return invalid(source, std::string("/") + key, "is missing (an array)");
         if (j[key].size() > kMaxReviewItems)
@@ -118,7 +126,7 @@ Result<Review> parseChecked(std::string_view text, const std::string& source) {
     if (!pathologies)
         return pathologies.failure();
     for (std::size_t i = 0; i < (*pathologies)->size(); ++i) {
-        const ordered_json& item = (**pathologies)[i];
+        const json& item = (**pathologies)[i];
         const std::string path = "/pathologies/" + std::to_string(i);
         if (!item.is_object() || !item.contains("id") || !item["id"].is_string())
             return invalid(source, path + "/id", "is missing (the case's pathology id)");
@@ -132,7 +140,7 @@ Result<Review> parseChecked(std::string_view text, const std::string& source) {
         if (!item.contains("growthModel") || !item["growthModel"].is_string() ||
             !clinical::fromString(item["growthModel"].get<std::string>(), p.growthModel))
             return invalid(source, path + "/growthModel", "must be \"ca\", \"skeleton\" or \"particles\"");
-        auto rating = readRating(item.value("rating", ordered_json()), source, path + "/rating");
+        auto rating = readRating(item.value("rating", json()), source, path + "/rating");
         if (!rating)
             return rating.failure();
         p.rating = std::move(rating).value();
@@ -142,7 +150,7 @@ Result<Review> parseChecked(std::string_view text, const std::string& source) {
     if (!textures)
         return textures.failure();
     for (std::size_t i = 0; i < (*textures)->size(); ++i) {
-        const ordered_json& item = (**textures)[i];
+        const json& item = (**textures)[i];
         const std::string path = "/textures/" + std::to_string(i);
         TextureRating t;
         if (!item.is_object() || !item.contains("appearance") || !item["appearance"].is_string() ||
@@ -150,7 +158,7 @@ Result<Review> parseChecked(std::string_view text, const std::string& source) {
                          [&](const char* a) { return item["appearance"].get<std::string>() == a; }))
             return invalid(source, path + "/appearance", "must be \"endometrium\", \"myoma\" or \"polyp\"");
         t.appearance = item["appearance"].get<std::string>();
-        auto rating = readRating(item.value("rating", ordered_json()), source, path + "/rating");
+        auto rating = readRating(item.value("rating", json()), source, path + "/rating");
         if (!rating)
             return rating.failure();
         t.rating = std::move(rating).value();

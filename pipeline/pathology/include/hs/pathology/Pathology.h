@@ -23,6 +23,13 @@
 
 namespace hs::pathology {
 
+/// How large a pathology may be against its organ (the stage refuses larger ones, InvalidInput): a myoma's diameter
+/// at most this times the smallest of the corpus's width, depth and length (internal os to fundal serosa) ...
+constexpr double kMaxMyomaToCorpus = 1.25;
+/// ... and a polyp's head at most this times the cavity's length (head and stalk together at most 1.2 times).
+constexpr double kMaxPolypToCavity = 0.8;
+constexpr double kMaxPolypReachToCavity = 1.2;
+
 struct PathologyRequest {
     std::string id; ///< names the region and the messages
     clinical::PathologyKind kind = clinical::PathologyKind::Myoma;

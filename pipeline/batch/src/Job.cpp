@@ -1,0 +1,212 @@
+// runJob: one job of a plan, idempotent, locked, with its status record.
+#include "hs/batch/Job.h"
+
+#include "hs/generate/Generate.h"
+#include "hs/scene/ScenePackage.h"
+#include "hs/scene/Sha256.h"
+
+#include <chrono>
+#include <exception>
+#include <fcntl.h>
+#include <filesystem>
+#include <sys/file.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
+namespace hs::batch {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// An exclusive, non-blocking flock on a file; released when the object dies (or the process does).
+class JobLock {
+public:
+    explicit JobLock(const std::string& path) {
+        m_fd = ::open(path.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
+        if (m_fd >= 0 && ::flock(m_fd, LOCK_EX | LOCK_NB) != 0) {
+            ::close(m_fd);
+            m_fd = -1;
+        }
+    }
+    ~JobLock() {
+        if (m_fd >= 0)
+            ::close(m_fd);
+    }
+    JobLock(const JobLock&) = delete;
+    JobLock& operator=(const JobLock&) = delete;
+    bool held() const { return m_fd >= 0; }
+
+private:
+    int m_fd = -1;
+};
+
+Result<std::string> manifestSha256(const std::string& packageFolder) {
+    auto digest = scene::sha256File((fs::path(packageFolder) / std::string(scene::kManifestName)).string(),
+                                    scene::PackageReadLimits{}.maxManifestBytes);
+    if (!digest)
+        return digest.failure();
+    return digest->sha256;
+}
+
+/// The folders a job reads from and writes into must be real folders inside the batch folder: a symbolic link
+/// planted there would lead the job's writes elsewhere.
+Status checkFolders(const std::string& batchFolder) {
+    for (std::string_view sub : {kCasesFolder, kPackagesFolder, kStatusFolder}) {
+        const fs::path path = batchPath(batchFolder, sub);
+        std::error_code ec;
+        const fs::file_status status = fs::symlink_status(path, ec);
+        if (ec || status.type() != fs::file_type::directory)
+            return fail(ErrorCode::InvalidInput, path.string() + ": not a folder (a batch folder's " +
+                                                     std::string(sub) + "/ must be a real folder, not a link)");
+    }
+    return {};
+}
+
+/// An ok record for a package that is already complete and valid, and was made from this job's seed.
+std::optional<StatusRecord> adoptExistingPackage(const std::string& batchFolder, const Job& job) {
+    const std::string output = batchPath(batchFolder, job.output);
+    std::error_code ec;
+    if (!fs::exists(fs::path(output) / std::string(scene::kManifestName), ec))
+        return std::nullopt;
+    if (!scene::verifyScenePackage(output))
+        return std::nullopt;
+    auto packaged = scene::loadCase((fs::path(output) / "case.json").string());
+    if (!packaged || packaged->seed != job.seed)
+        return std::nullopt;
+    auto sha = manifestSha256(output);
+    if (!sha)
+        return std::nullopt;
+    StatusRecord record;
+    record.state = JobState::Ok;
+    record.reused = true;
+    record.packageManifestSha256 = *sha;
+    return record;
+}
+
+SceneSummary summarise(const generate::Generated& generated) {
+    const scene::Scene& s = *generated.scene;
+    SceneSummary summary;
+    summary.organLengthMm = s.clinical.organ.lengthMm;
+    summary.organWidthMm = s.clinical.organ.widthMm;
+    summary.organApMm = s.clinical.organ.apMm;
+    summary.uterineVolumeMl = s.clinical.organ.uterineVolumeMl;
+    summary.vertices = s.tets.points.size();
+    summary.tetrahedra = s.tets.tets.size();
+    summary.meanRadiusRatio = s.quality.meanRadiusRatio;
+    summary.minDihedralDeg = s.quality.minDihedralDeg;
+    summary.slivers = s.quality.sliverCount;
+    for (const scene::PathologyDescriptor& p : s.clinical.pathologies)
+        summary.pathologies.push_back({p.id, std::string(clinical::toString(p.kind)), p.sizeMm,
+                                       p.figo ? p.figo->toString() : std::string(), p.lasmar ? p.lasmar->total() : -1});
+    for (const StepTiming& step : generated.timings.steps)
+        summary.stageSeconds.emplace_back(step.name, step.seconds);
+    return summary;
+}
+
+/// Generates the package and fills the ok part of `record`.
+Status generatePackage(const std::string& batchFolder, const Job& job, const RunJobParams& params, StatusRecord& record,
+                       Progress& progress) {
+    HS_TRY(checkFolders(batchFolder));
+    const std::string caseFile = batchPath(batchFolder, job.caseFile);
+    auto spec = scene::loadCase(caseFile);
+    if (!spec)
+        return spec.failure();
+    spec->seed = job.seed;
+    generate::GenerateParams generateParams;
+    generateParams.caseFile = caseFile;
+    generateParams.threads = params.threads;
+    auto generateProgress = progress.sub(0.0, 0.85);
+    auto generated = generate::generateScene(*spec, generateParams, generateProgress);
+    if (!generated)
+        return generated.failure();
+    const std::string output = batchPath(batchFolder, job.output);
+    auto writeProgress = progress.sub(0.85, 1.0);
+    auto written = scene::writeScenePackage(*generated->scene, output, {}, writeProgress);
+    if (!written)
+        return written.failure();
+    if (auto verified = scene::verifyScenePackage(output); !verified)
+        return verified.failure();
+    auto sha = manifestSha256(output);
+    if (!sha)
+        return sha.failure();
+    record.packageManifestSha256 = *sha;
+    record.scene = summarise(*generated);
+    return {};
+}
+
+} // namespace
+
+std::string lockPath(const std::string& batchFolder, const std::string& job) {
+    return batchPath(batchFolder, std::string(kStatusFolder) + "/" + job + ".lock");
+}
+
+bool jobIsLocked(const std::string& batchFolder, const std::string& job) {
+    std::error_code ec;
+    if (!fs::exists(lockPath(batchFolder, job), ec))
+        return false;
+    return !JobLock(lockPath(batchFolder, job)).held();
+}
+
+double peakMemoryMb() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<double>(usage.ru_maxrss) / 1024.0; // Linux reports kB
+}
+
+bool jobIsDone(const std::string& batchFolder, const Job& job) {
+    auto record = readStatus(batchFolder, job.name);
+    if (!record || !*record || (*record)->state != JobState::Ok || (*record)->seed != job.seed)
+        return false;
+    auto sha = manifestSha256(batchPath(batchFolder, job.output));
+    return sha && *sha == (*record)->packageManifestSha256;
+}
+
+JobRun runJob(const std::string& batchFolder, const Job& job, const RunJobParams& params, Progress& progress) {
+    JobRun run;
+    const JobLock lock(lockPath(batchFolder, job.name));
+    if (!lock.held()) {
+        run.action = JobAction::Busy;
+        return run;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    StatusRecord& record = run.record;
+    if (jobIsDone(batchFolder, job)) {
+        run.action = JobAction::Skipped;
+        record = **readStatus(batchFolder, job.name);
+        return run;
+    }
+    if (auto adopted = adoptExistingPackage(batchFolder, job)) {
+        run.action = JobAction::Skipped;
+        record = std::move(*adopted);
+    } else {
+        run.action = JobAction::Generated;
+        record.state = JobState::Ok;
+        Status status;
+        try {
+            status = generatePackage(batchFolder, job, params, record, progress);
+        } catch (const std::exception& e) { // e.g. std::bad_alloc: recorded, never thrown to the runner
+            status = fail(ErrorCode::Internal, std::string("unexpected exception: ") + e.what());
+        }
+        if (!status.ok()) {
+            record.state = JobState::Failed;
+            record.error = status.error();
+            record.scene.reset();
+        }
+    }
+    record.job = job.name;
+    record.index = job.index;
+    record.seed = job.seed;
+    record.output = job.output;
+    record.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    record.peakMemoryMb = peakMemoryMb();
+    record.host = hostName();
+    record.finishedUtc = utcNow();
+    if (auto written = writeStatus(batchFolder, record); !written) {
+        record.state = JobState::Failed;
+        record.error = written.error();
+    }
+    return run;
+}
+
+} // namespace hs::batch
