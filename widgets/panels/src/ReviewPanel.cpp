@@ -159,39 +159,34 @@ void ReviewPanel::fillTables() {
         visit->setToolTip(tr("Look at this pathology from inside the cavity"));
         connect(visit, &QPushButton::clicked, this, [this, row] { visitPathology(row); });
         m_pathologyTable->setCellWidget(row, kVisitColumn, visit);
-        QSpinBox* score = scoreSpin(m_pathologyTable, QStringLiteral("pathologyScore%1").arg(row));
-        score->setValue(p.rating.score.value_or(0));
-        m_pathologyTable->setCellWidget(row, kScoreColumn, score);
-        auto* comment = new QLineEdit(QString::fromStdString(p.rating.comment), m_pathologyTable);
-        comment->setObjectName(QStringLiteral("pathologyComment%1").arg(row));
-        comment->setMaxLength(int(scene::kMaxReviewCommentLength));
-        m_pathologyTable->setCellWidget(row, kCommentColumn, comment);
-        const auto update = [this, row, score, comment] {
-            if (!m_filling)
-                ratePathology(row, score->value(), comment->text());
-        };
-        connect(score, &QSpinBox::valueChanged, this, update);
-        connect(comment, &QLineEdit::textEdited, this, update);
+        addRatingCells(m_pathologyTable, row, kScoreColumn, QStringLiteral("pathology"), p.rating,
+                       [this, row](int score, const QString& comment) { ratePathology(row, score, comment); });
     }
     m_textureTable->setRowCount(int(m_review.textures.size()));
     for (int row = 0; row < int(m_review.textures.size()); ++row) {
         const scene::TextureRating& t = m_review.textures[std::size_t(row)];
         m_textureTable->setItem(row, kAppearanceColumn, new QTableWidgetItem(QString::fromStdString(t.appearance)));
-        QSpinBox* score = scoreSpin(m_textureTable, QStringLiteral("textureScore%1").arg(row));
-        score->setValue(t.rating.score.value_or(0));
-        m_textureTable->setCellWidget(row, kTextureScoreColumn, score);
-        auto* comment = new QLineEdit(QString::fromStdString(t.rating.comment), m_textureTable);
-        comment->setObjectName(QStringLiteral("textureComment%1").arg(row));
-        comment->setMaxLength(int(scene::kMaxReviewCommentLength));
-        m_textureTable->setCellWidget(row, kTextureCommentColumn, comment);
-        const auto update = [this, row, score, comment] {
-            if (!m_filling)
-                rateTexture(row, score->value(), comment->text());
-        };
-        connect(score, &QSpinBox::valueChanged, this, update);
-        connect(comment, &QLineEdit::textEdited, this, update);
+        addRatingCells(m_textureTable, row, kTextureScoreColumn, QStringLiteral("texture"), t.rating,
+                       [this, row](int score, const QString& comment) { rateTexture(row, score, comment); });
     }
     m_filling = false;
+}
+
+void ReviewPanel::addRatingCells(QTableWidget* table, int row, int scoreColumn, const QString& prefix,
+                                 const scene::Rating& rating, const std::function<void(int, const QString&)>& rate) {
+    QSpinBox* score = scoreSpin(table, QStringLiteral("%1Score%2").arg(prefix).arg(row));
+    score->setValue(rating.score.value_or(0));
+    table->setCellWidget(row, scoreColumn, score);
+    auto* comment = new QLineEdit(QString::fromStdString(rating.comment), table);
+    comment->setObjectName(QStringLiteral("%1Comment%2").arg(prefix).arg(row));
+    comment->setMaxLength(int(scene::kMaxReviewCommentLength));
+    table->setCellWidget(row, scoreColumn + 1, comment); // the comment follows the score
+    const auto update = [this, score, comment, rate] {
+        if (!m_filling)
+            rate(score->value(), comment->text());
+    };
+    connect(score, &QSpinBox::valueChanged, this, update);
+    connect(comment, &QLineEdit::textEdited, this, update);
 }
 
 void ReviewPanel::ratePathology(int row, int score, const QString& comment) {

@@ -11,6 +11,7 @@
 #include <QString>
 #include <QWidget>
 
+#include <functional>
 #include <memory>
 
 class QLabel;
@@ -52,6 +53,9 @@ signals:
 
 private:
     void fillTables();
+    /// The score and comment cells of a rating at (row, scoreColumn) and (row, scoreColumn + 1); `rate` takes edits.
+    void addRatingCells(QTableWidget* table, int row, int scoreColumn, const QString& prefix,
+                        const scene::Rating& rating, const std::function<void(int, const QString&)>& rate);
     void refreshSummary();
     void setModified(bool modified);
 
