@@ -1,6 +1,7 @@
 // Qt Test for the Mesh panel: parameters refused out of range, Mesh runs in the background, then the quality
 // inspector: both histograms filled from the quality report, the worst tets listed and framed, tets coloured by a
 // measure, a region hidden.
+#include "PanelTestSupport.h"
 #include "hs/widgets/document/CaseDocument.h"
 #include "hs/widgets/jobs/GenerationSession.h"
 #include "hs/widgets/panels/MeshPanel.h"
@@ -39,23 +40,21 @@ private slots:
 private:
     template <class T>
     T* find(const QString& name) const {
-        T* child = m_panel->findChild<T*>(name);
-        if (!child)
-            qFatal("no widget %s", qPrintable(name));
-        return child;
+        return hs::test::child<T>(m_panel.get(), name);
     }
 
-    std::unique_ptr<CaseDocument> m_document;
-    std::unique_ptr<GenerationSession> m_session;
+    std::unique_ptr<hs::test::PanelHarness> m_harness;
+    CaseDocument* m_document = nullptr;
+    GenerationSession* m_session = nullptr;
     std::unique_ptr<hs::widgets::VtkView> m_view;
     std::unique_ptr<hs::widgets::MeshDisplay> m_display;
     std::unique_ptr<MeshPanel> m_panel;
 };
 
 void TestMeshPanel::init() {
-    m_document = std::make_unique<CaseDocument>();
-    m_session = std::make_unique<GenerationSession>(*m_document);
-    m_session->setAutoUpdate(false);
+    m_harness = std::make_unique<hs::test::PanelHarness>();
+    m_document = &m_harness->document;
+    m_session = &m_harness->session;
     m_view = std::make_unique<hs::widgets::VtkView>();
     m_view->resize(400, 300);
     m_view->show();
@@ -69,8 +68,7 @@ void TestMeshPanel::cleanup() {
     m_panel.reset();
     m_display.reset();
     m_view.reset();
-    m_session.reset();
-    m_document.reset();
+    m_harness.reset();
 }
 
 void TestMeshPanel::refusesTooFewVertices() {
@@ -85,7 +83,7 @@ void TestMeshPanel::refusesTooFewVertices() {
 
 void TestMeshPanel::meshesAndInspectsTheResult() {
     find<QSpinBox>("verticesSpin")->setValue(4000); // a small mesh keeps the test short
-    QSignalSpy changed(m_session.get(), &GenerationSession::resultsChanged);
+    QSignalSpy changed(m_session, &GenerationSession::resultsChanged);
     find<QPushButton>("meshButton")->click();
     QVERIFY(changed.wait(120000));
     QVERIFY(m_session->isCurrent(hs::generate::Stage::Tissue));

@@ -1,6 +1,7 @@
 // Qt Test for the Pathologies panel: add, duplicate and remove; edits of the selected pathology refused when out of
 // range; placement by a click on the organ's wall (and nothing placed by a click that misses or lands on the
 // cervix); Grow shows what the pathology stage measured.
+#include "PanelTestSupport.h"
 #include "hs/clinical/Tissue.h"
 #include "hs/widgets/document/CaseDocument.h"
 #include "hs/widgets/jobs/GenerationSession.h"
@@ -57,34 +58,31 @@ private slots:
 private:
     template <class T>
     T* find(const QString& name) const {
-        T* child = m_panel->findChild<T*>(name);
-        if (!child)
-            qFatal("no widget %s", qPrintable(name));
-        return child;
+        return hs::test::child<T>(m_panel.get(), name);
     }
     void buildOrgan();
 
-    std::unique_ptr<CaseDocument> m_document;
-    std::unique_ptr<GenerationSession> m_session;
+    std::unique_ptr<hs::test::PanelHarness> m_harness;
+    CaseDocument* m_document = nullptr;
+    GenerationSession* m_session = nullptr;
     std::unique_ptr<PathologyPanel> m_panel;
 };
 
 void TestPathologyPanel::init() {
-    m_document = std::make_unique<CaseDocument>();
-    m_session = std::make_unique<GenerationSession>(*m_document);
-    m_session->setAutoUpdate(false);
+    m_harness = std::make_unique<hs::test::PanelHarness>();
+    m_document = &m_harness->document;
+    m_session = &m_harness->session;
     m_panel = std::make_unique<PathologyPanel>(*m_document, *m_session);
     m_panel->show();
 }
 
 void TestPathologyPanel::cleanup() {
     m_panel.reset();
-    m_session.reset();
-    m_document.reset();
+    m_harness.reset();
 }
 
 void TestPathologyPanel::buildOrgan() {
-    QSignalSpy changed(m_session.get(), &GenerationSession::resultsChanged);
+    QSignalSpy changed(m_session, &GenerationSession::resultsChanged);
     m_session->runThrough(hs::generate::Stage::Organ);
     QVERIFY(changed.wait(30000));
 }
@@ -178,7 +176,7 @@ void TestPathologyPanel::placesByAClickOnTheWall() {
 
 void TestPathologyPanel::growShowsTheMeasuredDescriptors() {
     m_panel->setCurrentIndex(0);
-    QSignalSpy changed(m_session.get(), &GenerationSession::resultsChanged);
+    QSignalSpy changed(m_session, &GenerationSession::resultsChanged);
     find<QPushButton>("growButton")->click();
     QVERIFY(changed.wait(60000));
     QVERIFY(m_session->isCurrent(hs::generate::Stage::Pathology));

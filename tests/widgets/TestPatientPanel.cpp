@@ -1,6 +1,7 @@
 // Qt Test for the Patient panel: accepted values become undoable edits (a run of steps is one), values outside
 // their range or against another field are refused inline with the document unchanged, and the organ's dimensions
 // are shown beside the patient's expected range once the organ is rebuilt.
+#include "PanelTestSupport.h"
 #include "hs/anatomy/Cohort.h"
 #include "hs/widgets/document/CaseDocument.h"
 #include "hs/widgets/jobs/GenerationSession.h"
@@ -34,29 +35,26 @@ private slots:
 private:
     template <class T>
     T* find(const QString& name) const {
-        T* child = m_panel->findChild<T*>(name);
-        if (!child)
-            qFatal("no widget %s", qPrintable(name));
-        return child;
+        return hs::test::child<T>(m_panel.get(), name);
     }
 
-    std::unique_ptr<CaseDocument> m_document;
-    std::unique_ptr<GenerationSession> m_session;
+    std::unique_ptr<hs::test::PanelHarness> m_harness;
+    CaseDocument* m_document = nullptr;
+    GenerationSession* m_session = nullptr;
     std::unique_ptr<PatientPanel> m_panel;
 };
 
 void TestPatientPanel::init() {
-    m_document = std::make_unique<CaseDocument>();
-    m_session = std::make_unique<GenerationSession>(*m_document);
-    m_session->setAutoUpdate(false);
+    m_harness = std::make_unique<hs::test::PanelHarness>();
+    m_document = &m_harness->document;
+    m_session = &m_harness->session;
     m_panel = std::make_unique<PatientPanel>(*m_document, *m_session);
     m_panel->show();
 }
 
 void TestPatientPanel::cleanup() {
     m_panel.reset();
-    m_session.reset();
-    m_document.reset();
+    m_harness.reset();
 }
 
 void TestPatientPanel::showsTheCase() {
@@ -132,7 +130,7 @@ void TestPatientPanel::aMeasuredDimensionIsSetAndCleared() {
 void TestPatientPanel::showsTheOrgansDimensionsBesideTheExpectedRange() {
     auto* organ = find<QLabel>("cavityLengthOrganLabel");
     QCOMPARE(organ->text(), QStringLiteral("–"));
-    QSignalSpy changed(m_session.get(), &GenerationSession::resultsChanged);
+    QSignalSpy changed(m_session, &GenerationSession::resultsChanged);
     m_session->runThrough(hs::generate::Stage::Organ);
     QVERIFY(changed.wait(30000));
     QVERIFY2(organ->text().endsWith(" mm"), qPrintable(organ->text()));
