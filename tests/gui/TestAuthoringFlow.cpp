@@ -250,7 +250,9 @@ void TestAuthoringFlow::authorsTheDefaultCaseFromNewToAValidatedPackage() {
     shot("workstation-materials", "materialsDock");
 
     // Export: the folder comes from the file dialog seam.
-    m_exported = m_dir.filePath("authored");
+    // HS_EXPORT_DIR keeps the package (to open it in other tools); by default it goes with the test's folder.
+    m_exported = qEnvironmentVariableIsEmpty("HS_EXPORT_DIR") ? m_dir.filePath("authored")
+                                                              : qEnvironmentVariable("HS_EXPORT_DIR");
     FileDialog::setNextFileName(m_exported);
     find<QPushButton>("exportBrowseButton")->click();
     QCOMPARE(find<QLineEdit>("exportFolderEdit")->text(), m_exported);

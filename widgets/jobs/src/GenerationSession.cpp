@@ -53,7 +53,7 @@ GenerationSession::~GenerationSession() {
     m_runner.cancel(); // the runner waits for its worker when it goes
 }
 
-generate::GenerateParams GenerationSession::params() const {
+generate::GenerateParams GenerationSession::params() {
     generate::GenerateParams p;
     p.caseFile = QFile::encodeName(m_document.filePath()).toStdString();
     p.threads = m_threads;
@@ -63,7 +63,7 @@ generate::GenerateParams GenerationSession::params() const {
         std::map<std::size_t, QElapsedTimer> last;
     };
     auto throttle = std::make_shared<Throttle>();
-    QPointer<GenerationSession> self(const_cast<GenerationSession*>(this));
+    QPointer<GenerationSession> self(this);
     p.growthObserver = [self, throttle](const pathology::GrowthFrame& frame) {
         {
             std::lock_guard<std::mutex> lock(throttle->mutex);

@@ -83,7 +83,7 @@ signals:
 
 private:
     void onDocumentChanged();
-    generate::GenerateParams params() const;
+    generate::GenerateParams params();
 
     CaseDocument& m_document;
     JobRunner m_runner;
