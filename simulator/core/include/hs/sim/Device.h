@@ -1,0 +1,44 @@
+#pragma once
+/// What a hysteroscope input device reports, once per device tick (1 kHz), in the units the simulator uses. Every
+/// source of samples gives these: the HID device (simulator/haptics, docs/haptics-protocol.md), the scripted device,
+/// the keyboard and mouse, and a recorded trial (Trial.h). The physics consumes them in tick order, so a trial that
+/// replays the same samples gives the same world, bit for bit.
+
+#include <cstdint>
+
+namespace hs::sim {
+
+/// Device ticks per second: the haptics loop's rate and the trial file's sample rate.
+inline constexpr int kDeviceRateHz = 1000;
+
+/// Button bits of DeviceSample::buttons.
+enum DeviceButton : std::uint32_t {
+    kButtonMark = 1u << 0,    ///< diagnosis: mark the pathology at the centre of the view
+    kButtonCapture = 1u << 1, ///< take a still (recorded as an event; no effect on the world)
+};
+
+/// The allowed range of every field (the HID codec clamps to these; a sample outside them is refused).
+inline constexpr double kMinInsertionMm = -50.0; ///< mm, the tip this far outside the pivot (external os)
+inline constexpr double kMaxInsertionMm = 150.0; ///< mm, longer than any uterus (UTERUS.md: length <= 10 cm)
+inline constexpr double kMaxPivotDeg = 60.0;     ///< degrees, |pitch| and |yaw| about the cervical pivot
+inline constexpr double kMaxRollDeg = 180.0;     ///< degrees, |roll| and |camera roll|
+
+struct DeviceSample {
+    std::uint64_t tick = 0;     ///< device ticks since the trial started (1 kHz)
+    double insertionMm = 0.0;   ///< mm, the scope's tip beyond the cervical pivot along the shaft
+    double pitchDeg = 0.0;      ///< degrees, the shaft turned about the pivot towards anterior (+) / posterior
+    double yawDeg = 0.0;        ///< degrees, the shaft turned about the pivot towards the patient's left (+)
+    double rollDeg = 0.0;       ///< degrees, the scope (its light post, hence an oblique optic) turned about the shaft
+    double cameraRollDeg = 0.0; ///< degrees, the camera head turned about the shaft (0: image up is anterior)
+    double inflow = 0.0;        ///< inflow valve opening, 0 (closed) to 1 (open)
+    double outflow = 0.0;       ///< outflow valve opening, 0 to 1
+    std::uint32_t buttons = 0;  ///< DeviceButton bits held down
+};
+
+/// Whether every field is finite and inside its range.
+bool isValid(const DeviceSample& sample);
+
+/// `sample` with every field clamped into its range (non-finite values become 0).
+DeviceSample clamped(const DeviceSample& sample);
+
+} // namespace hs::sim

@@ -1,0 +1,70 @@
+#pragma once
+/// A trial: the device samples of one session at 1 kHz with what is needed to replay it (the scene's checksum, the
+/// seed, the scope and the fluid settings). Replaying the samples through a World built from the same package and
+/// settings gives the same metrics, bit for bit (docs/simulator.md, "Record and replay"; the file layout is in
+/// docs/file-formats.md, "Trial files").
+///
+/// On disk (little-endian): the 8 bytes "HSTRIAL1", a uint32 header length, the header as UTF-8 JSON, a uint64
+/// sample count, then that many 72-byte records: uint64 tick, seven float64 (insertionMm, pitchDeg, yawDeg, rollDeg,
+/// cameraRollDeg, inflow, outflow), uint32 buttons, uint32 zero.
+
+#include "hs/core/Result.h"
+#include "hs/sim/Device.h"
+#include "hs/sim/Scope.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace hs::sim {
+
+/// Which exercise a trial runs (docs/simulator.md, "Exercises").
+enum class Exercise {
+    Exploration, ///< "exploration": see the fundus, both tubal ostia and every wall
+    Diagnosis,   ///< "diagnosis": mark each pathology seen
+};
+std::string_view toString(Exercise exercise);
+bool fromString(std::string_view key, Exercise& out);
+
+/// Distension settings (docs/simulator.md, "Distension", with sources).
+struct FluidSettings {
+    double pumpPressureKpa = 10.7;         ///< kPa, the pump's set pressure (80 mmHg); 2.7-20 kPa (20-150 mmHg)
+    double meanArterialPressureKpa = 11.3; ///< kPa, the patient's mean arterial pressure (85 mmHg); 6.7-20 kPa
+    double deficitWarningMl = 1000.0;      ///< mL, the deficit that raises a warning; 100-5000
+    double deficitLimitMl = 2500.0;        ///< mL, the deficit at which the procedure must stop; 100-5000, > warning
+};
+/// InvalidInput naming the field and its range.
+[[nodiscard]] Status checkFluidSettings(const FluidSettings& settings);
+
+struct TrialHeader {
+    std::string sceneSha256; ///< SHA-256 of the package's manifest.json, lower-case hex
+    std::uint64_t seed = 1;  ///< the world's seed
+    Exercise exercise = Exercise::Exploration;
+    ScopeConfig scope;
+    FluidSettings fluid;
+    std::string device;     ///< where the samples came from ("keyboard", "hid:046d:c62b", "scripted:FILE")
+    std::string startedUtc; ///< ISO 8601, informative only (not read by replay)
+};
+
+struct Trial {
+    TrialHeader header;
+    std::vector<DeviceSample> samples; ///< tick 0, 1, 2, ... without gaps
+};
+
+/// Limits for reading untrusted trial files.
+struct TrialReadLimits {
+    std::uint32_t maxHeaderBytes = 64 * 1024;
+    std::uint64_t maxSamples = 4ull * 3600 * kDeviceRateHz; ///< four hours
+};
+
+/// Writes atomically (temporary file, then rename). InvalidInput for samples out of range or not consecutive ticks;
+/// IoError naming the file.
+[[nodiscard]] Status writeTrial(const Trial& trial, const std::string& path);
+/// Reads and checks a trial file: magic, header fields and their ranges, sample count against the file's size,
+/// every sample valid and consecutive. Errors name the file and the field.
+[[nodiscard]] Result<Trial> readTrial(const std::string& path, const TrialReadLimits& limits = {});
+/// The same from bytes in memory (`name` is used in messages).
+[[nodiscard]] Result<Trial> parseTrial(const std::string& bytes, const std::string& name,
+                                       const TrialReadLimits& limits = {});
+
+} // namespace hs::sim

@@ -1,0 +1,39 @@
+#include "hs/sim/Device.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hs::sim {
+
+namespace {
+
+bool within(double v, double lo, double hi) {
+    return std::isfinite(v) && v >= lo && v <= hi;
+}
+
+double clampedValue(double v, double lo, double hi) {
+    return std::isfinite(v) ? std::clamp(v, lo, hi) : 0.0;
+}
+
+} // namespace
+
+bool isValid(const DeviceSample& s) {
+    return within(s.insertionMm, kMinInsertionMm, kMaxInsertionMm) && within(s.pitchDeg, -kMaxPivotDeg, kMaxPivotDeg) &&
+           within(s.yawDeg, -kMaxPivotDeg, kMaxPivotDeg) && within(s.rollDeg, -kMaxRollDeg, kMaxRollDeg) &&
+           within(s.cameraRollDeg, -kMaxRollDeg, kMaxRollDeg) && within(s.inflow, 0.0, 1.0) &&
+           within(s.outflow, 0.0, 1.0);
+}
+
+DeviceSample clamped(const DeviceSample& s) {
+    DeviceSample c = s;
+    c.insertionMm = clampedValue(s.insertionMm, kMinInsertionMm, kMaxInsertionMm);
+    c.pitchDeg = clampedValue(s.pitchDeg, -kMaxPivotDeg, kMaxPivotDeg);
+    c.yawDeg = clampedValue(s.yawDeg, -kMaxPivotDeg, kMaxPivotDeg);
+    c.rollDeg = clampedValue(s.rollDeg, -kMaxRollDeg, kMaxRollDeg);
+    c.cameraRollDeg = clampedValue(s.cameraRollDeg, -kMaxRollDeg, kMaxRollDeg);
+    c.inflow = clampedValue(s.inflow, 0.0, 1.0);
+    c.outflow = clampedValue(s.outflow, 0.0, 1.0);
+    return c;
+}
+
+} // namespace hs::sim
