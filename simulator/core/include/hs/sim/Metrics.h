@@ -1,0 +1,105 @@
+#pragma once
+/// What a trial measured, and its report (JSON and a self-contained HTML page with plots). The metrics follow the
+/// published hysteroscopy simulators (Bajka et al. 2010: visualization, ergonomics, safety and fluid handling);
+/// docs/simulator.md ("Exercises and metrics") defines each one.
+
+#include "hs/core/Result.h"
+#include "hs/core/Vec3.h"
+#include "hs/sim/Scope.h"
+#include "hs/sim/Trial.h"
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace hs::sim {
+
+/// A target of the exploration exercise: a tubal ostium, the fundus or one wall of the cavity.
+struct ExplorationTarget {
+    std::string name; ///< "ostium-left", "ostium-right", "fundus", "anterior", "posterior", "left", "right"
+    double visualizedPercent = 0.0; ///< % of the target's surface seen
+    bool seen = false;              ///< an ostium: its centre seen; a zone: at least kZoneSeenPercent of it seen
+    double firstSeenS = -1.0;       ///< s into the trial; -1 never
+};
+/// A wall zone counts as seen from this share of its surface on.
+inline constexpr double kZoneSeenPercent = 50.0;
+
+struct Perforation {
+    double timeS = 0.0;
+    Vec3 locationMm;      ///< where the tip went through the wall (scene frame)
+    double depthMm = 0.0; ///< mm, the deepest the tip went beyond the wall's surface
+    std::string region;   ///< the region the tip went through ("myometrium", "myoma-1", ...)
+};
+
+struct PathologyFinding {
+    std::string id;     ///< the case's pathology id
+    std::string kind;   ///< "myoma", "polyp"
+    bool seen = false;  ///< part of it was in view and in focus
+    bool found = false; ///< the trainee marked it
+    double foundS = -1.0;
+};
+
+/// One sample of the time series (10 Hz).
+struct SeriesPoint {
+    double timeS = 0.0;
+    double forceN = 0.0;      ///< contact force between scope and tissue, N
+    double pressureKpa = 0.0; ///< intrauterine pressure, kPa
+    double deficitMl = 0.0;   ///< fluid deficit, mL
+};
+
+/// One face of the cavity's surface, unrolled about the cavity's axis, for the visualized-surface plot.
+struct SurfaceSample {
+    double aroundDeg = 0.0; ///< degrees about the canal axis, 0 anterior, +90 the patient's left
+    double alongMm = 0.0;   ///< mm from the internal os towards the fundus
+    bool seen = false;
+};
+
+struct TrialMetrics {
+    double timeS = 0.0;
+    double pathLengthMm = 0.0; ///< the tip's path inside the body (beyond the external os)
+    double cavitySurfaceVisualizedPercent = 0.0;
+    std::vector<ExplorationTarget> targets;
+    double horizonErrorMeanDeg = 0.0; ///< mean over the time in the cavity
+    double horizonErrorMaxDeg = 0.0;
+    int wallContacts = 0; ///< contacts begun (tip or shaft against the cavity's wall)
+    double peakForceN = 0.0;
+    double contactTimeS = 0.0;
+    std::vector<Perforation> perforations;
+    double timeAboveMeanArterialPressureS = 0.0;
+    double maxPressureKpa = 0.0;
+    double inflowMl = 0.0;
+    double outflowMl = 0.0;
+    double deficitMl = 0.0; ///< inflow - outflow (what the patient absorbed or retained), mL
+    bool deficitWarning = false;
+    bool deficitLimitReached = false;
+    double redOutTimeS = 0.0; ///< s with the walls closed on the lens
+    std::vector<PathologyFinding> pathologies;
+    int falseMarks = 0; ///< marks on no pathology
+};
+
+struct TrialReport {
+    TrialHeader header;
+    std::uint64_t samples = 0;
+    TrialMetrics metrics;
+    bool explorationComplete = false; ///< every exploration target seen, no perforation
+    bool diagnosisComplete = false;   ///< every pathology found, no false mark, no perforation
+    std::vector<SeriesPoint> series;
+    std::vector<SurfaceSample> surface;
+};
+
+/// JSON of the report (docs/file-formats.md, "Trial reports"). Doubles are written with 17 significant digits so
+/// two replays compare bit for bit.
+std::string reportJson(const TrialReport& report);
+
+/// The report as one self-contained HTML page: the metrics' tables, force and pressure over time and the cavity's
+/// visualized surface, plotted by Chart.js inlined from `chartLibrary` (Debian's libjs-chart.js). NotFound naming
+/// the file when the library is missing.
+[[nodiscard]] Result<std::string>
+reportHtml(const TrialReport& report, const std::string& chartLibrary = "/usr/share/javascript/chart.js/chart.min.js");
+
+/// Writes the JSON (and, when htmlPath is not empty, the page) atomically.
+[[nodiscard]] Status writeReport(const TrialReport& report, const std::string& jsonPath,
+                                 const std::string& htmlPath = {});
+
+} // namespace hs::sim

@@ -1,0 +1,151 @@
+#pragma once
+/// The simulator's world: a scene package's simulation mesh as soft tissue held at the cervix, the rigid scope
+/// about the cervical pivot, the distension fluid and the trial's metrics, advanced by a fixed step. The world is a
+/// deterministic function of its package, its options and the device samples it is given: replaying a trial's
+/// samples gives the same state and metrics, bit for bit (docs/simulator.md).
+///
+/// Threads: step() and everything that reads the running state belong to one thread (the physics thread).
+/// visualPoints() and the accessors of the loaded scene only read data fixed at load and may be called from any
+/// thread; the physics thread hands state to others through snapshot() and hapticFrame().
+
+#include "hs/core/Progress.h"
+#include "hs/core/Result.h"
+#include "hs/core/SurfaceMesh.h"
+#include "hs/core/TetMesh.h"
+#include "hs/core/Vec3.h"
+#include "hs/scene/Scene.h"
+#include "hs/sim/Device.h"
+#include "hs/sim/HapticFrame.h"
+#include "hs/sim/Metrics.h"
+#include "hs/sim/Scope.h"
+#include "hs/sim/Script.h"
+#include "hs/sim/Trial.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace hs::sim {
+
+struct WorldOptions {
+    ScopeConfig scope;
+    FluidSettings fluid;
+    Exercise exercise = Exercise::Exploration;
+    std::uint64_t seed = 1;
+    double stepS = 0.005;     ///< s, the fixed physics step (200 Hz); 0.001-0.02, a whole number of device ticks
+    int solverIterations = 6; ///< XPBD iterations per step, 1-50
+};
+/// InvalidInput naming the field and its range.
+[[nodiscard]] Status checkWorldOptions(const WorldOptions& options);
+
+/// The distension fluid's state.
+struct FluidState {
+    double pressureKpa = 0.0; ///< intrauterine pressure
+    double inflowMlPerS = 0.0;
+    double outflowMlPerS = 0.0;
+    double intravasationMlPerS = 0.0;
+    double inflowTotalMl = 0.0;
+    double outflowTotalMl = 0.0;
+    double deficitMl = 0.0;    ///< inflow - outflow
+    double distensionMl = 0.0; ///< fluid held in the cavity beyond its rest volume
+    double turbidity = 0.0;    ///< 0 clear .. 1 opaque (debris stirred by contact, washed out by flow)
+    double redOut = 0.0;       ///< 0 .. 1: the walls closing on the lens (low pressure or the lens on tissue)
+    bool deficitWarning = false;
+    bool deficitLimit = false;
+};
+
+struct ContactState {
+    bool touching = false;   ///< the scope touches the tissue this step
+    double forceN = 0.0;     ///< N, the tissue's force on the scope
+    Vec3 pointMm;            ///< where (the deepest contact)
+    bool perforated = false; ///< the tip is beyond the wall
+};
+
+/// What one step left: the scope, the fluid, the contact.
+struct WorldState {
+    std::uint64_t step = 0;
+    double timeS = 0.0;
+    DeviceSample sample; ///< the newest device sample the step consumed
+    ScopePose scope;
+    FluidState fluid;
+    ContactState contact;
+    double horizonErrorDeg = 0.0;
+    bool inCavity = false; ///< the tip is beyond the internal os
+};
+
+/// The state other threads draw: the simulation mesh's points and the world's state, copied at the end of a step.
+struct WorldSnapshot {
+    std::vector<Vec3> simulationPointsMm;
+    WorldState state;
+};
+
+class World {
+public:
+    /// Reads the package (scene::readScenePackage), checks it has a simulation mesh (InvalidInput naming the
+    /// package otherwise: "regenerate it with this version"), and builds the world.
+    [[nodiscard]] static Result<std::unique_ptr<World>>
+    load(const std::string& packageFolder, const WorldOptions& options, Progress& progress = Progress::none());
+    /// The same from a scene in memory; `sceneSha256` identifies it in trials (the manifest's checksum).
+    [[nodiscard]] static Result<std::unique_ptr<World>> fromScene(scene::Scene scene, std::string sceneSha256,
+                                                                  const WorldOptions& options,
+                                                                  Progress& progress = Progress::none());
+    ~World();
+    World(const World&) = delete;
+    World& operator=(const World&) = delete;
+
+    /// Device ticks per step (stepS * kDeviceRateHz).
+    std::size_t ticksPerStep() const;
+    /// One physics step consuming ticksPerStep() samples (in tick order, continuing the previous step's ticks).
+    /// InvalidInput for a wrong count, a tick out of sequence or an invalid sample (the world is unchanged).
+    [[nodiscard]] Status step(const DeviceSample* samples, std::size_t count);
+
+    const WorldOptions& options() const;
+    const scene::Scene& scene() const;
+    const std::string& sceneSha256() const;
+    const ScopeFrame& frame() const;
+    const scene::ScopeLandmarks& landmarks() const;
+    /// The simulation mesh at rest (scene region ids) and its boundary (the surface the scope touches).
+    const TetMesh& simulationMesh() const;
+    const SurfaceMesh& contactSurface() const;
+
+    const WorldState& state() const;
+    const std::vector<Vec3>& simulationPointsMm() const;
+    WorldSnapshot snapshot() const;
+    /// The newest haptic frame (published at the end of every step).
+    std::shared_ptr<const HapticFrame> hapticFrame() const;
+    /// The visual surface's points for a state of the simulation mesh (its barycentric embedding); thread-safe.
+    void visualPoints(const std::vector<Vec3>& simulationPointsMm, std::vector<Vec3>& out) const;
+
+    const TrialMetrics& metrics() const;
+    /// The report of the trial so far (with the header the trial would record).
+    TrialReport report() const;
+    /// The trial header of this world's options.
+    TrialHeader trialHeader() const;
+
+    /// Physics statistics: elastic energy (J), the smallest tet volume ratio (current / rest; <= 0 inverted) and the
+    /// largest point speed (mm/s) after the last step: the stability checks.
+    struct Health {
+        double elasticEnergyJ = 0.0;
+        double minVolumeRatio = 1.0;
+        double maxSpeedMmPerS = 0.0;
+        std::size_t invertedTets = 0;
+    };
+    Health health() const;
+
+private:
+    World();
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+/// Replays a trial on a world built from `packageFolder`: refuses (InvalidInput) a trial whose scene checksum is not
+/// the package's, then steps through every sample. The world's options come from the trial's header.
+[[nodiscard]] Result<TrialReport> replayTrial(const std::string& packageFolder, const Trial& trial,
+                                              Progress& progress = Progress::none());
+
+/// A scripted exploration of `world`'s scene: in through the canal with the inflow open, then the fundus, each ostium
+/// and each wall in turn, and out (tests, demonstrations, the benchmark). `durationS` stretches it.
+Script explorationScript(const World& world, double durationS = 60.0);
+
+} // namespace hs::sim
