@@ -1,6 +1,8 @@
 #pragma once
 // A scene package for the simulator's tests: the default case with a lighter visual mesh and maps (the simulation
-// mesh is the same size as the default package's), generated once per test binary.
+// mesh is the same size as the default package's), generated once per test binary. The default case's polyp sits in
+// the right cornu and covers that ostium (the scene has one); here it sits on the posterior wall, so that an
+// exploration can see both ostia.
 
 #include "TestSupport.h"
 #include "hs/generate/Generate.h"
@@ -29,6 +31,9 @@ private:
             return;
         }
         spec->meshing.targetVertices = 8000;
+        for (auto& p : spec->pathologies)
+            if (p.kind == clinical::PathologyKind::Polyp)
+                p.placement = clinical::ClinicalPlacement{clinical::UterineLocation::Posterior};
         spec->texture.sizePx = 256;
         generate::GenerateParams params;
         params.caseFile = HS_DEFAULT_CASE_FILE;

@@ -99,83 +99,145 @@ void TissueModel::build(const TetMesh& mesh, const std::vector<TetMaterial>& mat
         mu_[t] = e / (2.0 * (1.0 + nu));
         lambda_[t] = e * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
         for (const std::int32_t p : tet)
-            mass[static_cast<std::size_t>(p)] += m.densityKgPerM3 * volume_[t] / 4.0;
+            mass[static_cast<std::size_t>(p)] += massScale * m.densityKgPerM3 * volume_[t] / 4.0;
     }
     w_.assign(n, 0.0);
     for (std::size_t i = 0; i < n; ++i)
         w_[i] = (fixed[i] || mass[i] <= 0.0) ? 0.0 : 1.0 / mass[i];
     lambdaH_.assign(tets_.size(), 0.0);
     lambdaD_.assign(tets_.size(), 0.0);
+    rotation_.assign(tets_.size(), {1.0, 0.0, 0.0, 0.0});
     tethers_ = tethers;
     lambdaT_.assign(tethers_.size(), 0.0);
 }
 
-void TissueModel::step(double dt, int iterations, const std::vector<Vec3>& externalForcesN,
+void TissueModel::step(double dt, int substeps, const std::vector<Vec3>& externalForcesN,
                        std::vector<ContactPair>& contacts, const std::vector<Triangle>& surface) {
+    // Small steps (Macklin et al., "Small Steps in Physics Simulation", SCA 2019): `substeps` substeps of one
+    // iteration each converge better than as many iterations of one step, at the same cost.
     const std::size_t n = x_.size();
-    for (std::size_t i = 0; i < n; ++i) {
-        prev_[i] = x_[i];
-        if (w_[i] == 0.0)
-            continue;
-        v_[i] = v_[i] + externalForcesN[i] * (w_[i] * dt);
-        x_[i] = x_[i] + v_[i] * dt;
-    }
-    std::fill(lambdaH_.begin(), lambdaH_.end(), 0.0);
-    std::fill(lambdaD_.begin(), lambdaD_.end(), 0.0);
-    std::fill(lambdaT_.begin(), lambdaT_.end(), 0.0);
-    for (auto& c : contacts)
-        c.lambda = 0.0;
-    const double dt2 = dt * dt;
-    for (int it = 0; it < iterations; ++it) {
+    const double h = dt / static_cast<double>(substeps);
+    const double h2 = h * h;
+    const double keep = std::max(0.0, 1.0 - damping * h);
+    std::vector<double> contactLambda(contacts.size(), 0.0);
+    for (int sub = 0; sub < substeps; ++sub) {
+        for (std::size_t i = 0; i < n; ++i) {
+            prev_[i] = x_[i];
+            if (w_[i] == 0.0)
+                continue;
+            v_[i] = v_[i] + externalForcesN[i] * (w_[i] * h);
+            x_[i] = x_[i] + v_[i] * h;
+        }
+        std::fill(lambdaH_.begin(), lambdaH_.end(), 0.0);
+        std::fill(lambdaD_.begin(), lambdaD_.end(), 0.0);
+        std::fill(lambdaT_.begin(), lambdaT_.end(), 0.0);
+        for (auto& c : contacts)
+            c.lambda = 0.0;
         for (std::size_t t = 0; t < tets_.size(); ++t)
-            solveTet(t, dt2);
-        solveTethers(dt2);
-        solveContacts(contacts, surface);
+            solveTet(t, h2);
+        solveTethers(h2);
+        solveContacts(contacts, surface, h2);
+        for (std::size_t k = 0; k < contacts.size(); ++k)
+            contactLambda[k] += contacts[k].lambda;
+        for (std::size_t i = 0; i < n; ++i)
+            v_[i] = w_[i] == 0.0 ? Vec3{0.0, 0.0, 0.0} : (x_[i] - prev_[i]) * (keep / h);
     }
-    const double keep = std::max(0.0, 1.0 - damping * dt);
-    for (std::size_t i = 0; i < n; ++i)
-        v_[i] = w_[i] == 0.0 ? Vec3{0.0, 0.0, 0.0} : (x_[i] - prev_[i]) * (keep / dt);
+    // The contacts' mean force over the step is sum(lambda) / (substeps h^2): report it as lambda / dt^2.
+    const double toStep = static_cast<double>(substeps);
+    for (std::size_t k = 0; k < contacts.size(); ++k)
+        contacts[k].lambda = contactLambda[k] * toStep;
+}
+
+/// The rotation of `a` (its polar decomposition's R) by Muller et al.'s iteration ("A Robust Method to Extract the
+/// Rotational Part of Deformations", MIG 2016), warm-started from the tet's previous rotation `q` (w, x, y, z).
+static Mat3 rotationOf(const Mat3& a, std::array<double, 4>& q, int iterations) {
+    const auto toMatrix = [](const std::array<double, 4>& r) {
+        const double w = r[0], x = r[1], y = r[2], z = r[3];
+        return Mat3{1 - 2 * (y * y + z * z), 2 * (x * y - w * z),     2 * (x * z + w * y),
+                    2 * (x * y + w * z),     1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
+                    2 * (x * z - w * y),     2 * (y * z + w * x),     1 - 2 * (x * x + y * y)};
+    };
+    for (int it = 0; it < iterations; ++it) {
+        const Mat3 r = toMatrix(q);
+        const Vec3 r0 = column(r, 0), r1 = column(r, 1), r2 = column(r, 2);
+        const Vec3 a0 = column(a, 0), a1 = column(a, 1), a2 = column(a, 2);
+        const Vec3 omega = (cross(r0, a0) + cross(r1, a1) + cross(r2, a2)) *
+                           (1.0 / (std::abs(dot(r0, a0) + dot(r1, a1) + dot(r2, a2)) + 1e-9));
+        const double angle = norm(omega);
+        if (angle < 1e-9)
+            break;
+        // The turn's quaternion; for the small turns of a warm start (1, omega / 2) normalized is accurate to
+        // angle^3 and needs no trigonometry.
+        std::array<double, 4> d{1.0, 0.5 * omega.x, 0.5 * omega.y, 0.5 * omega.z};
+        if (angle > 0.3) {
+            const Vec3 axis = omega / angle;
+            const double s = std::sin(0.5 * angle);
+            d = {std::cos(0.5 * angle), axis.x * s, axis.y * s, axis.z * s};
+        }
+        std::array<double, 4> n{d[0] * q[0] - d[1] * q[1] - d[2] * q[2] - d[3] * q[3],
+                                d[0] * q[1] + d[1] * q[0] + d[2] * q[3] - d[3] * q[2],
+                                d[0] * q[2] - d[1] * q[3] + d[2] * q[0] + d[3] * q[1],
+                                d[0] * q[3] + d[1] * q[2] - d[2] * q[1] + d[3] * q[0]};
+        const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2] + n[3] * n[3]);
+        for (double& v : n)
+            v /= len;
+        q = n;
+    }
+    return toMatrix(q);
 }
 
 void TissueModel::solveTet(std::size_t t, double dt2) {
+    // The fixed corotated material (Stomakhin et al. 2012): psi = mu |F - R|^2 + lambda/2 (det F - 1)^2, as two XPBD
+    // constraints solved together (a 2x2 system in the multipliers' increments, after Macklin & Muller 2021):
+    // C_D = |F - R| with compliance 1 / (2 mu V) and C_H = det F - 1 with compliance 1 / (lambda V). Both vanish at
+    // rest, so the rest state carries no pre-stress and stays put at large substeps.
     const Tet& tet = tets_[t];
     const auto p = [&tet](int k) { return static_cast<std::size_t>(tet[static_cast<std::size_t>(k)]); };
     const double vol = volume_[t];
     if (vol <= 0.0)
         return;
-    const auto apply = [&](const std::array<Vec3, 4>& g, double c, double compliance, double& lambda) {
-        double denominator = compliance / dt2;
-        for (int k = 0; k < 4; ++k)
-            denominator += w_[p(k)] * dot(g[static_cast<std::size_t>(k)], g[static_cast<std::size_t>(k)]);
-        if (denominator < 1e-300)
-            return;
-        const double dLambda = (-c - compliance / dt2 * lambda) / denominator;
-        lambda += dLambda;
-        for (int k = 0; k < 4; ++k)
-            x_[p(k)] = x_[p(k)] + g[static_cast<std::size_t>(k)] * (w_[p(k)] * dLambda);
-    };
-    // Deviatoric: C = sqrt(tr(F^T F)), compliance 1 / (mu V).
-    {
-        const Mat3 f = multiply(shapeMatrix(x_[p(0)], x_[p(1)], x_[p(2)], x_[p(3)]), dmInv_[t]);
-        double ic = 0.0;
-        for (double v : f)
-            ic += v * v;
-        const double c = std::sqrt(ic);
-        if (c > 1e-12) {
-            Mat3 dCdF;
-            for (std::size_t k = 0; k < 9; ++k)
-                dCdF[k] = f[k] / c;
-            apply(pointGradients(dCdF, dmInv_[t]), c, 1.0 / (mu_[t] * vol), lambdaD_[t]);
-        }
+    const Mat3 f = multiply(shapeMatrix(x_[p(0)], x_[p(1)], x_[p(2)], x_[p(3)]), dmInv_[t]);
+    const Mat3 r = rotationOf(f, rotation_[t], 1);
+    Mat3 dDdF;
+    double cD2 = 0.0;
+    for (std::size_t k = 0; k < 9; ++k) {
+        dDdF[k] = f[k] - r[k];
+        cD2 += dDdF[k] * dDdF[k];
     }
-    // Hydrostatic: C = det F - (1 + mu / lambda), compliance 1 / (lambda V).
-    {
-        const Mat3 f = multiply(shapeMatrix(x_[p(0)], x_[p(1)], x_[p(2)], x_[p(3)]), dmInv_[t]);
-        const Vec3 f1 = column(f, 0), f2 = column(f, 1), f3 = column(f, 2);
-        const Vec3 c1 = cross(f2, f3), c2 = cross(f3, f1), c3 = cross(f1, f2);
-        const Mat3 dCdF{c1.x, c2.x, c3.x, c1.y, c2.y, c3.y, c1.z, c2.z, c3.z};
-        const double c = determinant(f) - (1.0 + mu_[t] / lambda_[t]);
-        apply(pointGradients(dCdF, dmInv_[t]), c, 1.0 / (lambda_[t] * vol), lambdaH_[t]);
+    const double cD = std::sqrt(cD2);
+    const bool deviatoric = cD > 1e-9;
+    if (deviatoric)
+        for (double& v : dDdF)
+            v /= cD;
+    const Vec3 f1 = column(f, 0), f2 = column(f, 1), f3 = column(f, 2);
+    const Vec3 c1 = cross(f2, f3), c2 = cross(f3, f1), c3 = cross(f1, f2);
+    const Mat3 dHdF{c1.x, c2.x, c3.x, c1.y, c2.y, c3.y, c1.z, c2.z, c3.z};
+    const double cH = determinant(f) - 1.0;
+    const std::array<Vec3, 4> gD = pointGradients(dDdF, dmInv_[t]);
+    const std::array<Vec3, 4> gH = pointGradients(dHdF, dmInv_[t]);
+    const double aD = 1.0 / (2.0 * mu_[t] * vol * dt2), aH = 1.0 / (lambda_[t] * vol * dt2);
+    double dd = aD, hh = aH, dh = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        const double wk = w_[p(k)];
+        const auto ku = static_cast<std::size_t>(k);
+        if (deviatoric) {
+            dd += wk * dot(gD[ku], gD[ku]);
+            dh += wk * dot(gD[ku], gH[ku]);
+        }
+        hh += wk * dot(gH[ku], gH[ku]);
+    }
+    const double rD = deviatoric ? -cD - aD * lambdaD_[t] : 0.0;
+    const double rH = -cH - aH * lambdaH_[t];
+    const double det = dd * hh - dh * dh;
+    if (std::abs(det) < 1e-300)
+        return;
+    const double dLD = (rD * hh - dh * rH) / det;
+    const double dLH = (dd * rH - dh * rD) / det;
+    lambdaD_[t] += dLD;
+    lambdaH_[t] += dLH;
+    for (int k = 0; k < 4; ++k) {
+        const auto ku = static_cast<std::size_t>(k);
+        x_[p(k)] = x_[p(k)] + (gD[ku] * dLD + gH[ku] * dLH) * w_[p(k)];
     }
 }
 
@@ -195,7 +257,7 @@ void TissueModel::solveTethers(double dt2) {
     }
 }
 
-void TissueModel::solveContacts(std::vector<ContactPair>& contacts, const std::vector<Triangle>& surface) {
+void TissueModel::solveContacts(std::vector<ContactPair>& contacts, const std::vector<Triangle>& surface, double dt2) {
     for (ContactPair& pair : contacts) {
         const Triangle& tri = surface[static_cast<std::size_t>(pair.triangle)];
         const auto i0 = static_cast<std::size_t>(tri[0]), i1 = static_cast<std::size_t>(tri[1]),
@@ -217,8 +279,9 @@ void TissueModel::solveContacts(std::vector<ContactPair>& contacts, const std::v
             continue;
         const double denominator = w_[i0] * b0 * b0 + w_[i1] * b1 * b1 + w_[i2] * b2 * b2;
         if (denominator < 1e-300)
-            continue;
-        const double dLambda = -c / denominator;
+            continue; // a held triangle: the scope cannot move it
+        const double compliance = contactCompliance / dt2;
+        const double dLambda = (-c - compliance * pair.lambda) / (denominator + compliance);
         pair.lambda += dLambda;
         pair.normal = normal;
         x_[i0] = x_[i0] - normal * (w_[i0] * b0 * dLambda);
@@ -239,15 +302,13 @@ double TissueModel::elasticEnergyJ() const {
         const Tet& tet = tets_[t];
         const auto p = [&tet](int k) { return static_cast<std::size_t>(tet[static_cast<std::size_t>(k)]); };
         const Mat3 f = multiply(shapeMatrix(x_[p(0)], x_[p(1)], x_[p(2)], x_[p(3)]), dmInv_[t]);
-        double ic = 0.0;
-        for (double v : f)
-            ic += v * v;
-        const double j = determinant(f);
-        const double alpha = 1.0 + mu_[t] / lambda_[t];
-        // Stable Neo-Hookean (Smith et al. 2018), shifted so the rest state has zero energy.
-        const double psi = 0.5 * mu_[t] * (ic - 3.0) + 0.5 * lambda_[t] * (j - alpha) * (j - alpha) -
-                           0.5 * lambda_[t] * (1.0 - alpha) * (1.0 - alpha);
-        energy += psi * volume_[t];
+        std::array<double, 4> q = rotation_[t];
+        const Mat3 r = rotationOf(f, q, 8);
+        double d2 = 0.0;
+        for (std::size_t k = 0; k < 9; ++k)
+            d2 += (f[k] - r[k]) * (f[k] - r[k]);
+        const double j = determinant(f) - 1.0;
+        energy += (mu_[t] * d2 + 0.5 * lambda_[t] * j * j) * volume_[t];
     }
     return energy;
 }

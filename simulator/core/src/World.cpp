@@ -3,6 +3,7 @@
 #include "Bvh.h"
 #include "Fluid.h"
 #include "Tissue.h"
+#include "hs/core/TetEmbedding.h"
 #include "hs/scene/ScenePackage.h"
 #include "hs/scene/Sha256.h"
 
@@ -23,16 +24,28 @@ constexpr double kMm = 1e-3;
 
 /// The tip force at which the wall gives way, N (docs/simulator.md, "Perforation": an assumption of this project;
 /// blunt-instrument puncture of soft tissue takes a few newtons).
-constexpr double kPerforationForceN = 6.0;
+constexpr double kPerforationForceN = 5.0;
+/// ... held this long, s: the wall gives way under a sustained push, not a tap.
+constexpr double kPerforationHoldS = 0.3;
 /// Total stiffness of what holds the corpus besides the cervix (broad and round ligaments, the organs around it),
 /// N/m, spread over the serosa's free points by area (docs/simulator.md, "Boundary").
-constexpr double kSurroundStiffnessNPerM = 300.0;
+constexpr double kSurroundStiffnessNPerM = 1000.0;
+/// The portio: the support's points this close to the external os along the canal are fixed, mm (about the vaginal
+/// part of a 25-30 mm cervix; UTERUS.md).
+constexpr double kHeldPortioMm = 12.0;
+/// Total stiffness of the cardinal and uterosacral ligaments on the supravaginal cervix, N/m, spread over its points.
+constexpr double kLigamentStiffnessNPerM = 3000.0;
+/// The shaft's spheres up to this far beyond the internal os (along the canal) do not collide: the canal wraps the
+/// sheath, mm.
+constexpr double kCanalContactFreeMm = 2.0;
 /// The shaft is checked for contact from its tip back to this far behind the pivot, mm.
 constexpr double kShaftCheckBehindPivotMm = 10.0;
 /// Contact candidates are gathered this far beyond the scope's radius, mm (covers one step's motion).
 constexpr double kContactMarginMm = 1.5;
-/// Steps between visibility updates and series samples, as times.
-constexpr double kVisibilityPeriodS = 0.05;
+/// Visibility is updated every kVisibilityPeriodS for a tenth of the faces (all of them every 50 ms), and the
+/// series sampled every kSeriesPeriodS.
+constexpr double kVisibilityPeriodS = 0.005;
+constexpr std::size_t kVisibilitySlices = 10;
 constexpr double kSeriesPeriodS = 0.1;
 /// A contact ends after this long without touching (so a sliding scope counts once), s.
 constexpr double kContactGapS = 0.05;
@@ -42,7 +55,8 @@ constexpr double kPathologyReachMm = 3.0;
 constexpr double kFundusZoneMm = 10.0;
 /// The pressure at which the load is calibrated against the hydrometra curve, kPa (60 mmHg).
 constexpr double kCalibrationPressureKpa = 8.0;
-constexpr double kCalibrationSeconds = 1.5;
+constexpr double kCalibrationSeconds = 0.4; ///< s of settling per round (the opening settles in about 0.2 s)
+constexpr int kCalibrationRounds = 4;
 
 Vec3 perpendicularTo(const Vec3& axis, const Vec3& hint) {
     Vec3 p = hint - axis * dot(hint, axis);
@@ -59,10 +73,16 @@ struct Zone {
 
 struct Ostium {
     std::string name;
-    std::int32_t face = -1; ///< the contact surface's face it lies on
-    std::array<double, 3> weights{};
+    TetEmbedding at; ///< the centre of its faces on the visual surface, bound to the simulation mesh
+    Vec3 normal;     ///< into the cavity, at rest
     int target = -1; ///< index in metrics.targets
 };
+/// Ostium faces spread wider than this across the cavity are two ostia, mm (the intercornual distance is 41-47 mm;
+/// UTERUS.md).
+constexpr double kOstiumSeparationMm = 15.0;
+/// The coarse simulation mesh rounds the cornual recess where an ostium opens: the ostium's centre may lie this far
+/// behind the contact surface and still be seen, mm.
+constexpr double kOstiumOcclusionSlackMm = 2.5;
 
 } // namespace
 
@@ -110,6 +130,8 @@ struct World::Impl {
     double nextVisibilityS = 0.0;
     double nextSeriesS = 0.0;
     int perforationIndex = -1;
+    double tipPushS = 0.0;
+    std::size_t visibilityRound = 0;
 
     mutable std::mutex frameMutex;
     std::shared_ptr<const HapticFrame> hapticFrame;
@@ -121,7 +143,13 @@ struct World::Impl {
     void pressureForces(double pressureKpa, std::vector<Vec3>& forces) const;
     double cavityVolumeMl(const std::vector<Vec3>& pts) const;
     void physics(const ScopePose& pose, double pressureKpa);
-    bool visible(const Vec3& point, const Vec3& normal, std::int32_t face) const;
+    /// Whether `point` (on `face`, -1: none) is in the view, in focus, facing the lens and not hidden (a hit within
+    /// `slackMm` before it does not hide it).
+    bool visible(const Vec3& point, const Vec3& normal, std::int32_t face, double slackMm = 0.5) const;
+    bool visibleFrom(const ScopePose& pose, const Vec3& point, const Vec3& normal, std::int32_t face,
+                     double slackMm) const;
+    Vec3 ostiumPoint(const Ostium& o) const;
+    bool insideRestHull(const Vec3& p) const;
     void updateVisibility();
     void mark();
     void publishFrame();
@@ -231,10 +259,10 @@ void World::Impl::setupSurfaceData() {
         zones.push_back(std::move(*z));
     }
 
-    // Ostia: the visual surface's ostium faces, split by side, each bound to the nearest cavity face.
+    // Ostia: the visual surface's ostium faces, one or two clusters (a pathology may cover an ostium: the scene then
+    // has one), each named by its side and its centre bound to the simulation mesh.
     const auto& visual = scene.surface.mesh;
-    Vec3 sums[2] = {{0, 0, 0}, {0, 0, 0}};
-    double counts[2] = {0.0, 0.0};
+    std::vector<Vec3> ostiumCentres, ostiumNormals;
     std::map<std::string, std::vector<Vec3>> contact;
     for (const auto& label : scene.labels) {
         if (label.element != scene::LabelElement::SurfaceFace)
@@ -242,38 +270,44 @@ void World::Impl::setupSurfaceData() {
         for (const std::int32_t f : label.indices) {
             if (f < 0 || static_cast<std::size_t>(f) >= visual.faceCount())
                 continue;
-            const Vec3 c = triangleCentre(visual.points, visual.triangles[static_cast<std::size_t>(f)]);
+            const Triangle& vt = visual.triangles[static_cast<std::size_t>(f)];
+            const Vec3 c = triangleCentre(visual.points, vt);
             if (label.kind == scene::LabelKind::Ostium) {
-                const int side = dot(c - landmarks.internalOsMm, cavityLeft) >= 0.0 ? 0 : 1;
-                sums[side] = sums[side] + c;
-                counts[side] += 1.0;
+                ostiumCentres.push_back(c);
+                ostiumNormals.push_back(triangleNormal(visual.points, vt));
             } else if (label.kind == scene::LabelKind::Contact && !label.pathologyId.empty()) {
                 contact[label.pathologyId].push_back(c);
             }
         }
     }
-    for (int side = 0; side < 2; ++side) {
-        if (counts[side] == 0.0)
-            continue;
-        const Vec3 centre = sums[side] / counts[side];
-        Ostium o;
-        o.name = side == 0 ? "ostium-left" : "ostium-right";
-        double best = 1e300;
-        for (const std::int32_t f : cavityFaceIds) {
-            const Triangle& t = (*tris)[static_cast<std::size_t>(f)];
-            double w0 = 0, w1 = 0, w2 = 0;
-            const Vec3 q = detail::closestOnTriangle(centre, simRest.points[static_cast<std::size_t>(t[0])],
-                                                     simRest.points[static_cast<std::size_t>(t[1])],
-                                                     simRest.points[static_cast<std::size_t>(t[2])], w0, w1, w2);
-            const double d = distance(q, centre);
-            if (d < best) {
-                best = d;
-                o.face = f;
-                o.weights = {w0, w1, w2};
-            }
+    if (!ostiumCentres.empty()) {
+        // Two clusters split at the middle of the faces' spread across the cavity, one when they lie together.
+        double lo = 1e300, hi = -1e300;
+        for (const Vec3& c : ostiumCentres) {
+            lo = std::min(lo, dot(c - landmarks.internalOsMm, cavityLeft));
+            hi = std::max(hi, dot(c - landmarks.internalOsMm, cavityLeft));
         }
-        if (o.face >= 0)
-            ostia.push_back(o);
+        const bool two = hi - lo > kOstiumSeparationMm;
+        Vec3 sums[2] = {{0, 0, 0}, {0, 0, 0}}, normals[2] = {{0, 0, 0}, {0, 0, 0}};
+        double counts[2] = {0.0, 0.0};
+        for (std::size_t i = 0; i < ostiumCentres.size(); ++i) {
+            const int k = two && dot(ostiumCentres[i] - landmarks.internalOsMm, cavityLeft) < 0.5 * (lo + hi) ? 1 : 0;
+            sums[k] = sums[k] + ostiumCentres[i];
+            normals[k] = normals[k] + ostiumNormals[i];
+            counts[k] += 1.0;
+        }
+        for (int k = 0; k < 2; ++k) {
+            if (counts[k] == 0.0 || norm(normals[k]) < 1e-12)
+                continue;
+            const Vec3 centre = sums[k] / counts[k];
+            Ostium o;
+            o.name = dot(centre - landmarks.internalOsMm, cavityLeft) >= 0.0 ? "ostium-left" : "ostium-right";
+            o.at = embedPoints(simRest, {centre}).front();
+            o.normal = normalized(normals[k]);
+            if (o.at.tet >= 0)
+                ostia.push_back(o);
+        }
+        std::sort(ostia.begin(), ostia.end(), [](const Ostium& a, const Ostium& b) { return a.name < b.name; });
     }
     // Pathologies: the cavity faces near the visual faces over each.
     for (std::size_t p = 0; p < scene.clinical.pathologies.size(); ++p) {
@@ -309,12 +343,21 @@ void World::Impl::setupTissue() {
         const auto& m = scene.materials[static_cast<std::size_t>(ids[t])].material;
         materials[t] = {m.youngsModulusKpa * 1e3, m.poissonRatio, m.densityKgPerM3};
     }
+    // The held cervix: its vaginal part (the portio, gripped by the vagina and the tenaculum) is fixed; the rest of it
+    // up to the internal os hangs in the cardinal and uterosacral ligaments, stiff springs that let the scope
+    // straighten the canal a little (docs/simulator.md, "Boundary").
     std::vector<bool> fixed(n, false);
+    std::vector<bool> ligament(n, false);
     const auto& support = simRest.tetLabels.at(scene::kSupportTetLabel);
     for (std::size_t t = 0; t < simRest.tetCount(); ++t)
         if (support[t] == 1)
-            for (const std::int32_t p : simRest.tets[t])
-                fixed[static_cast<std::size_t>(p)] = true;
+            for (const std::int32_t p : simRest.tets[t]) {
+                const auto pi = static_cast<std::size_t>(p);
+                if (dot(simRest.points[pi] - frame.pivotMm, frame.axis) < kHeldPortioMm)
+                    fixed[pi] = true;
+                else
+                    ligament[pi] = true;
+            }
     // Tethers on the serosa's free points, by area.
     std::vector<double> pointArea(n, 0.0);
     double total = 0.0;
@@ -328,9 +371,18 @@ void World::Impl::setupTissue() {
             }
     }
     std::vector<std::pair<std::int32_t, double>> tethers;
+    std::size_t ligamentPoints = 0;
     for (std::size_t i = 0; i < n; ++i)
-        if (pointArea[i] > 0.0)
-            tethers.emplace_back(static_cast<std::int32_t>(i), kSurroundStiffnessNPerM * pointArea[i] / total);
+        ligamentPoints += ligament[i] && !fixed[i] ? 1 : 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (fixed[i])
+            continue;
+        double k = pointArea[i] > 0.0 ? kSurroundStiffnessNPerM * pointArea[i] / total : 0.0;
+        if (ligament[i])
+            k += kLigamentStiffnessNPerM / static_cast<double>(ligamentPoints);
+        if (k > 0.0)
+            tethers.emplace_back(static_cast<std::int32_t>(i), k);
+    }
     tissue.build(simRest, materials, fixed, tethers);
     // The wall against the tip: a flat punch of the scope's radius on a half-space of the wall's modulus,
     // k = 2 E a / (1 - nu^2) (Johnson, Contact Mechanics, 1985, eq. 3.36 for a rigid flat punch).
@@ -376,22 +428,27 @@ void World::Impl::pressureForces(double pressureKpa, std::vector<Vec3>& forces) 
 }
 
 void World::Impl::calibrateLoad() {
-    // The wall's opening under pressure depends on the solver and the boundary; scale the load so the cavity takes
-    // the hydrometra curve's volume at the calibration pressure (docs/simulator.md, "Distension").
+    // The wall's opening under pressure depends on the solver and the boundary, and is not linear in the load (a slit
+    // cavity opens more easily once it has opened). Scale the load so that the cavity takes the hydrometra curve's
+    // volume at the calibration pressure: a few fixed-point rounds of gain *= target / opened, each settling the
+    // tissue under the load (docs/simulator.md, "Distension").
     restCavityMl = cavityVolumeMl(pointsMm);
     const double target = fluid.complianceMlPerKpa() * kCalibrationPressureKpa;
     pressureGain = 1.0;
     const auto steps = static_cast<int>(std::round(kCalibrationSeconds / options.stepS));
     std::vector<Vec3> forces;
     std::vector<detail::ContactPair> none;
-    for (int i = 0; i < steps; ++i) {
-        pressureForces(kCalibrationPressureKpa, forces);
-        tissue.step(options.stepS, options.solverIterations, forces, none, *triangles);
-        tissue.pointsMm(pointsMm);
+    for (int round = 0; round < kCalibrationRounds; ++round) {
+        for (int i = 0; i < steps; ++i) {
+            pressureForces(kCalibrationPressureKpa, forces);
+            tissue.step(options.stepS, options.solverIterations, forces, none, *triangles);
+            tissue.pointsMm(pointsMm);
+        }
+        const double opened = cavityVolumeMl(pointsMm) - restCavityMl;
+        if (!(opened > 1e-6))
+            break;
+        pressureGain = std::clamp(pressureGain * target / opened, 0.01, 50.0);
     }
-    const double opened = cavityVolumeMl(pointsMm) - restCavityMl;
-    if (opened > 1e-6)
-        pressureGain = std::clamp(target / opened, 0.05, 50.0);
     // Back to rest for the trial.
     setupTissue();
     tissue.pointsMm(pointsMm);
@@ -433,8 +490,36 @@ Status World::Impl::build(Progress& progress) {
     return {};
 }
 
-bool World::Impl::visible(const Vec3& point, const Vec3& normal, std::int32_t face) const {
-    const ScopePose& pose = state.scope;
+bool World::Impl::insideRestHull(const Vec3& p) const {
+    // Ray parity against the serosa at rest (the cavity's faces close the hull at the os only): odd inside.
+    int crossings = 0;
+    for (std::size_t f = 0; f < triangles->size(); ++f) {
+        if (faceCavity[f])
+            continue;
+        const Triangle& t = (*triangles)[f];
+        double th = 0.0, u = 0.0, v = 0.0;
+        if (detail::rayTriangle(p, cavityAxis, simRest.points[static_cast<std::size_t>(t[0])],
+                                simRest.points[static_cast<std::size_t>(t[1])],
+                                simRest.points[static_cast<std::size_t>(t[2])], th, u, v))
+            ++crossings;
+    }
+    return crossings % 2 == 1;
+}
+
+Vec3 World::Impl::ostiumPoint(const Ostium& o) const {
+    const Tet& t = simRest.tets[static_cast<std::size_t>(o.at.tet)];
+    Vec3 p{0.0, 0.0, 0.0};
+    for (std::size_t k = 0; k < 4; ++k)
+        p = p + pointsMm[static_cast<std::size_t>(t[k])] * o.at.weights[k];
+    return p;
+}
+
+bool World::Impl::visible(const Vec3& point, const Vec3& normal, std::int32_t face, double slackMm) const {
+    return visibleFrom(state.scope, point, normal, face, slackMm);
+}
+
+bool World::Impl::visibleFrom(const ScopePose& pose, const Vec3& point, const Vec3& normal, std::int32_t face,
+                              double slackMm) const {
     const Vec3 v = point - pose.tipMm;
     const double d = norm(v);
     if (d < scopeFocusNearMm(options.scope) || d > scopeFocusFarMm(options.scope))
@@ -446,13 +531,15 @@ bool World::Impl::visible(const Vec3& point, const Vec3& normal, std::int32_t fa
         return false;
     double t = 0.0, a = 0.0, b = 0.0;
     const std::int32_t hit = bvh.raycast(pointsMm, pose.tipMm, u, d + 0.5, t, a, b);
-    return hit < 0 || hit == face || t >= d - 0.5;
+    return hit < 0 || hit == face || t >= d - slackMm;
 }
 
 void World::Impl::updateVisibility() {
     if (state.fluid.redOut >= 1.0 || state.fluid.turbidity >= 0.9)
         return; // nothing is seen through closed walls or opaque fluid
-    for (std::size_t f = 0; f < triangles->size(); ++f) {
+    // A tenth of the faces each time, in turn (an even load per step): each face is checked every ten updates.
+    const std::size_t slice = visibilityRound++ % kVisibilitySlices;
+    for (std::size_t f = slice; f < triangles->size(); f += kVisibilitySlices) {
         if (!faceInCavity[f] || faceSeen[f])
             continue;
         const auto fi = static_cast<std::int32_t>(f);
@@ -472,11 +559,7 @@ void World::Impl::updateVisibility() {
         ExplorationTarget& target = metrics.targets[static_cast<std::size_t>(o.target)];
         if (target.seen)
             continue;
-        const Triangle& t = (*triangles)[static_cast<std::size_t>(o.face)];
-        const Vec3 p = pointsMm[static_cast<std::size_t>(t[0])] * o.weights[0] +
-                       pointsMm[static_cast<std::size_t>(t[1])] * o.weights[1] +
-                       pointsMm[static_cast<std::size_t>(t[2])] * o.weights[2];
-        if (visible(p, faceNormal(o.face), o.face)) {
+        if (visible(ostiumPoint(o), o.normal, -1, kOstiumOcclusionSlackMm)) {
             target.seen = true;
             target.visualizedPercent = 100.0;
             target.firstSeenS = state.timeS;
@@ -539,6 +622,10 @@ void World::Impl::physics(const ScopePose& pose, double pressureKpa) {
         // Through a perforation the scope meets no wall beyond the hole.
         if (perforation && dot(c - perforation->locationMm, pose.shaft) > -2.0 * radius)
             continue;
+        // The cervical canal closes round the sheath (it is dilated to it): the shaft meets the wall only beyond the
+        // internal os, the tip everywhere (docs/simulator.md, "Collision and contact").
+        if (back > 0.0 && dot(c - landmarks.internalOsMm, frame.axis) < kCanalContactFreeMm)
+            continue;
         near.clear();
         bvh.near(c, radius + kContactMarginMm, near);
         std::sort(near.begin(), near.end());
@@ -579,10 +666,33 @@ void World::Impl::physics(const ScopePose& pose, double pressureKpa) {
     contact.touching = contact.forceN > 1e-4;
     contact.pointMm = where;
     // Perforation: the wall gives way under the tip.
-    if (perforationIndex < 0 && norm(tip) > kPerforationForceN) {
+    tipPushS = norm(tip) > kPerforationForceN ? tipPushS + options.stepS : 0.0;
+    // ... or the tip is through the wall's surface (a face of the cavity lies in front of it, over the tip's centre,
+    // by more than the scope's radius): the wall tore around it.
+    bool through = false;
+    Vec3 throughAt = pose.tipMm;
+    for (const auto& pair : contacts) {
+        if (!pair.tip || !faceInCavity[static_cast<std::size_t>(pair.triangle)])
+            continue;
+        const Triangle& tri = (*triangles)[static_cast<std::size_t>(pair.triangle)];
+        double w0 = 0.0, w1 = 0.0, w2 = 0.0;
+        const Vec3 q = detail::closestOnTriangle(pose.tipMm, pointsMm[static_cast<std::size_t>(tri[0])],
+                                                 pointsMm[static_cast<std::size_t>(tri[1])],
+                                                 pointsMm[static_cast<std::size_t>(tri[2])], w0, w1, w2);
+        const bool over = w0 > 0.0 && w1 > 0.0 && w2 > 0.0;
+        if (over && dot(pose.tipMm - q, faceNormal(pair.triangle)) < -radius) {
+            through = true;
+            throughAt = q;
+        }
+    }
+    // ... or the tip is beyond the uterus as it lies at rest (outside its serosa, past the internal os): it has been
+    // pushed further than the wall is thick.
+    if (!through && dot(pose.tipMm - landmarks.internalOsMm, frame.axis) > 0.0 && !insideRestHull(pose.tipMm))
+        through = true;
+    if (perforationIndex < 0 && (tipPushS >= kPerforationHoldS || through)) {
         Perforation p;
         p.timeS = state.timeS;
-        p.locationMm = pose.tipMm;
+        p.locationMm = through ? throughAt : pose.tipMm;
         p.depthMm = 0.0;
         std::int32_t region = -1;
         double best = 1e300;
@@ -935,33 +1045,59 @@ Script explorationScript(const World& world, double durationS) {
             t += 2.5;
         }
     }
-    // The fundus and each ostium, from near the fundus.
+    // The fundus from near it; each ostium and each pathology from where it is in view (searched at rest along the
+    // cavity's axis and beside it).
     const Vec3 near = inCavity(0.6);
     add(t, aimAt(world, near, lm.fundusMm));
     t += 3.0;
+    std::vector<Vec3> vantage;
+    for (const double depth : {0.6, 0.45, 0.75, 0.3, 0.85, 0.2})
+        for (const double side : {0.0, 3.0, -3.0, 6.0, -6.0})
+            for (const double up : {0.0, 3.0, -3.0, 6.0, -6.0})
+                vantage.push_back(inCavity(depth) + w.cavityLeft * side + w.cavityAnterior * up);
+    const auto lookAt = [&](const Vec3& target, const Vec3& normal, auto&& seen) {
+        for (const Vec3& tip : vantage) {
+            const DeviceSample s = aimAt(world, tip, target);
+            if (seen(scopePose(w.frame, w.options.scope, s), target, normal))
+                return s;
+        }
+        return aimAt(world, near, target);
+    };
     for (const auto& o : w.ostia) {
-        const Triangle& tri = (*w.triangles)[static_cast<std::size_t>(o.face)];
-        const Vec3 p = w.simRest.points[static_cast<std::size_t>(tri[0])] * o.weights[0] +
-                       w.simRest.points[static_cast<std::size_t>(tri[1])] * o.weights[1] +
-                       w.simRest.points[static_cast<std::size_t>(tri[2])] * o.weights[2];
-        add(t, aimAt(world, near, p));
+        const DeviceSample s =
+            lookAt(w.ostiumPoint(o), o.normal, [&](const ScopePose& pose, const Vec3& p, const Vec3& n) {
+                return w.visibleFrom(pose, p, n, -1, kOstiumOcclusionSlackMm);
+            });
+        add(t, s);
         t += 3.0;
-        add(t, aimAt(world, near, p));
+        add(t, s);
         t += 1.0;
     }
-    // Each pathology: look at it and mark it.
     for (std::size_t p = 0; p < w.metrics.pathologies.size(); ++p) {
-        Vec3 centre{0.0, 0.0, 0.0};
-        double count = 0.0;
-        for (std::size_t f = 0; f < w.facePathology.size(); ++f)
-            if (w.facePathology[f] == static_cast<int>(p)) {
-                centre = centre + triangleCentre(w.simRest.points, (*w.triangles)[f]);
-                count += 1.0;
+        // The pathology's face nearest the cavity's axis, marked with the view's centre on it.
+        std::int32_t best = -1;
+        double bestDistance = 1e300;
+        for (std::size_t f = 0; f < w.facePathology.size(); ++f) {
+            if (w.facePathology[f] != static_cast<int>(p))
+                continue;
+            const Vec3 c = triangleCentre(w.simRest.points, (*w.triangles)[f]);
+            const double along = dot(c - lm.internalOsMm, w.cavityAxis);
+            const double off = norm(c - lm.internalOsMm - w.cavityAxis * along);
+            if (off < bestDistance) {
+                bestDistance = off;
+                best = static_cast<std::int32_t>(f);
             }
-        if (count == 0.0)
+        }
+        if (best < 0)
             continue;
-        centre = centre / count;
-        const DeviceSample look = aimAt(world, inCavity(0.35), centre);
+        const Vec3 centre = triangleCentre(w.simRest.points, (*w.triangles)[static_cast<std::size_t>(best)]);
+        const DeviceSample look =
+            lookAt(centre, w.faceNormal(best), [&](const ScopePose& pose, const Vec3&, const Vec3&) {
+                double th = 0.0, a = 0.0, b = 0.0;
+                const std::int32_t hit =
+                    w.bvh.raycast(w.pointsMm, pose.tipMm, pose.direction, scopeFocusFarMm(w.options.scope), th, a, b);
+                return hit >= 0 && w.facePathology[static_cast<std::size_t>(hit)] == static_cast<int>(p);
+            });
         add(t, look);
         t += 3.0;
         DeviceSample press = look;

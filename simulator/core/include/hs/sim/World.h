@@ -34,7 +34,7 @@ struct WorldOptions {
     Exercise exercise = Exercise::Exploration;
     std::uint64_t seed = 1;
     double stepS = 0.005;     ///< s, the fixed physics step (200 Hz); 0.001-0.02, a whole number of device ticks
-    int solverIterations = 6; ///< XPBD iterations per step, 1-50
+    int solverIterations = 2; ///< XPBD substeps per step, one solver sweep each (small steps), 1-50
 };
 /// InvalidInput naming the field and its range.
 [[nodiscard]] Status checkWorldOptions(const WorldOptions& options);
@@ -71,7 +71,8 @@ struct WorldState {
     FluidState fluid;
     ContactState contact;
     double horizonErrorDeg = 0.0;
-    bool inCavity = false; ///< the tip is beyond the internal os
+    bool inCavity = false;        ///< the tip is beyond the internal os
+    double cavityOpeningMl = 0.0; ///< mL, the cavity's volume in the deformed tissue beyond its volume at rest
 };
 
 /// The state other threads draw: the simulation mesh's points and the world's state, copied at the end of a step.
