@@ -179,6 +179,7 @@ int runValidatePackage(const ValidateOptions& options, const std::string& folder
         }
         if (scene.ok()) {
             j["tets"] = scene->tets.tetCount();
+            j["simulationTets"] = scene->simulation ? scene->simulation->tets.tetCount() : 0;
             j["regions"] = scene->regions.size();
             j["labels"] = scene->labels.size();
             const auto scope = checkScope(*scene, options.scopeDiameterMm);
@@ -203,6 +204,11 @@ int runValidatePackage(const ValidateOptions& options, const std::string& folder
               << " bytes, every SHA-256 checked\n"
               << "tets        " << scene->tets.tetCount() << " tetrahedra, " << scene->tets.vertexCount() << " points\n"
               << "surface     " << scene->surface.mesh.faceCount() << " triangles\n";
+    if (scene->simulation)
+        std::cout << "simulation  " << scene->simulation->tets.tetCount() << " tetrahedra, "
+                  << scene->simulation->tets.vertexCount() << " points (simulation.vtu)\n";
+    else
+        std::cout << "simulation  none: a package of schema version 1 cannot be simulated (regenerate it)\n";
     for (const auto& m : scene->materials)
         std::cout << "material    " << m.name << " (" << clinical::toString(m.tissue) << "): E "
                   << m.material.youngsModulusKpa << " kPa, nu " << m.material.poissonRatio << ", "

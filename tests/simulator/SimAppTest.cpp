@@ -1,6 +1,7 @@
 // hysteroscene-sim end to end: the command line's usage errors, the headless scripted run and its replay giving the
 // same report bit for bit, and the trial report (JSON with 17 significant digits; the page with its plots, opened
 // in headless Chromium when it is installed).
+#include "SimPackage.h"
 #include "TestSupport.h"
 #include "hs/generate/Generate.h"
 #include "hs/io/HtmlPage.h"
@@ -119,30 +120,16 @@ TEST(TrialReport, PageDrawsItsPlotsInHeadlessChromium) {
     EXPECT_NE(dom.out.find("data-charts=\"4\""), std::string::npos) << dom.out.substr(0, 3000);
 }
 
-/// A light scene package (tests/data/batch/light-case.json), generated once for the tests below.
+/// The simulator tests' package (SimPackage.h), generated once per binary.
 class SimHeadless : public ::testing::Test {
 protected:
-    static void SetUpTestSuite() {
-        s_dir = std::make_unique<hs::test::TempDir>("hs-sim-app");
-        auto spec = hs::scene::loadCase((hs::test::testDataDir() / "batch" / "light-case.json").string());
-        ASSERT_TRUE(spec.ok()) << spec.error().message();
-        auto generated = hs::generate::generateScene(*spec, {});
-        ASSERT_TRUE(generated.ok()) << generated.error().message();
-        s_package = s_dir->file("scene");
-        ASSERT_TRUE(hs::scene::writeScenePackage(*generated->scene, s_package).ok());
-    }
-    static void TearDownTestSuite() { s_dir.reset(); }
     void SetUp() override {
+        s_package = hs::test::SimPackage::folder();
         if (s_package.empty())
             GTEST_SKIP() << "no package";
-        auto world = hs::sim::World::load(s_package, {});
-        if (!world.ok())
-            GTEST_SKIP() << "the world does not load this package yet: " << world.error().message();
     }
-    static std::unique_ptr<hs::test::TempDir> s_dir;
     static std::string s_package;
 };
-std::unique_ptr<hs::test::TempDir> SimHeadless::s_dir;
 std::string SimHeadless::s_package;
 
 TEST_F(SimHeadless, ScriptedRunAndItsReplayReportTheSameBytes) {

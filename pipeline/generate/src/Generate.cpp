@@ -1,6 +1,7 @@
 #include "hs/generate/Generate.h"
 
 #include "hs/anatomy/ShapeModel.h"
+#include "hs/generate/Simulation.h"
 #include "hs/meshing/BaselineMeshers.h"
 #include "hs/texture/Bake.h"
 
@@ -12,8 +13,8 @@ namespace hs::generate {
 namespace {
 
 /// Where each stage starts in generateScene's progress range, by cost on the default case (the mesh takes about
-/// half the time, the texture a quarter); the last entry closes the range.
-constexpr std::array<double, kStageCount + 1> kStageStart{0.0, 0.06, 0.18, 0.29, 0.74, 0.76, 1.0, 1.0};
+/// half the time, the texture and the scene, with its simulation mesh, a sixth each); the last entry closes the range.
+constexpr std::array<double, kStageCount + 1> kStageStart{0.0, 0.05, 0.15, 0.24, 0.64, 0.66, 0.84, 1.0};
 
 std::size_t indexOf(Stage stage) {
     return static_cast<std::size_t>(stage);
@@ -101,10 +102,17 @@ Status runTexture(Generated& g, const GenerateParams& params, Progress& progress
     return {};
 }
 
-Status runScene(Generated& g) {
+/// The scene, with its simulation mesh (generate/Simulation.h).
+Status runScene(Generated& g, const GenerateParams& params, Progress& progress) {
     auto s = assembleScene(g.spec, *g.organ, *g.pathologies, *g.body, *g.mesh, *g.tissue, *g.appearance);
     if (!s)
         return s.failure();
+    auto sim = simulationMesh(g.spec, *g.body, s->materials, g.organ->dimensions.cervixLengthMm, s->surface.mesh,
+                              params.threads, progress);
+    if (!sim)
+        return sim.failure();
+    s->simulation = std::move(sim).value();
+    HS_TRY(scene::checkScene(*s));
     g.scene = std::move(s).value();
     return {};
 }
@@ -124,7 +132,7 @@ Status runStage(Stage stage, Generated& g, const GenerateParams& params, Progres
     case Stage::Texture:
         return runTexture(g, params, progress);
     case Stage::Scene:
-        return runScene(g);
+        return runScene(g, params, progress);
     }
     return fail(ErrorCode::InvalidInput, "unknown stage");
 }

@@ -11,6 +11,7 @@ constexpr std::string_view kSceneFile = "scene.json";
 constexpr std::string_view kLabelsFile = "labels.json";
 constexpr std::string_view kReportFile = "report.json";
 constexpr std::string_view kTetsFile = "tets.vtu";
+constexpr std::string_view kSimulationFile = "simulation.vtu"; ///< schema version 2 on; optional
 constexpr std::string_view kSurfaceVtpFile = "surface.vtp";
 constexpr std::string_view kSurfaceGlbFile = "surface.glb";
 constexpr std::string_view kSurfaceObjFile = "surface.obj";

@@ -137,9 +137,10 @@ Result<PackageManifest> parseManifest(const std::string& text, const PackageRead
     if (!j.contains("schemaVersion") || !j["schemaVersion"].is_number_integer())
         return fail(ErrorCode::InvalidInput, "manifest.json: \"schemaVersion\" must be an integer");
     const auto version = j["schemaVersion"].get<std::int64_t>();
-    if (version != kPackageSchemaVersion)
+    if (version < kOldestPackageSchemaVersion || version > kPackageSchemaVersion)
         return fail(ErrorCode::Unsupported, "manifest.json: schema version " + std::to_string(version) +
-                                                " is not supported; this build reads version " +
+                                                " is not supported; this build reads versions " +
+                                                std::to_string(kOldestPackageSchemaVersion) + " to " +
                                                 std::to_string(kPackageSchemaVersion));
     if (!j.contains("toolVersion") || !j["toolVersion"].is_string() || !j.contains("files") || !j["files"].is_array())
         return fail(ErrorCode::InvalidInput, "manifest.json: needs a string \"toolVersion\" and a \"files\" array");
@@ -245,6 +246,20 @@ Status readMeshes(const fs::path& root, const PackageManifest& manifest, const P
         return fail(surface.error().code, std::string(detail::kSurfaceVtpFile) + ": " + surface.error().detail);
     scene.surface.mesh = std::move(*surface);
     HS_TRY(detail::joinEmbedding(scene.surface.mesh, arrays, scene.surface.embedding));
+    if (findFile(manifest, detail::kSimulationFile)) {
+        auto sim = io::readTetMesh((root / std::string(detail::kSimulationFile)).string(), meshLimits);
+        if (!sim)
+            return fail(sim.error().code, std::string(detail::kSimulationFile) + ": " + sim.error().detail);
+        SimulationMesh simulation;
+        simulation.tets = std::move(*sim);
+        HS_TRY(detail::joinEmbedding(scene.surface.mesh, arrays, simulation.surfaceEmbedding, detail::kSimEmbedTetLabel,
+                                     detail::kSimEmbedWeightsArray));
+        if (simulation.surfaceEmbedding.empty())
+            return fail(ErrorCode::InvalidInput, std::string(detail::kSurfaceVtpFile) + ": has no '" +
+                                                     detail::kSimEmbedTetLabel + "' binding to " +
+                                                     std::string(detail::kSimulationFile));
+        scene.simulation = std::move(simulation);
+    }
     if (scene.surface.embedding.empty()) // a package written before the surface was bound to the tets
         scene.surface.embedding = embedPoints(scene.tets, scene.surface.mesh.points);
     if (const auto normals = arrays.find("normals"); normals != arrays.end()) {

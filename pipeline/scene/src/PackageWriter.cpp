@@ -122,14 +122,21 @@ Result<std::vector<PendingFile>> planFiles(const Scene& scene, const PackageWrit
                          io::WriteOptions vtp;
                          vtp.textureCoordinates = scene.surface.uvs.empty() ? nullptr : &scene.surface.uvs;
                          vtp.normals = scene.surface.normals.empty() ? nullptr : &scene.surface.normals;
-                         if (scene.surface.embedding.empty())
+                         if (scene.surface.embedding.empty() && !scene.simulation)
                              return io::writeSurface(scene.surface.mesh, p.string(), vtp);
                          SurfaceMesh mesh = scene.surface.mesh;
                          io::PointArrays arrays;
-                         detail::splitEmbedding(scene.surface.embedding, mesh, arrays);
+                         if (!scene.surface.embedding.empty())
+                             detail::splitEmbedding(scene.surface.embedding, mesh, arrays);
+                         if (scene.simulation)
+                             detail::splitEmbedding(scene.simulation->surfaceEmbedding, mesh, arrays,
+                                                    detail::kSimEmbedTetLabel, detail::kSimEmbedWeightsArray);
                          vtp.pointArrays = &arrays;
                          return io::writeSurface(mesh, p.string(), vtp);
                      }});
+    if (scene.simulation)
+        files.push_back({std::string(detail::kSimulationFile),
+                         [&scene](const fs::path& p) { return io::writeTetMesh(scene.simulation->tets, p.string()); }});
     if (options.gmsh)
         files.push_back({std::string(detail::kGmshFile),
                          [&scene](const fs::path& p) { return io::writeTetMesh(scene.tets, p.string()); }});

@@ -113,23 +113,23 @@ Status checkSurface(const VisualSurface& surface) {
     return {};
 }
 
-/// Every surface point bound to an existing tet, with weights that sum to 1, stay within the allowed extrapolation
-/// and give the point back (1e-6 of the scene's size).
-Status checkEmbedding(const Scene& scene) {
-    const auto& embedding = scene.surface.embedding;
+/// Every surface point bound to an existing tet of `tets`, with weights that sum to 1, stay within the allowed
+/// extrapolation and give the point back (1e-6 of the scene's size). `what` names the embedding in messages.
+Status checkEmbedding(const std::vector<TetEmbedding>& embedding, const SurfaceMesh& surface, const TetMesh& tetMesh,
+                      const std::string& what) {
     if (embedding.empty())
         return {};
-    const auto& points = scene.surface.mesh.points;
+    const auto& points = surface.points;
     if (embedding.size() != points.size())
-        return fail(ErrorCode::InvalidInput, "the visual surface has " + std::to_string(embedding.size()) +
-                                                 " embedded points for " + std::to_string(points.size()) +
-                                                 " points (one per point expected)");
-    const Bounds box = bounds(scene.surface.mesh);
+        return fail(ErrorCode::InvalidInput, what + ": " + std::to_string(embedding.size()) + " embedded points for " +
+                                                 std::to_string(points.size()) +
+                                                 " points of the visual surface (one per point expected)");
+    const Bounds box = bounds(surface);
     const double tolerance = 1e-6 * std::max(1.0, norm(box.max - box.min));
-    const auto tets = static_cast<std::int64_t>(scene.tets.tetCount());
+    const auto tets = static_cast<std::int64_t>(tetMesh.tetCount());
     for (std::size_t i = 0; i < embedding.size(); ++i) {
         const TetEmbedding& e = embedding[i];
-        const std::string where = "surface point " + std::to_string(i) + ": ";
+        const std::string where = what + ": surface point " + std::to_string(i) + ": ";
         if (e.tet < 0 || e.tet >= tets)
             return fail(ErrorCode::InvalidInput, where + "embedded in tet " + std::to_string(e.tet) + ", allowed 0.." +
                                                      std::to_string(tets - 1));
@@ -145,12 +145,61 @@ Status checkEmbedding(const Scene& scene) {
         if (std::abs(sum - 1.0) > 1e-6)
             return fail(ErrorCode::InvalidInput,
                         where + "barycentric weights sum to " + std::to_string(sum) + ", not 1");
-        if (distance(embeddedPoint(scene.tets, e), points[i]) > tolerance)
+        const double off = distance(embeddedPoint(tetMesh, e), points[i]);
+        if (off > tolerance)
             return fail(ErrorCode::InvalidInput, where + "its embedding in tet " + std::to_string(e.tet) + " lies " +
-                                                     std::to_string(distance(embeddedPoint(scene.tets, e), points[i])) +
-                                                     " mm away from it");
+                                                     std::to_string(off) + " mm away from it");
     }
     return {};
+}
+
+/// The simulation mesh: a valid tet mesh whose regions the scene names, its material array pointing at the material
+/// of each tet's region, 0/1 support and cavity arrays, and the visual surface bound to it.
+Status checkSimulation(const Scene& scene) {
+    if (!scene.simulation)
+        return {};
+    const SimulationMesh& sim = *scene.simulation;
+    const std::string what = "simulation mesh";
+    if (auto valid = validate(sim.tets); !valid)
+        return fail(valid.error().code, what + ": " + valid.error().detail);
+    if (sim.tets.tetCount() == 0)
+        return fail(ErrorCode::InvalidInput, what + ": has no tets");
+    std::map<std::int32_t, std::int32_t> materialOfRegion;
+    for (const auto& m : scene.materials)
+        materialOfRegion[m.regionId] = m.id;
+    const auto materials = sim.tets.tetLabels.find(kMaterialLabel);
+    const auto support = sim.tets.tetLabels.find(kSupportTetLabel);
+    const auto cavity = sim.tets.pointLabels.find(kCavityPointLabel);
+    if (materials == sim.tets.tetLabels.end() || support == sim.tets.tetLabels.end() ||
+        cavity == sim.tets.pointLabels.end())
+        return fail(ErrorCode::InvalidInput, what + ": needs the tet arrays '" + std::string(kMaterialLabel) +
+                                                 "' and '" + kSupportTetLabel + "' and the point array '" +
+                                                 kCavityPointLabel + "'");
+    for (std::size_t t = 0; t < sim.tets.tetCount(); ++t) {
+        const auto it = materialOfRegion.find(sim.tets.regionOf(t));
+        if (it == materialOfRegion.end())
+            return fail(ErrorCode::InvalidInput, what + ": tet " + std::to_string(t) + " lies in region " +
+                                                     std::to_string(sim.tets.regionOf(t)) +
+                                                     ", which the scene does not name");
+        if (materials->second[t] != it->second)
+            return fail(ErrorCode::InvalidInput, what + ": tet " + std::to_string(t) + " has material " +
+                                                     std::to_string(materials->second[t]) + ", its region's is " +
+                                                     std::to_string(it->second));
+        if (support->second[t] != 0 && support->second[t] != 1)
+            return fail(ErrorCode::InvalidInput, what + ": '" + std::string(kSupportTetLabel) + "' of tet " +
+                                                     std::to_string(t) + " is " + std::to_string(support->second[t]) +
+                                                     ", allowed 0 or 1");
+    }
+    for (std::size_t i = 0; i < cavity->second.size(); ++i)
+        if (cavity->second[i] != 0 && cavity->second[i] != 1)
+            return fail(ErrorCode::InvalidInput, what + ": '" + std::string(kCavityPointLabel) + "' of point " +
+                                                     std::to_string(i) + " is " + std::to_string(cavity->second[i]) +
+                                                     ", allowed 0 or 1");
+    if (sim.surfaceEmbedding.size() != scene.surface.mesh.vertexCount())
+        return fail(ErrorCode::InvalidInput, what + ": binds " + std::to_string(sim.surfaceEmbedding.size()) +
+                                                 " points of the visual surface's " +
+                                                 std::to_string(scene.surface.mesh.vertexCount()));
+    return checkEmbedding(sim.surfaceEmbedding, scene.surface.mesh, sim.tets, what);
 }
 
 Status checkMaterials(const Scene& scene) {
@@ -293,8 +342,9 @@ Status checkScene(const Scene& scene) {
     if (scene.tets.tetCount() == 0)
         return fail(ErrorCode::InvalidInput, "the tet mesh has no tetrahedra");
     HS_TRY(checkSurface(scene.surface));
-    HS_TRY(checkEmbedding(scene));
+    HS_TRY(checkEmbedding(scene.surface.embedding, scene.surface.mesh, scene.tets, "the visual surface"));
     HS_TRY(checkMaterials(scene));
+    HS_TRY(checkSimulation(scene));
     HS_TRY(checkLabels(scene));
     const auto issues = checkCase(scene.caseSpec);
     if (!issues.empty())

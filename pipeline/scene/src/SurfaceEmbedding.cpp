@@ -4,8 +4,9 @@
 
 namespace hs::scene::detail {
 
-void splitEmbedding(const std::vector<TetEmbedding>& embedding, SurfaceMesh& mesh, io::PointArrays& arrays) {
-    auto& tets = mesh.vertexLabels[kEmbedTetLabel];
+void splitEmbedding(const std::vector<TetEmbedding>& embedding, SurfaceMesh& mesh, io::PointArrays& arrays,
+                    const char* tetLabel, const char* weightsArray) {
+    auto& tets = mesh.vertexLabels[tetLabel];
     tets.clear();
     io::PointArray weights;
     weights.components = 4;
@@ -14,23 +15,23 @@ void splitEmbedding(const std::vector<TetEmbedding>& embedding, SurfaceMesh& mes
         tets.push_back(e.tet);
         weights.values.insert(weights.values.end(), e.weights.begin(), e.weights.end());
     }
-    arrays[kEmbedWeightsArray] = std::move(weights);
+    arrays[weightsArray] = std::move(weights);
 }
 
-Status joinEmbedding(SurfaceMesh& mesh, const io::PointArrays& arrays, std::vector<TetEmbedding>& embedding) {
+Status joinEmbedding(SurfaceMesh& mesh, const io::PointArrays& arrays, std::vector<TetEmbedding>& embedding,
+                     const char* tetLabel, const char* weightsArray) {
     embedding.clear();
-    const auto label = mesh.vertexLabels.find(kEmbedTetLabel);
-    const auto weights = arrays.find(kEmbedWeightsArray);
+    const auto label = mesh.vertexLabels.find(tetLabel);
+    const auto weights = arrays.find(weightsArray);
     const bool hasLabel = label != mesh.vertexLabels.end(), hasWeights = weights != arrays.end();
     if (!hasLabel && !hasWeights)
         return {};
     if (hasLabel != hasWeights)
-        return fail(ErrorCode::InvalidInput, std::string("surface.vtp: has '") +
-                                                 (hasLabel ? kEmbedTetLabel : kEmbedWeightsArray) + "' without '" +
-                                                 (hasLabel ? kEmbedWeightsArray : kEmbedTetLabel) +
+        return fail(ErrorCode::InvalidInput, std::string("surface.vtp: has '") + (hasLabel ? tetLabel : weightsArray) +
+                                                 "' without '" + (hasLabel ? weightsArray : tetLabel) +
                                                  "': the embedding needs both");
     if (weights->second.components != 4)
-        return fail(ErrorCode::InvalidInput, std::string("surface.vtp: '") + kEmbedWeightsArray + "' has " +
+        return fail(ErrorCode::InvalidInput, std::string("surface.vtp: '") + weightsArray + "' has " +
                                                  std::to_string(weights->second.components) +
                                                  " components, expected 4");
     const auto& tets = label->second;

@@ -98,6 +98,22 @@ struct VisualSurface {
     ImageU8 roughness; ///< 1 channel, linear perceptual roughness 0..255
 };
 
+/// The simulation mesh: a coarser tetrahedral mesh of the same body, sized for a real-time solver, with the visual
+/// surface bound to it (so a simulator deforms what it shows). Written by hs::generate (generate/Simulation.h);
+/// docs/scene-format.md, "simulation.vtu".
+struct SimulationMesh {
+    /// mm; regions = SceneRegion ids; tet arrays kMaterialLabel (index into Scene::materials) and kSupportTetLabel;
+    /// point array kCavityPointLabel.
+    TetMesh tets;
+    /// One per point of Scene::surface.mesh: where it is bound in `tets` (weights within kMaxEmbeddingExtrapolation).
+    std::vector<TetEmbedding> surfaceEmbedding;
+};
+/// Tet array of the simulation mesh: 1 where the body is held (the tets of kSupportLabel's rule), else 0.
+inline constexpr const char* kSupportTetLabel = "support";
+/// Point array of the simulation mesh: 1 on its boundary where it faces the cavity, the canal or the ostia (the
+/// surfaces the scope sees and the distension fluid presses on), else 0.
+inline constexpr const char* kCavityPointLabel = "cavity";
+
 /// A pathology as the final scene measures it: its region of the tets against the scene's boundary
 /// (docs/scene-format.md, "Where the clinical descriptors are measured").
 struct PathologyDescriptor {
@@ -150,7 +166,8 @@ struct MeshQuality {
 struct Scene {
     TetMesh tets; ///< mm; regions = SceneRegion ids; tetLabels["material"] = material ids
     VisualSurface surface;
-    std::vector<SceneRegion> regions; ///< ascending id
+    std::optional<SimulationMesh> simulation; ///< unset in packages of schema version 1
+    std::vector<SceneRegion> regions;         ///< ascending id
     std::vector<SceneMaterial> materials;
     std::vector<SceneLabel> labels;
     ClinicalDescriptors clinical;

@@ -22,8 +22,11 @@ namespace hs::scene {
 
 /// Value of the manifest's "format" member.
 constexpr std::string_view kPackageFormat = "hysteroscene-scene";
-/// The package schema version this build writes and reads. Readers refuse other versions (Unsupported).
-constexpr int kPackageSchemaVersion = 1;
+/// The package schema version this build writes. Version 2 added the simulation mesh (simulation.vtu and its binding
+/// of the visual surface); readers read versions kOldestPackageSchemaVersion..kPackageSchemaVersion and refuse others
+/// (Unsupported).
+constexpr int kPackageSchemaVersion = 2;
+constexpr int kOldestPackageSchemaVersion = 1;
 /// The manifest's file name inside the package; it is the only file the manifest does not list.
 constexpr std::string_view kManifestName = "manifest.json";
 /// Name markers of the writer's temporary folders (".NAME.hs-tmp-PID-N") and of a replaced package awaiting

@@ -134,6 +134,7 @@ public:
     Health health() const;
 
 private:
+    friend Script explorationScript(const World& world, double durationS);
     World();
     struct Impl;
     std::unique_ptr<Impl> impl_;

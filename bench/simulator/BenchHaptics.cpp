@@ -1,0 +1,205 @@
+// bench_haptics: how steady the 1 kHz haptics loop runs while a physics thread loads the machine.
+//
+// The physics is a parameter (Physics below): until the World is wired in, a stand-in publishes a ~5000-triangle
+// sphere every 5 ms after burning ~4 ms of CPU, and consumes the device samples as the World will. A World-backed
+// Physics pops ticksPerStep() samples, steps the world and publishes world.hapticFrame().
+#include "hs/haptics/Clock.h"
+#include "hs/haptics/HapticsLoop.h"
+#include "hs/haptics/ScriptedDevice.h"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <string>
+#include <thread>
+
+namespace {
+
+using namespace hs;
+using namespace hs::haptics;
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// Runs on its own thread until `stop`; consumes the loop's samples and publishes frames. Returns frames published.
+using Physics = std::function<std::uint64_t(HapticsLoop& loop, const std::atomic<bool>& stop)>;
+
+sim::ScopeFrame pivotFrame() {
+    sim::ScopeFrame f;
+    f.axis = {0.0, 0.0, 1.0};
+    f.anterior = {0.0, 1.0, 0.0};
+    f.left = {-1.0, 0.0, 0.0};
+    return f;
+}
+
+/// A cavity-like sphere (radius 25 mm, centre 45 mm beyond the pivot), triangles facing inwards: 2 * 50 * 49 = 4900.
+struct Sphere {
+    std::shared_ptr<const std::vector<Triangle>> triangles;
+    std::vector<Vec3> unit; ///< directions from the centre
+};
+
+Sphere makeSphere(int rings = 50, int segments = 50) {
+    Sphere s;
+    auto triangles = std::make_shared<std::vector<Triangle>>();
+    s.unit.push_back({0.0, 0.0, -1.0});
+    for (int r = 1; r < rings; ++r) {
+        const double theta = kPi * r / rings;
+        for (int k = 0; k < segments; ++k) {
+            const double phi = 2.0 * kPi * k / segments;
+            s.unit.push_back({std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), -std::cos(theta)});
+        }
+    }
+    s.unit.push_back({0.0, 0.0, 1.0});
+    const auto at = [&](int ring, int k) {
+        return static_cast<std::int32_t>(1 + (ring - 1) * segments + k % segments);
+    };
+    const auto top = static_cast<std::int32_t>(s.unit.size() - 1);
+    // Wound clockwise seen from outside: the normals point into the sphere, the free side.
+    for (int k = 0; k < segments; ++k) {
+        triangles->push_back({0, at(1, k), at(1, k + 1)});
+        for (int r = 1; r + 1 < rings; ++r) {
+            triangles->push_back({at(r, k), at(r + 1, k), at(r, k + 1)});
+            triangles->push_back({at(r + 1, k), at(r + 1, k + 1), at(r, k + 1)});
+        }
+        triangles->push_back({at(rings - 1, k), top, at(rings - 1, k + 1)});
+    }
+    // Every normal must point at the centre: a wrongly wound face would let the proxy through.
+    for (const Triangle& t : *triangles) {
+        const Vec3 a = s.unit[static_cast<std::size_t>(t[0])], b = s.unit[static_cast<std::size_t>(t[1])],
+                   c = s.unit[static_cast<std::size_t>(t[2])];
+        if (dot(cross(b - a, c - a), (a + b + c) * (-1.0 / 3.0)) <= 0.0) {
+            std::fprintf(stderr, "bench_haptics: sphere triangle wound outwards\n");
+            std::exit(3);
+        }
+    }
+    s.triangles = std::move(triangles);
+    return s;
+}
+
+/// The stand-in physics: every 5 ms, ~4 ms of CPU, then a new frame (the sphere breathing by +-0.5 mm).
+std::uint64_t fakePhysics(HapticsLoop& loop, const std::atomic<bool>& stop) {
+    const Sphere sphere = makeSphere();
+    const Vec3 centre{0.0, 0.0, 45.0};
+    std::uint64_t step = 0;
+    std::int64_t next = monotonicNs();
+    volatile double sink = 0.0;
+    while (!stop.load()) {
+        sim::DeviceSample sample;
+        while (loop.popSample(sample)) {
+        }
+        const std::int64_t burnUntil = monotonicNs() + 4000000;
+        double x = 1.0;
+        while (monotonicNs() < burnUntil)
+            for (int i = 0; i < 1000; ++i)
+                x = std::sqrt(x + 1.0);
+        sink = sink + x;
+        auto frame = std::make_shared<sim::HapticFrame>();
+        frame->step = step;
+        frame->timeS = static_cast<double>(step) * 0.005;
+        frame->pivot = pivotFrame();
+        frame->triangles = sphere.triangles;
+        const double radius = 25.0 + 0.5 * std::sin(frame->timeS * 2.0 * kPi);
+        frame->pointsMm.reserve(sphere.unit.size());
+        for (const Vec3& u : sphere.unit)
+            frame->pointsMm.push_back(centre + u * radius);
+        loop.publish(std::move(frame));
+        ++step;
+        next += 5000000;
+        const timespec ts{static_cast<time_t>(next / 1000000000), static_cast<long>(next % 1000000000)};
+        clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr);
+    }
+    return step;
+}
+
+/// In along the axis, into the far wall 10 mm deep, sweeping pitch and yaw along it, and back: 4 s, repeated.
+sim::Script pushScript() {
+    sim::Script script;
+    const auto key = [&](double t, double insertion, double pitch, double yaw) {
+        sim::KeyFrame k;
+        k.timeS = t;
+        k.sample.insertionMm = insertion;
+        k.sample.pitchDeg = pitch;
+        k.sample.yawDeg = yaw;
+        k.sample.inflow = 1.0;
+        script.keyframes.push_back(k);
+    };
+    key(0.0, 30.0, 0.0, 0.0);
+    key(1.0, 78.0, 0.0, 0.0);
+    key(2.0, 78.0, 12.0, -8.0);
+    key(3.0, 80.0, -10.0, 10.0);
+    key(4.0, 30.0, 0.0, 0.0);
+    return script;
+}
+
+struct BenchConfig {
+    double seconds = 10.0;
+    DeviceLimits limits{5.0, 300.0};
+};
+
+int runBench(const BenchConfig& config, const Physics& physics) {
+    ScriptedDeviceOptions deviceOptions;
+    deviceOptions.limits = config.limits;
+    deviceOptions.loop = true;
+    deviceOptions.maxRecorded = 0;
+    ScriptedDevice device(pushScript(), deviceOptions);
+    if (!device.open().ok())
+        return 1;
+    HapticsLoop loop(device);
+    if (Status started = loop.start(); !started) {
+        std::fprintf(stderr, "bench_haptics: %s\n", started.error().detail.c_str());
+        return 1;
+    }
+    std::atomic<bool> stop{false};
+    std::uint64_t frames = 0;
+    std::thread physicsThread([&] { frames = physics(loop, stop); });
+    std::this_thread::sleep_for(std::chrono::duration<double>(config.seconds));
+    loop.stop();
+    stop = true;
+    physicsThread.join();
+
+    const HapticsStats s = loop.stats();
+    std::printf("bench_haptics: %.1f s, scripted device (push into the wall, 4 s cycle), physics thread: %s\n",
+                config.seconds, "stand-in (4900-triangle sphere, a frame every 5 ms after ~4 ms of CPU)");
+    std::printf("%-34s %s\n", "scheduling", s.realtime ? "SCHED_FIFO" : "SCHED_OTHER (no real-time privilege)");
+    std::printf("%-34s %llu\n", "ticks", static_cast<unsigned long long>(s.ticks));
+    std::printf("%-34s %.0f / %.0f / %.0f us\n", "tick period p50 / p99 / max", s.periodUs.quantile(0.5),
+                s.periodUs.quantile(0.99), s.periodUs.max());
+    std::printf("%-34s %.0f / %.0f us\n", "jitter |period - 1 ms| p99 / max", s.jitterUs.quantile(0.99),
+                s.jitterUs.max());
+    std::printf("%-34s %.0f / %.0f us\n", "wake-up lateness p99 / max", s.latenessUs.quantile(0.99),
+                s.latenessUs.max());
+    std::printf("%-34s %.0f / %.0f / %.0f us\n", "work per tick p50 / p99 / max", s.workUs.quantile(0.5),
+                s.workUs.quantile(0.99), s.workUs.max());
+    std::printf("%-34s %llu (%.3f %%)\n", "ticks missed", static_cast<unsigned long long>(s.missedTicks),
+                100.0 * static_cast<double>(s.missedTicks) / static_cast<double>(std::max<std::uint64_t>(s.ticks, 1)));
+    std::printf("%-34s %llu (frame %llu, device %llu)\n", "watchdog ticks",
+                static_cast<unsigned long long>(s.watchdogTicks), static_cast<unsigned long long>(s.frameStaleTicks),
+                static_cast<unsigned long long>(s.deviceStaleTicks));
+    std::printf("%-34s %.3f / %.3f N\n", "max force / limit", s.maxForceN, config.limits.maxForceN);
+    std::printf("%-34s %.1f / %.1f N*mm\n", "max torque / limit", s.maxTorqueNmm, config.limits.maxTorqueNmm);
+    std::printf("%-34s %llu\n", "frames published", static_cast<unsigned long long>(frames));
+    std::printf("%-34s %llu\n", "samples dropped (queue full)", static_cast<unsigned long long>(s.samplesDropped));
+    return s.maxLoadFraction <= 1.0 ? 0 : 2;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    BenchConfig config;
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--seconds") == 0 && i + 1 < argc) {
+            config.seconds = std::atof(argv[++i]);
+        } else {
+            std::fprintf(stderr, "usage: bench_haptics [--seconds S]\n");
+            return 1;
+        }
+    }
+    if (!(config.seconds > 0.0 && config.seconds <= 3600.0)) {
+        std::fprintf(stderr, "bench_haptics: --seconds must be in (0, 3600]\n");
+        return 1;
+    }
+    return runBench(config, fakePhysics);
+}

@@ -1,0 +1,61 @@
+#include "hs/generate/Simulation.h"
+
+#include "hs/core/TetEmbedding.h"
+#include "hs/generate/Assembly.h"
+#include "hs/meshing/BaselineMeshers.h"
+
+#include <map>
+#include <string>
+
+namespace hs::generate {
+
+Result<scene::SimulationMesh> simulationMesh(const scene::CaseSpec& spec, const merge::MergeResult& merged,
+                                             const std::vector<scene::SceneMaterial>& materials, double cervixLengthMm,
+                                             const SurfaceMesh& visual, std::optional<int> threads,
+                                             Progress& progress) {
+    meshing::MeshParams params = meshParamsFor(spec, threads);
+    params.targetEdgeLength = 0.0;
+    params.targetVertices = kSimulationVertices;
+    auto meshed = meshing::meshWith(meshMethodFor(spec), merged.body, params, progress);
+    if (!meshed)
+        return fail(meshed.error().code, "simulation mesh: " + meshed.error().detail);
+    auto tissue = tissueStage(spec, merged, *meshed, tissueLayerParamsFor(spec));
+    if (!tissue)
+        return fail(tissue.error().code, "simulation mesh: " + tissue.error().detail);
+
+    scene::SimulationMesh sim;
+    sim.tets = std::move(tissue->tets);
+    std::map<std::int32_t, std::int32_t> materialOfRegion;
+    for (const auto& m : materials)
+        materialOfRegion[m.regionId] = m.id;
+    auto& materialIds = sim.tets.tetLabels[scene::kMaterialLabel];
+    materialIds.resize(sim.tets.tetCount());
+    for (std::size_t t = 0; t < sim.tets.tetCount(); ++t) {
+        const auto it = materialOfRegion.find(sim.tets.regionOf(t));
+        if (it == materialOfRegion.end())
+            return fail(ErrorCode::Failed, "simulation mesh: tet " + std::to_string(t) + " lies in region " +
+                                               std::to_string(sim.tets.regionOf(t)) + ", which the scene has not");
+        materialIds[t] = it->second;
+    }
+    auto& support = sim.tets.tetLabels[scene::kSupportTetLabel];
+    support.assign(sim.tets.tetCount(), 0);
+    for (const std::int32_t t : supportLabel(sim.tets, cervixLengthMm).indices)
+        support[static_cast<std::size_t>(t)] = 1;
+    auto& cavity = sim.tets.pointLabels[scene::kCavityPointLabel];
+    cavity.assign(sim.tets.vertexCount(), 0);
+    const auto sourceLabel = tissue->boundary.vertexLabels.find("sourcePoint");
+    if (sourceLabel == tissue->boundary.vertexLabels.end())
+        return fail(ErrorCode::Failed, "simulation mesh: its boundary does not name its points in the tets");
+    const auto& source = sourceLabel->second;
+    const auto seen = scopeSeenFaces(tissue->boundary);
+    for (std::size_t f = 0; f < tissue->boundary.faceCount(); ++f) {
+        if (seen[f] == 0)
+            continue;
+        for (const std::int32_t v : tissue->boundary.triangles[f])
+            cavity[static_cast<std::size_t>(source[static_cast<std::size_t>(v)])] = 1;
+    }
+    sim.surfaceEmbedding = embedPoints(sim.tets, visual.points, threads.value_or(spec.meshing.threads));
+    return sim;
+}
+
+} // namespace hs::generate

@@ -1,0 +1,50 @@
+#pragma once
+// A bounding-volume hierarchy over the triangles of a deforming surface: built once for its topology, refitted to
+// new point positions every step (the topology may change later, e.g. by cutting: then it is rebuilt).
+
+#include "hs/core/SurfaceMesh.h"
+#include "hs/core/Vec3.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace hs::sim::detail {
+
+class TriangleBvh {
+public:
+    /// Builds the tree over `triangles` with the positions `points` (median splits; deterministic).
+    void build(const std::vector<Triangle>& triangles, const std::vector<Vec3>& points);
+    /// Recomputes every box for new positions of the same points.
+    void refit(const std::vector<Vec3>& points);
+    /// Appends to `out` the triangles whose box comes within `radius` of `centre`.
+    void near(const Vec3& centre, double radius, std::vector<std::int32_t>& out) const;
+    /// The first triangle a ray from `origin` along the unit `direction` hits within `maxT` (positions `points`, those
+    /// of the last refit): its index (-1: none); `t` is set to the distance, `u`, `v` to the barycentric coordinates
+    /// of its points 1 and 2.
+    std::int32_t raycast(const std::vector<Vec3>& points, const Vec3& origin, const Vec3& direction, double maxT,
+                         double& t, double& u, double& v) const;
+    bool empty() const { return nodes_.empty(); }
+
+private:
+    struct Node {
+        Vec3 lo, hi;
+        std::int32_t left = -1, right = -1; ///< children; -1 for a leaf
+        std::int32_t first = 0, count = 0;  ///< a leaf's range in order_
+    };
+    std::int32_t buildNode(std::int32_t first, std::int32_t count, const std::vector<Vec3>& centres);
+    void refitNode(std::int32_t node, const std::vector<Vec3>& points);
+    const std::vector<Triangle>* triangles_ = nullptr;
+    std::vector<Triangle> own_;
+    std::vector<std::int32_t> order_;
+    std::vector<Node> nodes_;
+};
+
+/// Closest point of triangle (a, b, c) to p, with its barycentric coordinates (Ericson, Real-Time Collision
+/// Detection, 5.1.5).
+Vec3 closestOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, double& wa, double& wb, double& wc);
+
+/// Ray-triangle intersection (Moller-Trumbore): t along the ray and the barycentric u (of b) and v (of c).
+bool rayTriangle(const Vec3& o, const Vec3& d, const Vec3& a, const Vec3& b, const Vec3& c, double& t, double& u,
+                 double& v);
+
+} // namespace hs::sim::detail

@@ -1,0 +1,49 @@
+#pragma once
+// A scene package for the simulator's tests: the default case with a lighter visual mesh and maps (the simulation
+// mesh is the same size as the default package's), generated once per test binary.
+
+#include "TestSupport.h"
+#include "hs/generate/Generate.h"
+#include "hs/scene/ScenePackage.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+
+namespace hs::test {
+
+class SimPackage {
+public:
+    /// The package's folder (generated on first use; a test fails if generation fails).
+    static const std::string& folder() {
+        static SimPackage package;
+        return package.m_folder;
+    }
+
+private:
+    SimPackage() : m_dir(std::make_unique<TempDir>("hs-sim-package")) {
+        auto spec = scene::loadCase(HS_DEFAULT_CASE_FILE);
+        if (!spec) {
+            ADD_FAILURE() << spec.error().detail;
+            return;
+        }
+        spec->meshing.targetVertices = 8000;
+        spec->texture.sizePx = 256;
+        generate::GenerateParams params;
+        params.caseFile = HS_DEFAULT_CASE_FILE;
+        auto generated = generate::generateScene(*spec, params);
+        if (!generated) {
+            ADD_FAILURE() << generated.error().detail;
+            return;
+        }
+        m_folder = m_dir->file("default");
+        auto written = scene::writeScenePackage(*generated->scene, m_folder);
+        if (!written)
+            ADD_FAILURE() << written.error().detail;
+    }
+    std::unique_ptr<TempDir> m_dir;
+    std::string m_folder;
+};
+
+} // namespace hs::test
