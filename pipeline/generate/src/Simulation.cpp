@@ -33,7 +33,7 @@ Result<scene::SimulationMesh> simulationMesh(const scene::CaseSpec& spec, const 
     for (std::size_t t = 0; t < sim.tets.tetCount(); ++t) {
         const auto it = materialOfRegion.find(sim.tets.regionOf(t));
         if (it == materialOfRegion.end())
-            return fail(ErrorCode::Failed, "simulation mesh: tet " + std::to_string(t) + " lies in region " +
+            return fail(ErrorCode::Internal, "simulation mesh: tet " + std::to_string(t) + " lies in region " +
                                                std::to_string(sim.tets.regionOf(t)) + ", which the scene has not");
         materialIds[t] = it->second;
     }
@@ -45,7 +45,7 @@ Result<scene::SimulationMesh> simulationMesh(const scene::CaseSpec& spec, const 
     cavity.assign(sim.tets.vertexCount(), 0);
     const auto sourceLabel = tissue->boundary.vertexLabels.find("sourcePoint");
     if (sourceLabel == tissue->boundary.vertexLabels.end())
-        return fail(ErrorCode::Failed, "simulation mesh: its boundary does not name its points in the tets");
+        return fail(ErrorCode::Internal, "simulation mesh: its boundary does not name its points in the tets");
     const auto& source = sourceLabel->second;
     const auto seen = scopeSeenFaces(tissue->boundary);
     for (std::size_t f = 0; f < tissue->boundary.faceCount(); ++f) {
