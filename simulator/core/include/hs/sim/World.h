@@ -72,6 +72,7 @@ struct WorldState {
     ContactState contact;
     double horizonErrorDeg = 0.0;
     bool inCavity = false; ///< the tip is beyond the internal os
+    double cavityOpeningMl = 0.0; ///< mL, the cavity's volume in the deformed tissue beyond its volume at rest
 };
 
 /// The state other threads draw: the simulation mesh's points and the world's state, copied at the end of a step.
