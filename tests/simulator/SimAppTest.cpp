@@ -59,6 +59,8 @@ constexpr const char* kScript = R"({"format": "hysteroscene-script", "version": 
   {"t": 2.0, "insertionMm": 40, "rollDeg": 60, "pitchDeg": 5},
   {"t": 2.5, "insertionMm": 35, "yawDeg": -8, "buttons": 1},
   {"t": 3.0, "insertionMm": 30, "rollDeg": -30, "buttons": 0}]})";
+constexpr const char* kShortScript = R"({"format": "hysteroscene-script", "version": 1, "keyframes": [
+  {"t": 0.0, "insertionMm": -5, "inflow": 1}, {"t": 0.1, "insertionMm": -4}]})";
 
 } // namespace
 
@@ -153,7 +155,7 @@ TEST_F(SimHeadless, ScriptedRunAndItsReplayReportTheSameBytes) {
 
 TEST_F(SimHeadless, RefusesATrialOfAnotherScene) {
     hs::test::TempDir tmp;
-    std::ofstream(tmp.file("script.json")) << kScript;
+    std::ofstream(tmp.file("script.json")) << kShortScript;
     ASSERT_EQ(sim(shellQuote(s_package) + " --headless --device scripted:" + shellQuote(tmp.file("script.json")) +
                   " --record " + shellQuote(tmp.file("t.trial")) + " --report " + shellQuote(tmp.file("a.json")))
                   .exitCode,

@@ -84,6 +84,8 @@ void PhysicsLoop::run() {
             m_finished = true;
             break;
         }
+        if (m_afterStep)
+            m_afterStep(m_world);
         Frame frame{m_world.snapshot(), simrender::progressOf(m_world.options().exercise, m_world.metrics())};
         {
             const std::lock_guard lock(m_mutex);

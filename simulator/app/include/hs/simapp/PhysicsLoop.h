@@ -57,6 +57,10 @@ public:
     PhysicsLoop(const PhysicsLoop&) = delete;
     PhysicsLoop& operator=(const PhysicsLoop&) = delete;
 
+    /// Called on the physics thread after every step (set before start()): where the haptics loop gets the newest
+    /// HapticFrame (`haptics.publish(world.hapticFrame())`).
+    void setAfterStep(std::function<void(const sim::World&)> afterStep) { m_afterStep = std::move(afterStep); }
+
     void start();
     /// Stops and joins the thread; the world is then the caller's again.
     void stop();
@@ -86,6 +90,7 @@ private:
     std::optional<Frame> m_frame;
     std::optional<Error> m_error;
     std::vector<sim::DeviceSample> m_samples;
+    std::function<void(const sim::World&)> m_afterStep;
 };
 
 } // namespace hs::simapp
