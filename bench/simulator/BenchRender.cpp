@@ -3,6 +3,8 @@
 // recomputed, as the simulator does with the world's points) and renders; the table has one row per view size and
 // shading. The simulator aims at 30 fps or more for the default scene.
 //   bench_render SCENE_DIR [--frames N] [--sizes 640x480,960x720] [--png OUT.png]
+//   bench_render SCENE_DIR --still INSERTION_MM ROLL_DEG PITCH_DEG YAW_DEG --png OUT.png [--sizes WxH] [--albedo]
+// --still draws one picture of the surface at rest, clear saline, the 30 degree optic at that device pose (the docs).
 #include "hs/scene/ScenePackage.h"
 #include "hs/scene/ScopePassage.h"
 #include "hs/sim/Scope.h"
@@ -112,6 +114,40 @@ Row measure(const hs::scene::Scene& scene, const hs::sim::ScopeFrame& frame, Siz
             1000.0 * cpuSeconds / frames};
 }
 
+int still(const hs::scene::Scene& scene, const hs::sim::ScopeFrame& frame, Size size, const double pose[4], bool maps,
+          const std::string& png) {
+    vtkNew<vtkRenderWindow> window;
+    window->SetOffScreenRendering(1);
+    window->SetMultiSamples(0);
+    window->SetSize(size.width, size.height);
+    vtkNew<vtkRenderer> renderer;
+    window->AddRenderer(renderer);
+    hs::simrender::EndoscopicLook look;
+    look.materialMaps = maps;
+    hs::simrender::EndoscopicView view(renderer, look);
+    view.setSurface(scene.surface);
+    hs::sim::ScopeConfig config;
+    hs::sim::DeviceSample s;
+    s.insertionMm = pose[0];
+    s.rollDeg = pose[1];
+    s.pitchDeg = pose[2];
+    s.yawDeg = pose[3];
+    hs::sim::WorldState state;
+    state.scope = hs::sim::scopePose(frame, config, s);
+    state.fluid.pressureKpa = 10.0;
+    view.setPose(hs::simrender::cameraPose(state.scope, config));
+    view.setHud(hs::simrender::hudText(state, {}, {}));
+    window->Render();
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(window);
+    grab->ReadFrontBufferOff();
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetFileName(png.c_str());
+    writer->SetInputConnection(grab->GetOutputPort());
+    writer->Write();
+    return 0;
+}
+
 std::vector<Size> parseSizes(const std::string& text) {
     std::vector<Size> sizes;
     std::stringstream list(text);
@@ -134,6 +170,8 @@ int main(int argc, char** argv) {
     int frames = 120;
     std::vector<Size> sizes{{640, 480}, {960, 720}};
     std::string png;
+    bool stillPicture = false, albedoOnly = false;
+    double pose[4] = {0, 0, 0, 0};
     for (int i = 2; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--frames" && i + 1 < argc)
@@ -142,6 +180,13 @@ int main(int argc, char** argv) {
             sizes = parseSizes(argv[++i]);
         else if (a == "--png" && i + 1 < argc)
             png = argv[++i];
+        else if (a == "--albedo")
+            albedoOnly = true;
+        else if (a == "--still" && i + 4 < argc) {
+            stillPicture = true;
+            for (double& p : pose)
+                p = std::atof(argv[++i]);
+        }
     }
     auto scene = hs::scene::readScenePackage(argv[1]);
     if (!scene) {
@@ -158,6 +203,8 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "bench_render: %s\n", frame.error().message().c_str());
         return 3;
     }
+    if (stillPicture)
+        return still(*scene, *frame, sizes.front(), pose, !albedoOnly, png);
     std::printf("endoscopic view of %s: %zu points, %zu triangles, %d frames per row\n", argv[1],
                 scene->surface.mesh.points.size(), scene->surface.mesh.triangles.size(), frames);
     std::printf("%-10s %-8s %-9s %8s %10s %12s %14s\n", "size", "shading", "surface", "fps", "ms/frame", "ms deform",

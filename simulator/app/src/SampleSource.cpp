@@ -68,10 +68,14 @@ bool KeyboardSource::next(std::uint64_t firstTick, std::size_t count, sim::Devic
     const double speeds[5] = {kInsertionMmPerS, kPivotDegPerS, kPivotDegPerS, kRollDegPerS, kRollDegPerS};
     double* fields[5] = {&m_sample.insertionMm, &m_sample.pitchDeg, &m_sample.yawDeg, &m_sample.rollDeg,
                          &m_sample.cameraRollDeg};
+    // Mouse and wheel increments are spent at most this fast, so the scope never jumps between two ticks.
+    const double nudgeRates[5] = {kMaxNudgeMmPerS, kMaxNudgeDegPerS, kMaxNudgeDegPerS, kMaxNudgeDegPerS,
+                                  kMaxNudgeDegPerS};
     for (std::size_t i = 0; i < count; ++i) {
         for (int a = 0; a < 5; ++a) {
-            *fields[a] += m_held[a] * speeds[a] * dt + m_nudge[a];
-            m_nudge[a] = 0.0;
+            const double step = std::clamp(m_nudge[a], -nudgeRates[a] * dt, nudgeRates[a] * dt);
+            *fields[a] += m_held[a] * speeds[a] * dt + step;
+            m_nudge[a] -= step;
         }
         // Rolls wrap around; insertion and pivot angles stop at the device's range.
         for (double* roll : {&m_sample.rollDeg, &m_sample.cameraRollDeg}) {

@@ -344,6 +344,9 @@ void EndoscopicView::Impl::setNormals(const std::vector<Vec3>& normals) {
 
 void EndoscopicView::setPose(const CameraPose& pose) {
     Impl& d = *m_impl;
+    const auto finite = [](const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+    if (!finite(pose.eyeMm) || !finite(pose.direction) || !finite(pose.up) || !std::isfinite(pose.fieldOfViewDeg))
+        return; // keeps the last pose rather than a camera VTK cannot draw from
     vtkCamera* camera = d.renderer->GetActiveCamera();
     const Vec3 focal = pose.eyeMm + pose.direction * 10.0;
     camera->SetPosition(pose.eyeMm.x, pose.eyeMm.y, pose.eyeMm.z);
@@ -358,8 +361,8 @@ void EndoscopicView::setPose(const CameraPose& pose) {
 
 void EndoscopicView::setFluid(double turbidity, double redOut) {
     Impl& d = *m_impl;
-    d.turbidity = std::clamp(turbidity, 0.0, 1.0);
-    d.redOut = std::clamp(redOut, 0.0, 1.0);
+    d.turbidity = std::isfinite(turbidity) ? std::clamp(turbidity, 0.0, 1.0) : 1.0;
+    d.redOut = std::isfinite(redOut) ? std::clamp(redOut, 0.0, 1.0) : 1.0;
     d.updateUniforms();
     // Where no surface is drawn the medium itself is seen.
     double background[3];

@@ -57,6 +57,9 @@ public:
     static constexpr double kInsertionMmPerS = 15.0;
     static constexpr double kPivotDegPerS = 20.0;
     static constexpr double kRollDegPerS = 90.0;
+    /// The fastest a nudge is spent: mm/s of insertion, degrees/s of the angles.
+    static constexpr double kMaxNudgeMmPerS = 100.0;
+    static constexpr double kMaxNudgeDegPerS = 360.0;
     /// How long a mark press is held, ticks.
     static constexpr std::uint32_t kMarkTicks = 100;
 
@@ -66,7 +69,7 @@ public:
 
     /// -1, 0 or +1: the motion of `axis` while a key is held.
     void setHeld(Axis axis, int direction);
-    /// Adds `amount` (mm or degrees) to `axis` at the next tick (mouse drags, wheel steps).
+    /// Adds `amount` (mm or degrees) to `axis` over the next ticks, at most kMaxNudge*PerS (mouse drags, wheel).
     void nudge(Axis axis, double amount);
     void toggleInflow();
     void toggleOutflow();
