@@ -53,6 +53,7 @@ Row measure(const hs::scene::Scene& scene, const hs::sim::ScopeFrame& frame, Siz
     look.materialMaps = maps;
     hs::simrender::EndoscopicView view(renderer, look);
     view.setSurface(scene.surface);
+    view.setOuterSurfaceVisible(false); // the scope is inside the body
     hs::sim::ScopeConfig config;
     const std::vector<hs::Vec3>& rest = scene.surface.mesh.points;
     std::vector<hs::Vec3> points(rest.size());

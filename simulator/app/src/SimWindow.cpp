@@ -241,6 +241,7 @@ void SimWindow::onRenderTick() {
         m_world->visualPoints(frame->snapshot.simulationPointsMm, m_visualPoints);
         m_endoscope->setPoints(m_visualPoints);
         m_endoscope->setPose(simrender::cameraPose(state.scope, m_options.world.scope));
+        m_endoscope->setOuterSurfaceVisible(state.sample.insertionMm < 0.0 || state.contact.perforated);
         m_endoscope->setFluid(state.fluid.turbidity, state.fluid.redOut);
         m_endoscope->setHud(simrender::hudText(state, m_options.world.fluid, frame->progress));
         m_drawn = state;

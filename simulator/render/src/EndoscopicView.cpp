@@ -2,6 +2,8 @@
 // and red-out in the surface's fragment shader, and the optic's mask and the heads-up text as 2-D overlays.
 #include "hs/simrender/EndoscopicView.h"
 
+#include "hs/clinical/Tissue.h"
+
 #include <vtkActor.h>
 #include <vtkActor2D.h>
 #include <vtkCallbackCommand.h>
@@ -136,6 +138,9 @@ struct EndoscopicView::Impl {
     vtkSmartPointer<vtkPolyData> maskGeometry;
     vtkSmartPointer<vtkTextActor> hud;
     vtkSmartPointer<vtkTextActor> warning;
+    vtkSmartPointer<vtkCellArray> allFaces;
+    vtkSmartPointer<vtkCellArray> innerFaces; ///< all but the serosa's; null without a tissue label
+    bool outerVisible = true;
     vtkSmartPointer<vtkCallbackCommand> startObserver;
     unsigned long startTag = 0;
     std::vector<Triangle> triangles;
@@ -228,14 +233,22 @@ void EndoscopicView::setSurface(const scene::VisualSurface& v) {
     points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
     for (std::size_t i = 0; i < mesh.points.size(); ++i)
         points->SetPoint(static_cast<vtkIdType>(i), mesh.points[i].x, mesh.points[i].y, mesh.points[i].z);
-    auto cells = vtkSmartPointer<vtkCellArray>::New();
-    for (const Triangle& t : mesh.triangles) {
+    d.allFaces = vtkSmartPointer<vtkCellArray>::New();
+    d.innerFaces = nullptr;
+    const auto tissue = mesh.faceLabels.find(clinical::kSurfaceTissueLabel);
+    const bool labelled = tissue != mesh.faceLabels.end() && tissue->second.size() == mesh.triangles.size();
+    if (labelled)
+        d.innerFaces = vtkSmartPointer<vtkCellArray>::New();
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+        const Triangle& t = mesh.triangles[f];
         const vtkIdType ids[3] = {t[0], t[1], t[2]};
-        cells->InsertNextCell(3, ids);
+        d.allFaces->InsertNextCell(3, ids);
+        if (labelled && tissue->second[f] != clinical::labelValue(clinical::SurfaceTissue::Serosa))
+            d.innerFaces->InsertNextCell(3, ids);
     }
     d.surface = vtkSmartPointer<vtkPolyData>::New();
     d.surface->SetPoints(points);
-    d.surface->SetPolys(cells);
+    d.surface->SetPolys(d.allFaces);
     d.triangles = mesh.triangles;
     faceNormals(d.triangles, mesh.points, d.restNormals);
     d.storedNormals = v.normals.size() == mesh.points.size() ? v.normals : d.restNormals;
@@ -278,8 +291,19 @@ void EndoscopicView::setSurface(const scene::VisualSurface& v) {
         property->SetSpecular(0.25);
         property->SetSpecularPower(30.0);
     }
+    if (!d.outerVisible && d.innerFaces)
+        d.surface->SetPolys(d.innerFaces);
     d.mapper->SetInputData(d.surface);
     d.actor->VisibilityOn();
+}
+
+void EndoscopicView::setOuterSurfaceVisible(bool visible) {
+    Impl& d = *m_impl;
+    if (visible == d.outerVisible)
+        return;
+    d.outerVisible = visible;
+    if (d.surface && d.innerFaces)
+        d.surface->SetPolys(visible ? d.allFaces : d.innerFaces);
 }
 
 void EndoscopicView::clear() {

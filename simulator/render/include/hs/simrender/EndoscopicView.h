@@ -78,6 +78,10 @@ public:
     /// Ignored when the count differs.
     void setPoints(const std::vector<Vec3>& pointsMm);
     void setPose(const CameraPose& pose);
+    /// Whether the organ's outer surface (faces whose "tissue" label is serosa) is drawn. From inside the body it is
+    /// hidden behind the wall, and leaving it out halves the triangles to draw; the simulator shows it while the tip
+    /// is outside the external os or has perforated the wall. Default: drawn.
+    void setOuterSurfaceVisible(bool visible);
     /// Turbidity 0 (clear) .. 1 (opaque); red-out 0 .. 1 (FluidState).
     void setFluid(double turbidity, double redOut);
     void setHud(const HudText& text);
