@@ -3,8 +3,9 @@
 // recomputed, as the simulator does with the world's points) and renders; the table has one row per view size and
 // shading. The simulator aims at 30 fps or more for the default scene.
 //   bench_render SCENE_DIR [--frames N] [--sizes 640x480,960x720] [--png OUT.png]
-//   bench_render SCENE_DIR --still INSERTION_MM ROLL_DEG PITCH_DEG YAW_DEG --png OUT.png [--sizes WxH] [--albedo]
-// --still draws one picture of the surface at rest, clear saline, the 30 degree optic at that device pose (the docs).
+//   bench_render SCENE_DIR --still FRACTION ROLL_DEG --png OUT.png [--sizes WxH] [--albedo]
+// --still draws one picture of the surface at rest in clear saline: the 30 degree optic's tip FRACTION of the way
+// from the internal os to the fundus, aimed about the pivot, rolled by ROLL_DEG (the docs' picture).
 #include "hs/scene/ScenePackage.h"
 #include "hs/scene/ScopePassage.h"
 #include "hs/sim/Scope.h"
@@ -41,8 +42,8 @@ struct Row {
     double cpuMsPerFrame = 0.0; ///< process CPU time (every thread, llvmpipe's too): the cost without other load
 };
 
-Row measure(const hs::scene::Scene& scene, const hs::sim::ScopeFrame& frame, Size size, bool maps, bool deform,
-            int frames, const std::string& png) {
+Row measure(const hs::scene::Scene& scene, const hs::scene::ScopeLandmarks& landmarks, const hs::sim::ScopeFrame& frame,
+            Size size, bool maps, bool deform, int frames, const std::string& png) {
     vtkNew<vtkRenderWindow> window;
     window->SetOffScreenRendering(1);
     window->SetMultiSamples(0);
@@ -64,14 +65,12 @@ Row measure(const hs::scene::Scene& scene, const hs::sim::ScopeFrame& frame, Siz
     hs::simrender::ExerciseProgress progress;
     progress.targets = 7;
 
-    // A sweep in the cavity: in from the internal os, turning round, the surface breathing by up to 0.5 mm.
+    // A sweep in the cavity: the tip from a third to two thirds of the way from the internal os to the fundus
+    // (aimed about the pivot as a script aims it), the optic turning round, the surface breathing by up to 0.5 mm.
     const auto poseAt = [&](int i) {
-        hs::sim::DeviceSample s;
         const double t = double(i) / std::max(frames - 1, 1);
-        s.insertionMm = 35.0 + 10.0 * t;
-        s.rollDeg = -90.0 + 180.0 * t;
-        s.pitchDeg = 5.0 * std::sin(6.0 * t);
-        return hs::sim::scopePose(frame, config, s);
+        const hs::Vec3 tip = landmarks.internalOsMm + (landmarks.fundusMm - landmarks.internalOsMm) * (0.33 + 0.33 * t);
+        return hs::sim::scopePose(frame, config, hs::sim::sampleAiming(frame, tip, -90.0 + 180.0 * t));
     };
     double deformS = 0.0;
     const auto render = [&](int i) {
@@ -115,8 +114,8 @@ Row measure(const hs::scene::Scene& scene, const hs::sim::ScopeFrame& frame, Siz
             1000.0 * cpuSeconds / frames};
 }
 
-int still(const hs::scene::Scene& scene, const hs::sim::ScopeFrame& frame, Size size, const double pose[4], bool maps,
-          const std::string& png) {
+int still(const hs::scene::Scene& scene, const hs::scene::ScopeLandmarks& landmarks, const hs::sim::ScopeFrame& frame,
+          Size size, const double pose[2], bool maps, const std::string& png) {
     vtkNew<vtkRenderWindow> window;
     window->SetOffScreenRendering(1);
     window->SetMultiSamples(0);
@@ -128,13 +127,9 @@ int still(const hs::scene::Scene& scene, const hs::sim::ScopeFrame& frame, Size 
     hs::simrender::EndoscopicView view(renderer, look);
     view.setSurface(scene.surface);
     hs::sim::ScopeConfig config;
-    hs::sim::DeviceSample s;
-    s.insertionMm = pose[0];
-    s.rollDeg = pose[1];
-    s.pitchDeg = pose[2];
-    s.yawDeg = pose[3];
+    const hs::Vec3 tip = landmarks.internalOsMm + (landmarks.fundusMm - landmarks.internalOsMm) * pose[0];
     hs::sim::WorldState state;
-    state.scope = hs::sim::scopePose(frame, config, s);
+    state.scope = hs::sim::scopePose(frame, config, hs::sim::sampleAiming(frame, tip, pose[1]));
     state.fluid.pressureKpa = 10.0;
     view.setPose(hs::simrender::cameraPose(state.scope, config));
     view.setHud(hs::simrender::hudText(state, {}, {}));
@@ -172,7 +167,7 @@ int main(int argc, char** argv) {
     std::vector<Size> sizes{{640, 480}, {960, 720}};
     std::string png;
     bool stillPicture = false, albedoOnly = false;
-    double pose[4] = {0, 0, 0, 0};
+    double pose[2] = {0, 0};
     for (int i = 2; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--frames" && i + 1 < argc)
@@ -183,7 +178,7 @@ int main(int argc, char** argv) {
             png = argv[++i];
         else if (a == "--albedo")
             albedoOnly = true;
-        else if (a == "--still" && i + 4 < argc) {
+        else if (a == "--still" && i + 2 < argc) {
             stillPicture = true;
             for (double& p : pose)
                 p = std::atof(argv[++i]);
@@ -205,7 +200,7 @@ int main(int argc, char** argv) {
         return 3;
     }
     if (stillPicture)
-        return still(*scene, *frame, sizes.front(), pose, !albedoOnly, png);
+        return still(*scene, *landmarks, *frame, sizes.front(), pose, !albedoOnly, png);
     std::printf("endoscopic view of %s: %zu points, %zu triangles, %d frames per row\n", argv[1],
                 scene->surface.mesh.points.size(), scene->surface.mesh.triangles.size(), frames);
     std::printf("%-10s %-8s %-9s %8s %10s %12s %14s\n", "size", "shading", "surface", "fps", "ms/frame", "ms deform",
@@ -214,7 +209,7 @@ int main(int argc, char** argv) {
     for (const Size& size : sizes)
         for (const auto& kind : kinds) {
             const bool first = &size == &sizes.front() && &kind == &kinds[0];
-            const Row r = measure(*scene, *frame, size, kind.maps, kind.deform, frames, first ? png : "");
+            const Row r = measure(*scene, *landmarks, *frame, size, kind.maps, kind.deform, frames, first ? png : "");
             char label[32];
             std::snprintf(label, sizeof label, "%dx%d", size.width, size.height);
             std::printf("%-10s %-8s %-9s %8.1f %10.2f %12.2f %14.2f\n", label, kind.maps ? "maps" : "albedo",

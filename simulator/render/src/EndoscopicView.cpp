@@ -237,13 +237,18 @@ void EndoscopicView::setSurface(const scene::VisualSurface& v) {
     d.innerFaces = nullptr;
     const auto tissue = mesh.faceLabels.find(clinical::kSurfaceTissueLabel);
     const bool labelled = tissue != mesh.faceLabels.end() && tissue->second.size() == mesh.triangles.size();
+    // A pathology's faces stay whatever their tissue: a submucous myoma shows in the cavity.
+    const auto pathology = mesh.faceLabels.find("pathology");
+    const bool pathologies = pathology != mesh.faceLabels.end() && pathology->second.size() == mesh.triangles.size();
     if (labelled)
         d.innerFaces = vtkSmartPointer<vtkCellArray>::New();
     for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
         const Triangle& t = mesh.triangles[f];
         const vtkIdType ids[3] = {t[0], t[1], t[2]};
         d.allFaces->InsertNextCell(3, ids);
-        if (labelled && tissue->second[f] != clinical::labelValue(clinical::SurfaceTissue::Serosa))
+        const bool outer = labelled && tissue->second[f] == clinical::labelValue(clinical::SurfaceTissue::Serosa) &&
+                           !(pathologies && pathology->second[f] != 0);
+        if (labelled && !outer)
             d.innerFaces->InsertNextCell(3, ids);
     }
     d.surface = vtkSmartPointer<vtkPolyData>::New();
