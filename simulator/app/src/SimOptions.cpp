@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -112,8 +113,12 @@ ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
     app.add_option("--exercise", exercise, "the exercise")
         ->check(CLI::IsMember({"exploration", "diagnosis"}))
         ->capture_default_str();
-    app.add_option("--pump-mmhg", pumpMmHg, "the pump's set pressure, mmHg (20-150)")->capture_default_str();
-    app.add_option("--map-mmhg", mapMmHg, "the patient's mean arterial pressure, mmHg (50-150)")->capture_default_str();
+    // Without the options the settings stay the world's defaults in kPa (no round trip through mmHg).
+    CLI::Option* pumpOption = app.add_option("--pump-mmhg", pumpMmHg, "the pump's set pressure, mmHg (20-150)")
+                                  ->default_str(std::to_string(std::lround(pumpMmHg)));
+    CLI::Option* mapOption =
+        app.add_option("--map-mmhg", mapMmHg, "the patient's mean arterial pressure, mmHg (50-150)")
+            ->default_str(std::to_string(std::lround(mapMmHg)));
     app.add_option("--seed", o.world.seed, "the world's seed")->capture_default_str();
     app.add_option("--device", device, "keyboard, hid, hid:VID:PID or scripted:FILE")->capture_default_str();
     app.add_option("--record", o.recordPath, "write the trial (every device sample) to this file");
@@ -146,8 +151,10 @@ ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
     o.world.scope.opticDeg = optic;
     o.world.scope.diameterMm = diameter;
     fromString(exercise, o.world.exercise);
-    o.world.fluid.pumpPressureKpa = units::kpaFromMmHg(pumpMmHg);
-    o.world.fluid.meanArterialPressureKpa = units::kpaFromMmHg(mapMmHg);
+    if (pumpOption->count() > 0)
+        o.world.fluid.pumpPressureKpa = units::kpaFromMmHg(pumpMmHg);
+    if (mapOption->count() > 0)
+        o.world.fluid.meanArterialPressureKpa = units::kpaFromMmHg(mapMmHg);
     if (const std::string problem = combinationProblem(o); !problem.empty()) {
         parsed.exitCode = cli::kExitUsage;
         parsed.message = problem + "\nRun with --help for more information.\n";
