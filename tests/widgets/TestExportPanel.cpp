@@ -1,5 +1,6 @@
 // Qt Test for the Export panel: Export without a folder says so; with one, every stage runs, the package is written
-// and verified (and zipped), the result names its files and the scope's passage; variants go to variant-NNN.
+// and verified (and zipped), the result names its files and the scope's passage, and "Open in Simulator" starts
+// the simulator on it; variants go to variant-NNN.
 #include "hs/scene/ScenePackage.h"
 #include "hs/widgets/document/CaseDocument.h"
 #include "hs/widgets/jobs/GenerationSession.h"
@@ -70,6 +71,24 @@ void TestExportPanel::writesAndValidatesThePackage() {
     QVERIFY2(text.contains("valid") && text.contains("scope"), qPrintable(text));
     QCOMPARE(panel.lastPackage(), folder);
     QVERIFY(session.isCurrent(hs::generate::Stage::Scene));
+
+    // "Open in Simulator" starts the simulator (here a stand-in script that notes its arguments) on the package.
+    auto* simulatorButton = panel.findChild<QPushButton*>("openInSimulatorButton");
+    QVERIFY(!simulatorButton->isEnabled());
+    const QString simulator = dir.filePath("hysteroscene-sim");
+    const QString arguments = dir.filePath("simulator-arguments.txt");
+    QFile script(simulator);
+    QVERIFY(script.open(QIODevice::WriteOnly));
+    script.write(QStringLiteral("#!/bin/sh\necho \"$@\" > '%1.tmp' && mv '%1.tmp' '%1'\n").arg(arguments).toUtf8());
+    script.close();
+    QVERIFY(script.setPermissions(script.permissions() | QFileDevice::ExeOwner));
+    panel.setSimulatorPath(simulator);
+    QVERIFY(simulatorButton->isEnabled());
+    simulatorButton->click();
+    QTRY_VERIFY(QFile::exists(arguments));
+    QFile written(arguments);
+    QVERIFY(written.open(QIODevice::ReadOnly));
+    QCOMPARE(QString::fromUtf8(written.readAll()).trimmed(), folder);
 }
 
 void TestExportPanel::writesOneFolderPerVariant() {

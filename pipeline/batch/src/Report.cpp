@@ -4,6 +4,7 @@
 #include "hs/batch/Curriculum.h"
 #include "hs/batch/JobStatus.h"
 #include "hs/io/AtomicFile.h"
+#include "hs/io/HtmlPage.h"
 #include "hs/io/MeshIO.h"
 #include "hs/scene/JsonText.h"
 #include "hs/texture/ImageFiles.h"
@@ -24,6 +25,7 @@ namespace hs::batch {
 namespace {
 
 namespace fs = std::filesystem;
+using io::htmlEscape;
 using nlohmann::ordered_json;
 
 constexpr int kHistogramBins = 10;
@@ -47,9 +49,7 @@ std::string templateOf(const std::string& job) {
 }
 
 std::string number(double value, int decimals) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.*f", decimals, value);
-    return text;
+    return io::fixedText(value, decimals);
 }
 
 std::string stateOf(const Row& r) {
@@ -158,52 +158,6 @@ std::string csvText(const std::vector<Row>& rows) {
     return text;
 }
 
-std::string htmlEscape(const std::string& text) {
-    std::string out;
-    for (char ch : text) {
-        switch (ch) {
-        case '&':
-            out += "&amp;";
-            break;
-        case '<':
-            out += "&lt;";
-            break;
-        case '>':
-            out += "&gt;";
-            break;
-        case '"':
-            out += "&quot;";
-            break;
-        default:
-            out += ch;
-        }
-    }
-    return out;
-}
-
-std::string base64(const std::string& bytes) {
-    static const char* kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    std::size_t i = 0;
-    for (; i + 2 < bytes.size(); i += 3) {
-        const auto n = (static_cast<unsigned>(static_cast<unsigned char>(bytes[i])) << 16) |
-                       (static_cast<unsigned>(static_cast<unsigned char>(bytes[i + 1])) << 8) |
-                       static_cast<unsigned>(static_cast<unsigned char>(bytes[i + 2]));
-        for (int shift : {18, 12, 6, 0})
-            out += kAlphabet[(n >> shift) & 63u];
-    }
-    if (i < bytes.size()) {
-        auto n = static_cast<unsigned>(static_cast<unsigned char>(bytes[i])) << 16;
-        if (i + 1 < bytes.size())
-            n |= static_cast<unsigned>(static_cast<unsigned char>(bytes[i + 1])) << 8;
-        out += kAlphabet[(n >> 18) & 63u];
-        out += kAlphabet[(n >> 12) & 63u];
-        out += i + 1 < bytes.size() ? kAlphabet[(n >> 6) & 63u] : '=';
-        out += '=';
-    }
-    return out;
-}
-
 // ---- Thumbnails: the organ's visual surface seen along its thinnest extent, pathologies drawn over it. ----
 
 /// Z-buffered, Lambert-shaded triangles of `mesh` (those with `pathology` label == `wantPathology`) into `image`.
@@ -294,7 +248,7 @@ Result<std::string> thumbnail(const std::string& packageFolder, const std::strin
     fs::remove(scratch, ec);
     if (!bytes)
         return bytes.failure();
-    return "data:image/png;base64," + base64(*bytes);
+    return "data:image/png;base64," + io::base64(*bytes);
 }
 
 // ---- Distributions: the drawn values of each sampled field against what the curriculum asked. ----
@@ -468,13 +422,18 @@ void pathologyCharts(const CaseTemplate& t, const std::vector<const Row*>& rows,
     }
 }
 
-ordered_json chartsJson(const std::vector<Chart>& charts) {
+/// Chart.js configurations: one bar chart per distribution.
+ordered_json chartConfigs(const std::vector<Chart>& charts) {
     auto list = ordered_json::array();
     for (const Chart& c : charts) {
         auto datasets = ordered_json::array();
         for (const auto& [label, data] : c.datasets)
-            datasets.push_back({{"label", label}, {"data", data}});
-        list.push_back({{"title", c.title}, {"labels", c.labels}, {"datasets", datasets}});
+            datasets.push_back({{"label", label},
+                                {"data", data},
+                                {"backgroundColor", io::chartColour(datasets.size(), datasets.empty() ? 0.85 : 0.6)}});
+        list.push_back({{"type", "bar"},
+                        {"data", {{"labels", c.labels}, {"datasets", datasets}}},
+                        {"options", io::chartOptions(c.title)}});
     }
     return list;
 }
@@ -492,7 +451,7 @@ std::string htmlText(const std::string& title, const std::vector<Row>& rows, con
         h += "<p>No plots: the chart library (Debian's libjs-chart.js) is not installed.</p>\n";
     h += "<div class=\"charts\">\n";
     for (std::size_t i = 0; i < charts.size(); ++i)
-        h += "<div class=\"chart\"><canvas id=\"chart-" + std::to_string(i) + "\"></canvas></div>\n";
+        h += io::chartCanvas(i);
     h += "</div>\n<h2>Cases</h2>\n<table>\n<tr><th>organ</th>";
     for (const std::string& c : columns())
         h += "<th>" + htmlEscape(c) + "</th>";
@@ -505,32 +464,7 @@ std::string htmlText(const std::string& title, const std::vector<Row>& rows, con
         h += "</tr>\n";
     }
     h += "</table>\n";
-    if (!chartLibrary.empty()) {
-        std::string library = chartLibrary;
-        for (std::size_t at = 0; (at = library.find("</script", at)) != std::string::npos; at += 2)
-            library.replace(at, 2, "<\\/");
-        std::string data = chartsJson(charts).dump(-1, ' ', true);
-        for (std::size_t at = 0; (at = data.find("</", at)) != std::string::npos; at += 2)
-            data.replace(at, 2, "<\\/");
-        h += "<script>\n" + library + "\n</script>\n<script>\nconst specs = " + data + ";\n" +
-             R"(const colours = ['rgba(54, 110, 170, 0.85)', 'rgba(150, 150, 150, 0.5)', 'rgba(190, 40, 70, 0.8)'];
-try {
-  specs.forEach((s, i) => {
-    new Chart(document.getElementById('chart-' + i), {
-      type: 'bar',
-      data: {labels: s.labels,
-             datasets: s.datasets.map((d, k) => Object.assign({backgroundColor: colours[k % colours.length]}, d))},
-      options: {animation: false, responsive: true, maintainAspectRatio: false,
-                plugins: {title: {display: true, text: s.title}}}
-    });
-  });
-  document.body.dataset.charts = String(specs.length);
-} catch (e) {
-  document.body.dataset.chartError = String(e);
-}
-</script>
-)";
-    }
+    h += io::chartScripts(chartLibrary, chartConfigs(charts));
     h += "</body></html>\n";
     return h;
 }
@@ -599,7 +533,7 @@ Result<ReportResult> writeBatchReport(const std::string& batchFolder, const Mani
         pathologyCharts(t, ofTemplate, charts);
     }
     std::string library;
-    if (auto text = io::readFile(params.chartLibrary, 16 * 1024 * 1024))
+    if (auto text = io::readChartLibrary(params.chartLibrary))
         library = *text;
     else
         result.warnings.push_back("no plots: " + text.error().message() + " (install libjs-chart.js)");

@@ -1,6 +1,7 @@
 #include "hs/widgets/view/HysteroscopicPreview.h"
 
 #include "hs/scene/ScopeView.h"
+#include "hs/simrender/EndoscopicView.h"
 #include "hs/widgets/view/VtkView.h"
 
 #include <QComboBox>
@@ -10,12 +11,6 @@
 #include <QLocale>
 #include <QSlider>
 #include <QVBoxLayout>
-
-#include <vtkActor.h>
-#include <vtkCamera.h>
-#include <vtkLight.h>
-#include <vtkProperty.h>
-#include <vtkRenderer.h>
 
 #include <cmath>
 
@@ -37,18 +32,10 @@ HysteroscopicPreview::HysteroscopicPreview(QWidget* parent) : QWidget(parent) {
     m_view = new VtkView(this);
     m_view->setObjectName("previewView");
     m_view->setMinimumSize(240, 240);
-    vtkRenderer* renderer = m_view->renderer();
-    renderer->SetBackground(0.0, 0.0, 0.0);
-    // The only light is the scope's, at its tip: a headlight that falls off with distance.
-    renderer->AutomaticLightCreationOff();
-    auto lamp = vtkSmartPointer<vtkLight>::New();
-    lamp->SetLightTypeToHeadlight();
-    lamp->PositionalOn();
-    lamp->SetConeAngle(kFieldOfViewDeg);
-    lamp->SetAttenuationValues(1.0, 0.04, 0.002); // half the light at about 14 mm
-    lamp->SetIntensity(1.4);
-    renderer->AddLight(lamp);
-    m_display = std::make_unique<MeshDisplay>(renderer);
+    // The simulator's view (the only light is the lamp at the scope's tip), without its heads-up text.
+    simrender::EndoscopicLook look;
+    look.hud = false;
+    m_endoscope = std::make_unique<simrender::EndoscopicView>(m_view->renderer(), look);
     layout->addWidget(m_view, 1);
 
     m_controls = new QWidget(this);
@@ -89,15 +76,12 @@ void HysteroscopicPreview::setScene(std::shared_ptr<const scene::Scene> scene) {
     m_scene = std::move(scene);
     m_landmarks.reset();
     if (!m_scene) {
-        m_display->clear();
+        m_endoscope->clear();
         m_statusLabel->setText(tr("Texture the case to see the cavity."));
         m_view->requestRender();
         return;
     }
-    const scene::VisualSurface& v = m_scene->surface;
-    m_display->showTexturedSurface(v.mesh, v.uvs, v.normals, v.albedo);
-    // Inside the organ the scope sees the surfaces' backs as well as their fronts.
-    m_display->actor()->GetProperty()->BackfaceCullingOff();
+    m_endoscope->setSurface(m_scene->surface);
     auto landmarks = scene::findScopeLandmarks(*m_scene);
     if (!landmarks) {
         m_statusLabel->setText(tr("This scene has no cervical canal or ostium labels: the scope cannot be placed."));
@@ -137,13 +121,7 @@ void HysteroscopicPreview::updateCamera() {
                                  double(m_rollSlider->value()));
     if (!pose)
         return;
-    vtkCamera* camera = m_view->renderer()->GetActiveCamera();
-    const Vec3 focal = pose->eyeMm + pose->direction * 10.0;
-    camera->SetPosition(pose->eyeMm.x, pose->eyeMm.y, pose->eyeMm.z);
-    camera->SetFocalPoint(focal.x, focal.y, focal.z);
-    camera->SetViewUp(pose->up.x, pose->up.y, pose->up.z);
-    camera->SetViewAngle(kFieldOfViewDeg);
-    camera->SetClippingRange(0.1, 200.0);
+    m_endoscope->setPose(simrender::cameraPose(*pose, kFieldOfViewDeg));
     const QLocale locale;
     m_statusLabel->setText(tr("Tip %1 mm beyond the external os, %2 optic, roll %3°")
                                .arg(locale.toString(insertion(), 'f', 1), m_opticCombo->currentText())
@@ -157,13 +135,7 @@ bool HysteroscopicPreview::lookAtRegion(std::int32_t regionId, double distanceMm
     auto pose = scene::viewOfRegion(*m_scene, *m_landmarks, regionId, distanceMm);
     if (!pose)
         return false;
-    vtkCamera* camera = m_view->renderer()->GetActiveCamera();
-    const Vec3 focal = pose->eyeMm + pose->direction * distanceMm;
-    camera->SetPosition(pose->eyeMm.x, pose->eyeMm.y, pose->eyeMm.z);
-    camera->SetFocalPoint(focal.x, focal.y, focal.z);
-    camera->SetViewUp(pose->up.x, pose->up.y, pose->up.z);
-    camera->SetViewAngle(kFieldOfViewDeg);
-    camera->SetClippingRange(0.1, 200.0);
+    m_endoscope->setPose(simrender::cameraPose(*pose, kFieldOfViewDeg));
     m_statusLabel->setText(tr("Looking at region %1 from %2 mm inside the cavity")
                                .arg(regionId)
                                .arg(QLocale().toString(distanceMm, 'f', 0)));

@@ -6,6 +6,7 @@
 
 #include "hs/batch/Manifest.h"
 #include "hs/core/Result.h"
+#include "hs/io/HtmlPage.h"
 
 #include <cstddef>
 #include <string>
@@ -15,7 +16,7 @@ namespace hs::batch {
 
 constexpr std::string_view kReportFolder = "report";
 /// Where Debian's libjs-chart.js puts the library.
-constexpr std::string_view kDefaultChartLibrary = "/usr/share/javascript/chart.js/chart.min.js";
+constexpr std::string_view kDefaultChartLibrary = io::kDefaultChartLibrary;
 
 struct ReportParams {
     std::string chartLibrary{kDefaultChartLibrary}; ///< Chart.js (UMD build) to inline; missing: no plots, a note

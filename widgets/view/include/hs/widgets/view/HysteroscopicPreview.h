@@ -2,12 +2,12 @@
 /// The hysteroscopic preview: the textured cavity as the trainee will see it, through a rigid scope whose tip stands
 /// at the external os (or further in) and looks up the canal through an oblique optic, lit by a lamp at the tip whose
 /// light falls off with distance. Insertion, optic and roll are set by the controls; the camera pose is
-/// scene::scopeView's, so the simulator's scope shows the same picture for the same pose. A review visits a
-/// pathology by lookAtRegion().
+/// scene::scopeView's. The picture is the simulator's endoscopic view (hs::simrender::EndoscopicView: the maps, the
+/// lamp, the clear fluid and the optic's circular field), so the simulator shows the same picture for the same pose.
+/// A review visits a pathology by lookAtRegion().
 
 #include "hs/scene/Scene.h"
 #include "hs/scene/ScopePassage.h"
-#include "hs/widgets/view/MeshDisplay.h"
 
 #include <QImage>
 #include <QWidget>
@@ -19,6 +19,10 @@ class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QSlider;
+
+namespace hs::simrender {
+class EndoscopicView;
+}
 
 namespace hs::widgets {
 
@@ -57,7 +61,7 @@ private:
     void updateCamera();
 
     VtkView* m_view = nullptr;
-    std::unique_ptr<MeshDisplay> m_display;
+    std::unique_ptr<simrender::EndoscopicView> m_endoscope;
     std::shared_ptr<const scene::Scene> m_scene;
     std::optional<scene::ScopeLandmarks> m_landmarks;
     QSlider* m_insertionSlider = nullptr;

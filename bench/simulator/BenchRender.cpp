@@ -1,0 +1,220 @@
+// bench_render: frames per second of the simulator's endoscopic view (hs::simrender) on a scene package, offscreen
+// (run under xvfb-run -a). Each frame moves the scope, deforms the visual surface (every point moved, normals
+// recomputed, as the simulator does with the world's points) and renders; the table has one row per view size and
+// shading. The simulator aims at 30 fps or more for the default scene.
+//   bench_render SCENE_DIR [--frames N] [--sizes 640x480,960x720] [--png OUT.png]
+//   bench_render SCENE_DIR --still FRACTION ROLL_DEG --png OUT.png [--sizes WxH] [--albedo]
+// --still draws one picture of the surface at rest in clear saline: the 30 degree optic's tip FRACTION of the way
+// from the internal os to the fundus, aimed about the pivot, rolled by ROLL_DEG (the docs' picture).
+#include "hs/scene/ScenePackage.h"
+#include "hs/scene/ScopePassage.h"
+#include "hs/sim/Scope.h"
+#include "hs/simrender/EndoscopicView.h"
+#include "hs/simrender/Hud.h"
+
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+struct Size {
+    int width = 0, height = 0;
+};
+
+struct Row {
+    Size size;
+    bool maps = true;
+    double fps = 0.0;
+    double msPerFrame = 0.0;
+    double msDeform = 0.0;
+    double cpuMsPerFrame = 0.0; ///< process CPU time (every thread, llvmpipe's too): the cost without other load
+};
+
+Row measure(const hs::scene::Scene& scene, const hs::scene::ScopeLandmarks& landmarks, const hs::sim::ScopeFrame& frame,
+            Size size, bool maps, bool deform, int frames, const std::string& png) {
+    vtkNew<vtkRenderWindow> window;
+    window->SetOffScreenRendering(1);
+    window->SetMultiSamples(0);
+    window->SetSize(size.width, size.height);
+    vtkNew<vtkRenderer> renderer;
+    window->AddRenderer(renderer);
+    hs::simrender::EndoscopicLook look;
+    look.materialMaps = maps;
+    hs::simrender::EndoscopicView view(renderer, look);
+    view.setSurface(scene.surface);
+    view.setOuterSurfaceVisible(false); // the scope is inside the body
+    hs::sim::ScopeConfig config;
+    const std::vector<hs::Vec3>& rest = scene.surface.mesh.points;
+    std::vector<hs::Vec3> points(rest.size());
+    hs::sim::WorldState state;
+    state.fluid.pressureKpa = 10.0;
+    state.fluid.inflowMlPerS = 3.0;
+    state.fluid.outflowMlPerS = 2.5;
+    hs::simrender::ExerciseProgress progress;
+    progress.targets = 7;
+
+    // A sweep in the cavity: the tip from a third to two thirds of the way from the internal os to the fundus
+    // (aimed about the pivot as a script aims it), the optic turning round, the surface breathing by up to 0.5 mm.
+    const auto poseAt = [&](int i) {
+        const double t = double(i) / std::max(frames - 1, 1);
+        const hs::Vec3 tip = landmarks.internalOsMm + (landmarks.fundusMm - landmarks.internalOsMm) * (0.33 + 0.33 * t);
+        return hs::sim::scopePose(frame, config, hs::sim::sampleAiming(frame, tip, -90.0 + 180.0 * t));
+    };
+    double deformS = 0.0;
+    const auto render = [&](int i) {
+        const auto start = std::chrono::steady_clock::now();
+        const double phase = 0.3 * i;
+        if (deform) {
+            for (std::size_t p = 0; p < rest.size(); ++p)
+                points[p] = rest[p] * (1.0 + 0.01 * std::sin(phase + 0.05 * rest[p].z));
+            view.setPoints(points);
+        }
+        state.timeS = i / 60.0;
+        state.scope = poseAt(i);
+        view.setPose(hs::simrender::cameraPose(state.scope, config));
+        view.setFluid(0.2 * (i % 5) / 4.0, 0.0);
+        view.setHud(hs::simrender::hudText(state, {}, progress));
+        deformS += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        window->Render();
+    };
+    render(0); // shaders compiled, textures uploaded
+    deformS = 0.0;
+    const auto start = std::chrono::steady_clock::now();
+    const std::clock_t cpuStart = std::clock();
+    for (int i = 0; i < frames; ++i)
+        render(i);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double cpuSeconds = double(std::clock() - cpuStart) / CLOCKS_PER_SEC;
+    if (!png.empty()) {
+        vtkNew<vtkWindowToImageFilter> grab;
+        grab->SetInput(window);
+        grab->ReadFrontBufferOff();
+        vtkNew<vtkPNGWriter> writer;
+        writer->SetFileName(png.c_str());
+        writer->SetInputConnection(grab->GetOutputPort());
+        writer->Write();
+    }
+    return {size,
+            maps,
+            frames / seconds,
+            1000.0 * seconds / frames,
+            1000.0 * deformS / frames,
+            1000.0 * cpuSeconds / frames};
+}
+
+int still(const hs::scene::Scene& scene, const hs::scene::ScopeLandmarks& landmarks, const hs::sim::ScopeFrame& frame,
+          Size size, const double pose[2], bool maps, const std::string& png) {
+    vtkNew<vtkRenderWindow> window;
+    window->SetOffScreenRendering(1);
+    window->SetMultiSamples(0);
+    window->SetSize(size.width, size.height);
+    vtkNew<vtkRenderer> renderer;
+    window->AddRenderer(renderer);
+    hs::simrender::EndoscopicLook look;
+    look.materialMaps = maps;
+    hs::simrender::EndoscopicView view(renderer, look);
+    view.setSurface(scene.surface);
+    hs::sim::ScopeConfig config;
+    const hs::Vec3 tip = landmarks.internalOsMm + (landmarks.fundusMm - landmarks.internalOsMm) * pose[0];
+    hs::sim::WorldState state;
+    state.scope = hs::sim::scopePose(frame, config, hs::sim::sampleAiming(frame, tip, pose[1]));
+    state.fluid.pressureKpa = 10.0;
+    view.setPose(hs::simrender::cameraPose(state.scope, config));
+    view.setHud(hs::simrender::hudText(state, {}, {}));
+    window->Render();
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(window);
+    grab->ReadFrontBufferOff();
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetFileName(png.c_str());
+    writer->SetInputConnection(grab->GetOutputPort());
+    writer->Write();
+    return 0;
+}
+
+std::vector<Size> parseSizes(const std::string& text) {
+    std::vector<Size> sizes;
+    std::stringstream list(text);
+    std::string item;
+    while (std::getline(list, item, ',')) {
+        Size s;
+        if (std::sscanf(item.c_str(), "%dx%d", &s.width, &s.height) == 2 && s.width > 0 && s.height > 0)
+            sizes.push_back(s);
+    }
+    return sizes;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: bench_render SCENE_DIR [--frames N] [--sizes 640x480,960x720] [--png OUT.png]\n");
+        return 2;
+    }
+    int frames = 120;
+    std::vector<Size> sizes{{640, 480}, {960, 720}};
+    std::string png;
+    bool stillPicture = false, albedoOnly = false;
+    double pose[2] = {0, 0};
+    for (int i = 2; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--frames" && i + 1 < argc)
+            frames = std::max(1, std::atoi(argv[++i]));
+        else if (a == "--sizes" && i + 1 < argc)
+            sizes = parseSizes(argv[++i]);
+        else if (a == "--png" && i + 1 < argc)
+            png = argv[++i];
+        else if (a == "--albedo")
+            albedoOnly = true;
+        else if (a == "--still" && i + 2 < argc) {
+            stillPicture = true;
+            for (double& p : pose)
+                p = std::atof(argv[++i]);
+        }
+    }
+    auto scene = hs::scene::readScenePackage(argv[1]);
+    if (!scene) {
+        std::fprintf(stderr, "bench_render: %s\n", scene.error().message().c_str());
+        return 3;
+    }
+    auto landmarks = hs::scene::findScopeLandmarks(*scene);
+    if (!landmarks) {
+        std::fprintf(stderr, "bench_render: %s\n", landmarks.error().message().c_str());
+        return 3;
+    }
+    auto frame = hs::sim::scopeFrame(*landmarks);
+    if (!frame) {
+        std::fprintf(stderr, "bench_render: %s\n", frame.error().message().c_str());
+        return 3;
+    }
+    if (stillPicture)
+        return still(*scene, *landmarks, *frame, sizes.front(), pose, !albedoOnly, png);
+    std::printf("endoscopic view of %s: %zu points, %zu triangles, %d frames per row\n", argv[1],
+                scene->surface.mesh.points.size(), scene->surface.mesh.triangles.size(), frames);
+    std::printf("%-10s %-8s %-9s %8s %10s %12s %14s\n", "size", "shading", "surface", "fps", "ms/frame", "ms deform",
+                "cpu ms/frame");
+    const struct { bool maps, deform; } kinds[] = {{true, true}, {false, true}, {true, false}};
+    for (const Size& size : sizes)
+        for (const auto& kind : kinds) {
+            const bool first = &size == &sizes.front() && &kind == &kinds[0];
+            const Row r = measure(*scene, *landmarks, *frame, size, kind.maps, kind.deform, frames, first ? png : "");
+            char label[32];
+            std::snprintf(label, sizeof label, "%dx%d", size.width, size.height);
+            std::printf("%-10s %-8s %-9s %8.1f %10.2f %12.2f %14.2f\n", label, kind.maps ? "maps" : "albedo",
+                        kind.deform ? "deformed" : "static", r.fps, r.msPerFrame, r.msDeform, r.cpuMsPerFrame);
+            std::fflush(stdout);
+        }
+    return 0;
+}

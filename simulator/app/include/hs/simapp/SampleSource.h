@@ -1,0 +1,91 @@
+#pragma once
+/// Where the physics gets its device samples: the one seam between input devices and the world. The physics thread
+/// asks a SampleSource for the ticksPerStep() samples of each step, in tick order. Sources: the keyboard and mouse
+/// (KeyboardSource), a script (ScriptSource), a recorded trial (TrialSource); the haptics module's 1 kHz loop plugs
+/// in as another source whose next() waits for the loop's samples and whose paced() is true (docs/simulator.md,
+/// "Running the simulator").
+
+#include "hs/sim/Device.h"
+#include "hs/sim/Script.h"
+#include "hs/sim/Trial.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <mutex>
+#include <string>
+
+namespace hs::simapp {
+
+class SampleSource {
+public:
+    virtual ~SampleSource() = default;
+    /// Writes `count` samples for ticks firstTick, firstTick + 1, ... into `out` (tick fields set). May block
+    /// until a device has produced them. False when the source has ended (nothing written).
+    virtual bool next(std::uint64_t firstTick, std::size_t count, sim::DeviceSample* out) = 0;
+    /// True when next() waits for a device running at its own rate (the physics thread then does not pace itself
+    /// by the clock).
+    virtual bool paced() const { return false; }
+};
+
+/// A script's samples; ends after its last key frame (the last step is filled with the last key frame's sample).
+class ScriptSource final : public SampleSource {
+public:
+    explicit ScriptSource(sim::Script script) : m_script(std::move(script)) {}
+    bool next(std::uint64_t firstTick, std::size_t count, sim::DeviceSample* out) override;
+
+private:
+    sim::Script m_script;
+};
+
+/// A recorded trial's samples; ends with them.
+class TrialSource final : public SampleSource {
+public:
+    explicit TrialSource(const sim::Trial& trial) : m_trial(trial) {}
+    bool next(std::uint64_t firstTick, std::size_t count, sim::DeviceSample* out) override;
+
+private:
+    const sim::Trial& m_trial;
+};
+
+/// The scope driven by keys and the mouse. The GUI thread says which motions are held and adds mouse and wheel
+/// increments; next() (on the physics thread) integrates them tick by tick, so the samples are what a device at
+/// 1 kHz would have reported. Never ends.
+class KeyboardSource final : public SampleSource {
+public:
+    enum class Axis { Insertion, Pitch, Yaw, Roll, CameraRoll };
+    /// Speeds while a key is held: insertion mm/s, the angles degrees/s.
+    static constexpr double kInsertionMmPerS = 15.0;
+    static constexpr double kPivotDegPerS = 20.0;
+    static constexpr double kRollDegPerS = 90.0;
+    /// The fastest a nudge is spent: mm/s of insertion, degrees/s of the angles.
+    static constexpr double kMaxNudgeMmPerS = 100.0;
+    static constexpr double kMaxNudgeDegPerS = 360.0;
+    /// How long a mark press is held, ticks.
+    static constexpr std::uint32_t kMarkTicks = 100;
+
+    explicit KeyboardSource(const sim::DeviceSample& start = startSample());
+    /// Outside the external os, the shaft on the canal's axis, inflow open, outflow half open.
+    static sim::DeviceSample startSample();
+
+    /// -1, 0 or +1: the motion of `axis` while a key is held.
+    void setHeld(Axis axis, int direction);
+    /// Adds `amount` (mm or degrees) to `axis` over the next ticks, at most kMaxNudge*PerS (mouse drags, wheel).
+    void nudge(Axis axis, double amount);
+    void toggleInflow();
+    void toggleOutflow();
+    /// Holds the mark button for kMarkTicks.
+    void mark();
+    /// The newest sample produced (for the GUI's status).
+    sim::DeviceSample current() const;
+
+    bool next(std::uint64_t firstTick, std::size_t count, sim::DeviceSample* out) override;
+
+private:
+    mutable std::mutex m_mutex;
+    sim::DeviceSample m_sample;
+    int m_held[5] = {0, 0, 0, 0, 0};
+    double m_nudge[5] = {0, 0, 0, 0, 0};
+    std::uint32_t m_markTicksLeft = 0;
+};
+
+} // namespace hs::simapp

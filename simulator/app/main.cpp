@@ -1,0 +1,40 @@
+// hysteroscene-sim: the preview simulator. Headless runs need no display; the window needs OpenGL 3.2.
+#include "hs/simapp/Headless.h"
+#include "hs/simapp/SimOptions.h"
+#include "hs/simapp/SimWindow.h"
+#include "hs/widgets/view/VtkView.h"
+
+#include "CliCommon.h"
+
+#include <QApplication>
+#include <QSurfaceFormat>
+
+#include <iostream>
+
+int main(int argc, char** argv) {
+    const hs::simapp::ParsedCommandLine parsed = hs::simapp::parseCommandLine(argc, argv);
+    if (!parsed.options) {
+        (parsed.exitCode == 0 ? std::cout : std::cerr) << parsed.message;
+        return parsed.exitCode;
+    }
+    const hs::simapp::SimOptions& options = *parsed.options;
+    if (options.headless)
+        return hs::simapp::runHeadless(options);
+    if (options.device.kind == hs::simapp::DeviceSpec::Kind::Hid) {
+        std::cerr << "hysteroscene-sim: unsupported: --device " << options.device.text()
+                  << ": this build has no haptic device support yet (use keyboard or scripted:FILE)\n";
+        return hs::cli::kExitInvalidInput;
+    }
+
+    // VTK needs an OpenGL 3.2 core context; Qt's windows share contexts, so the format is set for all of them.
+    QSurfaceFormat::setDefaultFormat(hs::widgets::VtkView::defaultFormat());
+    QApplication app(argc, argv);
+    QCoreApplication::setOrganizationName(QStringLiteral("hysteroscene"));
+    QCoreApplication::setApplicationName(QStringLiteral("hysteroscene-sim"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(HS_VERSION));
+    hs::simapp::SimWindow window(options);
+    window.show();
+    if (!options.scene.empty())
+        window.openPackage(QString::fromStdString(options.scene));
+    return QApplication::exec();
+}

@@ -1,0 +1,97 @@
+// The headless simulator: a script or a recorded trial through the world, as fast as it steps.
+#include "hs/simapp/Headless.h"
+
+#include "CliCommon.h"
+#include "hs/simapp/PhysicsLoop.h"
+
+#include <ctime>
+#include <iostream>
+
+namespace hs::simapp {
+
+std::string utcNow() {
+    const std::time_t now = std::time(nullptr);
+    std::tm utc{};
+    gmtime_r(&now, &utc);
+    char text[32];
+    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+    return text;
+}
+
+Result<ScriptedRun> runScripted(const SimOptions& options, const std::string& startedUtc) {
+    auto script = sim::readScript(options.device.scriptPath);
+    if (!script)
+        return script.failure();
+    auto world = sim::World::load(options.scene, options.world);
+    if (!world)
+        return world.failure();
+    ScriptedRun run;
+    run.trial.header = (*world)->trialHeader();
+    run.trial.header.device = options.device.text();
+    run.trial.header.startedUtc = startedUtc;
+    ScriptSource source(std::move(*script));
+    auto steps = runSteps(**world, source, &run.trial.samples);
+    if (!steps)
+        return steps.failure();
+    run.report = (*world)->report();
+    // The report carries the header the trial records, so the trial's replay reports the same bytes.
+    run.report.header = run.trial.header;
+    return run;
+}
+
+Result<sim::TrialReport> runReplay(const SimOptions& options, sim::Trial* trialOut) {
+    auto trial = sim::readTrial(options.replayPath);
+    if (!trial)
+        return trial.failure();
+    auto report = sim::replayTrial(options.scene, *trial);
+    if (!report) {
+        Error error = report.error();
+        if (error.detail.find(options.replayPath) == std::string::npos)
+            error.detail = options.replayPath + ": " + error.detail;
+        return fail(error.code, error.detail);
+    }
+    report->header = trial->header;
+    if (trialOut)
+        *trialOut = std::move(*trial);
+    return report;
+}
+
+namespace {
+
+int failWith(const Error& error) {
+    std::cerr << "hysteroscene-sim: " << error.message() << '\n';
+    return cli::exitCodeFor(error);
+}
+
+} // namespace
+
+int runHeadless(const SimOptions& options) {
+    sim::Trial trial;
+    sim::TrialReport report;
+    if (!options.replayPath.empty()) {
+        auto replayed = runReplay(options, &trial);
+        if (!replayed)
+            return failWith(replayed.error());
+        report = std::move(*replayed);
+    } else {
+        auto run = runScripted(options);
+        if (!run)
+            return failWith(run.error());
+        trial = std::move(run->trial);
+        report = std::move(run->report);
+    }
+    if (!options.recordPath.empty())
+        if (auto written = sim::writeTrial(trial, options.recordPath); !written)
+            return failWith(written.error());
+    if (options.reportPath.empty()) {
+        std::cout << sim::reportJson(report);
+        return cli::kExitOk;
+    }
+    if (auto written = sim::writeReport(report, options.reportPath, options.htmlPath); !written)
+        return failWith(written.error());
+    std::cout << "report      " << options.reportPath << (options.htmlPath.empty() ? "" : ", " + options.htmlPath)
+              << "\n";
+    return cli::kExitOk;
+}
+
+} // namespace hs::simapp

@@ -1,0 +1,96 @@
+// Device samples from a script, a recorded trial or the keyboard and mouse.
+#include "hs/simapp/SampleSource.h"
+
+#include <algorithm>
+
+namespace hs::simapp {
+
+bool ScriptSource::next(std::uint64_t firstTick, std::size_t count, sim::DeviceSample* out) {
+    if (firstTick >= m_script.tickCount())
+        return false;
+    for (std::size_t i = 0; i < count; ++i) {
+        out[i] = m_script.sampleAt(firstTick + i);
+        out[i].tick = firstTick + i;
+    }
+    return true;
+}
+
+bool TrialSource::next(std::uint64_t firstTick, std::size_t count, sim::DeviceSample* out) {
+    if (firstTick + count > m_trial.samples.size())
+        return false;
+    std::copy_n(m_trial.samples.begin() + static_cast<std::ptrdiff_t>(firstTick), count, out);
+    return true;
+}
+
+KeyboardSource::KeyboardSource(const sim::DeviceSample& start) : m_sample(start) {}
+
+sim::DeviceSample KeyboardSource::startSample() {
+    sim::DeviceSample s;
+    s.insertionMm = -5.0;
+    s.inflow = 1.0;
+    s.outflow = 0.5;
+    return s;
+}
+
+void KeyboardSource::setHeld(Axis axis, int direction) {
+    const std::lock_guard lock(m_mutex);
+    m_held[static_cast<int>(axis)] = std::clamp(direction, -1, 1);
+}
+
+void KeyboardSource::nudge(Axis axis, double amount) {
+    const std::lock_guard lock(m_mutex);
+    m_nudge[static_cast<int>(axis)] += amount;
+}
+
+void KeyboardSource::toggleInflow() {
+    const std::lock_guard lock(m_mutex);
+    m_sample.inflow = m_sample.inflow > 0.5 ? 0.0 : 1.0;
+}
+
+void KeyboardSource::toggleOutflow() {
+    const std::lock_guard lock(m_mutex);
+    m_sample.outflow = m_sample.outflow > 0.25 ? 0.0 : 0.5;
+}
+
+void KeyboardSource::mark() {
+    const std::lock_guard lock(m_mutex);
+    m_markTicksLeft = kMarkTicks;
+}
+
+sim::DeviceSample KeyboardSource::current() const {
+    const std::lock_guard lock(m_mutex);
+    return m_sample;
+}
+
+bool KeyboardSource::next(std::uint64_t firstTick, std::size_t count, sim::DeviceSample* out) {
+    const std::lock_guard lock(m_mutex);
+    const double dt = 1.0 / sim::kDeviceRateHz;
+    const double speeds[5] = {kInsertionMmPerS, kPivotDegPerS, kPivotDegPerS, kRollDegPerS, kRollDegPerS};
+    double* fields[5] = {&m_sample.insertionMm, &m_sample.pitchDeg, &m_sample.yawDeg, &m_sample.rollDeg,
+                         &m_sample.cameraRollDeg};
+    // Mouse and wheel increments are spent at most this fast, so the scope never jumps between two ticks.
+    const double nudgeRates[5] = {kMaxNudgeMmPerS, kMaxNudgeDegPerS, kMaxNudgeDegPerS, kMaxNudgeDegPerS,
+                                  kMaxNudgeDegPerS};
+    for (std::size_t i = 0; i < count; ++i) {
+        for (int a = 0; a < 5; ++a) {
+            const double step = std::clamp(m_nudge[a], -nudgeRates[a] * dt, nudgeRates[a] * dt);
+            *fields[a] += m_held[a] * speeds[a] * dt + step;
+            m_nudge[a] -= step;
+        }
+        // Rolls wrap around; insertion and pivot angles stop at the device's range.
+        for (double* roll : {&m_sample.rollDeg, &m_sample.cameraRollDeg}) {
+            if (*roll > sim::kMaxRollDeg)
+                *roll -= 360.0;
+            else if (*roll < -sim::kMaxRollDeg)
+                *roll += 360.0;
+        }
+        m_sample.buttons = m_markTicksLeft > 0 ? sim::kButtonMark : 0u;
+        m_markTicksLeft = m_markTicksLeft > 0 ? m_markTicksLeft - 1 : 0;
+        m_sample = sim::clamped(m_sample);
+        m_sample.tick = firstTick + i;
+        out[i] = m_sample;
+    }
+    return true;
+}
+
+} // namespace hs::simapp

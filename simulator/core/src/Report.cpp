@@ -1,0 +1,416 @@
+// The trial report: JSON for machines (every double with 17 significant digits, so two replays compare bit for bit)
+// and one self-contained HTML page for the trainee and the supervisor (docs/simulator.md, "Report").
+#include "hs/sim/Metrics.h"
+
+#include "hs/core/Units.h"
+#include "hs/io/AtomicFile.h"
+#include "hs/io/HtmlPage.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+
+namespace hs::sim {
+
+namespace {
+
+using io::fixedText;
+using io::htmlEscape;
+using nlohmann::ordered_json;
+
+constexpr int kReportVersion = 1;
+/// The visualized-surface plot draws at most this many faces (evenly strided); the JSON keeps them all.
+constexpr std::size_t kMaxPlottedSurfaceSamples = 20000;
+
+// ---- JSON: a small writer, because the report's doubles must read back bit for bit in every JSON reader. ----
+
+/// Appends JSON text. Doubles are written with %.17g (non-finite values as null), strings through nlohmann's escaping.
+class JsonWriter {
+public:
+    std::string text;
+
+    void open(char bracket) {
+        comma();
+        text += bracket;
+        m_first = true;
+    }
+    void close(char bracket) {
+        text += bracket;
+        m_first = false;
+    }
+    void key(const char* name) {
+        comma();
+        text += ordered_json(name).dump();
+        text += ':';
+        m_first = true; // the value follows without a comma
+    }
+    void value(double v) {
+        comma();
+        if (!std::isfinite(v)) {
+            text += "null";
+            return;
+        }
+        char buffer[32];
+        std::snprintf(buffer, sizeof buffer, "%.17g", v);
+        text += buffer;
+    }
+    void value(std::uint64_t v) {
+        comma();
+        text += std::to_string(v);
+    }
+    void value(int v) {
+        comma();
+        text += std::to_string(v);
+    }
+    void value(bool v) {
+        comma();
+        text += v ? "true" : "false";
+    }
+    void value(const std::string& v) {
+        comma();
+        text += ordered_json(v).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    }
+    template <class T>
+    void field(const char* name, const T& v) {
+        key(name);
+        value(v);
+    }
+    /// One array per column: {"timeS": [...], ...} reads and diffs better than an object per row.
+    template <class Row, class Get>
+    void column(const char* name, const std::vector<Row>& rows, Get get) {
+        key(name);
+        open('[');
+        for (const Row& r : rows)
+            value(get(r));
+        close(']');
+    }
+
+private:
+    void comma() {
+        if (!m_first)
+            text += ',';
+        m_first = false;
+    }
+    bool m_first = true;
+};
+
+void writeHeader(JsonWriter& w, const TrialHeader& h) {
+    w.key("header");
+    w.open('{');
+    w.field("sceneSha256", h.sceneSha256);
+    w.field("seed", h.seed);
+    w.field("exercise", std::string(toString(h.exercise)));
+    w.key("scope");
+    w.open('{');
+    w.field("opticDeg", h.scope.opticDeg);
+    w.field("diameterMm", h.scope.diameterMm);
+    w.field("fieldOfViewDeg", h.scope.fieldOfViewDeg);
+    w.field("focusNearMm", h.scope.focusNearMm);
+    w.field("focusFarMm", h.scope.focusFarMm);
+    w.close('}');
+    w.key("fluid");
+    w.open('{');
+    w.field("pumpPressureKpa", h.fluid.pumpPressureKpa);
+    w.field("meanArterialPressureKpa", h.fluid.meanArterialPressureKpa);
+    w.field("deficitWarningMl", h.fluid.deficitWarningMl);
+    w.field("deficitLimitMl", h.fluid.deficitLimitMl);
+    w.close('}');
+    w.field("device", h.device);
+    w.field("startedUtc", h.startedUtc);
+    w.close('}');
+}
+
+void writeMetrics(JsonWriter& w, const TrialMetrics& m) {
+    w.key("metrics");
+    w.open('{');
+    w.field("timeS", m.timeS);
+    w.field("pathLengthMm", m.pathLengthMm);
+    w.field("cavitySurfaceVisualizedPercent", m.cavitySurfaceVisualizedPercent);
+    w.key("targets");
+    w.open('[');
+    for (const ExplorationTarget& t : m.targets) {
+        w.open('{');
+        w.field("name", t.name);
+        w.field("visualizedPercent", t.visualizedPercent);
+        w.field("seen", t.seen);
+        w.field("firstSeenS", t.firstSeenS);
+        w.close('}');
+    }
+    w.close(']');
+    w.field("horizonErrorMeanDeg", m.horizonErrorMeanDeg);
+    w.field("horizonErrorMaxDeg", m.horizonErrorMaxDeg);
+    w.field("wallContacts", m.wallContacts);
+    w.field("peakForceN", m.peakForceN);
+    w.field("contactTimeS", m.contactTimeS);
+    w.key("perforations");
+    w.open('[');
+    for (const Perforation& p : m.perforations) {
+        w.open('{');
+        w.field("timeS", p.timeS);
+        w.key("locationMm");
+        w.open('[');
+        w.value(p.locationMm.x);
+        w.value(p.locationMm.y);
+        w.value(p.locationMm.z);
+        w.close(']');
+        w.field("depthMm", p.depthMm);
+        w.field("region", p.region);
+        w.close('}');
+    }
+    w.close(']');
+    w.field("timeAboveMeanArterialPressureS", m.timeAboveMeanArterialPressureS);
+    w.field("maxPressureKpa", m.maxPressureKpa);
+    w.field("inflowMl", m.inflowMl);
+    w.field("outflowMl", m.outflowMl);
+    w.field("deficitMl", m.deficitMl);
+    w.field("deficitWarning", m.deficitWarning);
+    w.field("deficitLimitReached", m.deficitLimitReached);
+    w.field("redOutTimeS", m.redOutTimeS);
+    w.key("pathologies");
+    w.open('[');
+    for (const PathologyFinding& p : m.pathologies) {
+        w.open('{');
+        w.field("id", p.id);
+        w.field("kind", p.kind);
+        w.field("seen", p.seen);
+        w.field("found", p.found);
+        w.field("foundS", p.foundS);
+        w.close('}');
+    }
+    w.close(']');
+    w.field("falseMarks", m.falseMarks);
+    w.close('}');
+}
+
+// ---- HTML ----
+
+std::string yesNo(bool v) {
+    return v ? "yes" : "no";
+}
+
+std::string seconds(double s) {
+    return s < 0.0 ? std::string("never") : fixedText(s, 1) + " s";
+}
+
+/// A two-column table of (name, value) rows.
+std::string keyValueTable(const std::vector<std::pair<std::string, std::string>>& rows) {
+    std::string h = "<table class=\"kv\">\n";
+    for (const auto& [name, value] : rows)
+        h += "<tr><th>" + htmlEscape(name) + "</th><td>" + htmlEscape(value) + "</td></tr>\n";
+    return h + "</table>\n";
+}
+
+std::string table(const std::vector<std::string>& head, const std::vector<std::vector<std::string>>& rows) {
+    std::string h = "<table>\n<tr>";
+    for (const std::string& c : head)
+        h += "<th>" + htmlEscape(c) + "</th>";
+    h += "</tr>\n";
+    for (const auto& row : rows) {
+        h += "<tr>";
+        for (const std::string& c : row)
+            h += "<td>" + htmlEscape(c) + "</td>";
+        h += "</tr>\n";
+    }
+    return h + "</table>\n";
+}
+
+std::string pressure(double kpa) {
+    return fixedText(kpa, 2) + " kPa (" + fixedText(kpa / units::kKpaPerMmHg, 0) + " mmHg)";
+}
+
+std::string sectionsHtml(const TrialReport& r) {
+    const TrialMetrics& m = r.metrics;
+    std::string h = "<h2>Overview</h2>\n" +
+                    keyValueTable({{"exercise", std::string(toString(r.header.exercise))},
+                                   {"time", seconds(m.timeS)},
+                                   {"device samples", std::to_string(r.samples)},
+                                   {"path length inside the body", fixedText(m.pathLengthMm, 0) + " mm"},
+                                   {"cavity surface visualized", fixedText(m.cavitySurfaceVisualizedPercent, 1) + " %"},
+                                   {"horizon error (mean / max)", fixedText(m.horizonErrorMeanDeg, 1) + "° / " +
+                                                                      fixedText(m.horizonErrorMaxDeg, 1) + "°"},
+                                   {"exploration complete", yesNo(r.explorationComplete)},
+                                   {"diagnosis complete", yesNo(r.diagnosisComplete)}});
+    std::vector<std::vector<std::string>> targets;
+    for (const ExplorationTarget& t : m.targets)
+        targets.push_back({t.name, fixedText(t.visualizedPercent, 1) + " %", yesNo(t.seen), seconds(t.firstSeenS)});
+    h += "<h2>Exploration</h2>\n" + table({"target", "visualized", "seen", "first seen"}, targets);
+    h += "<h2>Safety</h2>\n" + keyValueTable({{"wall contacts", std::to_string(m.wallContacts)},
+                                              {"peak force", fixedText(m.peakForceN, 2) + " N"},
+                                              {"time in contact", seconds(m.contactTimeS)},
+                                              {"perforations", std::to_string(m.perforations.size())}});
+    if (!m.perforations.empty()) {
+        std::vector<std::vector<std::string>> rows;
+        for (const Perforation& p : m.perforations)
+            rows.push_back({seconds(p.timeS), p.region, fixedText(p.depthMm, 1) + " mm",
+                            fixedText(p.locationMm.x, 1) + ", " + fixedText(p.locationMm.y, 1) + ", " +
+                                fixedText(p.locationMm.z, 1)});
+        h += table({"time", "region", "depth", "where (mm)"}, rows);
+    }
+    h += "<h2>Fluid</h2>\n" +
+         keyValueTable(
+             {{"pump pressure", pressure(r.header.fluid.pumpPressureKpa)},
+              {"mean arterial pressure", pressure(r.header.fluid.meanArterialPressureKpa)},
+              {"highest intrauterine pressure", pressure(m.maxPressureKpa)},
+              {"time above mean arterial pressure", seconds(m.timeAboveMeanArterialPressureS)},
+              {"inflow / outflow", fixedText(m.inflowMl, 0) + " mL / " + fixedText(m.outflowMl, 0) + " mL"},
+              {"deficit", fixedText(m.deficitMl, 0) + " mL (warning at " +
+                              fixedText(r.header.fluid.deficitWarningMl, 0) + " mL, limit " +
+                              fixedText(r.header.fluid.deficitLimitMl, 0) + " mL)"},
+              {"deficit warning / limit reached", yesNo(m.deficitWarning) + " / " + yesNo(m.deficitLimitReached)},
+              {"red-out time", seconds(m.redOutTimeS)}});
+    std::vector<std::vector<std::string>> findings;
+    for (const PathologyFinding& p : m.pathologies)
+        findings.push_back({p.id, p.kind, yesNo(p.seen), yesNo(p.found), seconds(p.foundS)});
+    h += "<h2>Diagnosis</h2>\n" + table({"pathology", "kind", "seen", "marked", "marked at"}, findings) +
+         "<p>Marks on no pathology: " + std::to_string(m.falseMarks) + "</p>\n";
+    return h;
+}
+
+ordered_json lineChart(const std::string& title, const std::string& yTitle,
+                       const std::vector<std::pair<std::string, ordered_json>>& series) {
+    auto datasets = ordered_json::array();
+    for (const auto& [label, points] : series)
+        datasets.push_back({{"label", label},
+                            {"data", points},
+                            {"borderColor", io::chartColour(datasets.size())},
+                            {"backgroundColor", io::chartColour(datasets.size(), 0.3)},
+                            {"pointRadius", 0},
+                            {"borderWidth", 1.5}});
+    ordered_json options = io::chartOptions(title);
+    options["parsing"] = false;
+    options["scales"] = {{"x", {{"type", "linear"}, {"title", {{"display", true}, {"text", "time (s)"}}}}},
+                         {"y", {{"title", {{"display", true}, {"text", yTitle}}}}}};
+    return {{"type", "line"}, {"data", {{"datasets", datasets}}}, {"options", options}};
+}
+
+/// {x: time, y: value} points of one field of the series.
+template <class Get>
+ordered_json points(const std::vector<SeriesPoint>& series, Get get) {
+    auto list = ordered_json::array();
+    for (const SeriesPoint& p : series)
+        list.push_back({{"x", p.timeS}, {"y", get(p)}});
+    return list;
+}
+
+/// A constant line over the trial's time (a limit).
+ordered_json level(const std::vector<SeriesPoint>& series, double value) {
+    auto list = ordered_json::array();
+    if (!series.empty()) {
+        list.push_back({{"x", series.front().timeS}, {"y", value}});
+        list.push_back({{"x", series.back().timeS}, {"y", value}});
+    }
+    return list;
+}
+
+ordered_json surfaceChart(const std::vector<SurfaceSample>& surface) {
+    auto seen = ordered_json::array(), unseen = ordered_json::array();
+    const std::size_t stride = surface.size() / kMaxPlottedSurfaceSamples + 1;
+    for (std::size_t i = 0; i < surface.size(); i += stride)
+        (surface[i].seen ? seen : unseen).push_back({{"x", surface[i].aroundDeg}, {"y", surface[i].alongMm}});
+    ordered_json options = io::chartOptions("Cavity surface, unrolled about the canal's axis");
+    options["parsing"] = false;
+    options["scales"] = {
+        {"x",
+         {{"type", "linear"},
+          {"min", -180},
+          {"max", 180},
+          {"title", {{"display", true}, {"text", "around the axis (degrees; 0 anterior, +90 the patient's left)"}}}}},
+        {"y", {{"title", {{"display", true}, {"text", "from the internal os (mm)"}}}}}};
+    return {{"type", "scatter"},
+            {"data",
+             {{"datasets",
+               {{{"label", "seen"}, {"data", seen}, {"pointRadius", 1.5}, {"backgroundColor", io::chartColour(3)}},
+                {{"label", "not seen"},
+                 {"data", unseen},
+                 {"pointRadius", 1.5},
+                 {"backgroundColor", io::chartColour(2)}}}}}},
+            {"options", options}};
+}
+
+ordered_json chartConfigs(const TrialReport& r) {
+    const auto& s = r.series;
+    auto charts = ordered_json::array();
+    charts.push_back(
+        lineChart("Contact force", "N", {{"force", points(s, [](const SeriesPoint& p) { return p.forceN; })}}));
+    charts.push_back(lineChart("Intrauterine pressure", "kPa",
+                               {{"pressure", points(s, [](const SeriesPoint& p) { return p.pressureKpa; })},
+                                {"mean arterial pressure", level(s, r.header.fluid.meanArterialPressureKpa)},
+                                {"pump", level(s, r.header.fluid.pumpPressureKpa)}}));
+    charts.push_back(lineChart("Fluid deficit", "mL",
+                               {{"deficit", points(s, [](const SeriesPoint& p) { return p.deficitMl; })},
+                                {"warning", level(s, r.header.fluid.deficitWarningMl)},
+                                {"limit", level(s, r.header.fluid.deficitLimitMl)}}));
+    charts.push_back(surfaceChart(r.surface));
+    return charts;
+}
+
+std::string pageHtml(const TrialReport& r, const std::string& library) {
+    const std::string title = "Trial report: " + std::string(toString(r.header.exercise));
+    std::string h =
+        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + htmlEscape(title) +
+        "</title>\n<style>body{font-family:sans-serif;margin:1em;max-width:1300px}table{border-collapse:"
+        "collapse;font-size:13px;margin-bottom:1em}td,th{border:1px solid #ccc;padding:2px 6px;"
+        "text-align:left}table.kv th{background:#f4f4f4;font-weight:normal}.charts{display:flex;"
+        "flex-wrap:wrap}.chart{width:620px;height:300px;margin:4px}.wide{width:1240px;height:420px;"
+        "margin:4px}</style></head>\n<body>\n<h1>" +
+        htmlEscape(title) + "</h1>\n<p>Scene " + htmlEscape(r.header.sceneSha256.substr(0, 12)) + ", seed " +
+        std::to_string(r.header.seed) + ", " + fixedText(r.header.scope.opticDeg, 0) + "° optic, " +
+        fixedText(r.header.scope.diameterMm, 1) + " mm scope, device " + htmlEscape(r.header.device) +
+        (r.header.startedUtc.empty() ? std::string() : ", started " + htmlEscape(r.header.startedUtc)) + ".</p>\n";
+    if (library.empty())
+        h += "<p>No plots: the chart library (Debian's libjs-chart.js) is not installed.</p>\n";
+    h += "<h2>Over time</h2>\n<div class=\"charts\">\n" + io::chartCanvas(0) + io::chartCanvas(1) + io::chartCanvas(2) +
+         "</div>\n<h2>Visualized surface</h2>\n" + io::chartCanvas(3, "wide");
+    h += sectionsHtml(r);
+    h += io::chartScripts(library, chartConfigs(r));
+    return h + "</body></html>\n";
+}
+
+} // namespace
+
+std::string reportJson(const TrialReport& report) {
+    JsonWriter w;
+    w.open('{');
+    w.field("format", std::string("hysteroscene-trial-report"));
+    w.field("version", kReportVersion);
+    writeHeader(w, report.header);
+    w.field("samples", report.samples);
+    w.field("explorationComplete", report.explorationComplete);
+    w.field("diagnosisComplete", report.diagnosisComplete);
+    writeMetrics(w, report.metrics);
+    w.key("series");
+    w.open('{');
+    w.column("timeS", report.series, [](const SeriesPoint& p) { return p.timeS; });
+    w.column("forceN", report.series, [](const SeriesPoint& p) { return p.forceN; });
+    w.column("pressureKpa", report.series, [](const SeriesPoint& p) { return p.pressureKpa; });
+    w.column("deficitMl", report.series, [](const SeriesPoint& p) { return p.deficitMl; });
+    w.close('}');
+    w.key("surface");
+    w.open('{');
+    w.column("aroundDeg", report.surface, [](const SurfaceSample& p) { return p.aroundDeg; });
+    w.column("alongMm", report.surface, [](const SurfaceSample& p) { return p.alongMm; });
+    w.column("seen", report.surface, [](const SurfaceSample& p) { return p.seen; });
+    w.close('}');
+    w.close('}');
+    return w.text + "\n";
+}
+
+Result<std::string> reportHtml(const TrialReport& report, const std::string& chartLibrary) {
+    auto library = io::readChartLibrary(chartLibrary);
+    if (!library)
+        return library.failure();
+    return pageHtml(report, *library);
+}
+
+Status writeReport(const TrialReport& report, const std::string& jsonPath, const std::string& htmlPath) {
+    HS_TRY(io::writeFileAtomically(jsonPath, reportJson(report)));
+    if (htmlPath.empty())
+        return {};
+    auto page = reportHtml(report);
+    if (!page)
+        return page.failure();
+    return io::writeFileAtomically(htmlPath, *page);
+}
+
+} // namespace hs::sim

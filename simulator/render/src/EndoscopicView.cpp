@@ -1,0 +1,495 @@
+// The endoscopic view's VTK pipeline: the textured, deforming tissue surface, the lamp at the tip, the fluid's haze
+// and red-out in the surface's fragment shader, and the optic's mask and the heads-up text as 2-D overlays.
+#include "hs/simrender/EndoscopicView.h"
+
+#include "hs/clinical/Tissue.h"
+
+#include <vtkActor.h>
+#include <vtkActor2D.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkLight.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkPolyDataMapper2D.h>
+#include <vtkPolyDataTangents.h>
+#include <vtkProperty.h>
+#include <vtkProperty2D.h>
+#include <vtkRenderer.h>
+#include <vtkShaderProperty.h>
+#include <vtkSmartPointer.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+#include <vtkTexture.h>
+#include <vtkUniforms.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace hs::simrender {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// Applied after VTK's own texturing (so after lighting and the albedo): the medium between lens and tissue
+/// scatters the lamp's light back (haze growing with depth, Beer-Lambert), and red-out covers everything.
+constexpr const char* kFluidShader = R"(//VTK::TCoord::Impl
+  {
+    float hsNdcZ = gl_FragCoord.z * 2.0 - 1.0;
+    float hsDepth = 2.0 * hsNear * hsFar / (hsFar + hsNear - hsNdcZ * (hsFar - hsNear));
+    float hsHaze = 1.0 - exp(-hsFogPerMm * hsDepth);
+    gl_FragData[0].rgb = mix(gl_FragData[0].rgb, hsFogColour, hsHaze);
+    gl_FragData[0].rgb = mix(gl_FragData[0].rgb, hsRedOutColour, hsRedOut);
+  }
+)";
+
+/// The optic's vignetting: opacity of the mask at fractions of the field's radius (cos^4-like falloff of a
+/// Hopkins rod lens towards its edge; black beyond it).
+constexpr std::array<std::array<double, 2>, 7> kVignette{
+    {{0.0, 0.0}, {0.55, 0.0}, {0.75, 0.12}, {0.88, 0.3}, {0.95, 0.55}, {1.0, 1.0}, {4.0, 1.0}}};
+constexpr int kMaskSegments = 96;
+
+vtkSmartPointer<vtkImageData> imageOf(const ImageU8& image, int channels) {
+    auto data = vtkSmartPointer<vtkImageData>::New();
+    data->SetDimensions(image.width(), image.height(), 1);
+    data->AllocateScalars(VTK_UNSIGNED_CHAR, channels);
+    auto* pixels = static_cast<unsigned char*>(data->GetScalarPointer());
+    const auto w = static_cast<std::size_t>(image.width());
+    for (int y = 0; y < image.height(); ++y) // VTK's images start at the bottom row
+        for (int x = 0; x < image.width(); ++x)
+            for (int c = 0; c < channels; ++c)
+                pixels[(static_cast<std::size_t>(image.height() - 1 - y) * w + static_cast<std::size_t>(x)) *
+                           static_cast<std::size_t>(channels) +
+                       static_cast<std::size_t>(c)] = image.at(x, y, std::min(c, image.channels() - 1));
+    return data;
+}
+
+vtkSmartPointer<vtkTexture> textureOf(vtkImageData* image, bool srgb) {
+    auto texture = vtkSmartPointer<vtkTexture>::New();
+    texture->SetInputData(image);
+    texture->InterpolateOn();
+    texture->MipmapOn();
+    texture->RepeatOff();
+    texture->EdgeClampOn();
+    texture->SetUseSRGBColorSpace(srgb);
+    return texture;
+}
+
+/// Occlusion (1), roughness (the package's map), metallic (0): VTK's ORM texture.
+vtkSmartPointer<vtkImageData> ormOf(const ImageU8& roughness) {
+    auto data = vtkSmartPointer<vtkImageData>::New();
+    data->SetDimensions(roughness.width(), roughness.height(), 1);
+    data->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+    auto* pixels = static_cast<unsigned char*>(data->GetScalarPointer());
+    const auto w = static_cast<std::size_t>(roughness.width());
+    for (int y = 0; y < roughness.height(); ++y)
+        for (int x = 0; x < roughness.width(); ++x) {
+            unsigned char* p =
+                pixels + (static_cast<std::size_t>(roughness.height() - 1 - y) * w + static_cast<std::size_t>(x)) * 3;
+            p[0] = 255;
+            p[1] = roughness.at(x, y, 0);
+            p[2] = 0;
+        }
+    return data;
+}
+
+/// Area-weighted vertex normals of `points` over `triangles`.
+void faceNormals(const std::vector<Triangle>& triangles, const std::vector<Vec3>& points, std::vector<Vec3>& out) {
+    out.assign(points.size(), Vec3{});
+    for (const Triangle& t : triangles) {
+        const auto a = static_cast<std::size_t>(t[0]), b = static_cast<std::size_t>(t[1]),
+                   c = static_cast<std::size_t>(t[2]);
+        const Vec3 n = cross(points[b] - points[a], points[c] - points[a]);
+        out[a] += n;
+        out[b] += n;
+        out[c] += n;
+    }
+    for (Vec3& n : out) {
+        const double length = norm(n);
+        n = length > 0.0 ? n / length : Vec3{};
+    }
+}
+
+} // namespace
+
+CameraPose cameraPose(const sim::ScopePose& pose, const sim::ScopeConfig& config) {
+    return {pose.tipMm, pose.direction, pose.up, sim::scopeFieldOfViewDeg(config)};
+}
+
+CameraPose cameraPose(const scene::ScopeView& view, double fieldOfViewDeg) {
+    return {view.eyeMm, view.direction, view.up, fieldOfViewDeg};
+}
+
+struct EndoscopicView::Impl {
+    vtkRenderer* renderer = nullptr;
+    EndoscopicLook look;
+    vtkSmartPointer<vtkActor> actor;
+    vtkSmartPointer<vtkPolyDataMapper> mapper;
+    vtkSmartPointer<vtkPolyData> surface;
+    vtkSmartPointer<vtkLight> lamp;
+    vtkSmartPointer<vtkActor2D> mask;
+    vtkSmartPointer<vtkPolyData> maskGeometry;
+    vtkSmartPointer<vtkTextActor> hud;
+    vtkSmartPointer<vtkTextActor> warning;
+    vtkSmartPointer<vtkCellArray> allFaces;
+    vtkSmartPointer<vtkCellArray> innerFaces; ///< all but the serosa's; null without a tissue label
+    bool outerVisible = true;
+    vtkSmartPointer<vtkCallbackCommand> startObserver;
+    unsigned long startTag = 0;
+    std::vector<Triangle> triangles;
+    std::vector<Vec3> storedNormals; ///< the package's (smooth across UV seams)
+    std::vector<Vec3> restNormals;   ///< recomputed from the rest points, to carry deformation onto storedNormals
+    std::vector<Vec3> scratch;
+    int maskWidth = -1, maskHeight = -1;
+    double fieldOfViewDeg = 90.0;
+    double turbidity = 0.0, redOut = 0.0;
+
+    void fitOverlays();
+    void buildMask(int width, int height);
+    void updateUniforms();
+    void setNormals(const std::vector<Vec3>& normals);
+};
+
+EndoscopicView::EndoscopicView(vtkRenderer* renderer, const EndoscopicLook& look) : m_impl(std::make_unique<Impl>()) {
+    Impl& d = *m_impl;
+    d.renderer = renderer;
+    d.look = look;
+    renderer->AutomaticLightCreationOff();
+    renderer->RemoveAllLights();
+    d.lamp = vtkSmartPointer<vtkLight>::New();
+    d.lamp->SetLightTypeToHeadlight(); // at the camera: the light guide ends beside the lens
+    d.lamp->PositionalOn();
+    d.lamp->SetConeAngle(89.0);
+    d.lamp->SetAttenuationValues(look.lampAttenuation[0], look.lampAttenuation[1], look.lampAttenuation[2]);
+    d.lamp->SetIntensity(look.lampIntensity);
+    renderer->AddLight(d.lamp);
+
+    d.mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    d.mapper->ScalarVisibilityOff();
+    d.actor = vtkSmartPointer<vtkActor>::New();
+    d.actor->SetMapper(d.mapper);
+    d.actor->VisibilityOff();
+    d.actor->GetProperty()->BackfaceCullingOff(); // inside the organ the scope sees the backs of surfaces too
+    vtkShaderProperty* shader = d.actor->GetShaderProperty();
+    shader->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true, kFluidShader, false);
+    renderer->AddActor(d.actor);
+
+    d.maskGeometry = vtkSmartPointer<vtkPolyData>::New();
+    auto maskMapper = vtkSmartPointer<vtkPolyDataMapper2D>::New();
+    maskMapper->SetInputData(d.maskGeometry);
+    maskMapper->SetColorModeToDirectScalars();
+    d.mask = vtkSmartPointer<vtkActor2D>::New();
+    d.mask->SetMapper(maskMapper);
+    d.mask->SetVisibility(look.opticMask);
+    renderer->AddActor2D(d.mask);
+
+    d.hud = vtkSmartPointer<vtkTextActor>::New();
+    d.hud->GetTextProperty()->SetColor(0.85, 0.95, 0.85);
+    d.hud->GetTextProperty()->SetFontFamilyToCourier();
+    d.hud->GetTextProperty()->ShadowOn();
+    d.hud->GetTextProperty()->SetVerticalJustificationToTop();
+    d.hud->VisibilityOff();
+    renderer->AddActor2D(d.hud);
+    d.warning = vtkSmartPointer<vtkTextActor>::New();
+    d.warning->GetTextProperty()->SetColor(1.0, 0.3, 0.25);
+    d.warning->GetTextProperty()->BoldOn();
+    d.warning->GetTextProperty()->ShadowOn();
+    d.warning->GetTextProperty()->SetJustificationToCentered();
+    d.warning->VisibilityOff();
+    renderer->AddActor2D(d.warning);
+
+    // The overlays follow the viewport's size: refitted at the start of every render when it changed.
+    d.startObserver = vtkSmartPointer<vtkCallbackCommand>::New();
+    d.startObserver->SetClientData(&d);
+    d.startObserver->SetCallback(
+        [](vtkObject*, unsigned long, void* client, void*) { static_cast<Impl*>(client)->fitOverlays(); });
+    d.startTag = renderer->AddObserver(vtkCommand::StartEvent, d.startObserver);
+    renderer->SetBackground(look.fogColour[0], look.fogColour[1], look.fogColour[2]);
+    d.updateUniforms();
+}
+
+EndoscopicView::~EndoscopicView() {
+    Impl& d = *m_impl;
+    d.renderer->RemoveObserver(d.startTag);
+    d.renderer->RemoveActor(d.actor);
+    d.renderer->RemoveActor2D(d.mask);
+    d.renderer->RemoveActor2D(d.hud);
+    d.renderer->RemoveActor2D(d.warning);
+    d.renderer->RemoveLight(d.lamp);
+}
+
+void EndoscopicView::setSurface(const scene::VisualSurface& v) {
+    Impl& d = *m_impl;
+    const SurfaceMesh& mesh = v.mesh;
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->SetDataTypeToFloat();
+    points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
+    for (std::size_t i = 0; i < mesh.points.size(); ++i)
+        points->SetPoint(static_cast<vtkIdType>(i), mesh.points[i].x, mesh.points[i].y, mesh.points[i].z);
+    d.allFaces = vtkSmartPointer<vtkCellArray>::New();
+    d.innerFaces = nullptr;
+    const auto tissue = mesh.faceLabels.find(clinical::kSurfaceTissueLabel);
+    const bool labelled = tissue != mesh.faceLabels.end() && tissue->second.size() == mesh.triangles.size();
+    // A pathology's faces stay whatever their tissue: a submucous myoma shows in the cavity.
+    const auto pathology = mesh.faceLabels.find("pathology");
+    const bool pathologies = pathology != mesh.faceLabels.end() && pathology->second.size() == mesh.triangles.size();
+    if (labelled)
+        d.innerFaces = vtkSmartPointer<vtkCellArray>::New();
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+        const Triangle& t = mesh.triangles[f];
+        const vtkIdType ids[3] = {t[0], t[1], t[2]};
+        d.allFaces->InsertNextCell(3, ids);
+        const bool outer = labelled && tissue->second[f] == clinical::labelValue(clinical::SurfaceTissue::Serosa) &&
+                           !(pathologies && pathology->second[f] != 0);
+        if (labelled && !outer)
+            d.innerFaces->InsertNextCell(3, ids);
+    }
+    d.surface = vtkSmartPointer<vtkPolyData>::New();
+    d.surface->SetPoints(points);
+    d.surface->SetPolys(d.allFaces);
+    d.triangles = mesh.triangles;
+    faceNormals(d.triangles, mesh.points, d.restNormals);
+    d.storedNormals = v.normals.size() == mesh.points.size() ? v.normals : d.restNormals;
+    d.setNormals(d.storedNormals);
+
+    vtkProperty* property = d.actor->GetProperty();
+    d.actor->SetTexture(nullptr);
+    property->RemoveAllTextures();
+    property->SetInterpolationToPhong();
+    property->SetColor(0.85, 0.55, 0.5);
+    const bool uvs = v.uvs.size() == mesh.points.size();
+    if (uvs) {
+        auto tcoords = vtkSmartPointer<vtkFloatArray>::New();
+        tcoords->SetName("uv");
+        tcoords->SetNumberOfComponents(2);
+        tcoords->SetNumberOfTuples(static_cast<vtkIdType>(v.uvs.size()));
+        for (std::size_t i = 0; i < v.uvs.size(); ++i) // VTK's texture origin is the image's bottom left
+            tcoords->SetTuple2(static_cast<vtkIdType>(i), v.uvs[i][0], 1.0f - v.uvs[i][1]);
+        d.surface->GetPointData()->SetTCoords(tcoords);
+    }
+    const bool albedo = uvs && !v.albedo.empty() && v.albedo.channels() >= 3;
+    const bool maps = albedo && d.look.materialMaps && !v.normal.empty() && !v.roughness.empty();
+    if (maps) {
+        // Physically based shading: the albedo (sRGB), roughness and tangent-space normals the texture stage baked.
+        auto tangents = vtkSmartPointer<vtkPolyDataTangents>::New();
+        tangents->SetInputData(d.surface);
+        tangents->Update();
+        d.surface->GetPointData()->SetTangents(tangents->GetOutput()->GetPointData()->GetTangents());
+        property->SetInterpolationToPBR();
+        property->SetColor(1.0, 1.0, 1.0);
+        property->SetMetallic(0.0);
+        property->SetRoughness(1.0);
+        property->SetBaseColorTexture(textureOf(imageOf(v.albedo, 3), true));
+        property->SetORMTexture(textureOf(ormOf(v.roughness), false));
+        property->SetNormalTexture(textureOf(imageOf(v.normal, 3), false));
+        property->SetNormalScale(1.0);
+    } else if (albedo) {
+        d.actor->SetTexture(textureOf(imageOf(v.albedo, 3), false));
+        property->SetColor(1.0, 1.0, 1.0);
+        property->SetSpecular(0.25);
+        property->SetSpecularPower(30.0);
+    }
+    if (!d.outerVisible && d.innerFaces)
+        d.surface->SetPolys(d.innerFaces);
+    d.mapper->SetInputData(d.surface);
+    d.actor->VisibilityOn();
+}
+
+void EndoscopicView::setOuterSurfaceVisible(bool visible) {
+    Impl& d = *m_impl;
+    if (visible == d.outerVisible)
+        return;
+    d.outerVisible = visible;
+    if (d.surface && d.innerFaces)
+        d.surface->SetPolys(visible ? d.allFaces : d.innerFaces);
+}
+
+void EndoscopicView::clear() {
+    Impl& d = *m_impl;
+    d.actor->VisibilityOff();
+    d.mapper->SetInputData(nullptr);
+    d.surface = nullptr;
+    d.triangles.clear();
+    d.storedNormals.clear();
+    d.restNormals.clear();
+}
+
+bool EndoscopicView::hasSurface() const {
+    return m_impl->surface != nullptr;
+}
+
+std::size_t EndoscopicView::pointCount() const {
+    return m_impl->surface ? static_cast<std::size_t>(m_impl->surface->GetNumberOfPoints()) : 0;
+}
+
+void EndoscopicView::setPoints(const std::vector<Vec3>& pointsMm) {
+    Impl& d = *m_impl;
+    if (!d.surface || pointsMm.size() != pointCount())
+        return;
+    vtkPoints* points = d.surface->GetPoints();
+    auto* xyz = static_cast<float*>(points->GetVoidPointer(0));
+    for (std::size_t i = 0; i < pointsMm.size(); ++i) {
+        xyz[3 * i] = static_cast<float>(pointsMm[i].x);
+        xyz[3 * i + 1] = static_cast<float>(pointsMm[i].y);
+        xyz[3 * i + 2] = static_cast<float>(pointsMm[i].z);
+    }
+    points->Modified();
+    // The deformation turns each normal by what it turns the normal recomputed from the points; the stored normals
+    // stay smooth across the texture's seams (where recomputed ones would show the split).
+    faceNormals(d.triangles, pointsMm, d.scratch);
+    for (std::size_t i = 0; i < d.scratch.size(); ++i) {
+        const Vec3 n = d.storedNormals[i] + (d.scratch[i] - d.restNormals[i]);
+        const double length = norm(n);
+        d.scratch[i] = length > 0.0 ? n / length : d.storedNormals[i];
+    }
+    d.setNormals(d.scratch);
+}
+
+void EndoscopicView::Impl::setNormals(const std::vector<Vec3>& normals) {
+    vtkDataArray* existing = surface->GetPointData()->GetNormals();
+    vtkSmartPointer<vtkFloatArray> array = vtkFloatArray::SafeDownCast(existing);
+    if (!array || array->GetNumberOfTuples() != static_cast<vtkIdType>(normals.size())) {
+        array = vtkSmartPointer<vtkFloatArray>::New();
+        array->SetName("normals");
+        array->SetNumberOfComponents(3);
+        array->SetNumberOfTuples(static_cast<vtkIdType>(normals.size()));
+        surface->GetPointData()->SetNormals(array);
+    }
+    float* n = array->GetPointer(0);
+    for (std::size_t i = 0; i < normals.size(); ++i) {
+        n[3 * i] = static_cast<float>(normals[i].x);
+        n[3 * i + 1] = static_cast<float>(normals[i].y);
+        n[3 * i + 2] = static_cast<float>(normals[i].z);
+    }
+    array->Modified();
+}
+
+void EndoscopicView::setPose(const CameraPose& pose) {
+    Impl& d = *m_impl;
+    const auto finite = [](const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+    if (!finite(pose.eyeMm) || !finite(pose.direction) || !finite(pose.up) || !std::isfinite(pose.fieldOfViewDeg))
+        return; // keeps the last pose rather than a camera VTK cannot draw from
+    vtkCamera* camera = d.renderer->GetActiveCamera();
+    const Vec3 focal = pose.eyeMm + pose.direction * 10.0;
+    camera->SetPosition(pose.eyeMm.x, pose.eyeMm.y, pose.eyeMm.z);
+    camera->SetFocalPoint(focal.x, focal.y, focal.z);
+    camera->SetViewUp(pose.up.x, pose.up.y, pose.up.z);
+    camera->SetClippingRange(d.look.nearClipMm, d.look.farClipMm);
+    d.fieldOfViewDeg = pose.fieldOfViewDeg;
+    camera->SetViewAngle(pose.fieldOfViewDeg);
+    // The lamp's cone reaches a little beyond the field: the light guide's fibres spread wider than the lens sees.
+    d.lamp->SetConeAngle(std::min(89.0, 0.5 * pose.fieldOfViewDeg + 20.0));
+}
+
+void EndoscopicView::setFluid(double turbidity, double redOut) {
+    Impl& d = *m_impl;
+    d.turbidity = std::isfinite(turbidity) ? std::clamp(turbidity, 0.0, 1.0) : 1.0;
+    d.redOut = std::isfinite(redOut) ? std::clamp(redOut, 0.0, 1.0) : 1.0;
+    d.updateUniforms();
+    // Where no surface is drawn the medium itself is seen.
+    double background[3];
+    for (int k = 0; k < 3; ++k) {
+        const auto c = static_cast<std::size_t>(k);
+        background[k] = d.look.fogColour[c] * (0.4 + 0.6 * d.turbidity);
+        background[k] += (d.look.redOutColour[c] - background[k]) * d.redOut;
+    }
+    d.renderer->SetBackground(background);
+}
+
+void EndoscopicView::Impl::updateUniforms() {
+    vtkUniforms* u = actor->GetShaderProperty()->GetFragmentCustomUniforms();
+    u->SetUniformf("hsNear", static_cast<float>(look.nearClipMm));
+    u->SetUniformf("hsFar", static_cast<float>(look.farClipMm));
+    u->SetUniformf("hsFogPerMm", static_cast<float>(look.clearFogPerMm + turbidity * look.turbidFogPerMm));
+    const float fog[3] = {static_cast<float>(look.fogColour[0]), static_cast<float>(look.fogColour[1]),
+                          static_cast<float>(look.fogColour[2])};
+    const float red[3] = {static_cast<float>(look.redOutColour[0]), static_cast<float>(look.redOutColour[1]),
+                          static_cast<float>(look.redOutColour[2])};
+    u->SetUniform3f("hsFogColour", fog);
+    u->SetUniform3f("hsRedOutColour", red);
+    u->SetUniformf("hsRedOut", static_cast<float>(redOut));
+}
+
+void EndoscopicView::setHud(const HudText& text) {
+    Impl& d = *m_impl;
+    d.hud->SetInput(text.status.c_str());
+    d.hud->SetVisibility(d.look.hud && !text.status.empty());
+    d.warning->SetInput(text.warning.c_str());
+    d.warning->SetVisibility(d.look.hud && !text.warning.empty());
+}
+
+const EndoscopicLook& EndoscopicView::look() const {
+    return m_impl->look;
+}
+
+vtkActor* EndoscopicView::tissueActor() const {
+    return m_impl->actor;
+}
+
+void EndoscopicView::Impl::fitOverlays() {
+    const int* size = renderer->GetSize();
+    const int width = size[0], height = size[1];
+    if (width <= 0 || height <= 0)
+        return;
+    // The optic's field is the largest circle the viewport holds; the camera's angle spans that circle.
+    vtkCamera* camera = renderer->GetActiveCamera();
+    camera->SetUseHorizontalViewAngle(width < height);
+    camera->SetViewAngle(fieldOfViewDeg);
+    if (width == maskWidth && height == maskHeight)
+        return;
+    maskWidth = width;
+    maskHeight = height;
+    buildMask(width, height);
+    const int font = std::max(10, std::min(width, height) / 36);
+    hud->GetTextProperty()->SetFontSize(font);
+    hud->SetDisplayPosition(font / 2, height - font / 2);
+    warning->GetTextProperty()->SetFontSize(font + 2);
+    warning->SetDisplayPosition(width / 2, font);
+}
+
+void EndoscopicView::Impl::buildMask(int width, int height) {
+    const double cx = 0.5 * width, cy = 0.5 * height;
+    const double radius = 0.5 * std::min(width, height);
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto colours = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    colours->SetNumberOfComponents(4);
+    colours->SetName("colours");
+    auto cells = vtkSmartPointer<vtkCellArray>::New();
+    for (const auto& [fraction, opacity] : kVignette) {
+        for (int s = 0; s < kMaskSegments; ++s) {
+            const double angle = 2.0 * kPi * s / kMaskSegments;
+            // The outer ring lies beyond the viewport's corners.
+            const double r = fraction * radius;
+            points->InsertNextPoint(cx + r * std::cos(angle), cy + r * std::sin(angle), 0.0);
+            const unsigned char colour[4] = {0, 0, 0, static_cast<unsigned char>(std::lround(255.0 * opacity))};
+            colours->InsertNextTypedTuple(colour);
+        }
+    }
+    for (std::size_t ring = 0; ring + 1 < kVignette.size(); ++ring) {
+        if (kVignette[ring][1] == 0.0 && kVignette[ring + 1][1] == 0.0)
+            continue; // fully clear
+        for (int s = 0; s < kMaskSegments; ++s) {
+            const auto inner = static_cast<vtkIdType>(ring) * kMaskSegments;
+            const auto outer = inner + kMaskSegments;
+            const vtkIdType a = inner + s, b = inner + (s + 1) % kMaskSegments;
+            const vtkIdType c = outer + (s + 1) % kMaskSegments, e = outer + s;
+            const vtkIdType first[3] = {a, b, c}, second[3] = {a, c, e};
+            cells->InsertNextCell(3, first);
+            cells->InsertNextCell(3, second);
+        }
+    }
+    maskGeometry->Initialize();
+    maskGeometry->SetPoints(points);
+    maskGeometry->SetPolys(cells);
+    maskGeometry->GetPointData()->SetScalars(colours);
+    maskGeometry->Modified();
+}
+
+} // namespace hs::simrender

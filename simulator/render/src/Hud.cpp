@@ -1,0 +1,59 @@
+// The heads-up text: the pump's figures, the exercise's progress and the contact force.
+#include "hs/simrender/Hud.h"
+
+#include "hs/core/Units.h"
+
+#include <cstdio>
+
+namespace hs::simrender {
+
+namespace {
+
+std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
+    char text[160];
+    std::snprintf(text, sizeof text, pattern, a, b, c);
+    return text;
+}
+
+} // namespace
+
+ExerciseProgress progressOf(sim::Exercise exercise, const sim::TrialMetrics& metrics) {
+    ExerciseProgress p;
+    p.exercise = exercise;
+    p.targets = static_cast<int>(metrics.targets.size());
+    for (const sim::ExplorationTarget& t : metrics.targets)
+        p.targetsSeen += t.seen ? 1 : 0;
+    p.pathologies = static_cast<int>(metrics.pathologies.size());
+    for (const sim::PathologyFinding& f : metrics.pathologies)
+        p.pathologiesFound += f.found ? 1 : 0;
+    p.visualizedPercent = metrics.cavitySurfaceVisualizedPercent;
+    return p;
+}
+
+HudText hudText(const sim::WorldState& state, const sim::FluidSettings& fluid, const ExerciseProgress& progress) {
+    const sim::FluidState& f = state.fluid;
+    HudText hud;
+    const auto minutes = static_cast<int>(state.timeS / 60.0);
+    const double secondsPart = state.timeS - 60.0 * minutes;
+    hud.status = format("P   %3.0f mmHg  %5.2f kPa", f.pressureKpa / units::kKpaPerMmHg, f.pressureKpa) + "\n" +
+                 format("in  %4.0f mL/min   out %4.0f mL/min", f.inflowMlPerS * 60.0, f.outflowMlPerS * 60.0) + "\n" +
+                 format("deficit %5.0f mL", f.deficitMl) + "\n" + format("time %02.0f:%04.1f", minutes, secondsPart) +
+                 "\n";
+    if (progress.exercise == sim::Exercise::Exploration)
+        hud.status += format("explored %.0f/%.0f targets, %.0f%% of the cavity", progress.targetsSeen, progress.targets,
+                             progress.visualizedPercent);
+    else
+        hud.status += format("found %.0f/%.0f pathologies", progress.pathologiesFound, progress.pathologies);
+    hud.status += "\n" + format("force %4.2f N", state.contact.forceN);
+    if (state.contact.perforated)
+        hud.warning = "PERFORATION";
+    else if (f.deficitLimit)
+        hud.warning = format("FLUID DEFICIT LIMIT (%.0f mL): STOP", fluid.deficitLimitMl);
+    else if (f.deficitWarning)
+        hud.warning = format("fluid deficit above %.0f mL", fluid.deficitWarningMl);
+    else if (f.pressureKpa > fluid.meanArterialPressureKpa)
+        hud.warning = "pressure above mean arterial pressure";
+    return hud;
+}
+
+} // namespace hs::simrender

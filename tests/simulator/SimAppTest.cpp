@@ -1,0 +1,169 @@
+// hysteroscene-sim end to end: the command line's usage errors, the headless scripted run and its replay giving the
+// same report bit for bit, and the trial report (JSON with 17 significant digits; the page with its plots, opened
+// in headless Chromium when it is installed).
+#include "SimPackage.h"
+#include "TestSupport.h"
+#include "hs/generate/Generate.h"
+#include "hs/io/HtmlPage.h"
+#include "hs/scene/ScenePackage.h"
+#include "hs/sim/Metrics.h"
+#include "hs/sim/World.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <memory>
+
+namespace fs = std::filesystem;
+using hs::test::shellQuote;
+
+namespace {
+
+hs::test::CommandRun sim(const std::string& arguments) {
+    return hs::test::runCommand(std::string(HS_SIM_PATH) + " " + arguments);
+}
+
+std::string readText(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// A report with every field set, a minute of series and a few thousand surface samples.
+hs::sim::TrialReport sampleReport() {
+    hs::sim::TrialReport r;
+    r.header.sceneSha256 = std::string(64, 'a');
+    r.header.seed = 7;
+    r.header.device = "scripted:<test>.json"; // escaped in the page
+    r.header.startedUtc = "2026-01-02T03:04:05Z";
+    r.samples = 60000;
+    r.metrics.timeS = 60.0;
+    r.metrics.pathLengthMm = 1.0 / 3.0;
+    r.metrics.cavitySurfaceVisualizedPercent = 72.5;
+    r.metrics.targets = {{"ostium-left", 100.0, true, 12.5}, {"fundus", 20.0, false, -1.0}};
+    r.metrics.perforations = {{30.0, {1.0, 2.0, 3.0}, 1.5, "myometrium"}};
+    r.metrics.pathologies = {{"myoma-1", "myoma", true, true, 40.0}};
+    r.metrics.peakForceN = 0.1 + 0.2; // 0.30000000000000004: needs 17 digits
+    for (int i = 0; i <= 600; ++i)
+        r.series.push_back({i / 10.0, 0.5 + 0.5 * std::sin(i / 20.0), 9.0 + std::cos(i / 30.0), i * 0.5});
+    for (int i = 0; i < 3000; ++i)
+        r.surface.push_back({-180.0 + (i % 72) * 5.0, (i / 72) * 1.0, (i % 7) != 0});
+    return r;
+}
+
+constexpr const char* kScript = R"({"format": "hysteroscene-script", "version": 1, "keyframes": [
+  {"t": 0.0, "insertionMm": -5, "inflow": 1, "outflow": 0.3},
+  {"t": 0.5, "insertionMm": 20},
+  {"t": 1.0, "insertionMm": 32, "rollDeg": 60, "pitchDeg": 5},
+  {"t": 1.25, "insertionMm": 30, "yawDeg": -8, "buttons": 1},
+  {"t": 1.5, "insertionMm": 28, "rollDeg": -30, "buttons": 0}]})";
+constexpr const char* kShortScript = R"({"format": "hysteroscene-script", "version": 1, "keyframes": [
+  {"t": 0.0, "insertionMm": -5, "inflow": 1}, {"t": 0.1, "insertionMm": -4}]})";
+
+} // namespace
+
+TEST(SimCommandLine, RefusesBadArgumentsWithUsageErrors) {
+    for (const char* arguments : {"--optic 45 scene", "--diameter 3 scene", "--exercise surgery scene",
+                                  "--frobnicate scene", "scene --headless", "scene --device joystick",
+                                  "scene --device hid:xyz:1", "scene --replay t.trial --device scripted:s.json"}) {
+        const auto run = sim(arguments);
+        EXPECT_EQ(run.exitCode, 2) << arguments << "\n" << run.out;
+    }
+    const auto help = sim("--help");
+    EXPECT_EQ(help.exitCode, 0);
+    EXPECT_NE(help.out.find("--device"), std::string::npos) << help.out;
+}
+
+TEST(SimCommandLine, NamesAMissingInputFile) {
+    hs::test::TempDir tmp;
+    const auto replay = sim(shellQuote(tmp.file("pkg")) + " --headless --replay " + shellQuote(tmp.file("no.trial")));
+    EXPECT_EQ(replay.exitCode, 3) << replay.out;
+    EXPECT_NE(replay.out.find("no.trial"), std::string::npos) << replay.out;
+    const auto script =
+        sim(shellQuote(tmp.file("pkg")) + " --headless --device scripted:" + shellQuote(tmp.file("no.json")));
+    EXPECT_EQ(script.exitCode, 3) << script.out;
+    EXPECT_NE(script.out.find("no.json"), std::string::npos) << script.out;
+}
+
+TEST(TrialReport, WritesDoublesWithSeventeenDigits) {
+    const std::string json = hs::sim::reportJson(sampleReport());
+    EXPECT_NE(json.find("\"peakForceN\":0.30000000000000004"), std::string::npos) << json.substr(0, 2000);
+    EXPECT_NE(json.find("\"format\":\"hysteroscene-trial-report\""), std::string::npos);
+    EXPECT_NE(json.find("\"firstSeenS\":-1"), std::string::npos);
+    EXPECT_EQ(json, hs::sim::reportJson(sampleReport()));
+}
+
+TEST(TrialReport, PageNamesAMissingChartLibrary) {
+    auto page = hs::sim::reportHtml(sampleReport(), "/nonexistent/chart.min.js");
+    ASSERT_FALSE(page.ok());
+    EXPECT_NE(page.error().message().find("/nonexistent/chart.min.js"), std::string::npos);
+}
+
+TEST(TrialReport, PageDrawsItsPlotsInHeadlessChromium) {
+    if (!fs::exists(std::string(hs::io::kDefaultChartLibrary)))
+        GTEST_SKIP() << "libjs-chart.js is not installed: the page has no plots to check";
+    hs::test::TempDir tmp;
+    ASSERT_TRUE(hs::sim::writeReport(sampleReport(), tmp.file("r.json"), tmp.file("r.html")).ok());
+    const std::string html = readText(tmp.file("r.html"));
+    EXPECT_EQ(html.find("src=\"http"), std::string::npos); // self-contained
+    EXPECT_NE(html.find("scripted:&lt;test&gt;.json"), std::string::npos);
+    EXPECT_NE(html.find("myometrium"), std::string::npos);
+    if (hs::test::runCommand("command -v chromium").exitCode != 0)
+        GTEST_SKIP() << "chromium is not installed (tools/setup.sh installs it): the page was not opened";
+    const auto dom = hs::test::runCommand(
+        "timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-background-networking "
+        "--disable-component-update --disable-sync --no-first-run --user-data-dir=" +
+        shellQuote(tmp.file("profile")) + " --dump-dom " + shellQuote("file://" + tmp.file("r.html")) + " 2>/dev/null");
+    ASSERT_EQ(dom.exitCode, 0) << dom.out.substr(0, 2000);
+    EXPECT_EQ(dom.out.find("data-chart-error"), std::string::npos) << dom.out.substr(0, 3000);
+    // Force, pressure, deficit and the visualized surface.
+    EXPECT_NE(dom.out.find("data-charts=\"4\""), std::string::npos) << dom.out.substr(0, 3000);
+}
+
+/// The simulator tests' package (SimPackage.h), generated once per binary.
+class SimHeadless : public ::testing::Test {
+protected:
+    void SetUp() override {
+        s_package = hs::test::SimPackage::folder();
+        if (s_package.empty())
+            GTEST_SKIP() << "no package";
+    }
+    static std::string s_package;
+};
+std::string SimHeadless::s_package;
+
+TEST_F(SimHeadless, ScriptedRunAndItsReplayReportTheSameBytes) {
+    hs::test::TempDir tmp;
+    std::ofstream(tmp.file("script.json")) << kScript;
+    const std::string common = shellQuote(s_package) + " --headless --optic 12 --pump-mmhg 90 --seed 3";
+    const auto scripted = sim(common + " --device scripted:" + shellQuote(tmp.file("script.json")) + " --record " +
+                              shellQuote(tmp.file("t.trial")) + " --report " + shellQuote(tmp.file("a.json")) +
+                              " --html " + shellQuote(tmp.file("a.html")));
+    ASSERT_EQ(scripted.exitCode, 0) << scripted.out;
+    const auto replayed = sim(shellQuote(s_package) + " --headless --replay " + shellQuote(tmp.file("t.trial")) +
+                              " --report " + shellQuote(tmp.file("b.json")));
+    ASSERT_EQ(replayed.exitCode, 0) << replayed.out;
+    const std::string a = readText(tmp.file("a.json")), b = readText(tmp.file("b.json"));
+    EXPECT_FALSE(a.empty());
+    EXPECT_EQ(a, b);
+    EXPECT_NE(a.find("\"opticDeg\":12"), std::string::npos) << a.substr(0, 1000);
+    EXPECT_NE(a.find("\"samples\":1505"), std::string::npos) << a.substr(0, 1000);
+    EXPECT_TRUE(fs::exists(tmp.file("a.html")));
+}
+
+TEST_F(SimHeadless, RefusesATrialOfAnotherScene) {
+    hs::test::TempDir tmp;
+    std::ofstream(tmp.file("script.json")) << kShortScript;
+    ASSERT_EQ(sim(shellQuote(s_package) + " --headless --device scripted:" + shellQuote(tmp.file("script.json")) +
+                  " --record " + shellQuote(tmp.file("t.trial")) + " --report " + shellQuote(tmp.file("a.json")))
+                  .exitCode,
+              0);
+    // The same package with another manifest checksum: a copy whose manifest gained a byte.
+    fs::copy(s_package, tmp.file("other"), fs::copy_options::recursive);
+    std::ofstream(tmp.file("other") + "/manifest.json", std::ios::app) << "\n";
+    const auto run = sim(shellQuote(tmp.file("other")) + " --headless --replay " + shellQuote(tmp.file("t.trial")));
+    EXPECT_EQ(run.exitCode, 3) << run.out;
+    EXPECT_NE(run.out.find(tmp.file("t.trial")), std::string::npos) << run.out;
+}
