@@ -20,12 +20,6 @@ int main(int argc, char** argv) {
     const hs::simapp::SimOptions& options = *parsed.options;
     if (options.headless)
         return hs::simapp::runHeadless(options);
-    if (options.device.kind == hs::simapp::DeviceSpec::Kind::Hid) {
-        std::cerr << "hysteroscene-sim: unsupported: --device " << options.device.text()
-                  << ": this build has no haptic device support yet (use keyboard or scripted:FILE)\n";
-        return hs::cli::kExitInvalidInput;
-    }
-
     // VTK needs an OpenGL 3.2 core context; Qt's windows share contexts, so the format is set for all of them.
     QSurfaceFormat::setDefaultFormat(hs::widgets::VtkView::defaultFormat());
     QApplication app(argc, argv);

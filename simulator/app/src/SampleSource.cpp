@@ -1,6 +1,9 @@
 // Device samples from a script, a recorded trial or the keyboard and mouse.
 #include "hs/simapp/SampleSource.h"
 
+#include <chrono>
+#include <thread>
+
 #include <algorithm>
 
 namespace hs::simapp {
@@ -91,6 +94,59 @@ bool KeyboardSource::next(std::uint64_t firstTick, std::size_t count, sim::Devic
         out[i] = m_sample;
     }
     return true;
+}
+
+Result<std::unique_ptr<HapticsSource>> HapticsSource::start(std::unique_ptr<haptics::HapticDevice> device,
+                                                           haptics::HapticsLoopOptions options) {
+    std::unique_ptr<HapticsSource> source(new HapticsSource());
+    HS_TRY(device->open());
+    source->m_device = std::move(device);
+    source->m_loop = std::make_unique<haptics::HapticsLoop>(*source->m_device, options);
+    if (Status started = source->m_loop->start(); !started.ok()) {
+        source->m_device->close();
+        return started.failure();
+    }
+    return source;
+}
+
+HapticsSource::~HapticsSource() {
+    if (m_loop)
+        m_loop->stop();
+    if (m_device)
+        m_device->close();
+}
+
+bool HapticsSource::next(std::uint64_t firstTick, std::size_t count, sim::DeviceSample* out) {
+    // The loop numbers its ticks from 0 like the world; wait for the step's samples (the device's pace).
+    std::size_t have = 0;
+    while (have < count) {
+        if (m_cancelled.load() || m_loop->deviceLost() || !m_loop->running())
+            return false;
+        sim::DeviceSample s;
+        if (m_loop->popSample(s)) {
+            s.tick = firstTick + have;
+            out[have++] = sim::clamped(s);
+        } else {
+            std::this_thread::sleep_for(std::chrono::microseconds(200));
+        }
+    }
+    return true;
+}
+
+void HapticsSource::publish(std::shared_ptr<const sim::HapticFrame> frame) {
+    m_loop->publish(std::move(frame));
+}
+
+bool HapticsSource::deviceLost() const {
+    return m_loop->deviceLost();
+}
+
+haptics::HapticsStats HapticsSource::stats() const {
+    return m_loop->stats();
+}
+
+std::string HapticsSource::deviceName() const {
+    return m_device->name();
 }
 
 } // namespace hs::simapp

@@ -2,6 +2,8 @@
 // display rate, the keyboard and mouse as a device, and the end of a trial with its report.
 #include "hs/simapp/SimWindow.h"
 
+#include "hs/haptics/HidDevice.h"
+
 #include "hs/simapp/Headless.h"
 #include "hs/simrender/Hud.h"
 #include "hs/widgets/view/VtkView.h"
@@ -178,6 +180,7 @@ void SimWindow::openPackage(const QString& folder) {
 void SimWindow::startSession(std::unique_ptr<sim::World> world) {
     m_world = std::move(world);
     m_keyboard = nullptr;
+    m_haptics = nullptr;
     if (!m_options.replayPath.empty()) {
         auto trial = sim::readTrial(m_options.replayPath);
         if (!trial) {
@@ -197,6 +200,21 @@ void SimWindow::startSession(std::unique_ptr<sim::World> world) {
             return;
         }
         m_source = std::make_unique<ScriptSource>(std::move(*script));
+    } else if (m_options.device.kind == DeviceSpec::Kind::Hid) {
+        haptics::HidDeviceOptions hid;
+        if (m_options.device.vendorId != 0 || m_options.device.productId != 0) {
+            hid.vendorId = m_options.device.vendorId;
+            hid.productId = m_options.device.productId;
+        }
+        auto source = HapticsSource::start(std::make_unique<haptics::HidDevice>(hid));
+        if (!source) {
+            MessageBox::critical(this, tr("Haptic device"), tr("The haptic hysteroscope could not be opened."),
+                                 fromUtf8(source.error().message()));
+            emit loadFailed(fromUtf8(source.error().message()));
+            return;
+        }
+        m_haptics = source->get();
+        m_source = std::move(*source);
     } else {
         auto keyboard = std::make_unique<KeyboardSource>();
         m_keyboard = keyboard.get();
@@ -205,6 +223,11 @@ void SimWindow::startSession(std::unique_ptr<sim::World> world) {
     m_endoscope->setSurface(m_world->scene().surface);
     m_startedUtc = utcNow();
     m_loop = std::make_unique<PhysicsLoop>(*m_world, *m_source);
+    if (m_haptics) {
+        HapticsSource* haptic = m_haptics;
+        haptic->publish(m_world->hapticFrame());
+        m_loop->setAfterStep([haptic](const sim::World& stepped) { haptic->publish(stepped.hapticFrame()); });
+    }
     m_loop->start();
     m_fpsClock.start();
     m_fpsFrames = 0;
@@ -215,6 +238,8 @@ void SimWindow::startSession(std::unique_ptr<sim::World> world) {
 }
 
 void SimWindow::stopSession() {
+    if (m_haptics)
+        m_haptics->cancel();
     if (m_loop)
         m_loop->stop();
     m_renderTimer->stop();

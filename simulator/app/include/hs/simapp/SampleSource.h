@@ -5,12 +5,17 @@
 /// in as another source whose next() waits for the loop's samples and whose paced() is true (docs/simulator.md,
 /// "Running the simulator").
 
+#include "hs/haptics/HapticDevice.h"
+#include "hs/haptics/HapticsLoop.h"
 #include "hs/sim/Device.h"
+#include "hs/sim/HapticFrame.h"
 #include "hs/sim/Script.h"
 #include "hs/sim/Trial.h"
 
 #include <cstddef>
+#include <atomic>
 #include <cstdint>
+#include <memory>
 #include <mutex>
 #include <string>
 
@@ -86,6 +91,33 @@ private:
     int m_held[5] = {0, 0, 0, 0, 0};
     double m_nudge[5] = {0, 0, 0, 0, 0};
     std::uint32_t m_markTicksLeft = 0;
+};
+
+/// A haptic device through the 1 kHz haptics loop (hs::haptics::HapticsLoop): next() waits for the loop's samples,
+/// so the device paces the physics; publish() hands the loop the world's newest surface after every step. When the
+/// device is lost the loop writes zero force and next() ends the source: the trial stops there (the window says so
+/// and offers the report).
+class HapticsSource final : public SampleSource {
+public:
+    /// Opens `device` and starts the loop. The errors of HapticDevice::open and HapticsLoop::start.
+    [[nodiscard]] static Result<std::unique_ptr<HapticsSource>> start(std::unique_ptr<haptics::HapticDevice> device,
+                                                                      haptics::HapticsLoopOptions options = {});
+    ~HapticsSource() override;
+    bool next(std::uint64_t firstTick, std::size_t count, sim::DeviceSample* out) override;
+    bool paced() const override { return true; }
+    /// Physics thread, after each step.
+    void publish(std::shared_ptr<const sim::HapticFrame> frame);
+    /// Ends next()'s wait (the window is closing).
+    void cancel() { m_cancelled.store(true); }
+    bool deviceLost() const;
+    haptics::HapticsStats stats() const;
+    std::string deviceName() const;
+
+private:
+    HapticsSource() = default;
+    std::unique_ptr<haptics::HapticDevice> m_device;
+    std::unique_ptr<haptics::HapticsLoop> m_loop;
+    std::atomic<bool> m_cancelled{false};
 };
 
 } // namespace hs::simapp

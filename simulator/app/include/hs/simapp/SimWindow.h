@@ -88,6 +88,7 @@ private:
     std::unique_ptr<sim::World> m_world;
     std::unique_ptr<SampleSource> m_source;
     KeyboardSource* m_keyboard = nullptr; ///< m_source when the keyboard drives
+    HapticsSource* m_haptics = nullptr;   ///< m_source when a haptic device drives
     sim::Trial m_replay;                  ///< --replay's trial (TrialSource reads it)
     std::unique_ptr<PhysicsLoop> m_loop;
     std::string m_startedUtc;
