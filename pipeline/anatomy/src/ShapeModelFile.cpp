@@ -419,13 +419,18 @@ Status saveShapeModel(const ShapeModel& model, const std::string& path) {
 
 namespace {
 
-/// Reads the model from an open HDF5 file; `name` names it in errors.
+/// Reads the model from an open HDF5 file; `name` names it in errors (also in those of the checks on the data,
+/// such as the reference mesh's validation, which do not know the file).
 Result<ShapeModel> readShapeModelFile(hid_t file, const std::string& name) {
+    const auto named = [&name](const Error& e) {
+        return fail(e.code, e.detail.find(name) == std::string::npos ? name + ": " + e.detail : e.detail);
+    };
     const Reader reader{file, name};
     auto data = readModel(reader);
     if (!data)
-        return data.failure();
-    HS_TRY(readOurs(reader, **data));
+        return named(data.error());
+    if (Status ours = readOurs(reader, **data); !ours.ok())
+        return named(ours.error());
     return ShapeModel(std::shared_ptr<const ShapeModel::Data>(std::move(data).value()));
 }
 
