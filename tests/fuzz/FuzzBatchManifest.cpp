@@ -11,7 +11,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const auto manifest = hs::batch::parseManifest(text, "fuzz-manifest.tsv");
     if (!manifest.ok()) {
         hs::fuzz::check(manifest.error().detail.find("fuzz-manifest.tsv") != std::string::npos,
-                        "an error names the source");
+                        "an error names the source", manifest.error().detail);
         return 0;
     }
     const std::string formatted = hs::batch::formatManifest(*manifest);

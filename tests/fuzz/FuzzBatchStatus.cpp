@@ -11,7 +11,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const auto record = hs::batch::parseStatus(text, "fuzz-status.json");
     if (!record.ok())
         hs::fuzz::check(record.error().detail.find("fuzz-status.json") != std::string::npos,
-                        "an error names the source");
+                        "an error names the source", record.error().detail);
     else
         hs::fuzz::check(hs::batch::parseStatus(hs::batch::toJson(*record), "written.json").ok(),
                         "an accepted record, written, reads back");

@@ -10,7 +10,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string_view text(reinterpret_cast<const char*>(data), size);
     const auto spec = hs::scene::parseCase(text, "fuzz.json");
     if (!spec.ok()) {
-        hs::fuzz::check(spec.error().detail.find("fuzz.json") != std::string::npos, "an error names the source");
+        hs::fuzz::check(spec.error().detail.find("fuzz.json") != std::string::npos, "an error names the source",
+                        spec.error().detail);
         return 0;
     }
     const auto again = hs::scene::parseCase(hs::scene::toJson(*spec), "written.json");

@@ -10,6 +10,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const auto curriculum = hs::batch::parseCurriculum(text, "fuzz-curriculum.json");
     if (!curriculum.ok())
         hs::fuzz::check(curriculum.error().detail.find("fuzz-curriculum.json") != std::string::npos,
-                        "an error names the source");
+                        "an error names the source", curriculum.error().detail);
     return 0;
 }

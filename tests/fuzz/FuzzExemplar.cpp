@@ -10,6 +10,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         return 0;
     const auto image = hs::texture::readExemplarFile(path);
     if (!image.ok())
-        hs::fuzz::check(image.error().detail.find(path) != std::string::npos, "an error names the file");
+        hs::fuzz::check(image.error().detail.find(path) != std::string::npos, "an error names the file",
+                        image.error().detail);
     return 0;
 }

@@ -26,7 +26,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         else
             hs::fuzz::check(hs::validate(std::get<hs::TetMesh>(*mesh)).ok(), "an accepted tet mesh passes validate");
     } else {
-        hs::fuzz::check(mesh.error().detail.find(path) != std::string::npos, "an error names the file");
+        hs::fuzz::check(mesh.error().detail.find(path) != std::string::npos, "an error names the file",
+                        mesh.error().detail);
     }
     return 0;
 }

@@ -106,7 +106,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     limits.maxTotalBytes = 64 << 20;
     const auto scene = hs::scene::readScenePackage(root.string(), limits);
     if (!scene.ok())
-        hs::fuzz::check(scene.error().detail.find(root.string()) != std::string::npos, "an error names the folder");
+        hs::fuzz::check(scene.error().detail.find(root.string()) != std::string::npos, "an error names the folder",
+                        scene.error().detail);
     hs::fuzz::removeScratch("package");
     return 0;
 }

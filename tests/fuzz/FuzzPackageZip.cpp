@@ -14,6 +14,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     limits.maxTotalBytes = 64 << 20;
     const auto scene = hs::scene::readScenePackage(path, limits);
     if (!scene.ok())
-        hs::fuzz::check(scene.error().detail.find(path) != std::string::npos, "an error names the zip");
+        hs::fuzz::check(scene.error().detail.find(path) != std::string::npos, "an error names the zip",
+                        scene.error().detail);
     return 0;
 }

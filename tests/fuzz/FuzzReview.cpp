@@ -10,7 +10,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const auto review = hs::scene::parseReview(text, "fuzz.review.json");
     if (!review.ok())
         hs::fuzz::check(review.error().detail.find("fuzz.review.json") != std::string::npos,
-                        "an error names the source");
+                        "an error names the source", review.error().detail);
     else
         hs::fuzz::check(hs::scene::parseReview(hs::scene::toJson(*review), "written.json").ok(),
                         "an accepted review, written, reads back");

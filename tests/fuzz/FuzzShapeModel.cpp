@@ -7,6 +7,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const auto model = hs::anatomy::loadShapeModelImage(data, size, "fuzz-model.h5");
     if (!model.ok())
-        hs::fuzz::check(model.error().detail.find("fuzz-model.h5") != std::string::npos, "an error names the source");
+        hs::fuzz::check(model.error().detail.find("fuzz-model.h5") != std::string::npos, "an error names the source",
+                        model.error().detail);
     return 0;
 }

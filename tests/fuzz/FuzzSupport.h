@@ -47,9 +47,9 @@ inline void removeScratch(const std::string& name) {
 }
 
 /// A failed property is a crash: the fuzzer keeps the input, the replay test fails on it.
-inline void check(bool condition, const char* what) {
+inline void check(bool condition, const char* what, const std::string& detail = {}) {
     if (!condition) {
-        std::fprintf(stderr, "fuzz property failed: %s\n", what);
+        std::fprintf(stderr, "fuzz property failed: %s\n%s\n", what, detail.c_str());
         std::abort();
     }
 }
