@@ -7,7 +7,7 @@
 #
 # Environment: HS_FUZZ_RUNS (stop a harness after this many executions; default: time only), HS_FUZZ_PARALLEL
 # (harnesses at a time, default 2), HS_FUZZ_JOBS (build jobs, default 2), HS_FUZZ_NO_BUILD (use the harnesses
-# already built), HS_FUZZ_CLI (a hysteroscene-cli that makes
+# already built), HS_FUZZ_REPORT_ONLY (print the table of the last runs of every harness, run nothing), HS_FUZZ_CLI (a hysteroscene-cli that makes
 # generated seeds; default build/ci or build/release when present).
 # Output: build/fuzz/campaign/<harness>/{corpus,crashes,log.txt} and build/fuzz/campaign/summary.txt.
 # A crash: the input is in crashes/; replay it with build/fuzz/bin/fuzz_<harness> FILE, fix the reader, and commit
@@ -29,8 +29,10 @@ launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 
 selected=("$@")
+report_only="${HS_FUZZ_REPORT_ONLY:-}"
+[[ -n "$report_only" ]] && asan=0
 cmake --preset fuzz "${launcher[@]}" >/dev/null
-if [[ -z "${HS_FUZZ_NO_BUILD:-}" ]]; then
+if [[ -z "${HS_FUZZ_NO_BUILD:-}" && -z "$report_only" ]]; then
     if ((${#selected[@]})); then
         cmake --build build/fuzz -j "$jobs" --target "${selected[@]/#/fuzz_}"
     else
@@ -43,42 +45,37 @@ campaign="$build/campaign"
 seeds="$campaign/generated-seeds"
 mkdir -p "$campaign"
 
-# Generated seeds: a tiny scene package from the CLI (its files seed the mesh, case, package and zip harnesses) and
-# the bundled resources (model, exemplars, curricula). Not committed: they are made again on every campaign.
+# Generated seeds: the committed mesh fixtures converted by the CLI into every other format it writes (binary STL
+# and PLY, VTP, VTU, MSH, MEDIT, OFF), the bundled case, curricula and exemplars. Not committed: they are made again
+# on every campaign. Scene packages the CLI generates are megabytes (the visual surface); the package harnesses use
+# the small committed ones instead.
 make_seeds() {
+    [[ -n "$report_only" ]] && return
     local cli="${HS_FUZZ_CLI:-}"
     [[ -z "$cli" && -x build/ci/bin/hysteroscene-cli ]] && cli=build/ci/bin/hysteroscene-cli
     [[ -z "$cli" && -x build/release/bin/hysteroscene-cli ]] && cli=build/release/bin/hysteroscene-cli
     rm -rf "$seeds"
-    mkdir -p "$seeds"/{mesh_obj,mesh_vtp,mesh_vtu,mesh_msh,case,package_folder,package_zip,shape_model,exemplar,curriculum}
-    cp resources/models/*.h5 "$seeds/shape_model/"
+    mkdir -p "$seeds"/{mesh_obj,mesh_stl,mesh_ply,mesh_off,mesh_vtp,mesh_vtu,mesh_msh,mesh_medit,case,exemplar,curriculum}
     cp resources/exemplars/*.png "$seeds/exemplar/"
     cp resources/curricula/*.json tests/data/batch/*.json "$seeds/curriculum/"
     cp resources/cases/*.json "$seeds/case/"
     if [[ -z "$cli" ]]; then
-        echo "no hysteroscene-cli built (build/ci or build/release): only committed and bundled seeds"
+        echo "no hysteroscene-cli built (build/ci or build/release): committed and bundled seeds only"
         return
     fi
-    python3 - "$seeds/tiny.json" <<'PY'
-import json, sys
-case = json.load(open("resources/cases/default.json"))
-case["meshing"]["targetVertices"] = 1500
-case["texture"]["sizePx"] = 64
-del case["pathologies"][1]
-json.dump(case, open(sys.argv[1], "w"), indent=2)
-PY
-    if "$cli" generate "$seeds/tiny.json" -o "$seeds/scene" --zip >/dev/null 2>&1 ||
-        "$cli" generate "$seeds/tiny.json" -o "$seeds/scene" >/dev/null 2>&1; then
-        cp "$seeds/scene/surface.obj" "$seeds/mesh_obj/" 2>/dev/null || true
-        cp "$seeds/scene/surface.vtp" "$seeds/mesh_vtp/"
-        cp "$seeds/scene/tets.vtu" "$seeds/mesh_vtu/"
-        cp "$seeds/scene/mesh.msh" "$seeds/mesh_msh/" 2>/dev/null || true
-        cp "$seeds/scene/case.json" "$seeds/case/generated.json"
-        python3 tests/fuzz/pack-folder.py "$seeds/scene" "$seeds/package_folder/generated.bin"
-        [[ -f "$seeds/scene.zip" ]] && cp "$seeds/scene.zip" "$seeds/package_zip/generated.zip"
-    else
-        echo "generating the seed package failed: only committed and bundled seeds"
-    fi
+    local surface tets ext
+    for surface in tests/data/io/quad-cube.obj tests/data/io/labelled-tetrahedron.ply; do
+        for ext in obj stl ply off vtp vtu; do
+            "$cli" convert "$surface" "$seeds/mesh_$ext/$(basename "${surface%.*}").$ext" >/dev/null 2>&1 || true
+        done
+    done
+    for tets in tests/data/io/two-regions.msh tests/data/io/two-regions.mesh; do
+        for ext in vtu msh mesh; do
+            local dir="mesh_$ext"
+            [[ "$ext" == mesh ]] && dir=mesh_medit
+            "$cli" convert "$tets" "$seeds/$dir/$(basename "${tets%.*}")-${tets##*.}.$ext" >/dev/null 2>&1 || true
+        done
+    done
 }
 make_seeds
 
@@ -88,7 +85,7 @@ run_harness() {
     local dir="$campaign/$name"
     rm -rf "$dir"
     mkdir -p "$dir/corpus" "$dir/crashes"
-    local args=(-max_total_time="$seconds" -print_final_stats=1 -timeout=30 -rss_limit_mb=2560
+    local args=(-max_total_time="$seconds" -print_final_stats=1 -timeout=30 -rss_limit_mb=2560 -max_len=262144
                 -artifact_prefix="$dir/crashes/" -close_fd_mask=3)
     [[ -n "${HS_FUZZ_RUNS:-}" ]] && args+=(-runs="$HS_FUZZ_RUNS")
     [[ "$dict" != "-" ]] && args+=(-dict="tests/fuzz/dict/$dict")
@@ -97,7 +94,16 @@ run_harness() {
     [[ -d "$seeds/$name" ]] && inputs+=("$seeds/$name")
     local start end
     start=$(date +%s)
-    TMPDIR=/dev/shm "$build/bin/fuzz_$name" "${args[@]}" "${inputs[@]}" >"$dir/log.txt" 2>&1 || true
+    # Leaks inside libraries the project cannot fix are suppressed (tests/fuzz/lsan.supp); matching them needs full
+    # allocation stacks, which cost speed, so only for the harnesses that meet them.
+    local asan_options="${ASAN_OPTIONS:-}"
+    case "$name" in
+    exemplar | mesh_vtu | package_folder | package_zip)
+        asan_options="fast_unwind_on_malloc=0${asan_options:+:$asan_options}"
+        ;;
+    esac
+    TMPDIR=/dev/shm ASAN_OPTIONS="$asan_options" LSAN_OPTIONS="suppressions=$root/tests/fuzz/lsan.supp" \
+        "$build/bin/fuzz_$name" "${args[@]}" "${inputs[@]}" >"$dir/log.txt" 2>&1 || true
     end=$(date +%s)
     echo "$((end - start))" >"$dir/seconds"
 }
@@ -110,6 +116,7 @@ for line in "${lines[@]}"; do
     if ((${#selected[@]})) && [[ ! " ${selected[*]} " == *" $name "* ]]; then
         continue
     fi
+    [[ -n "$report_only" ]] && continue
     if [[ ! -x "$build/bin/fuzz_$name" ]]; then
         echo "$name: not built (build/fuzz/bin/fuzz_$name), skipped"
         continue
@@ -135,8 +142,8 @@ wait
         if ((${#selected[@]})) && [[ ! " ${selected[*]} " == *" $name "* ]]; then
             continue
         fi
-        execs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$dir/log.txt" | awk '{print $2}' | tail -1)
-        rate=$(grep -o 'stat::average_exec_per_sec: [0-9]*' "$dir/log.txt" | awk '{print $2}' | tail -1)
+        execs=$(awk '/stat::number_of_executed_units:/ {print $2}' "$dir/log.txt" | tail -1)
+        rate=$(awk '/stat::average_exec_per_sec:/ {print $2}' "$dir/log.txt" | tail -1)
         status=$(grep -E '^#[0-9]+' "$dir/log.txt" | grep 'cov:' | tail -1)
         cov=$(sed -n 's/.*cov: \([0-9]*\).*/\1/p' <<<"$status")
         ft=$(sed -n 's/.*ft: \([0-9]*\).*/\1/p' <<<"$status")
