@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cctype>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -162,7 +163,7 @@ int runValidateCase(const ValidateOptions& options) {
     return kExitOk;
 }
 
-/// A package folder (or its manifest.json): every path, size and checksum, then every file parsed.
+/// A package folder (its manifest.json, or a zipped package): every path, size and checksum, then every file parsed.
 int runValidatePackage(const ValidateOptions& options, const std::string& folder) {
     auto manifest = scene::verifyScenePackage(folder);
     Result<scene::Scene> scene =
@@ -225,7 +226,10 @@ int runValidate(const ValidateOptions& options) {
     namespace fs = std::filesystem;
     std::error_code ec;
     const fs::path path(options.path);
-    if (fs::is_directory(path, ec))
+    std::string extension = path.extension().string();
+    for (char& c : extension)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (fs::is_directory(path, ec) || extension == ".zip")
         return runValidatePackage(options, options.path);
     if (path.filename() == std::string(scene::kManifestName))
         return runValidatePackage(options, path.parent_path().empty() ? "." : path.parent_path().string());
@@ -238,7 +242,9 @@ void addValidateCommand(CLI::App& app, int& exitCode) {
     auto options = std::make_shared<ValidateOptions>();
     auto* sub = app.add_subcommand("validate", "Check a case file (every error names the field and its allowed range) "
                                                "or a scene package folder (paths, sizes, checksums, contents)");
-    sub->add_option("PATH", options->path, "case .json, or a scene package folder or its manifest.json")->required();
+    sub->add_option("PATH", options->path,
+                    "case .json, or a scene package folder, its manifest.json or a zipped package (.zip)")
+        ->required();
     sub->add_option("--scope-diameter", options->scopeDiameterMm,
                     "scene packages: rigid hysteroscope diameter in mm whose passage from the external os to the "
                     "fundus is checked (a warning when it does not fit); default 2.9")

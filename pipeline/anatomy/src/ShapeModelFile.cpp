@@ -417,6 +417,25 @@ Status saveShapeModel(const ShapeModel& model, const std::string& path) {
     return {};
 }
 
+namespace {
+
+/// Reads the model from an open HDF5 file; `name` names it in errors (also in those of the checks on the data,
+/// such as the reference mesh's validation, which do not know the file).
+Result<ShapeModel> readShapeModelFile(hid_t file, const std::string& name) {
+    const auto named = [&name](const Error& e) {
+        return fail(e.code, e.detail.find(name) == std::string::npos ? name + ": " + e.detail : e.detail);
+    };
+    const Reader reader{file, name};
+    auto data = readModel(reader);
+    if (!data)
+        return named(data.error());
+    if (Status ours = readOurs(reader, **data); !ours.ok())
+        return named(ours.error());
+    return ShapeModel(std::shared_ptr<const ShapeModel::Data>(std::move(data).value()));
+}
+
+} // namespace
+
 Result<ShapeModel> loadShapeModel(const std::string& path) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
@@ -427,12 +446,23 @@ Result<ShapeModel> loadShapeModel(const std::string& path) {
     Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
     if (!file.valid())
         return fail(ErrorCode::IoError, "cannot open " + path);
-    const Reader reader{file.get(), path};
-    auto data = readModel(reader);
-    if (!data)
-        return data.failure();
-    HS_TRY(readOurs(reader, **data));
-    return ShapeModel(std::shared_ptr<const ShapeModel::Data>(std::move(data).value()));
+    return readShapeModelFile(file.get(), path);
+}
+
+Result<ShapeModel> loadShapeModelImage(const void* bytes, std::size_t size, const std::string& name) {
+    const QuietErrors quiet;
+    if (!bytes || size == 0)
+        return fail(ErrorCode::InvalidInput, name + " is empty, not an HDF5 file");
+    // The core driver reads the image in memory (no backing store); H5LT_FILE_IMAGE_DONT_COPY is not used, so HDF5
+    // copies it and never writes to the caller's bytes.
+    Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+    if (!fapl.valid() || H5Pset_fapl_core(fapl.get(), 64 * 1024, 0) < 0 ||
+        H5Pset_file_image(fapl.get(), const_cast<void*>(bytes), size) < 0)
+        return fail(ErrorCode::BackendFailure, name + ": HDF5 cannot take the file image");
+    Handle file(H5Fopen(name.c_str(), H5F_ACC_RDONLY, fapl.get()), H5Fclose);
+    if (!file.valid())
+        return fail(ErrorCode::InvalidInput, name + " is not an HDF5 file (or a damaged one)");
+    return readShapeModelFile(file.get(), name);
 }
 
 } // namespace hs::anatomy

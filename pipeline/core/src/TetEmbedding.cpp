@@ -79,6 +79,12 @@ std::vector<TetEmbedding> embedPoints(const TetMesh& mesh, const std::vector<Vec
                        for (std::size_t i = begin; i < end; ++i) {
                            const Vec3& p = points[i];
                            const SurfaceHit hit = grid.closest(p);
+                           if (hit.triangle < 0) {
+                               // No boundary face at all (every face shared, e.g. by a repeated tet in an untrusted
+                               // file): nothing to walk from; the first tet's weights say how far off the point is.
+                               out[i] = {0, barycentricIn(mesh, 0, p)};
+                               continue;
+                           }
                            std::int32_t tet = faceTet[static_cast<std::size_t>(hit.triangle)];
                            TetEmbedding best{tet, barycentricIn(mesh, static_cast<std::size_t>(tet), p)};
                            std::array<double, 4> w = best.weights;

@@ -7,8 +7,10 @@
 #include "Parsing.h"
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace hs::io::detail {
@@ -51,6 +53,25 @@ std::int64_t plyTypeSize(PlyType type) {
         return 8;
     }
     return 1;
+}
+
+/// The range an integer type holds, so that an ASCII value outside it is an error, not a wrapped or undefined cast.
+std::pair<std::int64_t, std::int64_t> plyIntegerRange(PlyType type) {
+    switch (type) {
+    case PlyType::Int8:
+        return {INT8_MIN, INT8_MAX};
+    case PlyType::UInt8:
+        return {0, UINT8_MAX};
+    case PlyType::Int16:
+        return {INT16_MIN, INT16_MAX};
+    case PlyType::UInt16:
+        return {0, UINT16_MAX};
+    case PlyType::Int32:
+        return {INT32_MIN, INT32_MAX};
+    case PlyType::UInt32:
+    default:
+        return {0, UINT32_MAX};
+    }
 }
 
 bool isFloatType(PlyType type) {
@@ -190,7 +211,7 @@ Result<PlyHeader> parseHeader(const std::string& path, std::string_view text, co
 class PlyBody {
 public:
     PlyBody(const std::string& path, std::string_view text, const PlyHeader& header)
-        : m_path(path), m_text(text), m_encoding(header.encoding), m_pos(header.bodyOffset),
+        : m_text(text), m_encoding(header.encoding), m_pos(header.bodyOffset),
           m_ascii(path, text.substr(header.bodyOffset), 0) {}
 
     bool value(PlyType type, double& out, const char* what) {
@@ -200,6 +221,10 @@ public:
             std::int64_t i = 0;
             if (!m_ascii.integer(i, what))
                 return false;
+            const auto [low, high] = plyIntegerRange(type);
+            if (i < low || i > high)
+                return fail(std::string(what) + " " + std::to_string(i) + " outside the range of its type (" +
+                            std::to_string(low) + ".." + std::to_string(high) + ")");
             out = static_cast<double>(i);
             return true;
         }
@@ -272,7 +297,6 @@ private:
         return 0.0;
     }
 
-    const std::string& m_path;
     std::string_view m_text;
     PlyEncoding m_encoding;
     std::size_t m_pos;

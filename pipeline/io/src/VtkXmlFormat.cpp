@@ -49,6 +49,32 @@ Result<std::int64_t> sumAttribute(const std::string& path, std::string_view xml,
     return sum;
 }
 
+/// The value of attribute `name` in the tag text `tag`, or empty.
+std::string_view attribute(std::string_view tag, std::string_view name) {
+    const std::string needle = " " + std::string(name) + "=\"";
+    const std::size_t at = tag.find(needle);
+    if (at == std::string_view::npos)
+        return {};
+    const std::size_t start = at + needle.size();
+    const std::size_t end = tag.find('"', start);
+    return end == std::string_view::npos ? std::string_view{} : tag.substr(start, end - start);
+}
+
+/// The coordinates of every piece (the first DataArray inside <Points>) must have 3 components. VTK 9.1 refuses
+/// other counts too, but leaks the array it read on that path, so such files never reach it.
+Status checkPointsArrays(const std::string& path, std::string_view xml) {
+    for (std::size_t pos = xml.find("<Points"); pos != std::string_view::npos; pos = xml.find("<Points", pos + 1)) {
+        const std::size_t array = xml.find("<DataArray", pos);
+        const std::size_t arrayEnd = array == std::string_view::npos ? array : xml.find('>', array);
+        if (arrayEnd == std::string_view::npos)
+            return fileError(ErrorCode::InvalidInput, path, "a <Points> element without a DataArray");
+        if (attribute(xml.substr(array, arrayEnd - array), "NumberOfComponents") != "3")
+            return fileError(ErrorCode::InvalidInput, path,
+                             "the Points DataArray must have NumberOfComponents=\"3\" (x, y, z)");
+    }
+    return {};
+}
+
 Status precheckXml(const std::string& path, std::string_view text, const char* dataType, const ReadLimits& limits) {
     const std::size_t root = text.find("<VTKFile");
     std::size_t lead = 0;
@@ -91,18 +117,7 @@ Status precheckXml(const std::string& path, std::string_view text, const char* d
             value > 64)
             return fileError(ErrorCode::InvalidInput, path, "NumberOfComponents outside 0..64");
     }
-    return {};
-}
-
-/// The value of attribute `name` in the tag text `tag`, or empty.
-std::string_view attribute(std::string_view tag, std::string_view name) {
-    const std::string needle = " " + std::string(name) + "=\"";
-    const std::size_t at = tag.find(needle);
-    if (at == std::string_view::npos)
-        return {};
-    const std::size_t start = at + needle.size();
-    const std::size_t end = tag.find('"', start);
-    return end == std::string_view::npos ? std::string_view{} : tag.substr(start, end - start);
+    return checkPointsArrays(path, xml);
 }
 
 /// Bytes per value of a VTK XML integer type name, 0 for other types.
@@ -124,6 +139,53 @@ std::uint64_t loadLittleEndian(const char* data, std::size_t size) {
     for (std::size_t k = 0; k < size; ++k)
         value |= static_cast<std::uint64_t>(static_cast<unsigned char>(data[k])) << (8 * k);
     return value;
+}
+
+/// The size header of an appended array, read before VTK allocates by it: every appended array needs a valid
+/// offset (VTK 9.1 leaks the arrays of a piece it fails to read), raw uncompressed data may not be longer than the
+/// rest of the file, and compressed data (a header of block count, block size, last block size and one compressed
+/// size per block) may not have more blocks than the file holds nor inflate beyond `capacity`.
+Status checkAppendedHeader(const std::string& path, std::string_view text, std::string_view tag,
+                           std::size_t appendedStart, bool rawAppended, std::size_t headerSize, bool bigEndian,
+                           bool compressed, std::int64_t capacity) {
+    std::int64_t offset = 0;
+    if (appendedStart == std::string_view::npos || !parseInt(attribute(tag, "offset"), offset) || offset < 0)
+        return fileError(ErrorCode::InvalidInput, path, "an appended array has no valid offset (or no AppendedData)");
+    if (!rawAppended)
+        return {}; // base64 appended data: VTK decodes it in bounded blocks
+    const std::size_t start = appendedStart + static_cast<std::size_t>(offset);
+    if (start > text.size() || text.size() - start < headerSize)
+        return fileError(ErrorCode::InvalidInput, path, "an appended array lies beyond the end of the file");
+    const std::size_t rest = text.size() - start - headerSize;
+    auto load = [&](std::size_t index) {
+        std::uint64_t value = 0;
+        const char* data = text.data() + start + index * headerSize;
+        for (std::size_t k = 0; k < headerSize; ++k) {
+            const auto byte = static_cast<std::uint64_t>(static_cast<unsigned char>(data[k]));
+            value |= byte << (8 * (bigEndian ? headerSize - 1 - k : k));
+        }
+        return value;
+    };
+    const std::uint64_t first = load(0);
+    if (!compressed) {
+        if (first > rest)
+            return fileError(ErrorCode::InvalidInput, path,
+                             "an appended array declares " + std::to_string(first) + " bytes, more than the " +
+                                 std::to_string(rest) + " left in the file");
+        return {};
+    }
+    // first = number of blocks; the header holds 2 more sizes and one compressed size per block.
+    if (first > rest / headerSize || (first + 2) * headerSize > rest)
+        return fileError(ErrorCode::InvalidInput, path,
+                         "a compressed appended array declares " + std::to_string(first) +
+                             " blocks, more than the file holds");
+    const std::uint64_t blockSize = load(1);
+    const std::uint64_t lastBlock = load(2);
+    const auto limit = static_cast<std::uint64_t>(capacity);
+    if (blockSize > limit || lastBlock > blockSize || (first > 1 && blockSize > 0 && first - 1 > limit / blockSize))
+        return fileError(ErrorCode::InvalidInput, path,
+                         "a compressed appended array declares more data than the file can hold when inflated");
+    return {};
 }
 
 /// VTK sizes each connectivity array by the last value of its "offsets" array, which is data, not a header
@@ -155,6 +217,9 @@ Status checkOffsetsArrays(const std::string& path, std::string_view text, std::s
         if (tagEnd == std::string_view::npos)
             break;
         const std::string_view tag = xml.substr(pos, tagEnd - pos);
+        if (attribute(tag, "format") == "appended")
+            HS_TRY(checkAppendedHeader(path, text, tag, appendedStart, rawAppended, headerSize, bigEndian, compressed,
+                                       capacity));
         if (attribute(tag, "Name") != "offsets")
             continue;
         const std::size_t valueSize = integerTypeSize(attribute(tag, "type"));

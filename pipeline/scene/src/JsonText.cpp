@@ -16,8 +16,10 @@ using nlohmann::json;
 
 constexpr std::size_t kMaxReportedIssues = 20;
 
-/// Deepest nesting of arrays and objects, scanned before parsing so that "[[[[..." never reaches the parser.
-int nestingDepth(std::string_view text) {
+} // namespace
+
+/// Scanned before parsing so that "[[[[..." never reaches the parser.
+int jsonNestingDepth(std::string_view text) {
     int depth = 0;
     int deepest = 0;
     bool inString = false;
@@ -41,11 +43,14 @@ int nestingDepth(std::string_view text) {
     return deepest;
 }
 
+namespace {
+
 /// Follows the parser's events to know the JSON path of each key: records keys repeated within one object
 /// (nlohmann keeps the last silently; a case file must not be ambiguous) and tells where a syntax error happened.
 class ParseTracker {
 public:
-    explicit ParseTracker(std::vector<CaseIssue>& issues) : m_issues(issues) {}
+    ParseTracker(std::vector<CaseIssue>& issues, std::size_t maxStringBytes)
+        : m_issues(issues), m_maxStringBytes(maxStringBytes) {}
 
     bool onEvent(json::parse_event_t event, json& parsed) {
         switch (event) {
@@ -59,11 +64,14 @@ public:
             if (!m_frames.empty()) {
                 Frame& top = m_frames.back();
                 top.key = parsed.get<std::string>();
+                checkLength(top.key, "key");
                 if (!top.keys.insert(top.key).second)
                     m_issues.push_back({currentPath(), "duplicate key " + quoteText(top.key) + " (each field once)"});
             }
             break;
         case json::parse_event_t::value:
+            if (parsed.is_string())
+                checkLength(parsed.get_ref<const std::string&>(), "string");
             elementDone();
             break;
         case json::parse_event_t::object_end:
@@ -92,12 +100,19 @@ private:
         std::set<std::string> keys;
     };
 
+    void checkLength(const std::string& text, const char* what) {
+        if (text.size() > m_maxStringBytes)
+            m_issues.push_back({currentPath(), std::string(what) + " of " + std::to_string(text.size()) +
+                                                   " bytes, above the limit of " + std::to_string(m_maxStringBytes)});
+    }
+
     void elementDone() {
         if (!m_frames.empty() && m_frames.back().array)
             ++m_frames.back().index;
     }
 
     std::vector<CaseIssue>& m_issues;
+    std::size_t m_maxStringBytes;
     std::vector<Frame> m_frames;
 };
 
@@ -116,11 +131,11 @@ Result<json> parseJsonObject(std::string_view text, const std::string& sourceNam
         return fail(ErrorCode::LimitExceeded, sourceName + ": " + std::to_string(text.size()) +
                                                   " bytes, more than the " + std::to_string(limits.maxBytes) +
                                                   "-byte limit of a " + kind);
-    if (const int depth = nestingDepth(text); depth > limits.maxDepth)
+    if (const int depth = jsonNestingDepth(text); depth > limits.maxDepth)
         return fail(ErrorCode::InvalidInput, sourceName + ": arrays and objects nested " + std::to_string(depth) +
                                                  " deep (a " + kind + " nests at most " +
                                                  std::to_string(limits.maxDepth) + ")");
-    ParseTracker tracker(issues);
+    ParseTracker tracker(issues, limits.maxStringBytes);
     json document;
     try {
         document = json::parse(text.begin(), text.end(), [&tracker](int, json::parse_event_t event, json& parsed) {

@@ -1,7 +1,11 @@
 #pragma once
 /// The fixed file names inside a scene package (private to hs::scene; docs/scene-format.md lists them).
 
+#include "hs/core/Result.h"
+
 #include <array>
+#include <cstddef>
+#include <string>
 #include <string_view>
 
 namespace hs::scene::detail {
@@ -24,5 +28,13 @@ constexpr std::string_view kRoughnessFile = "maps/roughness.png";
 /// Files every package must list; the others are optional (options, or maps the scene does not have).
 constexpr std::array<std::string_view, 7> kRequiredFiles{kCaseFile, kSceneFile,      kLabelsFile,    kReportFile,
                                                          kTetsFile, kSurfaceVtpFile, kSurfaceGlbFile};
+
+/// Longest path a package may hold (manifest entries and zip entries alike).
+constexpr std::size_t kMaxPackagePathLength = 255;
+
+/// A package path: '/'-separated components of [A-Za-z0-9._-], none empty, "." or "..", not absolute, at most
+/// kMaxPackagePathLength characters. InvalidInput naming `where` otherwise. The one rule for manifest entries and
+/// zip entries, so that nothing is read or written outside the package folder.
+Status checkPackagePath(const std::string& path, const std::string& where);
 
 } // namespace hs::scene::detail

@@ -7,6 +7,7 @@
 #include "SurfaceEmbedding.h"
 #include "hs/io/AtomicFile.h"
 #include "hs/io/MeshIO.h"
+#include "hs/scene/JsonText.h"
 #include "hs/scene/ScenePackage.h"
 #include "hs/scene/Sha256.h"
 
@@ -24,19 +25,11 @@ namespace hs::scene {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-using nlohmann::json;
-
-constexpr std::size_t kMaxPathLength = 255;
-
-std::string systemMessage(int error) {
-    return std::error_code(error, std::generic_category()).message();
-}
+namespace detail {
 
 /// A manifest path: '/'-separated components of [A-Za-z0-9._-], none empty, "." or "..", not absolute.
-Status checkRelativePath(const std::string& path, const std::string& where) {
-    if (path.empty() || path.size() > kMaxPathLength)
+Status checkPackagePath(const std::string& path, const std::string& where) {
+    if (path.empty() || path.size() > kMaxPackagePathLength)
         return fail(ErrorCode::InvalidInput, where + ": path must have 1-255 characters");
     if (path.front() == '/')
         return fail(ErrorCode::InvalidInput, where + ": \"" + path + "\" is an absolute path");
@@ -56,6 +49,16 @@ Status checkRelativePath(const std::string& path, const std::string& where) {
         start = end + 1;
     }
     return {};
+}
+
+} // namespace detail
+
+namespace {
+
+using nlohmann::json;
+
+std::string systemMessage(int error) {
+    return std::error_code(error, std::generic_category()).message();
 }
 
 /// Walks `relative` below `root` with lstat, so that no component may be a symbolic link; the last must be a
@@ -98,7 +101,7 @@ Result<PackageFile> parseFileEntry(const json& entry, std::size_t index) {
     file.path = path.get<std::string>();
     file.bytes = bytes.get<std::int64_t>();
     file.sha256 = sha.get<std::string>();
-    HS_TRY(checkRelativePath(file.path, where));
+    HS_TRY(detail::checkPackagePath(file.path, where));
     if (file.path == kManifestName)
         return fail(ErrorCode::InvalidInput, where + ": the manifest cannot list itself");
     if (file.bytes < 0)
@@ -128,6 +131,9 @@ Status parseToolVersions(const json& j, std::map<std::string, std::string>& out)
 }
 
 Result<PackageManifest> parseManifest(const std::string& text, const PackageReadLimits& limits) {
+    if (const int depth = jsonNestingDepth(text); depth > kMaxCaseNestingDepth)
+        return fail(ErrorCode::InvalidInput, "manifest.json: arrays and objects nested " + std::to_string(depth) +
+                                                 " deep (at most " + std::to_string(kMaxCaseNestingDepth) + ")");
     const json j = json::parse(text, nullptr, false);
     if (j.is_discarded() || !j.is_object())
         return fail(ErrorCode::InvalidInput, "manifest.json: not a JSON object");
@@ -309,9 +315,43 @@ Status readDocuments(const fs::path& root, const PackageManifest& manifest, cons
     return detail::parseReportJson(*reportText, std::string(detail::kReportFile), scene);
 }
 
+/// A path naming a regular file ending in ".zip" (any case): a zipped package.
+bool isZipFile(const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    for (char& c : ext)
+        c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+    struct stat st {};
+    return ext == ".zip" && ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
+}
+
+/// Extracts a zipped package into a fresh temporary folder, calls `use(folder, manifest)`, and removes the folder.
+template <class T, class Use>
+Result<T> withUnzipped(const std::string& zipPath, const PackageReadLimits& limits, Use use) {
+    std::error_code ec;
+    std::string pattern = (fs::temp_directory_path(ec) / "hs-unzip-XXXXXX").string();
+    if (ec || !::mkdtemp(pattern.data()))
+        return fail(ErrorCode::IoError, zipPath + ": cannot create a temporary folder to extract it into");
+    const fs::path scratch(pattern);
+    Result<T> result = [&]() -> Result<T> {
+        auto manifest = unzipScenePackage(zipPath, (scratch / "package").string(), limits);
+        if (!manifest)
+            return manifest.failure();
+        auto used = use((scratch / "package").string(), *manifest);
+        if (!used)
+            return fail(used.error().code, zipPath + " (extracted): " + used.error().detail);
+        return used;
+    }();
+    fs::remove_all(scratch, ec);
+    return result;
+}
+
 } // namespace
 
 Result<PackageManifest> verifyScenePackage(const std::string& folder, const PackageReadLimits& limits) {
+    if (isZipFile(folder))
+        return withUnzipped<PackageManifest>(
+            folder, limits,
+            [](const std::string&, const PackageManifest& manifest) -> Result<PackageManifest> { return manifest; });
     const fs::path root = fs::path(folder).lexically_normal();
     const std::string name = (root.filename().empty() ? root.parent_path() : root).filename().string();
     if (isPackageTempName(name))
@@ -355,6 +395,10 @@ Result<PackageManifest> verifyScenePackage(const std::string& folder, const Pack
 }
 
 Result<Scene> readScenePackage(const std::string& folder, const PackageReadLimits& limits) {
+    if (isZipFile(folder))
+        return withUnzipped<Scene>(folder, limits, [&limits](const std::string& extracted, const PackageManifest&) {
+            return readScenePackage(extracted, limits);
+        });
     auto manifest = verifyScenePackage(folder, limits);
     if (!manifest)
         return manifest.failure();

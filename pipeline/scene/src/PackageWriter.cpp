@@ -330,7 +330,9 @@ Result<PackageWriteResult> writeScenePackage(const Scene& scene, const std::stri
     Status placed = manifest.ok() ? swapIntoPlace(tmp, target) : Status(manifest.failure());
     if (!placed.ok()) {
         fs::remove_all(tmp, ec);
-        return placed.failure();
+        // Name the package the caller asked for: the temporary path in the detail means nothing to a user.
+        return fail(placed.error().code,
+                    folder + ": the package was not written (what was there is unchanged): " + placed.error().detail);
     }
     progress.report("scene.write", 1.0);
     return PackageWriteResult{target.string(), std::move(*manifest)};

@@ -1,6 +1,7 @@
 // scene.json, labels.json and report.json: writing and reading.
 
 #include "SceneJson.h"
+#include "hs/scene/JsonText.h"
 
 #include <nlohmann/json.hpp>
 
@@ -138,6 +139,9 @@ struct Reader {
 };
 
 Result<json> parseDocument(std::string_view text, const std::string& name, std::string_view format) {
+    if (const int depth = jsonNestingDepth(text); depth > kMaxCaseNestingDepth)
+        return fail(ErrorCode::InvalidInput, name + ": arrays and objects nested " + std::to_string(depth) +
+                                                 " deep (at most " + std::to_string(kMaxCaseNestingDepth) + ")");
     json j = json::parse(text.begin(), text.end(), nullptr, false);
     if (j.is_discarded())
         return fail(ErrorCode::InvalidInput, name + ": not valid JSON");

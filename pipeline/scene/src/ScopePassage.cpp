@@ -169,7 +169,9 @@ Result<float> widestBottleneck(const VoxelGrid<float>& clearance, const std::vec
     }
     std::size_t pops = 0;
     while (!heap.empty()) {
-        const auto [value, v] = heap.top();
+        // Plain variables, not a structured binding: a C++17 lambda may not capture a binding (clang refuses).
+        const float value = heap.top().first;
+        const std::int64_t v = heap.top().second;
         heap.pop();
         if (value < best[std::size_t(v)])
             continue;
@@ -214,7 +216,8 @@ Result<std::vector<std::int64_t>> centredWideRoute(const VoxelGrid<float>& clear
         }
     std::size_t pops = 0;
     while (!heap.empty()) {
-        const auto [d, v] = heap.top();
+        const double d = heap.top().first;
+        const std::int64_t v = heap.top().second;
         heap.pop();
         if (d > dist[std::size_t(v)])
             continue;

@@ -50,6 +50,13 @@ Result<ImageU8> readImageRgb8(const std::string& path, const ImageReadLimits& li
             why = "unknown format";
         return fail(ErrorCode::InvalidInput, path + ": not a readable image (PNG, JPEG, EXR, ...): " + why);
     }
+    // OpenImageIO keeps messages (of formats tried before the one that opened it, of warnings while decoding) until
+    // they are read: read them on every path, or they leak.
+    (void)OIIO::geterror();
+    struct Drain {
+        OIIO::ImageInput& input;
+        ~Drain() { (void)input.geterror(); }
+    } drain{*input};
     const OIIO::ImageSpec spec = input->spec();
     if (spec.width < limits.minSide || spec.height < limits.minSide || spec.width > limits.maxSide ||
         spec.height > limits.maxSide || spec.depth > 1)

@@ -8,9 +8,14 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <zlib.h>
+
+#include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 using namespace hs;
 using namespace hs::scene;
@@ -317,4 +322,199 @@ TEST_F(ScenePackage, ZipsDeterministically) {
     const std::string a = readText(m_dir.path() / "a.zip");
     EXPECT_EQ(a.substr(0, 2), "PK");
     EXPECT_EQ(a, readText(m_dir.path() / "b.zip"));
+}
+
+// ---- Zipped packages: untrusted archives (zip slip, links, bombs) ----
+
+namespace {
+
+/// One entry of a hand-made zip: what a hostile archive may say, lies included.
+struct ZipEntry {
+    std::string name;
+    std::string data; ///< stored as is, or deflated when `deflate`
+    bool deflate = false;
+    std::uint32_t unixMode = 0100644;
+    std::int64_t declaredSize = -1; ///< the uncompressed size the headers claim; -1: the true size
+};
+
+std::uint32_t crc32Of(const std::string& bytes) {
+    std::uint32_t crc = 0xffffffffu;
+    for (const unsigned char c : bytes) {
+        crc ^= c;
+        for (int k = 0; k < 8; ++k)
+            crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+    }
+    return ~crc;
+}
+
+std::string rawDeflate(const std::string& bytes) {
+    z_stream z{};
+    deflateInit2(&z, 9, Z_DEFLATED, -15, 9, Z_DEFAULT_STRATEGY);
+    std::string out(deflateBound(&z, static_cast<uLong>(bytes.size())), '\0');
+    z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data()));
+    z.avail_in = static_cast<uInt>(bytes.size());
+    z.next_out = reinterpret_cast<Bytef*>(out.data());
+    z.avail_out = static_cast<uInt>(out.size());
+    deflate(&z, Z_FINISH);
+    out.resize(z.total_out);
+    deflateEnd(&z);
+    return out;
+}
+
+void put(std::string& out, std::uint32_t value, int bytes) {
+    for (int i = 0; i < bytes; ++i)
+        out.push_back(static_cast<char>((value >> (8 * i)) & 0xffu));
+}
+
+/// A zip archive holding `entries` in order (no zip64, no extra fields).
+std::string makeZip(const std::vector<ZipEntry>& entries) {
+    std::string out;
+    std::string central;
+    for (const auto& e : entries) {
+        const std::string body = e.deflate ? rawDeflate(e.data) : e.data;
+        const auto size = static_cast<std::uint32_t>(e.declaredSize < 0 ? e.data.size() : e.declaredSize);
+        const auto offset = static_cast<std::uint32_t>(out.size());
+        const std::uint32_t method = e.deflate ? 8 : 0;
+        put(out, 0x04034b50, 4);
+        put(out, 20, 2);
+        put(out, 0, 2);
+        put(out, method, 2);
+        put(out, 0, 2);
+        put(out, 0x21, 2);
+        put(out, crc32Of(e.data), 4);
+        put(out, static_cast<std::uint32_t>(body.size()), 4);
+        put(out, size, 4);
+        put(out, static_cast<std::uint32_t>(e.name.size()), 2);
+        put(out, 0, 2);
+        out += e.name + body;
+        put(central, 0x02014b50, 4);
+        put(central, (3u << 8) | 20u, 2);
+        put(central, 20, 2);
+        put(central, 0, 2);
+        put(central, method, 2);
+        put(central, 0, 2);
+        put(central, 0x21, 2);
+        put(central, crc32Of(e.data), 4);
+        put(central, static_cast<std::uint32_t>(body.size()), 4);
+        put(central, size, 4);
+        put(central, static_cast<std::uint32_t>(e.name.size()), 2);
+        put(central, 0, 4); // extra and comment lengths
+        put(central, 0, 4); // disk, internal attributes
+        put(central, e.unixMode << 16, 4);
+        put(central, offset, 4);
+        central += e.name;
+    }
+    const auto centralOffset = static_cast<std::uint32_t>(out.size());
+    out += central;
+    put(out, 0x06054b50, 4);
+    put(out, 0, 4);
+    put(out, static_cast<std::uint32_t>(entries.size()), 2);
+    put(out, static_cast<std::uint32_t>(entries.size()), 2);
+    put(out, static_cast<std::uint32_t>(central.size()), 4);
+    put(out, centralOffset, 4);
+    put(out, 0, 2);
+    return out;
+}
+
+/// The entries of the package folder, manifest first (as zipScenePackage orders them).
+std::vector<ZipEntry> packageEntries(const fs::path& folder, const PackageManifest& manifest) {
+    std::vector<ZipEntry> entries{{"manifest.json", readText(folder / "manifest.json")}};
+    for (const auto& f : manifest.files)
+        entries.push_back({f.path, readText(folder / f.path)});
+    return entries;
+}
+
+class ZippedPackage : public ScenePackage {
+protected:
+    /// Writes `entries` as a zip, expects unzipScenePackage to refuse it with `code` and a message naming each of
+    /// `words`, and checks that nothing was left: no extraction folder, nothing beside it.
+    void expectZipRefused(const std::vector<ZipEntry>& entries, ErrorCode code,
+                          std::initializer_list<const char*> words, const PackageReadLimits& limits = {}) {
+        const std::string zip = m_dir.file("hostile.zip");
+        writeText(zip, makeZip(entries));
+        const auto before = listing();
+        const auto unzipped = unzipScenePackage(zip, m_dir.file("out"), limits);
+        ASSERT_FALSE(unzipped.ok()) << "accepted a hostile zip";
+        EXPECT_EQ(unzipped.error().code, code) << unzipped.error().message();
+        EXPECT_NE(unzipped.error().detail.find(zip), std::string::npos) << unzipped.error().detail;
+        for (const char* word : words)
+            EXPECT_NE(unzipped.error().detail.find(word), std::string::npos)
+                << "'" << word << "' missing in: " << unzipped.error().detail;
+        EXPECT_FALSE(fs::exists(m_dir.path() / "out"));
+        EXPECT_EQ(listing(), before);
+        EXPECT_FALSE(readScenePackage(zip, limits).ok());
+    }
+
+    /// Everything in the test's folder, and the readers' extraction folders in the system temp folder.
+    std::vector<std::string> listing() const {
+        std::vector<std::string> names;
+        for (const auto& e : fs::recursive_directory_iterator(m_dir.path()))
+            names.push_back(e.path().string());
+        for (const auto& e : fs::directory_iterator(fs::temp_directory_path()))
+            if (e.path().filename().string().rfind("hs-unzip-", 0) == 0)
+                names.push_back(e.path().string());
+        std::sort(names.begin(), names.end());
+        return names;
+    }
+};
+
+} // namespace
+
+TEST_F(ZippedPackage, ReadsBackWhatZipScenePackageWrote) {
+    ASSERT_TRUE(zipScenePackage(package().string(), m_dir.file("scene.zip")).ok());
+    const auto unzipped = unzipScenePackage(m_dir.file("scene.zip"), m_dir.file("out"));
+    ASSERT_TRUE(unzipped.ok()) << unzipped.error().message();
+    ASSERT_EQ(unzipped->files.size(), m_manifest.files.size());
+    for (std::size_t i = 0; i < m_manifest.files.size(); ++i)
+        EXPECT_EQ(unzipped->files[i].sha256, m_manifest.files[i].sha256) << m_manifest.files[i].path;
+    const auto scene = readScenePackage(m_dir.file("scene.zip"));
+    ASSERT_TRUE(scene.ok()) << scene.error().message();
+    EXPECT_EQ(scene->tets.tetCount(), readScenePackage(package().string())->tets.tetCount());
+    EXPECT_TRUE(verifyScenePackage(m_dir.file("scene.zip")).ok());
+    // An existing folder is never extracted into.
+    EXPECT_FALSE(unzipScenePackage(m_dir.file("scene.zip"), m_dir.file("out")).ok());
+}
+
+TEST_F(ZippedPackage, RefusesEntriesThatLeaveTheFolder) {
+    auto entries = packageEntries(package(), m_manifest);
+    for (const char* name : {"../escaped.txt", "maps/../../escaped.txt", "/tmp/escaped.txt", "..\\escaped.txt",
+                             "./case.json", "maps//albedo.png"}) {
+        auto hostile = entries;
+        hostile.push_back({name, "pwned"});
+        expectZipRefused(hostile, ErrorCode::InvalidInput, {"entry"});
+        EXPECT_FALSE(fs::exists(m_dir.path().parent_path() / "escaped.txt"));
+        EXPECT_FALSE(fs::exists("/tmp/escaped.txt"));
+    }
+}
+
+TEST_F(ZippedPackage, RefusesSymbolicLinksRepeatedNamesAndOtherMethods) {
+    auto link = packageEntries(package(), m_manifest);
+    link.push_back({"passwd", "/etc/passwd", false, 0120777});
+    expectZipRefused(link, ErrorCode::InvalidInput, {"symbolic link"});
+    auto repeated = packageEntries(package(), m_manifest);
+    repeated.push_back(repeated[1]);
+    expectZipRefused(repeated, ErrorCode::InvalidInput, {"repeated"});
+    expectZipRefused({{"manifest.json", "{}"}}, ErrorCode::InvalidInput, {"manifest.json"});
+    writeText(m_dir.file("not.zip"), "PK\x03\x04 but not a zip at all");
+    EXPECT_EQ(unzipScenePackage(m_dir.file("not.zip"), m_dir.file("out")).error().code, ErrorCode::InvalidInput);
+    EXPECT_FALSE(fs::exists(m_dir.path() / "out"));
+}
+
+TEST_F(ZippedPackage, RefusesZipBombsByCountSizeAndRatio) {
+    PackageReadLimits limits;
+    limits.maxZipEntries = 3;
+    expectZipRefused(packageEntries(package(), m_manifest), ErrorCode::LimitExceeded, {"entries", "limit of 3"},
+                     limits);
+    // 4 MiB of zeros deflate to about 4 KiB: a ratio near 1000:1.
+    auto bomb = packageEntries(package(), m_manifest);
+    bomb.push_back({"zeros.bin", std::string(4 << 20, '\0'), true});
+    expectZipRefused(bomb, ErrorCode::LimitExceeded, {"zeros.bin", "compression ratio of 200:1"});
+    limits = {};
+    limits.maxFileBytes = 1000;
+    expectZipRefused(packageEntries(package(), m_manifest), ErrorCode::LimitExceeded, {"above the limit of 1000"},
+                     limits);
+    // A header that under-declares its size: inflating stops at the declared size, and the entry is refused.
+    auto liar = packageEntries(package(), m_manifest);
+    liar.push_back({"liar.bin", std::string(100000, 'x'), true, 0100644, 10});
+    expectZipRefused(liar, ErrorCode::InvalidInput, {"liar.bin"});
 }

@@ -17,6 +17,7 @@
 #include "hs/core/SurfaceMesh.h"
 #include "hs/core/Timings.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -139,6 +140,9 @@ struct ShapeModelBuildResult {
 /// Reads a file written by saveShapeModel. A plain statismo file (no /hysteroscene group) loads as an
 /// unconditioned model: mean()/sample() then fail with Unsupported. Every size and value is checked.
 [[nodiscard]] Result<ShapeModel> loadShapeModel(const std::string& path);
+/// loadShapeModel on the bytes of a file held in memory (HDF5's file image), with the same checks; `name` names
+/// it in errors. For models received over the network or embedded, and for fuzzing the reader.
+[[nodiscard]] Result<ShapeModel> loadShapeModelImage(const void* bytes, std::size_t size, const std::string& name);
 
 /// Names of the regression features, in order (stored in the file).
 const std::vector<std::string>& conditioningFeatureNames();

@@ -24,7 +24,9 @@ namespace hs::scene {
 struct JsonDocumentLimits {
     std::int64_t maxBytes = kMaxCaseFileBytes; ///< larger text is refused (LimitExceeded) before parsing
     int maxDepth = kMaxCaseNestingDepth;       ///< deeper nesting of arrays and objects is refused (InvalidInput)
-    std::string_view kind = "case file";       ///< "case file", "curriculum": "... a case file nests at most 32"
+    /// Longer strings and keys are refused (an issue at their path); fields have tighter limits of their own.
+    std::size_t maxStringBytes = 64 * 1024;
+    std::string_view kind = "case file"; ///< "case file", "curriculum": "... a case file nests at most 32"
 };
 
 /// Parses `text` into a JSON object. Sizes and nesting are checked first; a key repeated within one object is
@@ -32,6 +34,10 @@ struct JsonDocumentLimits {
 /// naming `sourceName` and the JSON pointer where the parser was; a root that is not an object fails too.
 [[nodiscard]] Result<nlohmann::json> parseJsonObject(std::string_view text, const std::string& sourceName,
                                                      const JsonDocumentLimits& limits, std::vector<CaseIssue>& issues);
+
+/// How deeply arrays and objects nest in `text` (brackets inside strings do not count), read without parsing, so
+/// that a document can be refused before a parser meets it.
+int jsonNestingDepth(std::string_view text);
 
 /// InvalidInput listing up to 20 issues, one per line, each "<sourceName>: <path>: <message>", then "... and N more
 /// problems".

@@ -91,6 +91,11 @@ struct PackageReadLimits {
     std::size_t maxFiles = 64;
     std::int64_t maxJsonBytes = 256 << 20;            ///< scene.json, labels.json, report.json
     int maxImageSide = Image<std::uint8_t>::kMaxSide; ///< maps
+    std::size_t maxZipEntries = 256;                  ///< a zipped package: entries, folders included
+    /// A zipped package: uncompressed / compressed size of one entry larger than 1 MiB (deflate reaches about
+    /// 1000:1 on a run of zeros; what this project writes stays below 20:1). Guards against zip bombs together with
+    /// maxFileBytes and maxTotalBytes, which are checked against the bytes actually inflated, not the declared ones.
+    double maxCompressionRatio = 200.0;
 };
 
 /// Checks a package folder without parsing its content: the manifest (format, schema version, fields), every
@@ -101,9 +106,20 @@ struct PackageReadLimits {
 [[nodiscard]] Result<PackageManifest> verifyScenePackage(const std::string& folder,
                                                          const PackageReadLimits& limits = {});
 
+/// Extracts a zipped package (as zipScenePackage writes it) into `folder`, which must not exist yet, then runs
+/// verifyScenePackage on it. The zip is untrusted: at most limits.maxZipEntries entries; each entry's name follows
+/// the manifest's path rules (no "..", no absolute path, no backslash: no zip slip); symbolic links, encrypted
+/// entries, methods other than stored and deflate, repeated names, entries above limits.maxFileBytes (the manifest
+/// above maxManifestBytes), all entries above maxTotalBytes and compression ratios above maxCompressionRatio are
+/// refused (InvalidInput, Unsupported or LimitExceeded, naming the zip, the entry and the limit). On any failure
+/// `folder` is removed again, so nothing half-extracted is left.
+[[nodiscard]] Result<PackageManifest> unzipScenePackage(const std::string& zipPath, const std::string& folder,
+                                                        const PackageReadLimits& limits = {});
+
 /// verifyScenePackage, then reads every file into a Scene: tets.vtu (regions, material ids, labels),
 /// surface.vtp with the UVs of surface.glb, the maps, scene.json, labels.json, report.json and case.json; the
-/// result passes checkScene().
+/// result passes checkScene(). A path naming a regular file ending in ".zip" (any case) is read as a zipped
+/// package: unzipScenePackage into a temporary folder, which is removed afterwards.
 [[nodiscard]] Result<Scene> readScenePackage(const std::string& folder, const PackageReadLimits& limits = {});
 
 } // namespace hs::scene
