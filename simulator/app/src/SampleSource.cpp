@@ -97,7 +97,7 @@ bool KeyboardSource::next(std::uint64_t firstTick, std::size_t count, sim::Devic
 }
 
 Result<std::unique_ptr<HapticsSource>> HapticsSource::start(std::unique_ptr<haptics::HapticDevice> device,
-                                                           haptics::HapticsLoopOptions options) {
+                                                            haptics::HapticsLoopOptions options) {
     std::unique_ptr<HapticsSource> source(new HapticsSource());
     HS_TRY(device->open());
     source->m_device = std::move(device);

@@ -12,8 +12,8 @@
 #include "hs/sim/Script.h"
 #include "hs/sim/Trial.h"
 
-#include <cstddef>
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <mutex>
