@@ -1,11 +1,14 @@
 // bench_haptics: how steady the 1 kHz haptics loop runs while a physics thread loads the machine.
 //
-// The physics is a parameter (Physics below): until the World is wired in, a stand-in publishes a ~5000-triangle
-// sphere every 5 ms after burning ~4 ms of CPU, and consumes the device samples as the World will. A World-backed
-// Physics pops ticksPerStep() samples, steps the world and publishes world.hapticFrame().
+// The physics is a parameter (Physics below). With --package DIR it is the simulator's World on that scene package:
+// it pops ticksPerStep() device samples, steps the world and publishes world.hapticFrame(), as hysteroscene-sim
+// does. Without, a stand-in publishes a ~5000-triangle sphere every 5 ms after burning ~4 ms of CPU.
+//
+//   bench_haptics [--seconds 10] [--package DIR]
 #include "hs/haptics/Clock.h"
 #include "hs/haptics/HapticsLoop.h"
 #include "hs/haptics/ScriptedDevice.h"
+#include "hs/sim/World.h"
 
 #include <atomic>
 #include <chrono>
@@ -16,6 +19,7 @@
 #include <functional>
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace {
 
@@ -114,6 +118,37 @@ std::uint64_t fakePhysics(HapticsLoop& loop, const std::atomic<bool>& stop) {
     return step;
 }
 
+/// The World on a scene package: the device's samples step it; every step publishes its surface.
+Physics worldPhysics(sim::World& world, std::uint64_t& steps) {
+    return [&world, &steps](HapticsLoop& loop, const std::atomic<bool>& stop) -> std::uint64_t {
+        const std::size_t per = world.ticksPerStep();
+        std::vector<sim::DeviceSample> samples(per);
+        std::uint64_t tick = 0;
+        loop.publish(world.hapticFrame());
+        while (!stop.load()) {
+            std::size_t have = 0;
+            while (have < per && !stop.load()) {
+                sim::DeviceSample s;
+                if (loop.popSample(s)) {
+                    s = sim::clamped(s);
+                    s.tick = tick + have;
+                    samples[have++] = s;
+                } else {
+                    std::this_thread::sleep_for(std::chrono::microseconds(200));
+                }
+            }
+            if (have < per)
+                break;
+            if (!world.step(samples.data(), per).ok())
+                break;
+            tick += per;
+            ++steps;
+            loop.publish(world.hapticFrame());
+        }
+        return steps;
+    };
+}
+
 /// In along the axis, into the far wall 10 mm deep, sweeping pitch and yaw along it, and back: 4 s, repeated.
 sim::Script pushScript() {
     sim::Script script;
@@ -136,10 +171,11 @@ sim::Script pushScript() {
 
 struct BenchConfig {
     double seconds = 10.0;
+    std::string package; ///< empty: the stand-in physics
     DeviceLimits limits{5.0, 300.0};
 };
 
-int runBench(const BenchConfig& config, const Physics& physics) {
+int runBench(const BenchConfig& config, const Physics& physics, const char* physicsName) {
     ScriptedDeviceOptions deviceOptions;
     deviceOptions.limits = config.limits;
     deviceOptions.loop = true;
@@ -162,7 +198,7 @@ int runBench(const BenchConfig& config, const Physics& physics) {
 
     const HapticsStats s = loop.stats();
     std::printf("bench_haptics: %.1f s, scripted device (push into the wall, 4 s cycle), physics thread: %s\n",
-                config.seconds, "stand-in (4900-triangle sphere, a frame every 5 ms after ~4 ms of CPU)");
+                config.seconds, physicsName);
     std::printf("%-34s %s\n", "scheduling", s.realtime ? "SCHED_FIFO" : "SCHED_OTHER (no real-time privilege)");
     std::printf("%-34s %llu\n", "ticks", static_cast<unsigned long long>(s.ticks));
     std::printf("%-34s %.0f / %.0f / %.0f us\n", "tick period p50 / p99 / max", s.periodUs.quantile(0.5),
@@ -192,8 +228,10 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--seconds") == 0 && i + 1 < argc) {
             config.seconds = std::atof(argv[++i]);
+        } else if (std::strcmp(argv[i], "--package") == 0 && i + 1 < argc) {
+            config.package = argv[++i];
         } else {
-            std::fprintf(stderr, "usage: bench_haptics [--seconds S]\n");
+            std::fprintf(stderr, "usage: bench_haptics [--seconds S] [--package DIR]\n");
             return 1;
         }
     }
@@ -201,5 +239,16 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "bench_haptics: --seconds must be in (0, 3600]\n");
         return 1;
     }
-    return runBench(config, fakePhysics);
+    if (config.package.empty())
+        return runBench(config, fakePhysics, "stand-in (4900-triangle sphere, a frame every 5 ms after ~4 ms of CPU)");
+    auto world = sim::World::load(config.package, sim::WorldOptions{});
+    if (!world) {
+        std::fprintf(stderr, "bench_haptics: %s\n", world.error().detail.c_str());
+        return 3;
+    }
+    std::uint64_t steps = 0;
+    const int code = runBench(config, worldPhysics(**world, steps), "the World on the package (paced by the device)");
+    std::printf("%-34s %llu (%.0f Hz)\n", "physics steps", static_cast<unsigned long long>(steps),
+                static_cast<double>(steps) / config.seconds);
+    return code;
 }

@@ -4,6 +4,7 @@
 #include "hs/generate/Assembly.h"
 #include "hs/meshing/BaselineMeshers.h"
 
+#include <algorithm>
 #include <map>
 #include <string>
 
@@ -55,6 +56,23 @@ Result<scene::SimulationMesh> simulationMesh(const scene::CaseSpec& spec, const 
             cavity[static_cast<std::size_t>(source[static_cast<std::size_t>(v)])] = 1;
     }
     sim.surfaceEmbedding = embedPoints(sim.tets, visual.points, threads.value_or(spec.meshing.threads));
+    // Where the coarse mesh is thinner than the surface (a thin stalk, a cornual recess), a point's weights would
+    // extrapolate too far: move them towards the tet's centre (weights 1/4 each) just far enough to lie in the allowed
+    // range; they still sum to 1, and the point then moves with its tet, a little off it
+    // (scene::kMaxSimulationEmbeddingOffsetMm bounds how far).
+    const double lo = -scene::kMaxEmbeddingExtrapolation, hi = 1.0 + scene::kMaxEmbeddingExtrapolation;
+    for (TetEmbedding& e : sim.surfaceEmbedding) {
+        double t = 0.0; // the blend towards the centre that every weight needs
+        for (const double w : e.weights) {
+            if (w < lo)
+                t = std::max(t, (lo - w) / (0.25 - w));
+            if (w > hi)
+                t = std::max(t, (w - hi) / (w - 0.25));
+        }
+        if (t > 0.0)
+            for (double& w : e.weights)
+                w = w + (0.25 - w) * t;
+    }
     return sim;
 }
 

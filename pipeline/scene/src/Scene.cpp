@@ -116,7 +116,7 @@ Status checkSurface(const VisualSurface& surface) {
 /// Every surface point bound to an existing tet of `tets`, with weights that sum to 1, stay within the allowed
 /// extrapolation and give the point back (1e-6 of the scene's size). `what` names the embedding in messages.
 Status checkEmbedding(const std::vector<TetEmbedding>& embedding, const SurfaceMesh& surface, const TetMesh& tetMesh,
-                      const std::string& what) {
+                      const std::string& what, double toleranceMm = -1.0) {
     if (embedding.empty())
         return {};
     const auto& points = surface.points;
@@ -125,7 +125,7 @@ Status checkEmbedding(const std::vector<TetEmbedding>& embedding, const SurfaceM
                                                  std::to_string(points.size()) +
                                                  " points of the visual surface (one per point expected)");
     const Bounds box = bounds(surface);
-    const double tolerance = 1e-6 * std::max(1.0, norm(box.max - box.min));
+    const double tolerance = toleranceMm >= 0.0 ? toleranceMm : 1e-6 * std::max(1.0, norm(box.max - box.min));
     const auto tets = static_cast<std::int64_t>(tetMesh.tetCount());
     for (std::size_t i = 0; i < embedding.size(); ++i) {
         const TetEmbedding& e = embedding[i];
@@ -199,7 +199,7 @@ Status checkSimulation(const Scene& scene) {
         return fail(ErrorCode::InvalidInput, what + ": binds " + std::to_string(sim.surfaceEmbedding.size()) +
                                                  " points of the visual surface's " +
                                                  std::to_string(scene.surface.mesh.vertexCount()));
-    return checkEmbedding(sim.surfaceEmbedding, scene.surface.mesh, sim.tets, what);
+    return checkEmbedding(sim.surfaceEmbedding, scene.surface.mesh, sim.tets, what, kMaxSimulationEmbeddingOffsetMm);
 }
 
 Status checkMaterials(const Scene& scene) {

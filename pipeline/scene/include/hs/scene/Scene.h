@@ -108,6 +108,10 @@ struct SimulationMesh {
     /// One per point of Scene::surface.mesh: where it is bound in `tets` (weights within kMaxEmbeddingExtrapolation).
     std::vector<TetEmbedding> surfaceEmbedding;
 };
+/// How far a visual surface point may lie from where its binding to the simulation mesh puts it, mm. The coarse mesh
+/// is thinner than the surface in places (a polyp's thin stalk, a cornual recess): a point there is bound to its
+/// nearest tet with its weights clamped to kMaxEmbeddingExtrapolation, and moves with that tet.
+inline constexpr double kMaxSimulationEmbeddingOffsetMm = 5.0;
 /// Tet array of the simulation mesh: 1 where the body is held (the tets of kSupportLabel's rule), else 0.
 inline constexpr const char* kSupportTetLabel = "support";
 /// Point array of the simulation mesh: 1 on its boundary where it faces the cavity, the canal or the ostia (the
