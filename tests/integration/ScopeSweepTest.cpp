@@ -83,7 +83,13 @@ TEST_P(ScopeSweep, CaseGeneratesAndAnOfficeScopeReachesTheFundus) {
     EXPECT_EQ(passage->route.back().part, scene::PassagePart::Cavity);
 }
 
-INSTANTIATE_TEST_SUITE_P(Sweep, ScopeSweep, ::testing::Range(0, kSweepCases),
+// CI runs every other case (the 2-core budget); configured with -DHS_FULL_SWEEP=ON the test runs all 20.
+#ifdef HS_FULL_SWEEP
+constexpr int kSweepStride = 1;
+#else
+constexpr int kSweepStride = 2;
+#endif
+INSTANTIATE_TEST_SUITE_P(Sweep, ScopeSweep, ::testing::Range(0, kSweepCases, kSweepStride),
                          [](const ::testing::TestParamInfo<int>& p) {
                              char name[16];
                              std::snprintf(name, sizeof name, "Case%02d", p.param);
