@@ -12,6 +12,7 @@
 #include <vtkCellType.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
+#include <vtkErrorCode.h>
 #include <vtkFloatArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -24,7 +25,9 @@
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <exception>
 #include <limits>
 #include <vector>
@@ -590,8 +593,21 @@ Status writeXml(vtkDataObject* data, const std::string& tmpPath, bool binary, co
     } else {
         writer->SetDataModeToAscii();
     }
+    errno = 0;
     const int ok = writer->Write();
-    return capture.check(ok == 1, tmpPath, action);
+    const int writeErrno = errno;
+    Status status = capture.check(ok == 1, tmpPath, action, ErrorCode::IoError);
+    if (!status.ok() && (writer->GetErrorCode() != vtkErrorCode::NoError || writeErrno != 0)) {
+        // Say why the operating system refused (a full disk, a file size limit): VTK only says that it failed.
+        std::string detail = status.error().detail + " (";
+        if (writer->GetErrorCode() != vtkErrorCode::NoError)
+            detail += std::string(vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode())) +
+                      (writeErrno != 0 ? ": " : "");
+        if (writeErrno != 0)
+            detail += std::strerror(writeErrno);
+        return fail(ErrorCode::IoError, detail + ")");
+    }
+    return status;
 }
 
 } // namespace

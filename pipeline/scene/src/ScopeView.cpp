@@ -11,23 +11,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-/// `v` turned by `angleRad` about the unit `axis` (Rodrigues).
-Vec3 rotated(const Vec3& v, const Vec3& axis, double angleRad) {
-    const double c = std::cos(angleRad);
-    const double s = std::sin(angleRad);
-    return v * c + cross(axis, v) * s + axis * (dot(axis, v) * (1.0 - c));
-}
-
-/// A unit vector perpendicular to the unit `axis`, as close to `hint` as possible.
-Vec3 perpendicular(const Vec3& axis, const Vec3& hint) {
-    Vec3 p = hint - axis * dot(hint, axis);
-    if (norm(p) < 1e-6) // the hint lies along the axis: any other direction will do
-        p = Vec3{1.0, 0.0, 0.0} - axis * axis.x;
-    if (norm(p) < 1e-6)
-        p = Vec3{0.0, 0.0, 1.0} - axis * axis.z;
-    return normalized(p);
-}
-
 } // namespace
 
 Result<ScopeView> scopeView(const ScopeLandmarks& landmarks, double insertionMm, double opticDeg, double rollDeg) {
@@ -43,12 +26,12 @@ Result<ScopeView> scopeView(const ScopeLandmarks& landmarks, double insertionMm,
     view.shaft = normalized(canal);
     view.eyeMm = landmarks.externalOsMm + view.shaft * insertionMm;
     // Roll 0: the optic looks towards anterior (+y); the roll turns the tilt about the shaft.
-    const Vec3 anterior = perpendicular(view.shaft, {0.0, 1.0, 0.0});
-    const Vec3 tiltTowards = rotated(anterior, view.shaft, rollDeg * kPi / 180.0);
+    const Vec3 anterior = perpendicularTo(view.shaft, {0.0, 1.0, 0.0});
+    const Vec3 tiltTowards = rotatedAbout(anterior, view.shaft, rollDeg * kPi / 180.0);
     const double tilt = opticDeg * kPi / 180.0;
     view.direction = normalized(view.shaft * std::cos(tilt) + tiltTowards * std::sin(tilt));
     // The image's up: the side the optic is tilted to (for a 0 degree optic, the rolled anterior).
-    view.up = perpendicular(view.direction, tiltTowards);
+    view.up = perpendicularTo(view.direction, tiltTowards);
     return view;
 }
 
@@ -75,7 +58,7 @@ Result<ScopeView> viewOfRegion(const Scene& scene, const ScopeLandmarks& landmar
     view.eyeMm = centre + normalized(towards) * distanceMm;
     view.direction = normalized(centre - view.eyeMm);
     view.shaft = normalized(landmarks.internalOsMm - landmarks.externalOsMm);
-    view.up = perpendicular(view.direction, {0.0, 1.0, 0.0});
+    view.up = perpendicularTo(view.direction, {0.0, 1.0, 0.0});
     return view;
 }
 

@@ -10,23 +10,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
 
-/// `v` turned by `angleRad` about the unit `axis` (Rodrigues).
-Vec3 rotated(const Vec3& v, const Vec3& axis, double angleRad) {
-    const double c = std::cos(angleRad);
-    const double s = std::sin(angleRad);
-    return v * c + cross(axis, v) * s + axis * (dot(axis, v) * (1.0 - c));
-}
-
-/// A unit vector perpendicular to the unit `axis`, as close to `hint` as possible.
-Vec3 perpendicular(const Vec3& axis, const Vec3& hint) {
-    Vec3 p = hint - axis * dot(hint, axis);
-    if (norm(p) < 1e-9)
-        p = Vec3{1.0, 0.0, 0.0} - axis * axis.x;
-    if (norm(p) < 1e-9)
-        p = Vec3{0.0, 0.0, 1.0} - axis * axis.z;
-    return normalized(p);
-}
-
 bool isOneOf(double v, std::initializer_list<double> allowed) {
     for (double a : allowed)
         if (std::abs(v - a) < 1e-9)
@@ -72,7 +55,7 @@ Result<ScopeFrame> scopeFrame(const scene::ScopeLandmarks& landmarks) {
     ScopeFrame f;
     f.pivotMm = landmarks.externalOsMm;
     f.axis = normalized(canal);
-    f.anterior = perpendicular(f.axis, {0.0, 1.0, 0.0});
+    f.anterior = perpendicularTo(f.axis, {0.0, 1.0, 0.0});
     // The organ frame is right-handed with +y anterior and +z up the canal, so +x is the patient's right (RAS):
     // the patient's left is -x.
     f.left = cross(f.axis, f.anterior);
@@ -87,13 +70,13 @@ ScopePose scopePose(const ScopeFrame& frame, const ScopeConfig& config, const De
         normalized(frame.axis + frame.anterior * std::tan(s.pitchDeg * kDeg) + frame.left * std::tan(s.yawDeg * kDeg));
     pose.tipMm = frame.pivotMm + pose.shaft * s.insertionMm;
     // Roll 0: the light post, hence an oblique optic's view, points towards anterior.
-    const Vec3 anterior = perpendicular(pose.shaft, frame.anterior);
-    const Vec3 post = rotated(anterior, pose.shaft, s.rollDeg * kDeg);
+    const Vec3 anterior = perpendicularTo(pose.shaft, frame.anterior);
+    const Vec3 post = rotatedAbout(anterior, pose.shaft, s.rollDeg * kDeg);
     const double tilt = config.opticDeg * kDeg;
     pose.direction = normalized(pose.shaft * std::cos(tilt) + post * std::sin(tilt));
     // The camera head: at 0 the image's up is the patient's anterior, turned by the camera's roll about the shaft.
-    const Vec3 cameraUp = rotated(anterior, pose.shaft, s.cameraRollDeg * kDeg);
-    pose.up = perpendicular(pose.direction, cameraUp);
+    const Vec3 cameraUp = rotatedAbout(anterior, pose.shaft, s.cameraRollDeg * kDeg);
+    pose.up = perpendicularTo(pose.direction, cameraUp);
     return pose;
 }
 

@@ -58,13 +58,6 @@ constexpr double kCalibrationPressureKpa = 8.0;
 constexpr double kCalibrationSeconds = 0.4; ///< s of settling per round (the opening settles in about 0.2 s)
 constexpr int kCalibrationRounds = 4;
 
-Vec3 perpendicularTo(const Vec3& axis, const Vec3& hint) {
-    Vec3 p = hint - axis * dot(hint, axis);
-    if (norm(p) < 1e-9)
-        p = Vec3{1.0, 0.0, 0.0} - axis * axis.x;
-    return normalized(p);
-}
-
 struct Zone {
     std::string name;
     std::vector<std::int32_t> faces;

@@ -67,6 +67,22 @@ inline Vec3 normalized(const Vec3& v) {
 inline bool isFinite(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
+/// `v` turned by `angleRad` about the unit `axis` (Rodrigues' formula).
+inline Vec3 rotatedAbout(const Vec3& v, const Vec3& axis, double angleRad) {
+    const double c = std::cos(angleRad);
+    const double s = std::sin(angleRad);
+    return v * c + cross(axis, v) * s + axis * (dot(axis, v) * (1.0 - c));
+}
+/// A unit vector perpendicular to the unit `axis`, as close to `hint` as possible (another direction when the hint
+/// lies along the axis).
+inline Vec3 perpendicularTo(const Vec3& axis, const Vec3& hint) {
+    Vec3 p = hint - axis * dot(hint, axis);
+    if (norm(p) < 1e-6)
+        p = Vec3{1.0, 0.0, 0.0} - axis * axis.x;
+    if (norm(p) < 1e-6)
+        p = Vec3{0.0, 0.0, 1.0} - axis * axis.z;
+    return normalized(p);
+}
 
 /// Axis-aligned box; empty (min > max) until a point is added.
 struct Bounds {
