@@ -1,7 +1,9 @@
 // The simulator's physics on a scene package: the simulation mesh's size and quality, the step's cost (the bar:
 // >= 100 Hz on 2 cores) and a long scripted trial's stability (no inverted tets, bounded energy). A table, not a test.
 //
-//   bench_physics PACKAGE [--seconds 60] [--iterations 6]
+//   bench_physics PACKAGE [--seconds 60] [--iterations 6] [--trace]
+// --trace: a line for every perforation and for every second in which a tet is inverted (the script's time and the
+// tip's place), to find which move of the script is at fault.
 // PACKAGE: a scene package with a simulation mesh (hysteroscene-cli generate resources/cases/default.json -o DIR).
 
 #include "hs/meshing/QualityReport.h"
@@ -9,6 +11,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -34,11 +37,14 @@ int main(int argc, char** argv) {
     const std::string package = argv[1];
     double seconds = 60.0;
     hs::sim::WorldOptions options;
-    for (int i = 2; i + 1 < argc; i += 2) {
-        if (std::strcmp(argv[i], "--seconds") == 0)
-            seconds = std::atof(argv[i + 1]);
-        else if (std::strcmp(argv[i], "--iterations") == 0)
-            options.solverIterations = std::atoi(argv[i + 1]);
+    bool trace = false;
+    for (int i = 2; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--trace") == 0)
+            trace = true;
+        else if (std::strcmp(argv[i], "--seconds") == 0 && i + 1 < argc)
+            seconds = std::atof(argv[++i]);
+        else if (std::strcmp(argv[i], "--iterations") == 0 && i + 1 < argc)
+            options.solverIterations = std::atoi(argv[++i]);
     }
     const auto loadStart = std::chrono::steady_clock::now();
     auto world = hs::sim::World::load(package, options);
@@ -53,12 +59,18 @@ int main(int argc, char** argv) {
     // The exploration script, repeated to fill `seconds` of simulated time.
     const hs::sim::Script script = hs::sim::explorationScript(w, 60.0);
     const std::size_t per = w.ticksPerStep();
+    if (trace)
+        for (const hs::sim::KeyFrame& k : script.keyframes) {
+            const hs::sim::ScopePose pose = hs::sim::scopePose(w.frame(), options.scope, k.sample);
+            std::printf("trace: key %.2f s: tip %.1f %.1f %.1f mm, roll %.0f deg%s\n", k.timeS, pose.tipMm.x,
+                        pose.tipMm.y, pose.tipMm.z, k.sample.rollDeg, k.sample.buttons ? ", mark" : "");
+        }
     const auto steps = static_cast<std::uint64_t>(seconds / options.stepS);
     const std::uint64_t scriptTicks = script.tickCount();
     std::vector<hs::sim::DeviceSample> samples(per);
     std::vector<double> stepMs;
     stepMs.reserve(steps);
-    std::size_t maxInverted = 0;
+    std::size_t maxInverted = 0, perforationsSeen = 0;
     double minRatio = 1e300, maxEnergy = 0.0, maxSpeed = 0.0;
     for (std::uint64_t s = 0; s < steps; ++s) {
         for (std::size_t i = 0; i < per; ++i) {
@@ -72,8 +84,21 @@ int main(int argc, char** argv) {
             return 4;
         }
         stepMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-        if (s % 200 == 0 || s + 1 == steps) {
+        if (trace && w.metrics().perforations.size() > perforationsSeen) {
+            const hs::sim::Perforation& p = w.metrics().perforations.back();
+            std::printf("trace: perforation at %.2f s (script %.2f s), %s, at %.1f %.1f %.1f mm\n", p.timeS,
+                        std::fmod(p.timeS, 60.0), p.region.c_str(), p.locationMm.x, p.locationMm.y, p.locationMm.z);
+            perforationsSeen = w.metrics().perforations.size();
+        }
+        if (s % 20 == 0 || s + 1 == steps) {
             const hs::sim::World::Health h = w.health();
+            if (trace && h.invertedTets > 0) {
+                const hs::sim::WorldState& st = w.state();
+                std::printf("trace: %.2f s (script %.2f s): %zu inverted, min volume ratio %.3f, force %.2f N, tip "
+                            "%.1f %.1f %.1f mm\n",
+                            st.timeS, std::fmod(st.timeS, 60.0), h.invertedTets, h.minVolumeRatio, st.contact.forceN,
+                            st.scope.tipMm.x, st.scope.tipMm.y, st.scope.tipMm.z);
+            }
             maxInverted = std::max(maxInverted, h.invertedTets);
             minRatio = std::min(minRatio, h.minVolumeRatio);
             maxEnergy = std::max(maxEnergy, h.elasticEnergyJ);

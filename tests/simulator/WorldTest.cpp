@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -21,7 +22,14 @@ std::unique_ptr<World> loadWorld(const WorldOptions& options = {}) {
 }
 
 /// Runs `script` through `world` for `seconds` (all of it when 0); the samples it fed are appended to `samples`.
-void run(World& world, const Script& script, double seconds, std::vector<DeviceSample>* samples = nullptr) {
+/// The worst of the tissue's health seen while a script runs (checked every 50 ms).
+struct Worst {
+    std::size_t invertedTets = 0;
+    double minVolumeRatio = 1e300;
+};
+
+void run(World& world, const Script& script, double seconds, std::vector<DeviceSample>* samples = nullptr,
+         Worst* worst = nullptr) {
     const std::size_t per = world.ticksPerStep();
     const std::uint64_t ticks =
         seconds > 0.0 ? static_cast<std::uint64_t>(seconds * kDeviceRateHz) : script.tickCount();
@@ -37,6 +45,11 @@ void run(World& world, const Script& script, double seconds, std::vector<DeviceS
         if (samples)
             samples->insert(samples->end(), step.begin(), step.end());
         tick += per;
+        if (worst && world.state().step % 10 == 0) {
+            const World::Health h = world.health();
+            worst->invertedTets = std::max(worst->invertedTets, h.invertedTets);
+            worst->minVolumeRatio = std::min(worst->minVolumeRatio, h.minVolumeRatio);
+        }
     }
 }
 
@@ -107,7 +120,8 @@ TEST(World, AScriptedExplorationSeesBothOstiaWithoutPerforation) {
     auto world = loadWorld();
     ASSERT_TRUE(world);
     const Script script = explorationScript(*world, 16.0);
-    run(*world, script, 0.0);
+    Worst worst;
+    run(*world, script, 0.0, nullptr, &worst);
     const TrialReport report = world->report();
     const TrialMetrics& m = report.metrics;
     for (const auto& t : m.targets)
@@ -126,6 +140,11 @@ TEST(World, AScriptedExplorationSeesBothOstiaWithoutPerforation) {
     EXPECT_GT(m.pathLengthMm, 50.0);
     for (const auto& p : m.pathologies)
         EXPECT_TRUE(p.seen) << p.id;
+    // Never an inverted tet on the way (the script keeps to the middle of the opened cavity, off the myoma that
+    // bulges into it), and no tet squeezed to near nothing.
+    std::printf("smallest volume ratio on the way %.3f\n", worst.minVolumeRatio);
+    EXPECT_EQ(worst.invertedTets, 0u);
+    EXPECT_GT(worst.minVolumeRatio, 0.2);
     const World::Health health = world->health();
     EXPECT_EQ(health.invertedTets, 0u);
     EXPECT_LT(health.elasticEnergyJ, 1.0);

@@ -40,6 +40,15 @@ constexpr double kLigamentStiffnessNPerM = 3000.0;
 constexpr double kCanalContactFreeMm = 2.0;
 /// The shaft is checked for contact from its tip back to this far behind the pivot, mm.
 constexpr double kShaftCheckBehindPivotMm = 10.0;
+/// The exploration script: the tip's speed inside the cavity, mm/s of its plan (scaled to the duration asked for),
+/// the clearance from the walls it looks for, mm, and how far beside the cavity's axis it looks for it, mm.
+constexpr double kScriptSpeedMmPerS = 10.0;
+constexpr double kScriptClearanceMm = 3.0;
+constexpr double kMiddleSearchMm = 8.0;
+constexpr double kMiddleStepMm = 1.0;
+/// The clearance of a point is looked for this far, mm: more than half the wall's thickness, so a point inside the
+/// wall finds the wall's surface and its side.
+constexpr double kClearanceReachMm = 12.0;
 /// Contact candidates are gathered this far beyond the scope's radius, mm (covers one step's motion).
 constexpr double kContactMarginMm = 1.5;
 /// Visibility is updated every kVisibilityPeriodS for a tenth of the faces (all of them every 50 ms), and the
@@ -104,6 +113,8 @@ struct World::Impl {
     detail::FluidModel fluid;
     double pressureGain = 1.0;
     double restCavityMl = 0.0;
+    /// The points as the calibration left them: the cavity opened at the calibration pressure (scripts plan with it).
+    std::vector<Vec3> openPointsMm;
     double contactStiffnessNPerMm = 0.1;
 
     std::vector<Vec3> pointsMm;
@@ -143,6 +154,14 @@ struct World::Impl {
                      double slackMm) const;
     Vec3 ostiumPoint(const Ostium& o) const;
     bool insideRestHull(const Vec3& p) const;
+    /// Signed distance from `p` to the contact surface with the points `pts` (its tree `tree` refitted to them), mm:
+    /// positive on the side its faces look to (the cavity, outside the body), negative inside the tissue; `reachMm`
+    /// when no face is that close.
+    double clearanceMm(const std::vector<Vec3>& pts, const detail::TriangleBvh& tree, const Vec3& p,
+                       double reachMm) const;
+    /// The least clearance of the scope in `pose` beyond its radius (its tip, and its shaft where it can touch the
+    /// wall: beyond the canal), mm; negative where it would press into the wall.
+    double scopeClearanceMm(const std::vector<Vec3>& pts, const detail::TriangleBvh& tree, const ScopePose& pose) const;
     void updateVisibility();
     void mark();
     void publishFrame();
@@ -167,6 +186,46 @@ Vec3 triangleCentre(const std::vector<Vec3>& pts, const Triangle& t) {
 
 Vec3 World::Impl::faceNormal(std::int32_t f) const {
     return normalized(triangleNormal(pointsMm, (*triangles)[static_cast<std::size_t>(f)]));
+}
+
+double World::Impl::clearanceMm(const std::vector<Vec3>& pts, const detail::TriangleBvh& tree, const Vec3& p,
+                                double reachMm) const {
+    std::vector<std::int32_t> near;
+    tree.near(p, reachMm, near);
+    double nearest = reachMm, signedDistance = reachMm, alignment = -1.0;
+    for (const std::int32_t f : near) {
+        const Triangle& tri = (*triangles)[static_cast<std::size_t>(f)];
+        double w0 = 0.0, w1 = 0.0, w2 = 0.0;
+        const Vec3 q =
+            detail::closestOnTriangle(p, pts[static_cast<std::size_t>(tri[0])], pts[static_cast<std::size_t>(tri[1])],
+                                      pts[static_cast<std::size_t>(tri[2])], w0, w1, w2);
+        const double d = distance(p, q);
+        if (d > nearest + 1e-9)
+            continue;
+        // Where the nearest point is an edge or a corner several faces share, the face that looks most squarely at
+        // p says on which side p lies.
+        const double along = d > 1e-12 ? dot(p - q, normalized(triangleNormal(pts, tri))) / d : 0.0;
+        if (d < nearest - 1e-9 || std::abs(along) > alignment) {
+            nearest = std::min(nearest, d);
+            alignment = std::abs(along);
+            signedDistance = along >= 0.0 ? d : -d;
+        }
+    }
+    return signedDistance;
+}
+
+double World::Impl::scopeClearanceMm(const std::vector<Vec3>& pts, const detail::TriangleBvh& tree,
+                                     const ScopePose& pose) const {
+    const double radius = 0.5 * options.scope.diameterMm;
+    const double insertion = dot(pose.tipMm - frame.pivotMm, pose.shaft);
+    double least = kClearanceReachMm;
+    for (double back = 0.0; back <= insertion; back += 2.0 * radius) {
+        const Vec3 c = pose.tipMm - pose.shaft * back;
+        if (back > 0.0 && dot(c - landmarks.internalOsMm, frame.axis) < kCanalContactFreeMm)
+            break; // the shaft in the canal: the canal wraps it
+        least = std::min(least, clearanceMm(pts, tree, c, kClearanceReachMm) - radius);
+    }
+    return least;
 }
 
 Vec3 World::Impl::faceCentre(std::int32_t f) const {
@@ -442,6 +501,7 @@ void World::Impl::calibrateLoad() {
             break;
         pressureGain = std::clamp(pressureGain * target / opened, 0.01, 50.0);
     }
+    openPointsMm = pointsMm;
     // Back to rest for the trial.
     setupTissue();
     tissue.pointsMm(pointsMm);
@@ -1013,58 +1073,115 @@ DeviceSample aimAt(const World& world, const Vec3& tip, const Vec3& target) {
 Script explorationScript(const World& world, double durationS) {
     const World::Impl& w = *world.impl_;
     const scene::ScopeLandmarks& lm = w.landmarks;
+    const ScopeConfig& scope = w.options.scope;
     const double cavityLength = distance(lm.internalOsMm, lm.fundusMm);
-    const auto inCavity = [&](double fraction) { return lm.internalOsMm + w.cavityAxis * (fraction * cavityLength); };
-    std::vector<std::pair<double, DeviceSample>> plan; // (time on a 60 s plan, sample)
-    DeviceSample outside;
-    outside.insertionMm = -5.0;
-    outside.inflow = 1.0;
-    outside.outflow = 0.3;
-    const auto add = [&plan](double t, DeviceSample s) {
+    const auto onAxis = [&](double fraction) { return lm.internalOsMm + w.cavityAxis * (fraction * cavityLength); };
+    const auto depthOf = [&](const Vec3& p) { return dot(p - lm.internalOsMm, w.cavityAxis) / cavityLength; };
+    // Planned in the cavity opened by the fluid (as the calibration left it), where the trial's scope moves.
+    detail::TriangleBvh open;
+    open.build(*w.triangles, w.openPointsMm);
+    const auto clearance = [&](const Vec3& tip) {
+        return w.scopeClearanceMm(w.openPointsMm, open, scopePose(w.frame, scope, sampleAiming(w.frame, tip)));
+    };
+    // The cavity's middle at each tenth of its length: the tip's place within kMiddleSearchMm of the cavity's axis
+    // farthest from the walls (up to kScriptClearanceMm; nearer the axis wins among those): the path keeps off a
+    // myoma or a polyp that bulges into the cavity, and off a wall the axis runs close to.
+    std::vector<Vec3> middle(10);
+    for (std::size_t k = 1; k < middle.size(); ++k) {
+        const Vec3 base = onAxis(0.1 * static_cast<double>(k));
+        double bestScore = -1e300;
+        for (double side = -kMiddleSearchMm; side <= kMiddleSearchMm + 1e-9; side += kMiddleStepMm)
+            for (double up = -kMiddleSearchMm; up <= kMiddleSearchMm + 1e-9; up += kMiddleStepMm) {
+                const Vec3 p = base + w.cavityLeft * side + w.cavityAnterior * up;
+                const double score =
+                    std::min(clearance(p), kScriptClearanceMm) - 0.05 * std::sqrt(side * side + up * up);
+                if (score > bestScore + 1e-12) {
+                    bestScore = score;
+                    middle[k] = p;
+                }
+            }
+    }
+    middle[0] = middle[1];
+    const auto middleAt = [&](double fraction) {
+        return middle[static_cast<std::size_t>(std::clamp(std::lround(fraction * 10.0), 1L, 9L))];
+    };
+
+    std::vector<std::pair<double, DeviceSample>> plan; // (time on the plan, sample), scaled to durationS at the end
+    double t = 0.0;
+    const auto add = [&plan, &t](double afterS, DeviceSample s) {
+        t += afterS;
         s.inflow = 1.0;
         s.outflow = 0.3;
         plan.emplace_back(t, s);
     };
-    add(0.0, outside);
-    add(2.0, outside);
+    DeviceSample outside;
+    outside.insertionMm = -5.0;
     DeviceSample inOs = outside;
     inOs.insertionMm = distance(lm.externalOsMm, lm.internalOsMm) + 2.0;
-    add(6.0, inOs);
-    double t = 8.0;
-    // The walls: the optic turned all round at two depths.
-    for (const double depth : {0.3, 0.55}) {
-        for (int roll = -180; roll <= 180; roll += 90) {
-            add(t, sampleAiming(world.frame(), inCavity(depth), roll));
-            t += 2.5;
+    const Vec3 inOsTip = scopePose(w.frame, scope, inOs).tipMm;
+    add(0.0, outside);
+    add(2.0, outside);
+    add(4.0, inOs);
+    // Every move inside the cavity goes along its middle: back to the middle where the tip is, along it a tenth of
+    // the cavity at a time, then to the place asked for; each leg at kScriptSpeedMmPerS.
+    Vec3 tipNow = inOsTip;
+    double depthNow = 0.0;
+    const auto leg = [&](const Vec3& to, const DeviceSample& look) {
+        const double d = distance(tipNow, to);
+        if (d < 0.5)
+            return;
+        add(std::max(0.3, d / kScriptSpeedMmPerS), look);
+        tipNow = to;
+    };
+    const auto via = [&](const Vec3& p, const DeviceSample& s) {
+        leg(p, sampleAiming(w.frame, p, s.rollDeg, s.cameraRollDeg));
+    };
+    const auto go = [&](const DeviceSample& s, double holdS) {
+        const Vec3 tip = scopePose(w.frame, scope, s).tipMm;
+        const double depth = std::clamp(depthOf(tip), 0.1, 0.9);
+        const long from = std::lround(std::clamp(depthNow, 0.1, 0.9) * 10.0), to = std::lround(depth * 10.0);
+        for (long k = from;; k += (to > from ? 1 : -1)) {
+            via(middle[static_cast<std::size_t>(k)], s);
+            if (k == to)
+                break;
         }
-    }
-    // The fundus from near it; each ostium and each pathology from where it is in view (searched at rest along the
-    // cavity's axis and beside it).
-    const Vec3 near = inCavity(0.6);
-    add(t, aimAt(world, near, lm.fundusMm));
-    t += 3.0;
+        leg(tip, s);
+        add(holdS, s);
+        depthNow = depth;
+    };
+    // The walls: the optic turned all round at two depths.
+    for (const double depth : {0.3, 0.55})
+        for (int roll = -180; roll <= 180; roll += 90)
+            go(sampleAiming(w.frame, middleAt(depth), roll), 1.5);
+    // The fundus from near it; each ostium and each pathology from where it is in view: searched beside the middle
+    // at several depths, among the places the scope reaches from the middle without touching a wall.
+    go(aimAt(world, middleAt(0.6), lm.fundusMm), 2.0);
     std::vector<Vec3> vantage;
     for (const double depth : {0.6, 0.45, 0.75, 0.3, 0.85, 0.2})
         for (const double side : {0.0, 3.0, -3.0, 6.0, -6.0})
-            for (const double up : {0.0, 3.0, -3.0, 6.0, -6.0})
-                vantage.push_back(inCavity(depth) + w.cavityLeft * side + w.cavityAnterior * up);
+            for (const double up : {0.0, 3.0, -3.0, 6.0, -6.0}) {
+                const Vec3 from = middleAt(depth);
+                const Vec3 p = from + w.cavityLeft * side + w.cavityAnterior * up;
+                bool clear = true;
+                for (double f = 0.0; f <= 1.0 && clear; f += 0.125)
+                    clear = clearance(from + (p - from) * f) >= kScriptClearanceMm * 0.5;
+                if (clear)
+                    vantage.push_back(p);
+            }
     const auto lookAt = [&](const Vec3& target, const Vec3& normal, auto&& seen) {
         for (const Vec3& tip : vantage) {
             const DeviceSample s = aimAt(world, tip, target);
-            if (seen(scopePose(w.frame, w.options.scope, s), target, normal))
+            if (seen(scopePose(w.frame, scope, s), target, normal))
                 return s;
         }
-        return aimAt(world, near, target);
+        return aimAt(world, middleAt(0.6), target);
     };
     for (const auto& o : w.ostia) {
         const DeviceSample s =
             lookAt(w.ostiumPoint(o), o.normal, [&](const ScopePose& pose, const Vec3& p, const Vec3& n) {
                 return w.visibleFrom(pose, p, n, -1, kOstiumOcclusionSlackMm);
             });
-        add(t, s);
-        t += 3.0;
-        add(t, s);
-        t += 1.0;
+        go(s, 1.0);
     }
     for (std::size_t p = 0; p < w.metrics.pathologies.size(); ++p) {
         // The pathology's face nearest the cavity's axis, marked with the view's centre on it.
@@ -1088,21 +1205,20 @@ Script explorationScript(const World& world, double durationS) {
             lookAt(centre, w.faceNormal(best), [&](const ScopePose& pose, const Vec3&, const Vec3&) {
                 double th = 0.0, a = 0.0, b = 0.0;
                 const std::int32_t hit =
-                    w.bvh.raycast(w.pointsMm, pose.tipMm, pose.direction, scopeFocusFarMm(w.options.scope), th, a, b);
+                    w.bvh.raycast(w.pointsMm, pose.tipMm, pose.direction, scopeFocusFarMm(scope), th, a, b);
                 return hit >= 0 && w.facePathology[static_cast<std::size_t>(hit)] == static_cast<int>(p);
             });
-        add(t, look);
-        t += 3.0;
+        go(look, 1.0);
         DeviceSample press = look;
         press.buttons = kButtonMark;
-        add(t, press);
-        t += 0.3;
-        add(t, look);
-        t += 1.0;
+        add(1.0, press);
+        add(0.3, look);
+        add(1.0, look);
     }
-    add(t, inOs);
-    t += 3.0;
-    add(t, outside);
+    // Out along the middle.
+    go(sampleAiming(w.frame, middle[1]), 0.5);
+    add(std::max(0.3, distance(tipNow, inOsTip) / kScriptSpeedMmPerS), inOs);
+    add(3.0, outside);
     const double scale = durationS > 0.0 ? durationS / t : 1.0;
     Script script;
     for (const auto& [time, sample] : plan) {
