@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 
 using namespace hs;
@@ -34,10 +35,10 @@ TEST(TextureImageFiles, PngRoundTripsExactly) {
     EXPECT_EQ(back->data(), img.data());
 }
 
-TEST(TextureImageFiles, JpegAndExrRoundTripApproximately) {
+TEST(TextureImageFiles, JpegExrAndTiffRoundTripApproximately) {
     test::TempDir dir;
     const ImageU8 img = gradient(32, 32);
-    for (const char* name : {"g.jpg", "g.exr"}) {
+    for (const char* name : {"g.jpg", "g.exr", "g.tif"}) {
         ASSERT_TRUE(writeImage(img, dir.file(name)).ok()) << name;
         const auto back = readImageRgb8(dir.file(name));
         ASSERT_TRUE(back.ok()) << name << ": " << back.error().message();
@@ -46,6 +47,26 @@ TEST(TextureImageFiles, JpegAndExrRoundTripApproximately) {
             err += std::abs(int(img.data()[i]) - int(back->data()[i]));
         EXPECT_LT(err / static_cast<double>(img.data().size()), 3.0) << name;
     }
+}
+
+TEST(TextureImageFiles, KnowsTheFormatByItsContentAndReadsOnlyTheFourItWrites) {
+    test::TempDir dir;
+    const ImageU8 img = ImageU8::create(20, 20, 3, 100).value();
+    ASSERT_TRUE(writeImage(img, dir.file("real-png.png")).ok());
+    std::filesystem::rename(dir.file("real-png.png"), dir.file("named-wrongly.jpg"));
+    const auto byContent = readImageRgb8(dir.file("named-wrongly.jpg"));
+    ASSERT_TRUE(byContent.ok()) << byContent.error().message();
+    EXPECT_EQ(byContent->width(), 20);
+    {
+        // A GIF (a format OpenImageIO has a reader for): refused before any decoder sees it.
+        std::ofstream gif(dir.file("picture.gif"), std::ios::binary);
+        gif << "GIF89a\x14\x00\x14\x00\x00\x00\x00;";
+    }
+    const auto other = readImageRgb8(dir.file("picture.gif"));
+    ASSERT_FALSE(other.ok());
+    EXPECT_EQ(other.error().code, ErrorCode::InvalidInput);
+    EXPECT_NE(other.error().detail.find("picture.gif"), std::string::npos);
+    EXPECT_NE(other.error().detail.find("PNG, JPEG, OpenEXR, TIFF"), std::string::npos) << other.error().detail;
 }
 
 TEST(TextureImageFiles, RejectsUnreadableMissingAndTinyFilesNamingThem) {
