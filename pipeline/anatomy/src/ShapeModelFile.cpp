@@ -23,6 +23,9 @@ namespace {
 
 constexpr int kFormatVersion = 1;
 constexpr hsize_t kMaxValues = 200'000'000; ///< refuse datasets above this many values (hostile files)
+/// A dataset's values may take at most this many times the bytes it stores (deflate's largest ratio is 1032:1): a
+/// count is checked against what the file holds before anything is allocated by it.
+constexpr hsize_t kMaxInflation = 1032;
 
 /// Silences HDF5's error printing for the lifetime of the object (we report errors ourselves).
 class QuietErrors {
@@ -232,6 +235,17 @@ struct Reader {
             total *= d;
         if (total > kMaxValues)
             return fail(ErrorCode::LimitExceeded, path + ": dataset " + object + " is too large");
+        // What the dataset stores must be in the file and account for its values (compressed, at most
+        // kMaxInflation times over): a forged extent in a small file cannot make the reader allocate gigabytes.
+        const hsize_t stored = H5Dget_storage_size(set.get());
+        hsize_t fileBytes = 0;
+        if (H5Fget_filesize(file, &fileBytes) < 0)
+            fileBytes = 0;
+        if (total > 0 && (stored == 0 || stored > fileBytes || total > stored / sizeof(T) * kMaxInflation + 1))
+            return fail(ErrorCode::InvalidInput, path + ": dataset " + object + " declares " + std::to_string(total) +
+                                                     " values but stores " + std::to_string(stored) + " bytes of a " +
+                                                     std::to_string(fileBytes) + "-byte file (at most " +
+                                                     std::to_string(kMaxInflation) + " values a stored value)");
         std::vector<T> values(static_cast<std::size_t>(total));
         if (H5Dread(set.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
             return fail(ErrorCode::InvalidInput, path + ": cannot read dataset " + object);

@@ -25,6 +25,7 @@
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -206,9 +207,16 @@ Status checkOffsetsArrays(const std::string& path, std::string_view text, std::s
     if (appendedTag != std::string_view::npos) {
         const std::size_t tagEnd = text.find('>', appendedTag);
         rawAppended = attribute(text.substr(appendedTag, tagEnd - appendedTag), "encoding") == "raw";
-        const std::size_t underscore = text.find('_', tagEnd);
-        if (underscore != std::string_view::npos)
-            appendedStart = underscore + 1;
+        // Where VTK starts the appended data (vtkXMLDataParser::FindAppendedDataPosition): after the tag's '>' and
+        // any white space (isspace), past a '_'. Anything else there would make VTK read every array from another
+        // place than this guard checks.
+        std::size_t at = tagEnd == std::string_view::npos ? text.size() : tagEnd + 1;
+        while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at])))
+            ++at;
+        if (at >= text.size() || text[at] != '_')
+            return fileError(ErrorCode::InvalidInput, path,
+                             "the appended data does not begin with '_' after the <AppendedData> tag");
+        appendedStart = at + 1;
     }
     auto tooLarge = [&](std::uint64_t value) { return value > static_cast<std::uint64_t>(capacity); };
     const Failure bad = fileError(ErrorCode::InvalidInput, path,
@@ -223,6 +231,28 @@ Status checkOffsetsArrays(const std::string& path, std::string_view text, std::s
         if (attribute(tag, "format") == "appended")
             HS_TRY(checkAppendedHeader(path, text, tag, appendedStart, rawAppended, headerSize, bigEndian, compressed,
                                        capacity));
+        if (attribute(tag, "Name") == "types" && attribute(tag, "format") == "ascii") {
+            // VTK 9.1 leaks the cell types array of a piece whose ASCII types it cannot read: every value must be a
+            // cell type (0-255), one for each of the piece's cells, before VTK sees them.
+            const std::size_t piece = xml.rfind("<Piece", pos);
+            std::int64_t cells = 0;
+            if (piece != std::string_view::npos)
+                (void)parseInt(attribute(xml.substr(piece, xml.find('>', piece) - piece), "NumberOfCells"), cells);
+            const std::size_t end = xml.find("</DataArray>", tagEnd);
+            TokenReader values(path, xml.substr(tagEnd + 1, end == std::string_view::npos ? 0 : end - tagEnd - 1), 0);
+            std::int64_t value = 0, count = 0;
+            while (!values.atEnd()) {
+                if (!values.integerIn(value, 0, 255, "cell type"))
+                    return fileError(ErrorCode::InvalidInput, path,
+                                     "a \"types\" array holds a value that is not a cell type (0-255)");
+                ++count;
+            }
+            if (count < cells)
+                return fileError(ErrorCode::InvalidInput, path,
+                                 "a \"types\" array has " + std::to_string(count) + " values for " +
+                                     std::to_string(cells) + " cells");
+            continue;
+        }
         if (attribute(tag, "Name") != "offsets")
             continue;
         const std::size_t valueSize = integerTypeSize(attribute(tag, "type"));
