@@ -139,6 +139,7 @@ QString SimWindow::keyHelp() {
         "<tr><td>I / O</td><td>open or close the inflow / outflow valve</td></tr>"
         "<tr><td>Space</td><td>mark the pathology at the centre of the view</td></tr>"
         "<tr><td>Ctrl+E</td><td>end the trial and show the report</td></tr>"
+        "<tr><td>Ctrl+R</td><td>restart the trial</td></tr>"
         "<tr><td>F1</td><td>this help</td></tr></table>");
 }
 
