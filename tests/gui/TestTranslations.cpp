@@ -65,6 +65,9 @@ void TestTranslations::loadsRequestedLanguage() {
     QCOMPARE(fileMenuTitle(), fileMenu);
     const QString title = QCoreApplication::translate("hs::workstation::MainWindow", "Open Mesh");
     QCOMPARE(title == QStringLiteral("Open Mesh"), language == QStringLiteral("en"));
+    // The simulator's window shares the files.
+    const QString simulator = QCoreApplication::translate("hs::simapp::SimWindow", "hysteroscene simulator");
+    QCOMPARE(simulator == QStringLiteral("hysteroscene simulator"), language == QStringLiteral("en"));
 }
 
 void TestTranslations::unknownLanguageFallsBackToEnglish() {
