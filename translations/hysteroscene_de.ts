@@ -2,6 +2,189 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de">
 <context>
+    <name>hs::simapp::SimWindow</name>
+    <message>
+        <source>hysteroscene simulator</source>
+        <translation>hysteroscene-Simulator</translation>
+    </message>
+    <message>
+        <source>Open a scene package (File &gt; Open).</source>
+        <translation>Ein Szenenpaket öffnen (Datei &gt; Paket öffnen).</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <source>&amp;Open Package...</source>
+        <translation>Paket ö&amp;ffnen...</translation>
+    </message>
+    <message>
+        <source>&amp;End Trial and Show Report...</source>
+        <translation>&amp;Durchlauf beenden und Bericht anzeigen...</translation>
+    </message>
+    <message>
+        <source>&amp;Restart Trial</source>
+        <translation>Durchlauf &amp;neu starten</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <source>&amp;Scope</source>
+        <translation>Hystero&amp;skop</translation>
+    </message>
+    <message>
+        <source>&amp;Optic</source>
+        <translation>&amp;Optik</translation>
+    </message>
+    <message>
+        <source>0°</source>
+        <translation>0°</translation>
+    </message>
+    <message>
+        <source>12°</source>
+        <translation>12°</translation>
+    </message>
+    <message>
+        <source>30°</source>
+        <translation>30°</translation>
+    </message>
+    <message>
+        <source>&amp;Diameter</source>
+        <translation>&amp;Durchmesser</translation>
+    </message>
+    <message>
+        <source>2.9 mm</source>
+        <translation>2,9 mm</translation>
+    </message>
+    <message>
+        <source>4 mm</source>
+        <translation>4 mm</translation>
+    </message>
+    <message>
+        <source>5 mm</source>
+        <translation>5 mm</translation>
+    </message>
+    <message>
+        <source>&amp;Exercise</source>
+        <translation>Ü&amp;bung</translation>
+    </message>
+    <message>
+        <source>&amp;Exploration: see the fundus, both ostia and every wall</source>
+        <translation>&amp;Erkundung: den Fundus, beide Tubenostien und jede Wand sehen</translation>
+    </message>
+    <message>
+        <source>&amp;Diagnosis: mark each pathology</source>
+        <translation>&amp;Diagnose: jede Pathologie markieren</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <source>&amp;Keys...</source>
+        <translation>&amp;Tasten...</translation>
+    </message>
+    <message>
+        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Arrow keys, or drag with the mouse&lt;/td&gt;&lt;td&gt;turn the scope about the cervix (pitch, yaw)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;W / S, or the mouse wheel&lt;/td&gt;&lt;td&gt;insert / withdraw&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Q / E&lt;/td&gt;&lt;td&gt;roll the scope (an oblique optic looks round)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Z / X&lt;/td&gt;&lt;td&gt;roll the camera head (the image&apos;s horizon)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;I / O&lt;/td&gt;&lt;td&gt;open or close the inflow / outflow valve&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Space&lt;/td&gt;&lt;td&gt;mark the pathology at the centre of the view&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Ctrl+E&lt;/td&gt;&lt;td&gt;end the trial and show the report&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Ctrl+R&lt;/td&gt;&lt;td&gt;restart the trial&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;F1&lt;/td&gt;&lt;td&gt;this help&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Pfeiltasten oder Ziehen mit der Maus&lt;/td&gt;&lt;td&gt;das Hysteroskop um die Zervix schwenken (auf/ab, links/rechts)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;W / S oder das Mausrad&lt;/td&gt;&lt;td&gt;einführen / zurückziehen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Q / E&lt;/td&gt;&lt;td&gt;das Hysteroskop drehen (eine Winkeloptik blickt zur Seite)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Z / X&lt;/td&gt;&lt;td&gt;den Kamerakopf drehen (den Horizont des Bildes)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;I / O&lt;/td&gt;&lt;td&gt;das Zulauf- / Ablaufventil öffnen oder schließen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Leertaste&lt;/td&gt;&lt;td&gt;die Pathologie in der Bildmitte markieren&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Ctrl+E&lt;/td&gt;&lt;td&gt;den Durchlauf beenden und den Bericht anzeigen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Ctrl+R&lt;/td&gt;&lt;td&gt;den Durchlauf neu starten&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;F1&lt;/td&gt;&lt;td&gt;diese Hilfe&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+    </message>
+    <message>
+        <source>Keys</source>
+        <translation>Tasten</translation>
+    </message>
+    <message>
+        <source>Loading %1...</source>
+        <translation>%1 wird geladen...</translation>
+    </message>
+    <message>
+        <source>The package could not be loaded.</source>
+        <translation>Das Paket konnte nicht geladen werden.</translation>
+    </message>
+    <message>
+        <source>Open Package</source>
+        <translation>Paket öffnen</translation>
+    </message>
+    <message>
+        <source>The scene package could not be loaded.</source>
+        <translation>Das Szenenpaket konnte nicht geladen werden.</translation>
+    </message>
+    <message>
+        <source>Replay</source>
+        <translation>Wiedergabe</translation>
+    </message>
+    <message>
+        <source>The trial could not be read.</source>
+        <translation>Die Aufzeichnung des Durchlaufs konnte nicht gelesen werden.</translation>
+    </message>
+    <message>
+        <source>Script</source>
+        <translation>Skript</translation>
+    </message>
+    <message>
+        <source>The script could not be read.</source>
+        <translation>Das Skript konnte nicht gelesen werden.</translation>
+    </message>
+    <message>
+        <source>Haptic device</source>
+        <translation>Haptisches Gerät</translation>
+    </message>
+    <message>
+        <source>The haptic hysteroscope could not be opened.</source>
+        <translation>Das haptische Hysteroskop konnte nicht geöffnet werden.</translation>
+    </message>
+    <message>
+        <source>hysteroscene simulator: %1</source>
+        <translation>hysteroscene-Simulator: %1</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulation</translation>
+    </message>
+    <message>
+        <source>The simulation stopped.</source>
+        <translation>Die Simulation wurde abgebrochen.</translation>
+    </message>
+    <message>
+        <source>The device&apos;s samples have ended: File &gt; End Trial shows the report.</source>
+        <translation>Das Gerät liefert keine Abtastwerte mehr: Datei &gt; Durchlauf beenden zeigt den Bericht.</translation>
+    </message>
+    <message>
+        <source>Save the Trial&apos;s Report</source>
+        <translation>Bericht des Durchlaufs speichern</translation>
+    </message>
+    <message>
+        <source>Trial reports (*.json)</source>
+        <translation>Durchlaufberichte (*.json)</translation>
+    </message>
+    <message>
+        <source>Trial Report</source>
+        <translation>Bericht des Durchlaufs</translation>
+    </message>
+    <message>
+        <source>The report is in %1. Open it?</source>
+        <translation>Der Bericht liegt in %1. Öffnen?</translation>
+    </message>
+    <message>
+        <source>The report could not be written.</source>
+        <translation>Der Bericht konnte nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>Trial ended; report written to %1.</source>
+        <translation>Durchlauf beendet; Bericht gespeichert unter %1.</translation>
+    </message>
+    <message>
+        <source>Open a Scene Package</source>
+        <translation>Szenenpaket öffnen</translation>
+    </message>
+    <message>
+        <source>%L1 fps, physics %L2 steps/s, insertion %L3 mm</source>
+        <translation>%L1 fps, Physik %L2 Schritte/s, Einführtiefe %L3 mm</translation>
+    </message>
+</context>
+<context>
     <name>hs::widgets</name>
     <message>
         <source>Gravidity counts every pregnancy, so it cannot be less than the parity.</source>

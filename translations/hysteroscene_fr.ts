@@ -2,6 +2,189 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="fr">
 <context>
+    <name>hs::simapp::SimWindow</name>
+    <message>
+        <source>hysteroscene simulator</source>
+        <translation>Simulateur hysteroscene</translation>
+    </message>
+    <message>
+        <source>Open a scene package (File &gt; Open).</source>
+        <translation>Ouvrez un paquet de scène (Fichier &gt; Ouvrir un paquet).</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Fichier</translation>
+    </message>
+    <message>
+        <source>&amp;Open Package...</source>
+        <translation>&amp;Ouvrir un paquet...</translation>
+    </message>
+    <message>
+        <source>&amp;End Trial and Show Report...</source>
+        <translation>&amp;Terminer l&apos;essai et afficher le rapport...</translation>
+    </message>
+    <message>
+        <source>&amp;Restart Trial</source>
+        <translation>&amp;Recommencer l&apos;essai</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Quitter</translation>
+    </message>
+    <message>
+        <source>&amp;Scope</source>
+        <translation>&amp;Hystéroscope</translation>
+    </message>
+    <message>
+        <source>&amp;Optic</source>
+        <translation>&amp;Optique</translation>
+    </message>
+    <message>
+        <source>0°</source>
+        <translation>0°</translation>
+    </message>
+    <message>
+        <source>12°</source>
+        <translation>12°</translation>
+    </message>
+    <message>
+        <source>30°</source>
+        <translation>30°</translation>
+    </message>
+    <message>
+        <source>&amp;Diameter</source>
+        <translation>&amp;Diamètre</translation>
+    </message>
+    <message>
+        <source>2.9 mm</source>
+        <translation>2,9 mm</translation>
+    </message>
+    <message>
+        <source>4 mm</source>
+        <translation>4 mm</translation>
+    </message>
+    <message>
+        <source>5 mm</source>
+        <translation>5 mm</translation>
+    </message>
+    <message>
+        <source>&amp;Exercise</source>
+        <translation>&amp;Exercice</translation>
+    </message>
+    <message>
+        <source>&amp;Exploration: see the fundus, both ostia and every wall</source>
+        <translation>&amp;Exploration : voir le fond utérin, les deux ostia tubaires et chaque paroi</translation>
+    </message>
+    <message>
+        <source>&amp;Diagnosis: mark each pathology</source>
+        <translation>&amp;Diagnostic : marquer chaque pathologie</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>A&amp;ide</translation>
+    </message>
+    <message>
+        <source>&amp;Keys...</source>
+        <translation>&amp;Touches...</translation>
+    </message>
+    <message>
+        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Arrow keys, or drag with the mouse&lt;/td&gt;&lt;td&gt;turn the scope about the cervix (pitch, yaw)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;W / S, or the mouse wheel&lt;/td&gt;&lt;td&gt;insert / withdraw&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Q / E&lt;/td&gt;&lt;td&gt;roll the scope (an oblique optic looks round)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Z / X&lt;/td&gt;&lt;td&gt;roll the camera head (the image&apos;s horizon)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;I / O&lt;/td&gt;&lt;td&gt;open or close the inflow / outflow valve&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Space&lt;/td&gt;&lt;td&gt;mark the pathology at the centre of the view&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Ctrl+E&lt;/td&gt;&lt;td&gt;end the trial and show the report&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Ctrl+R&lt;/td&gt;&lt;td&gt;restart the trial&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;F1&lt;/td&gt;&lt;td&gt;this help&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Touches fléchées, ou glisser avec la souris&lt;/td&gt;&lt;td&gt;orienter l&apos;hystéroscope autour du col utérin (haut/bas, gauche/droite)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;W / S, ou la molette de la souris&lt;/td&gt;&lt;td&gt;introduire / retirer&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Q / E&lt;/td&gt;&lt;td&gt;tourner l&apos;hystéroscope sur son axe (une optique foroblique regarde sur le côté)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Z / X&lt;/td&gt;&lt;td&gt;tourner la tête de caméra (l&apos;horizon de l&apos;image)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;I / O&lt;/td&gt;&lt;td&gt;ouvrir ou fermer la valve d&apos;entrée / de sortie&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Espace&lt;/td&gt;&lt;td&gt;marquer la pathologie au centre de la vue&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Ctrl+E&lt;/td&gt;&lt;td&gt;terminer l&apos;essai et afficher le rapport&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Ctrl+R&lt;/td&gt;&lt;td&gt;recommencer l&apos;essai&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;F1&lt;/td&gt;&lt;td&gt;cette aide&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+    </message>
+    <message>
+        <source>Keys</source>
+        <translation>Touches</translation>
+    </message>
+    <message>
+        <source>Loading %1...</source>
+        <translation>Chargement de %1...</translation>
+    </message>
+    <message>
+        <source>The package could not be loaded.</source>
+        <translation>Le paquet n&apos;a pas pu être chargé.</translation>
+    </message>
+    <message>
+        <source>Open Package</source>
+        <translation>Ouvrir un paquet</translation>
+    </message>
+    <message>
+        <source>The scene package could not be loaded.</source>
+        <translation>Le paquet de scène n&apos;a pas pu être chargé.</translation>
+    </message>
+    <message>
+        <source>Replay</source>
+        <translation>Relecture</translation>
+    </message>
+    <message>
+        <source>The trial could not be read.</source>
+        <translation>L&apos;enregistrement de l&apos;essai n&apos;a pas pu être lu.</translation>
+    </message>
+    <message>
+        <source>Script</source>
+        <translation>Script</translation>
+    </message>
+    <message>
+        <source>The script could not be read.</source>
+        <translation>Le script n&apos;a pas pu être lu.</translation>
+    </message>
+    <message>
+        <source>Haptic device</source>
+        <translation>Dispositif haptique</translation>
+    </message>
+    <message>
+        <source>The haptic hysteroscope could not be opened.</source>
+        <translation>L&apos;hystéroscope haptique n&apos;a pas pu être ouvert.</translation>
+    </message>
+    <message>
+        <source>hysteroscene simulator: %1</source>
+        <translation>Simulateur hysteroscene : %1</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulation</translation>
+    </message>
+    <message>
+        <source>The simulation stopped.</source>
+        <translation>La simulation s&apos;est arrêtée.</translation>
+    </message>
+    <message>
+        <source>The device&apos;s samples have ended: File &gt; End Trial shows the report.</source>
+        <translation>Les échantillons du dispositif sont épuisés : Fichier &gt; Terminer l&apos;essai affiche le rapport.</translation>
+    </message>
+    <message>
+        <source>Save the Trial&apos;s Report</source>
+        <translation>Enregistrer le rapport de l&apos;essai</translation>
+    </message>
+    <message>
+        <source>Trial reports (*.json)</source>
+        <translation>Rapports d&apos;essai (*.json)</translation>
+    </message>
+    <message>
+        <source>Trial Report</source>
+        <translation>Rapport de l&apos;essai</translation>
+    </message>
+    <message>
+        <source>The report is in %1. Open it?</source>
+        <translation>Le rapport est dans %1. L&apos;ouvrir ?</translation>
+    </message>
+    <message>
+        <source>The report could not be written.</source>
+        <translation>Le rapport n&apos;a pas pu être écrit.</translation>
+    </message>
+    <message>
+        <source>Trial ended; report written to %1.</source>
+        <translation>Essai terminé ; rapport écrit dans %1.</translation>
+    </message>
+    <message>
+        <source>Open a Scene Package</source>
+        <translation>Ouvrir un paquet de scène</translation>
+    </message>
+    <message>
+        <source>%L1 fps, physics %L2 steps/s, insertion %L3 mm</source>
+        <translation>%L1 i/s, physique %L2 pas/s, insertion %L3 mm</translation>
+    </message>
+</context>
+<context>
     <name>hs::widgets</name>
     <message>
         <source>Gravidity counts every pregnancy, so it cannot be less than the parity.</source>

@@ -2,6 +2,189 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="it">
 <context>
+    <name>hs::simapp::SimWindow</name>
+    <message>
+        <source>hysteroscene simulator</source>
+        <translation>Simulatore hysteroscene</translation>
+    </message>
+    <message>
+        <source>Open a scene package (File &gt; Open).</source>
+        <translation>Apri un pacchetto di scena (File &gt; Apri pacchetto).</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;File</translation>
+    </message>
+    <message>
+        <source>&amp;Open Package...</source>
+        <translation>&amp;Apri pacchetto...</translation>
+    </message>
+    <message>
+        <source>&amp;End Trial and Show Report...</source>
+        <translation>&amp;Termina la prova e mostra il rapporto...</translation>
+    </message>
+    <message>
+        <source>&amp;Restart Trial</source>
+        <translation>&amp;Riavvia la prova</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Esci</translation>
+    </message>
+    <message>
+        <source>&amp;Scope</source>
+        <translation>&amp;Isteroscopio</translation>
+    </message>
+    <message>
+        <source>&amp;Optic</source>
+        <translation>&amp;Ottica</translation>
+    </message>
+    <message>
+        <source>0°</source>
+        <translation>0°</translation>
+    </message>
+    <message>
+        <source>12°</source>
+        <translation>12°</translation>
+    </message>
+    <message>
+        <source>30°</source>
+        <translation>30°</translation>
+    </message>
+    <message>
+        <source>&amp;Diameter</source>
+        <translation>&amp;Diametro</translation>
+    </message>
+    <message>
+        <source>2.9 mm</source>
+        <translation>2,9 mm</translation>
+    </message>
+    <message>
+        <source>4 mm</source>
+        <translation>4 mm</translation>
+    </message>
+    <message>
+        <source>5 mm</source>
+        <translation>5 mm</translation>
+    </message>
+    <message>
+        <source>&amp;Exercise</source>
+        <translation>&amp;Esercizio</translation>
+    </message>
+    <message>
+        <source>&amp;Exploration: see the fundus, both ostia and every wall</source>
+        <translation>&amp;Esplorazione: vedere il fondo, entrambi gli osti tubarici e ogni parete</translation>
+    </message>
+    <message>
+        <source>&amp;Diagnosis: mark each pathology</source>
+        <translation>&amp;Diagnosi: contrassegnare ogni patologia</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Aiuto</translation>
+    </message>
+    <message>
+        <source>&amp;Keys...</source>
+        <translation>&amp;Tasti...</translation>
+    </message>
+    <message>
+        <source>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Arrow keys, or drag with the mouse&lt;/td&gt;&lt;td&gt;turn the scope about the cervix (pitch, yaw)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;W / S, or the mouse wheel&lt;/td&gt;&lt;td&gt;insert / withdraw&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Q / E&lt;/td&gt;&lt;td&gt;roll the scope (an oblique optic looks round)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Z / X&lt;/td&gt;&lt;td&gt;roll the camera head (the image&apos;s horizon)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;I / O&lt;/td&gt;&lt;td&gt;open or close the inflow / outflow valve&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Space&lt;/td&gt;&lt;td&gt;mark the pathology at the centre of the view&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Ctrl+E&lt;/td&gt;&lt;td&gt;end the trial and show the report&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Ctrl+R&lt;/td&gt;&lt;td&gt;restart the trial&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;F1&lt;/td&gt;&lt;td&gt;this help&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;table&gt;&lt;tr&gt;&lt;td&gt;Tasti freccia, o trascinare con il mouse&lt;/td&gt;&lt;td&gt;orientare l&apos;isteroscopio attorno alla cervice (su/giù, sinistra/destra)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;W / S, o la rotellina del mouse&lt;/td&gt;&lt;td&gt;inserire / ritirare&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Q / E&lt;/td&gt;&lt;td&gt;ruotare l&apos;isteroscopio sul suo asse (un&apos;ottica angolata guarda di lato)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Z / X&lt;/td&gt;&lt;td&gt;ruotare la testa della telecamera (l&apos;orizzonte dell&apos;immagine)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;I / O&lt;/td&gt;&lt;td&gt;aprire o chiudere la valvola di afflusso / deflusso&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Spazio&lt;/td&gt;&lt;td&gt;contrassegnare la patologia al centro della vista&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Ctrl+E&lt;/td&gt;&lt;td&gt;terminare la prova e mostrare il rapporto&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Ctrl+R&lt;/td&gt;&lt;td&gt;riavviare la prova&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;F1&lt;/td&gt;&lt;td&gt;questa guida&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+    </message>
+    <message>
+        <source>Keys</source>
+        <translation>Tasti</translation>
+    </message>
+    <message>
+        <source>Loading %1...</source>
+        <translation>Caricamento di %1...</translation>
+    </message>
+    <message>
+        <source>The package could not be loaded.</source>
+        <translation>Impossibile caricare il pacchetto.</translation>
+    </message>
+    <message>
+        <source>Open Package</source>
+        <translation>Apri pacchetto</translation>
+    </message>
+    <message>
+        <source>The scene package could not be loaded.</source>
+        <translation>Impossibile caricare il pacchetto di scena.</translation>
+    </message>
+    <message>
+        <source>Replay</source>
+        <translation>Riproduzione</translation>
+    </message>
+    <message>
+        <source>The trial could not be read.</source>
+        <translation>Impossibile leggere la registrazione della prova.</translation>
+    </message>
+    <message>
+        <source>Script</source>
+        <translation>Script</translation>
+    </message>
+    <message>
+        <source>The script could not be read.</source>
+        <translation>Impossibile leggere lo script.</translation>
+    </message>
+    <message>
+        <source>Haptic device</source>
+        <translation>Dispositivo aptico</translation>
+    </message>
+    <message>
+        <source>The haptic hysteroscope could not be opened.</source>
+        <translation>Impossibile aprire l&apos;isteroscopio aptico.</translation>
+    </message>
+    <message>
+        <source>hysteroscene simulator: %1</source>
+        <translation>Simulatore hysteroscene: %1</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulazione</translation>
+    </message>
+    <message>
+        <source>The simulation stopped.</source>
+        <translation>La simulazione si è interrotta.</translation>
+    </message>
+    <message>
+        <source>The device&apos;s samples have ended: File &gt; End Trial shows the report.</source>
+        <translation>I campioni del dispositivo sono terminati: File &gt; Termina la prova mostra il rapporto.</translation>
+    </message>
+    <message>
+        <source>Save the Trial&apos;s Report</source>
+        <translation>Salva il rapporto della prova</translation>
+    </message>
+    <message>
+        <source>Trial reports (*.json)</source>
+        <translation>Rapporti di prova (*.json)</translation>
+    </message>
+    <message>
+        <source>Trial Report</source>
+        <translation>Rapporto della prova</translation>
+    </message>
+    <message>
+        <source>The report is in %1. Open it?</source>
+        <translation>Il rapporto è in %1. Aprirlo?</translation>
+    </message>
+    <message>
+        <source>The report could not be written.</source>
+        <translation>Impossibile scrivere il rapporto.</translation>
+    </message>
+    <message>
+        <source>Trial ended; report written to %1.</source>
+        <translation>Prova terminata; rapporto scritto in %1.</translation>
+    </message>
+    <message>
+        <source>Open a Scene Package</source>
+        <translation>Apri un pacchetto di scena</translation>
+    </message>
+    <message>
+        <source>%L1 fps, physics %L2 steps/s, insertion %L3 mm</source>
+        <translation>%L1 fps, fisica %L2 passi/s, inserimento %L3 mm</translation>
+    </message>
+</context>
+<context>
     <name>hs::widgets</name>
     <message>
         <source>Gravidity counts every pregnancy, so it cannot be less than the parity.</source>

@@ -1,8 +1,8 @@
 // hysteroscene: the workstation. Opens the mesh given on the command line.
+#include "hs/translations/Translations.h"
 #include "hs/widgets/view/VtkView.h"
 #include "hs/workstation/MainWindow.h"
 #include "hs/workstation/MessageBox.h"
-#include "hs/workstation/Translator.h"
 
 #include <QAction>
 #include <QApplication>
@@ -16,11 +16,11 @@ namespace {
 QString requestedLanguage(const QStringList& arguments) {
     for (int i = 1; i < arguments.size(); ++i) {
         if (arguments.at(i) == QStringLiteral("--lang") && i + 1 < arguments.size())
-            return arguments.at(i + 1);
+            return hs::translations::requestedLanguage(arguments.at(i + 1));
         if (arguments.at(i).startsWith(QStringLiteral("--lang=")))
-            return arguments.at(i).mid(7);
+            return hs::translations::requestedLanguage(arguments.at(i).mid(7));
     }
-    return qEnvironmentVariable("HS_LANG");
+    return hs::translations::requestedLanguage();
 }
 
 /// Lets the view finish its first frames, saves the window to `path` and ends the application.
@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
     QCoreApplication::setApplicationVersion(QStringLiteral(HS_VERSION));
 
     // The language is needed before the parser's help texts are written, so it is looked up first.
-    hs::workstation::installTranslators(app, requestedLanguage(QCoreApplication::arguments()));
+    hs::translations::installTranslators(app, requestedLanguage(QCoreApplication::arguments()));
 
     QCommandLineParser parser;
     parser.setApplicationDescription(

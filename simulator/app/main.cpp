@@ -1,7 +1,9 @@
-// hysteroscene-sim: the preview simulator. Headless runs need no display; the window needs OpenGL 3.2.
+// hysteroscene-sim: the preview simulator. Headless runs need no display (and speak English); the window needs
+// OpenGL 3.2 and speaks the language --lang, HS_LANG or the system locale chooses.
 #include "hs/simapp/Headless.h"
 #include "hs/simapp/SimOptions.h"
 #include "hs/simapp/SimWindow.h"
+#include "hs/translations/Translations.h"
 #include "hs/widgets/view/VtkView.h"
 
 #include "CliCommon.h"
@@ -26,6 +28,8 @@ int main(int argc, char** argv) {
     QCoreApplication::setOrganizationName(QStringLiteral("hysteroscene"));
     QCoreApplication::setApplicationName(QStringLiteral("hysteroscene-sim"));
     QCoreApplication::setApplicationVersion(QStringLiteral(HS_VERSION));
+    hs::translations::installTranslators(app,
+                                         hs::translations::requestedLanguage(QString::fromStdString(options.language)));
     hs::simapp::SimWindow window(options);
     window.show();
     if (!options.scene.empty())

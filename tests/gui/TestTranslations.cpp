@@ -1,6 +1,5 @@
 // Qt Test for the embedded translations and the translator's English fallback.
 #include "hs/translations/Translations.h"
-#include "hs/workstation/Translator.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -61,15 +60,18 @@ void TestTranslations::loadsRequestedLanguage_data() {
 void TestTranslations::loadsRequestedLanguage() {
     QFETCH(QString, language);
     QFETCH(QString, fileMenu);
-    const QString loaded = hs::workstation::installTranslators(*QCoreApplication::instance(), language);
+    const QString loaded = hs::translations::installTranslators(*QCoreApplication::instance(), language);
     QCOMPARE(loaded, language.left(2));
     QCOMPARE(fileMenuTitle(), fileMenu);
     const QString title = QCoreApplication::translate("hs::workstation::MainWindow", "Open Mesh");
     QCOMPARE(title == QStringLiteral("Open Mesh"), language == QStringLiteral("en"));
+    // The simulator's window shares the files.
+    const QString simulator = QCoreApplication::translate("hs::simapp::SimWindow", "hysteroscene simulator");
+    QCOMPARE(simulator == QStringLiteral("hysteroscene simulator"), language == QStringLiteral("en"));
 }
 
 void TestTranslations::unknownLanguageFallsBackToEnglish() {
-    QCOMPARE(hs::workstation::installTranslators(*QCoreApplication::instance(), "tlh"), QStringLiteral("en"));
+    QCOMPARE(hs::translations::installTranslators(*QCoreApplication::instance(), "tlh"), QStringLiteral("en"));
     QCOMPARE(fileMenuTitle(), QStringLiteral("&File"));
 }
 

@@ -1,19 +1,26 @@
-// Qt Test for the simulator's window: it opens a package, the keys drive the scope (the drawn state follows), the
-// view renders, and ending the trial writes the report, its page and the trial. With HS_SCREENSHOT_DIR set it saves
+// Qt Test for the simulator's window: it speaks the language --lang chooses (English when there is no translation),
+// it opens a package, the keys drive the scope (the drawn state follows), the view renders, and ending the trial
+// writes the report, its page and the trial. With HS_SCREENSHOT_DIR set it saves
 // the endoscopic view inside the cavity there (docs/simulator.md); HS_SIM_PACKAGE names a package to use instead of
 // the light test case.
 #include "hs/generate/Generate.h"
 #include "hs/scene/ScenePackage.h"
+#include "hs/simapp/SimOptions.h"
 #include "hs/simapp/SimWindow.h"
+#include "hs/translations/Translations.h"
 #include "hs/widgets/view/VtkView.h"
 #include "hs/workstation/MessageBox.h"
 
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QLabel>
+#include <QLocale>
+#include <QMenuBar>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTranslator>
 
 using hs::simapp::KeyboardSource;
 using hs::simapp::SimWindow;
@@ -23,7 +30,11 @@ class TestSimWindow : public QObject {
 
 private slots:
     void initTestCase();
+    void cleanup();
     void listsTheKeys();
+    void readsTheLanguageOption();
+    void speaksTheChosenLanguage_data();
+    void speaksTheChosenLanguage();
     void drivesTheScopeAndEndsTheTrial();
 
 private:
@@ -51,10 +62,88 @@ void TestSimWindow::initTestCase() {
     qInfo("package generated in %lld ms", clock.elapsed());
 }
 
+void TestSimWindow::cleanup() {
+    // A test that installed translators leaves the next one in English.
+    const auto translators = QCoreApplication::instance()->findChildren<QTranslator*>();
+    for (QTranslator* translator : translators) {
+        QCoreApplication::removeTranslator(translator);
+        delete translator;
+    }
+    QLocale::setDefault(QLocale::c());
+}
+
 void TestSimWindow::listsTheKeys() {
     const QString help = SimWindow::keyHelp();
     for (const char* key : {"W / S", "Q / E", "Z / X", "I / O", "Space"})
         QVERIFY2(help.contains(key), key);
+}
+
+void TestSimWindow::readsTheLanguageOption() {
+    const auto parse = [](std::vector<const char*> arguments) {
+        arguments.insert(arguments.begin(), "hysteroscene-sim");
+        return hs::simapp::parseCommandLine(static_cast<int>(arguments.size()), arguments.data());
+    };
+    const auto none = parse({"scene"});
+    QVERIFY(none.options);
+    QCOMPARE(none.options->language, std::string());
+    const auto lang = parse({"scene", "--lang", "de"});
+    QVERIFY(lang.options);
+    QCOMPARE(lang.options->language, std::string("de"));
+    const auto language = parse({"--language=fr", "scene"});
+    QVERIFY(language.options);
+    QCOMPARE(language.options->language, std::string("fr"));
+}
+
+void TestSimWindow::speaksTheChosenLanguage_data() {
+    QTest::addColumn<QString>("language");
+    QTest::addColumn<QString>("loaded");
+    QTest::addColumn<QString>("title");
+    QTest::addColumn<QStringList>("menus");
+    QTest::addColumn<QString>("openPackage");
+    QTest::newRow("German") << "de"
+                            << "de"
+                            << "hysteroscene-Simulator" << QStringList{"&Datei", "Hystero&skop", "Ü&bung", "&Hilfe"}
+                            << "Paket ö&ffnen...";
+    QTest::newRow("French") << "fr"
+                            << "fr"
+                            << "Simulateur hysteroscene"
+                            << QStringList{"&Fichier", "&Hystéroscope", "&Exercice", "A&ide"} << "&Ouvrir un paquet...";
+    QTest::newRow("Italian") << "it"
+                             << "it"
+                             << "Simulatore hysteroscene"
+                             << QStringList{"&File", "&Isteroscopio", "&Esercizio", "&Aiuto"} << "&Apri pacchetto...";
+    QTest::newRow("unknown: English") << "tlh"
+                                      << "en"
+                                      << "hysteroscene simulator"
+                                      << QStringList{"&File", "&Scope", "&Exercise", "&Help"} << "&Open Package...";
+}
+
+void TestSimWindow::speaksTheChosenLanguage() {
+    QFETCH(QString, language);
+    QFETCH(QString, loaded);
+    QFETCH(QString, title);
+    QFETCH(QStringList, menus);
+    QFETCH(QString, openPackage);
+    QCOMPARE(hs::translations::installTranslators(*QCoreApplication::instance(), language), loaded);
+    SimWindow window(hs::simapp::SimOptions{});
+    QCOMPARE(window.windowTitle(), title);
+    QStringList shown;
+    for (const QAction* menu : window.menuBar()->actions())
+        shown.append(menu->text());
+    QCOMPARE(shown, menus);
+    auto* open = window.findChild<QAction*>(QStringLiteral("actionOpenPackage"));
+    QVERIFY(open);
+    QCOMPARE(open->text(), openPackage);
+    auto* status = window.findChild<QLabel*>(QStringLiteral("simStatusLabel"));
+    QVERIFY(status);
+    QCOMPARE(status->text() == QStringLiteral("Open a scene package (File > Open)."), loaded == QStringLiteral("en"));
+    // The key help is translated, its keys' names kept.
+    QVERIFY(SimWindow::keyHelp().contains(QStringLiteral("W / S")));
+    QCOMPARE(SimWindow::keyHelp().contains(QStringLiteral("mouse wheel")), loaded == QStringLiteral("en"));
+    // Each language's decimal separator in the diameters.
+    auto* diameter = window.findChild<QAction*>(QStringLiteral("actionDiameter-2.9"));
+    QVERIFY(diameter);
+    QCOMPARE(diameter->text(), loaded == QStringLiteral("en") ? QStringLiteral("2.9 mm") : QStringLiteral("2,9 mm"));
 }
 
 void TestSimWindow::drivesTheScopeAndEndsTheTrial() {

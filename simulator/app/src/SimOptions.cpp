@@ -126,6 +126,9 @@ ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
     app.add_flag("--headless", o.headless, "no window: step as fast as possible (with --replay or a scripted device)");
     app.add_option("--report", o.reportPath, "write the trial's report (JSON) here");
     app.add_option("--html", o.htmlPath, "write the trial's report page (HTML) here");
+    // The workstation's convention (--lang, else HS_LANG, else the system locale); headless runs stay English.
+    app.add_option("--lang,--language", o.language,
+                   "the window's language: de, fr, it or en (default: HS_LANG, else the system locale)");
 
     ParsedCommandLine parsed;
     std::ostringstream out, err;

@@ -139,6 +139,7 @@ QString SimWindow::keyHelp() {
         "<tr><td>I / O</td><td>open or close the inflow / outflow valve</td></tr>"
         "<tr><td>Space</td><td>mark the pathology at the centre of the view</td></tr>"
         "<tr><td>Ctrl+E</td><td>end the trial and show the report</td></tr>"
+        "<tr><td>Ctrl+R</td><td>restart the trial</td></tr>"
         "<tr><td>F1</td><td>this help</td></tr></table>");
 }
 
@@ -277,7 +278,7 @@ void SimWindow::onRenderTick() {
     if (m_fpsClock.elapsed() >= 1000) {
         m_fps = m_fpsFrames * 1000.0 / static_cast<double>(m_fpsClock.restart());
         m_fpsFrames = 0;
-        m_statusLabel->setText(tr("%1 fps, physics %2 steps/s, insertion %3 mm")
+        m_statusLabel->setText(tr("%L1 fps, physics %L2 steps/s, insertion %L3 mm")
                                    .arg(m_fps, 0, 'f', 0)
                                    .arg(m_loop->stepsPerSecond(), 0, 'f', 0)
                                    .arg(m_drawn.sample.insertionMm, 0, 'f', 1));

@@ -3,6 +3,7 @@
 ///   hysteroscene-sim SCENE [--optic 0|12|30] [--diameter 2.9|4|5] [--exercise exploration|diagnosis]
 ///                    [--pump-mmhg P] [--map-mmhg M] [--seed N] [--device keyboard|hid[:VID:PID]|scripted:FILE]
 ///                    [--record TRIAL] [--replay TRIAL] [--headless] [--report OUT.json] [--html OUT.html]
+///                    [--lang de|fr|it|en]
 /// Exit codes are the command-line tool's (hs::cli::ExitCode): 0 ok, 2 usage, 3 invalid input, 4 failed (docs/cli.md).
 
 #include "hs/core/Result.h"
@@ -37,6 +38,7 @@ struct SimOptions {
     bool headless = false;   ///< --headless: no window (needs --replay or a scripted device)
     std::string reportPath;  ///< --report: the report's JSON
     std::string htmlPath;    ///< --html: the report's page
+    std::string language;    ///< --lang (also --language): the window's language; empty: HS_LANG, else the system's
 };
 
 /// What parsing decided: run with `options`, or exit with `exitCode` after printing `message` (help, version,
