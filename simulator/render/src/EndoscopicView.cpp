@@ -12,6 +12,7 @@
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkLight.h>
+#include <vtkMatrix4x4.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -55,6 +56,8 @@ constexpr const char* kFluidShader = R"(//VTK::TCoord::Impl
 constexpr std::array<std::array<double, 2>, 7> kVignette{
     {{0.0, 0.0}, {0.55, 0.0}, {0.75, 0.12}, {0.88, 0.3}, {0.95, 0.55}, {1.0, 1.0}, {4.0, 1.0}}};
 constexpr int kMaskSegments = 96;
+/// The occluder's distance from the lens, in near clipping distances: in front of any tissue that is drawn.
+constexpr double kOccluderDepth = 1.05;
 
 vtkSmartPointer<vtkImageData> imageOf(const ImageU8& image, int channels) {
     auto data = vtkSmartPointer<vtkImageData>::New();
@@ -135,6 +138,8 @@ struct EndoscopicView::Impl {
     vtkSmartPointer<vtkPolyData> surface;
     vtkSmartPointer<vtkLight> lamp;
     vtkSmartPointer<vtkActor2D> mask;
+    vtkSmartPointer<vtkActor> occluder; ///< the mask's black ring, in depth in front of the tissue (see fitOccluder)
+    vtkSmartPointer<vtkPolyData> occluderGeometry;
     vtkSmartPointer<vtkPolyData> maskGeometry;
     vtkSmartPointer<vtkTextActor> hud;
     vtkSmartPointer<vtkTextActor> warning;
@@ -149,10 +154,13 @@ struct EndoscopicView::Impl {
     std::vector<Vec3> scratch;
     int maskWidth = -1, maskHeight = -1;
     double fieldOfViewDeg = 90.0;
+    double occluderFieldOfViewDeg = -1.0; ///< degrees; the field the occluder was built for
     double turbidity = 0.0, redOut = 0.0;
 
     void fitOverlays();
     void buildMask(int width, int height);
+    void buildOccluder(int width, int height);
+    void fitOccluder();
     void updateUniforms();
     void setNormals(const std::vector<Vec3>& normals);
 };
@@ -170,6 +178,20 @@ EndoscopicView::EndoscopicView(vtkRenderer* renderer, const EndoscopicLook& look
     d.lamp->SetAttenuationValues(look.lampAttenuation[0], look.lampAttenuation[1], look.lampAttenuation[2]);
     d.lamp->SetIntensity(look.lampIntensity);
     renderer->AddLight(d.lamp);
+
+    // Drawn before the tissue, so the tissue's fragments behind the mask's black ring fail the depth test early.
+    d.occluderGeometry = vtkSmartPointer<vtkPolyData>::New();
+    auto occluderMapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    occluderMapper->SetInputData(d.occluderGeometry);
+    occluderMapper->ScalarVisibilityOff();
+    d.occluder = vtkSmartPointer<vtkActor>::New();
+    d.occluder->SetMapper(occluderMapper);
+    d.occluder->GetProperty()->LightingOff();
+    d.occluder->GetProperty()->SetColor(0.0, 0.0, 0.0);
+    d.occluder->UseBoundsOff(); // not part of the scene: the camera's clipping range ignores it
+    d.occluder->PickableOff();
+    d.occluder->SetVisibility(look.opticMask);
+    renderer->AddActor(d.occluder);
 
     d.mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
     d.mapper->ScalarVisibilityOff();
@@ -219,6 +241,7 @@ EndoscopicView::~EndoscopicView() {
     Impl& d = *m_impl;
     d.renderer->RemoveObserver(d.startTag);
     d.renderer->RemoveActor(d.actor);
+    d.renderer->RemoveActor(d.occluder);
     d.renderer->RemoveActor2D(d.mask);
     d.renderer->RemoveActor2D(d.hud);
     d.renderer->RemoveActor2D(d.warning);
@@ -442,6 +465,9 @@ void EndoscopicView::Impl::fitOverlays() {
     vtkCamera* camera = renderer->GetActiveCamera();
     camera->SetUseHorizontalViewAngle(width < height);
     camera->SetViewAngle(fieldOfViewDeg);
+    if (width != maskWidth || height != maskHeight || fieldOfViewDeg != occluderFieldOfViewDeg)
+        buildOccluder(width, height);
+    fitOccluder();
     if (width == maskWidth && height == maskHeight)
         return;
     maskWidth = width;
@@ -490,6 +516,41 @@ void EndoscopicView::Impl::buildMask(int width, int height) {
     maskGeometry->SetPolys(cells);
     maskGeometry->GetPointData()->SetScalars(colours);
     maskGeometry->Modified();
+}
+
+void EndoscopicView::Impl::buildOccluder(int width, int height) {
+    occluderFieldOfViewDeg = fieldOfViewDeg;
+    // In the camera's frame (looking down -z), just beyond the near plane: a ring from a pixel and a half outside the
+    // mask's circle (where the mask is opaque black) to beyond the viewport's corners.
+    const double depth = kOccluderDepth * look.nearClipMm;
+    const double radiusPx = 0.5 * std::min(width, height);
+    const double radius = depth * std::tan(0.5 * fieldOfViewDeg * kPi / 180.0);
+    const double inner = radius * (1.0 + 1.5 / radiusPx) / std::cos(kPi / kMaskSegments);
+    const double outer = radius * 4.0 * std::max(width, height) / std::min(width, height);
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto cells = vtkSmartPointer<vtkCellArray>::New();
+    for (const double r : {inner, outer})
+        for (int s = 0; s < kMaskSegments; ++s) {
+            const double angle = 2.0 * kPi * s / kMaskSegments;
+            points->InsertNextPoint(r * std::cos(angle), r * std::sin(angle), -depth);
+        }
+    for (vtkIdType s = 0; s < kMaskSegments; ++s) {
+        const vtkIdType a = s, b = (s + 1) % kMaskSegments, c = kMaskSegments + b, e = kMaskSegments + s;
+        const vtkIdType first[3] = {a, b, c}, second[3] = {a, c, e};
+        cells->InsertNextCell(3, first);
+        cells->InsertNextCell(3, second);
+    }
+    occluderGeometry->Initialize();
+    occluderGeometry->SetPoints(points);
+    occluderGeometry->SetPolys(cells);
+    occluderGeometry->Modified();
+}
+
+void EndoscopicView::Impl::fitOccluder() {
+    // The camera's frame to the world's: the inverse of its view transform.
+    auto toWorld = vtkSmartPointer<vtkMatrix4x4>::New();
+    vtkMatrix4x4::Invert(renderer->GetActiveCamera()->GetViewTransformMatrix(), toWorld);
+    occluder->SetUserMatrix(toWorld);
 }
 
 } // namespace hs::simrender
