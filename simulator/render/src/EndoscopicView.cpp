@@ -1,8 +1,10 @@
-// The endoscopic view's VTK pipeline: the textured, deforming tissue surface, the lamp at the tip, the fluid's haze
-// and red-out in the surface's fragment shader, and the optic's mask and the heads-up text as 2-D overlays.
+// The endoscopic view's VTK pipeline: the textured, deforming tissue surface (lighter on a software rasterizer), the
+// lamp at the tip, the fluid's haze and red-out in the surface's fragment shader, and the optic's mask and the
+// heads-up text as 2-D overlays.
 #include "hs/simrender/EndoscopicView.h"
 
 #include "hs/clinical/Tissue.h"
+#include "hs/simrender/ViewDecimation.h"
 
 #include <vtkActor.h>
 #include <vtkActor2D.h>
@@ -13,6 +15,7 @@
 #include <vtkImageData.h>
 #include <vtkLight.h>
 #include <vtkMatrix4x4.h>
+#include <vtkOpenGLRenderWindow.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -130,12 +133,24 @@ CameraPose cameraPose(const scene::ScopeView& view, double fieldOfViewDeg) {
     return {view.eyeMm, view.direction, view.up, fieldOfViewDeg};
 }
 
+/// What setSurface() was given, kept to build the drawn surface from when the detail is decided at the first render.
+struct SourceSurface {
+    std::vector<Vec3> points; ///< mm, at rest
+    std::vector<Triangle> triangles;
+    std::vector<bool> outer; ///< per triangle: the organ's outer surface (serosa of no pathology); empty: unlabelled
+    std::vector<std::array<float, 2>> uvs;
+    std::vector<Vec3> normals; ///< the package's (smooth across the texture's seams), or recomputed
+    vtkSmartPointer<vtkTexture> albedo, albedoSrgb, orm, normalMap;
+};
+
+enum class Renderer { Unknown, Hardware, Software };
+
 struct EndoscopicView::Impl {
     vtkRenderer* renderer = nullptr;
     EndoscopicLook look;
     vtkSmartPointer<vtkActor> actor;
     vtkSmartPointer<vtkPolyDataMapper> mapper;
-    vtkSmartPointer<vtkPolyData> surface;
+    vtkSmartPointer<vtkPolyData> surface; ///< what is drawn; null without a surface
     vtkSmartPointer<vtkLight> lamp;
     vtkSmartPointer<vtkActor2D> mask;
     vtkSmartPointer<vtkActor> occluder; ///< the mask's black ring, in depth in front of the tissue (see fitOccluder)
@@ -148,15 +163,24 @@ struct EndoscopicView::Impl {
     bool outerVisible = true;
     vtkSmartPointer<vtkCallbackCommand> startObserver;
     unsigned long startTag = 0;
-    std::vector<Triangle> triangles;
-    std::vector<Vec3> storedNormals; ///< the package's (smooth across UV seams)
-    std::vector<Vec3> restNormals;   ///< recomputed from the rest points, to carry deformation onto storedNormals
-    std::vector<Vec3> scratch;
+    SourceSurface source;
+    Renderer glKind = Renderer::Unknown;
+    std::string glName;
+    bool light = false;                   ///< the drawn surface is the decimated one, shaded with the albedo alone
+    std::vector<std::size_t> sourceIndex; ///< per drawn point, the source point; empty: the same points
+    std::vector<Triangle> triangles;      ///< over the drawn points
+    std::vector<Vec3> storedNormals;      ///< per drawn point, the source's
+    std::vector<Vec3> restNormals;        ///< recomputed from the rest points, to carry deformation onto storedNormals
+    std::vector<Vec3> drawnPoints, scratch;
     int maskWidth = -1, maskHeight = -1;
     double fieldOfViewDeg = 90.0;
     double occluderFieldOfViewDeg = -1.0; ///< degrees; the field the occluder was built for
     double turbidity = 0.0, redOut = 0.0;
 
+    bool wantsLight() const;
+    void probeRenderer();
+    void buildSurface();
+    void applyShading();
     void fitOverlays();
     void buildMask(int width, int height);
     void buildOccluder(int width, int height);
@@ -230,8 +254,11 @@ EndoscopicView::EndoscopicView(vtkRenderer* renderer, const EndoscopicLook& look
     // The overlays follow the viewport's size: refitted at the start of every render when it changed.
     d.startObserver = vtkSmartPointer<vtkCallbackCommand>::New();
     d.startObserver->SetClientData(&d);
-    d.startObserver->SetCallback(
-        [](vtkObject*, unsigned long, void* client, void*) { static_cast<Impl*>(client)->fitOverlays(); });
+    d.startObserver->SetCallback([](vtkObject*, unsigned long, void* client, void*) {
+        auto* impl = static_cast<Impl*>(client);
+        impl->probeRenderer();
+        impl->fitOverlays();
+    });
     d.startTag = renderer->AddObserver(vtkCommand::StartEvent, d.startObserver);
     renderer->SetBackground(look.fogColour[0], look.fogColour[1], look.fogColour[2]);
     d.updateUniforms();
@@ -251,78 +278,155 @@ EndoscopicView::~EndoscopicView() {
 void EndoscopicView::setSurface(const scene::VisualSurface& v) {
     Impl& d = *m_impl;
     const SurfaceMesh& mesh = v.mesh;
-    auto points = vtkSmartPointer<vtkPoints>::New();
-    points->SetDataTypeToFloat();
-    points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
-    for (std::size_t i = 0; i < mesh.points.size(); ++i)
-        points->SetPoint(static_cast<vtkIdType>(i), mesh.points[i].x, mesh.points[i].y, mesh.points[i].z);
-    d.allFaces = vtkSmartPointer<vtkCellArray>::New();
-    d.innerFaces = nullptr;
+    SourceSurface& s = d.source;
+    s = {};
+    s.points = mesh.points;
+    s.triangles = mesh.triangles;
     const auto tissue = mesh.faceLabels.find(clinical::kSurfaceTissueLabel);
     const bool labelled = tissue != mesh.faceLabels.end() && tissue->second.size() == mesh.triangles.size();
     // A pathology's faces stay whatever their tissue: a submucous myoma shows in the cavity.
     const auto pathology = mesh.faceLabels.find("pathology");
     const bool pathologies = pathology != mesh.faceLabels.end() && pathology->second.size() == mesh.triangles.size();
-    if (labelled)
-        d.innerFaces = vtkSmartPointer<vtkCellArray>::New();
-    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-        const Triangle& t = mesh.triangles[f];
-        const vtkIdType ids[3] = {t[0], t[1], t[2]};
-        d.allFaces->InsertNextCell(3, ids);
-        const bool outer = labelled && tissue->second[f] == clinical::labelValue(clinical::SurfaceTissue::Serosa) &&
-                           !(pathologies && pathology->second[f] != 0);
-        if (labelled && !outer)
-            d.innerFaces->InsertNextCell(3, ids);
+    if (labelled) {
+        s.outer.resize(mesh.triangles.size());
+        for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+            s.outer[f] = tissue->second[f] == clinical::labelValue(clinical::SurfaceTissue::Serosa) &&
+                         !(pathologies && pathology->second[f] != 0);
     }
-    d.surface = vtkSmartPointer<vtkPolyData>::New();
-    d.surface->SetPoints(points);
-    d.surface->SetPolys(d.allFaces);
-    d.triangles = mesh.triangles;
-    faceNormals(d.triangles, mesh.points, d.restNormals);
-    d.storedNormals = v.normals.size() == mesh.points.size() ? v.normals : d.restNormals;
-    d.setNormals(d.storedNormals);
+    if (v.uvs.size() == mesh.points.size())
+        s.uvs = v.uvs;
+    if (v.normals.size() == mesh.points.size())
+        s.normals = v.normals;
+    else
+        faceNormals(mesh.triangles, mesh.points, s.normals);
+    if (!s.uvs.empty() && !v.albedo.empty() && v.albedo.channels() >= 3) {
+        vtkSmartPointer<vtkImageData> albedo = imageOf(v.albedo, 3);
+        s.albedo = textureOf(albedo, false);
+        s.albedoSrgb = textureOf(albedo, true);
+        if (!v.normal.empty() && !v.roughness.empty()) {
+            s.orm = textureOf(ormOf(v.roughness), false);
+            s.normalMap = textureOf(imageOf(v.normal, 3), false);
+        }
+    }
+    d.light = d.wantsLight();
+    d.buildSurface();
+    d.actor->VisibilityOn();
+}
 
-    vtkProperty* property = d.actor->GetProperty();
-    d.actor->SetTexture(nullptr);
-    property->RemoveAllTextures();
-    property->SetInterpolationToPhong();
-    property->SetColor(0.85, 0.55, 0.5);
-    const bool uvs = v.uvs.size() == mesh.points.size();
-    if (uvs) {
+bool EndoscopicView::Impl::wantsLight() const {
+    return look.detail == ViewDetail::Light || (look.detail == ViewDetail::Automatic && glKind == Renderer::Software);
+}
+
+void EndoscopicView::Impl::buildSurface() {
+    const SourceSurface& s = source;
+    sourceIndex.clear();
+    triangles.clear();
+    std::size_t innerCount = 0;
+    if (light) {
+        ViewDecimationParams params;
+        params.targetReduction = look.lightReduction;
+        DecimatedSurface lighter = decimateForView({s.points, s.triangles, {}, {}}, s.outer, params);
+        sourceIndex = std::move(lighter.sourcePoints);
+        triangles = std::move(lighter.triangles);
+        innerCount = lighter.innerTriangles;
+    } else {
+        // Inner faces first, as the decimated surface has them: the inner set is a prefix of all faces.
+        for (bool outer : {false, true})
+            for (std::size_t f = 0; f < s.triangles.size(); ++f)
+                if ((!s.outer.empty() && s.outer[f]) == outer)
+                    triangles.push_back(s.triangles[f]);
+        innerCount = s.outer.empty() ? triangles.size()
+                                     : static_cast<std::size_t>(std::count(s.outer.begin(), s.outer.end(), false));
+    }
+    const auto sourceOf = [&](std::size_t i) { return sourceIndex.empty() ? i : sourceIndex[i]; };
+    const std::size_t count = sourceIndex.empty() ? s.points.size() : sourceIndex.size();
+
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->SetDataTypeToFloat();
+    points->SetNumberOfPoints(static_cast<vtkIdType>(count));
+    drawnPoints.resize(count);
+    storedNormals.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        drawnPoints[i] = s.points[sourceOf(i)];
+        storedNormals[i] = s.normals[sourceOf(i)];
+        points->SetPoint(static_cast<vtkIdType>(i), drawnPoints[i].x, drawnPoints[i].y, drawnPoints[i].z);
+    }
+    allFaces = vtkSmartPointer<vtkCellArray>::New();
+    innerFaces = s.outer.empty() ? nullptr : vtkSmartPointer<vtkCellArray>::New();
+    for (std::size_t f = 0; f < triangles.size(); ++f) {
+        const vtkIdType ids[3] = {triangles[f][0], triangles[f][1], triangles[f][2]};
+        allFaces->InsertNextCell(3, ids);
+        if (innerFaces && f < innerCount)
+            innerFaces->InsertNextCell(3, ids);
+    }
+    surface = vtkSmartPointer<vtkPolyData>::New();
+    surface->SetPoints(points);
+    surface->SetPolys(allFaces);
+    faceNormals(triangles, drawnPoints, restNormals);
+    setNormals(storedNormals);
+    if (!s.uvs.empty()) {
         auto tcoords = vtkSmartPointer<vtkFloatArray>::New();
         tcoords->SetName("uv");
         tcoords->SetNumberOfComponents(2);
-        tcoords->SetNumberOfTuples(static_cast<vtkIdType>(v.uvs.size()));
-        for (std::size_t i = 0; i < v.uvs.size(); ++i) // VTK's texture origin is the image's bottom left
-            tcoords->SetTuple2(static_cast<vtkIdType>(i), v.uvs[i][0], 1.0f - v.uvs[i][1]);
-        d.surface->GetPointData()->SetTCoords(tcoords);
+        tcoords->SetNumberOfTuples(static_cast<vtkIdType>(count));
+        for (std::size_t i = 0; i < count; ++i) // VTK's texture origin is the image's bottom left
+            tcoords->SetTuple2(static_cast<vtkIdType>(i), s.uvs[sourceOf(i)][0], 1.0f - s.uvs[sourceOf(i)][1]);
+        surface->GetPointData()->SetTCoords(tcoords);
     }
-    const bool albedo = uvs && !v.albedo.empty() && v.albedo.channels() >= 3;
-    const bool maps = albedo && d.look.materialMaps && !v.normal.empty() && !v.roughness.empty();
-    if (maps) {
+    applyShading();
+    if (!outerVisible && innerFaces)
+        surface->SetPolys(innerFaces);
+    mapper->SetInputData(surface);
+}
+
+void EndoscopicView::Impl::applyShading() {
+    const SourceSurface& s = source;
+    vtkProperty* property = actor->GetProperty();
+    actor->SetTexture(nullptr);
+    property->RemoveAllTextures();
+    property->SetInterpolationToPhong();
+    property->SetColor(0.85, 0.55, 0.5);
+    if (s.albedo && s.orm && look.materialMaps && !light) {
         // Physically based shading: the albedo (sRGB), roughness and tangent-space normals the texture stage baked.
         auto tangents = vtkSmartPointer<vtkPolyDataTangents>::New();
-        tangents->SetInputData(d.surface);
+        tangents->SetInputData(surface);
         tangents->Update();
-        d.surface->GetPointData()->SetTangents(tangents->GetOutput()->GetPointData()->GetTangents());
+        surface->GetPointData()->SetTangents(tangents->GetOutput()->GetPointData()->GetTangents());
         property->SetInterpolationToPBR();
         property->SetColor(1.0, 1.0, 1.0);
         property->SetMetallic(0.0);
         property->SetRoughness(1.0);
-        property->SetBaseColorTexture(textureOf(imageOf(v.albedo, 3), true));
-        property->SetORMTexture(textureOf(ormOf(v.roughness), false));
-        property->SetNormalTexture(textureOf(imageOf(v.normal, 3), false));
+        property->SetBaseColorTexture(s.albedoSrgb);
+        property->SetORMTexture(s.orm);
+        property->SetNormalTexture(s.normalMap);
         property->SetNormalScale(1.0);
-    } else if (albedo) {
-        d.actor->SetTexture(textureOf(imageOf(v.albedo, 3), false));
+    } else if (s.albedo) {
+        actor->SetTexture(s.albedo);
         property->SetColor(1.0, 1.0, 1.0);
         property->SetSpecular(0.25);
         property->SetSpecularPower(30.0);
     }
-    if (!d.outerVisible && d.innerFaces)
-        d.surface->SetPolys(d.innerFaces);
-    d.mapper->SetInputData(d.surface);
-    d.actor->VisibilityOn();
+}
+
+void EndoscopicView::Impl::probeRenderer() {
+    if (glKind != Renderer::Unknown)
+        return;
+    auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+    if (!window)
+        return;
+    const char* report = window->ReportCapabilities();
+    const std::string text = report ? report : "";
+    const std::string key = "OpenGL renderer string:";
+    const std::size_t at = text.find(key);
+    if (at == std::string::npos)
+        return; // no context yet
+    const std::size_t begin = text.find_first_not_of(' ', at + key.size());
+    glName = text.substr(begin, text.find('\n', begin) - begin);
+    glKind = isSoftwareRenderer(glName) ? Renderer::Software : Renderer::Hardware;
+    if (surface && wantsLight() != light) {
+        light = wantsLight();
+        buildSurface(); // before the tissue is drawn in this render
+    }
 }
 
 void EndoscopicView::setOuterSurfaceVisible(bool visible) {
@@ -339,9 +443,12 @@ void EndoscopicView::clear() {
     d.actor->VisibilityOff();
     d.mapper->SetInputData(nullptr);
     d.surface = nullptr;
+    d.source = {};
+    d.sourceIndex.clear();
     d.triangles.clear();
     d.storedNormals.clear();
     d.restNormals.clear();
+    d.drawnPoints.clear();
 }
 
 bool EndoscopicView::hasSurface() const {
@@ -349,7 +456,11 @@ bool EndoscopicView::hasSurface() const {
 }
 
 std::size_t EndoscopicView::pointCount() const {
-    return m_impl->surface ? static_cast<std::size_t>(m_impl->surface->GetNumberOfPoints()) : 0;
+    return m_impl->surface ? m_impl->source.points.size() : 0;
+}
+
+std::size_t EndoscopicView::drawnTriangleCount() const {
+    return m_impl->surface ? m_impl->triangles.size() : 0;
 }
 
 void EndoscopicView::setPoints(const std::vector<Vec3>& pointsMm) {
@@ -358,15 +469,17 @@ void EndoscopicView::setPoints(const std::vector<Vec3>& pointsMm) {
         return;
     vtkPoints* points = d.surface->GetPoints();
     auto* xyz = static_cast<float*>(points->GetVoidPointer(0));
-    for (std::size_t i = 0; i < pointsMm.size(); ++i) {
-        xyz[3 * i] = static_cast<float>(pointsMm[i].x);
-        xyz[3 * i + 1] = static_cast<float>(pointsMm[i].y);
-        xyz[3 * i + 2] = static_cast<float>(pointsMm[i].z);
+    for (std::size_t i = 0; i < d.drawnPoints.size(); ++i) {
+        const Vec3& p = pointsMm[d.sourceIndex.empty() ? i : d.sourceIndex[i]];
+        d.drawnPoints[i] = p;
+        xyz[3 * i] = static_cast<float>(p.x);
+        xyz[3 * i + 1] = static_cast<float>(p.y);
+        xyz[3 * i + 2] = static_cast<float>(p.z);
     }
     points->Modified();
     // The deformation turns each normal by what it turns the normal recomputed from the points; the stored normals
     // stay smooth across the texture's seams (where recomputed ones would show the split).
-    faceNormals(d.triangles, pointsMm, d.scratch);
+    faceNormals(d.triangles, d.drawnPoints, d.scratch);
     for (std::size_t i = 0; i < d.scratch.size(); ++i) {
         const Vec3 n = d.storedNormals[i] + (d.scratch[i] - d.restNormals[i]);
         const double length = norm(n);
@@ -374,7 +487,6 @@ void EndoscopicView::setPoints(const std::vector<Vec3>& pointsMm) {
     }
     d.setNormals(d.scratch);
 }
-
 void EndoscopicView::Impl::setNormals(const std::vector<Vec3>& normals) {
     vtkDataArray* existing = surface->GetPointData()->GetNormals();
     vtkSmartPointer<vtkFloatArray> array = vtkFloatArray::SafeDownCast(existing);
@@ -450,6 +562,14 @@ void EndoscopicView::setHud(const HudText& text) {
 
 const EndoscopicLook& EndoscopicView::look() const {
     return m_impl->look;
+}
+
+const std::string& EndoscopicView::glRenderer() const {
+    return m_impl->glName;
+}
+
+bool EndoscopicView::lightDetail() const {
+    return m_impl->wantsLight();
 }
 
 vtkActor* EndoscopicView::tissueActor() const {
