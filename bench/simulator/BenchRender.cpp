@@ -1,11 +1,13 @@
 // bench_render: frames per second of the simulator's endoscopic view (hs::simrender) on a scene package, offscreen
 // (run under xvfb-run -a). Each frame moves the scope, deforms the visual surface (every point moved, normals
 // recomputed, as the simulator does with the world's points) and renders; the table has one row per view size,
-// detail (full: the whole surface; light: decimated, what a software rasterizer gets) and shading. The simulator aims
+// detail (full: the maps; light: the albedo alone, what a software rasterizer gets) and shading. The simulator aims
 // at 30 fps or more for the default scene.
-//   bench_render SCENE_DIR [--frames N] [--sizes 640x480,960x720] [--repeat N] [--rows mal] [--png OUT.png]
+//   bench_render SCENE_DIR [--frames N] [--sizes 640x480,960x720] [--repeat N] [--rows mal] [--light-reduction R]
+//                [--png OUT.png]
 // --repeat measures each row N times and keeps the run with the least CPU time (on a machine busy with other work);
-// --rows keeps the full-detail rows with the maps (m), with the albedo (a), the light-detail rows (l).
+// --rows keeps the full-detail rows with the maps (m), with the albedo (a), the light-detail rows (l);
+// --light-reduction R decimates the light detail's surface by R (EndoscopicLook::lightReduction).
 //   bench_render SCENE_DIR --still FRACTION ROLL_DEG --png OUT.png [--sizes WxH] [--full | --light]
 // --still draws one picture of the surface at rest in clear saline: the 30 degree optic's tip FRACTION of the way
 // from the internal os to the fundus, aimed about the pivot, rolled by ROLL_DEG (the docs' picture), with the detail
@@ -53,6 +55,8 @@ struct Row {
     double mainCpuMsPerFrame = 0.0; ///< the calling thread's: the view, VTK and the GL driver's vertex work
 };
 
+constexpr int kWarmUpFrames = 5;
+
 double threadCpuSeconds() {
     timespec t{};
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
@@ -60,7 +64,7 @@ double threadCpuSeconds() {
 }
 
 Row measure(const hs::scene::Scene& scene, const hs::scene::ScopeLandmarks& landmarks, const hs::sim::ScopeFrame& frame,
-            Size size, Kind kind, int frames, const std::string& png) {
+            Size size, Kind kind, double lightReduction, int frames, const std::string& png) {
     vtkNew<vtkRenderWindow> window;
     window->SetOffScreenRendering(1);
     window->SetMultiSamples(0);
@@ -70,6 +74,7 @@ Row measure(const hs::scene::Scene& scene, const hs::scene::ScopeLandmarks& land
     hs::simrender::EndoscopicLook look;
     look.materialMaps = kind.maps;
     look.detail = kind.detail;
+    look.lightReduction = lightReduction;
     hs::simrender::EndoscopicView view(renderer, look);
     view.setSurface(scene.surface);
     view.setOuterSurfaceVisible(false); // the scope is inside the body
@@ -107,7 +112,8 @@ Row measure(const hs::scene::Scene& scene, const hs::scene::ScopeLandmarks& land
         deformS += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         window->Render();
     };
-    render(0); // shaders compiled, textures uploaded
+    for (int i = 0; i < kWarmUpFrames; ++i) // shaders compiled, textures uploaded, the GL driver's buffers grown
+        render(i % frames);
     deformS = 0.0;
     const auto start = std::chrono::steady_clock::now();
     const std::clock_t cpuStart = std::clock();
@@ -184,11 +190,12 @@ std::vector<Size> parseSizes(const std::string& text) {
 int main(int argc, char** argv) {
     if (argc < 2) {
         std::fprintf(stderr, "usage: bench_render SCENE_DIR [--frames N] [--sizes 640x480,960x720] [--repeat N] "
-                             "[--rows mal] [--png OUT.png]\n");
+                             "[--rows mal] [--light-reduction R] [--png OUT.png]\n");
         return 2;
     }
     int frames = 120;
     int repeat = 1;
+    double lightReduction = 0.0;
     std::string only;
     std::vector<Size> sizes{{640, 480}, {960, 720}};
     std::string png;
@@ -201,6 +208,8 @@ int main(int argc, char** argv) {
             frames = std::max(1, std::atoi(argv[++i]));
         else if (a == "--repeat" && i + 1 < argc)
             repeat = std::max(1, std::atoi(argv[++i]));
+        else if (a == "--light-reduction" && i + 1 < argc)
+            lightReduction = std::atof(argv[++i]);
         else if (a == "--rows" && i + 1 < argc)
             only = argv[++i];
         else if (a == "--sizes" && i + 1 < argc)
@@ -251,7 +260,8 @@ int main(int argc, char** argv) {
             const bool first = &size == &sizes.front() && &kind == &kinds[0];
             Row r;
             for (int k = 0; k < repeat; ++k) { // the least CPU time: the run that other work disturbed least
-                const Row run = measure(*scene, *landmarks, *frame, size, kind, frames, first ? png : "");
+                const Row run =
+                    measure(*scene, *landmarks, *frame, size, kind, lightReduction, frames, first ? png : "");
                 if (k == 0 || run.cpuMsPerFrame < r.cpuMsPerFrame)
                     r = run;
             }

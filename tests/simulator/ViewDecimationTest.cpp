@@ -162,6 +162,12 @@ TEST(ViewDecimation, IsDeterministicAndKeepsEverythingWithoutReduction) {
     const DecimatedSurface all = decimateForView(sphere, {}, none);
     EXPECT_EQ(all.triangles.size(), sphere.triangles.size());
     EXPECT_EQ(all.sourcePoints.size(), sphere.points.size());
+    // The same triangles in the same order, their points numbered in the order of first use.
+    EXPECT_EQ(all.triangles.front(), (Triangle{0, 1, 2}));
+    for (std::size_t f = 0; f < sphere.triangles.size(); ++f)
+        for (std::size_t k = 0; k < 3; ++k)
+            ASSERT_EQ(all.sourcePoints[static_cast<std::size_t>(all.triangles[f][k])],
+                      static_cast<std::size_t>(sphere.triangles[f][k]));
 }
 
 TEST(SoftwareRenderer, IsRecognisedByItsRendererString) {

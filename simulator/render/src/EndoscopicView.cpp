@@ -321,23 +321,14 @@ void EndoscopicView::Impl::buildSurface() {
     const SourceSurface& s = source;
     sourceIndex.clear();
     triangles.clear();
-    std::size_t innerCount = 0;
-    if (light) {
-        ViewDecimationParams params;
-        params.targetReduction = look.lightReduction;
-        DecimatedSurface lighter = decimateForView({s.points, s.triangles, {}, {}}, s.outer, params);
-        sourceIndex = std::move(lighter.sourcePoints);
-        triangles = std::move(lighter.triangles);
-        innerCount = lighter.innerTriangles;
-    } else {
-        // Inner faces first, as the decimated surface has them: the inner set is a prefix of all faces.
-        for (bool outer : {false, true})
-            for (std::size_t f = 0; f < s.triangles.size(); ++f)
-                if ((!s.outer.empty() && s.outer[f]) == outer)
-                    triangles.push_back(s.triangles[f]);
-        innerCount = s.outer.empty() ? triangles.size()
-                                     : static_cast<std::size_t>(std::count(s.outer.begin(), s.outer.end(), false));
-    }
+    // The points in the order the triangles first use them (neighbouring triangles' points close together in the
+    // buffers), the inner faces first (a prefix drawn while the outer surface is hidden).
+    ViewDecimationParams params;
+    params.targetReduction = light ? look.lightReduction : 0.0;
+    DecimatedSurface drawn = decimateForView({s.points, s.triangles, {}, {}}, s.outer, params);
+    sourceIndex = std::move(drawn.sourcePoints);
+    triangles = std::move(drawn.triangles);
+    const std::size_t innerCount = drawn.innerTriangles;
     const auto sourceOf = [&](std::size_t i) { return sourceIndex.empty() ? i : sourceIndex[i]; };
     const std::size_t count = sourceIndex.empty() ? s.points.size() : sourceIndex.size();
 

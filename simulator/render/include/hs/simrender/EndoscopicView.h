@@ -38,11 +38,12 @@ CameraPose cameraPose(const sim::ScopePose& pose, const sim::ScopeConfig& config
 CameraPose cameraPose(const scene::ScopeView& view, double fieldOfViewDeg);
 
 /// How much the view draws. A software rasterizer (Mesa's llvmpipe on a machine without a GPU) shades every pixel on
-/// the CPU: the light detail keeps the view at 30 frames per second there.
+/// the CPU, where the PBR maps' shading costs most of a frame: the light detail keeps the view at 30 frames per
+/// second there (docs/simulator.md, "Endoscopic view").
 enum class ViewDetail {
     Automatic, ///< Light when the GL renderer is a software one (isSoftwareRenderer), Full on a GPU
-    Full,      ///< the whole visual surface; the maps when `materialMaps`
-    Light,     ///< the visual surface decimated (decimateForView), the albedo alone (Phong shading)
+    Full,      ///< the maps when `materialMaps` (PBR shading)
+    Light,     ///< the albedo alone (Phong shading); the surface decimated by `lightReduction`
 };
 
 struct EndoscopicLook {
@@ -53,7 +54,9 @@ struct EndoscopicLook {
     std::array<double, 3> lampAttenuation{1.0, 0.04, 0.002};
     bool materialMaps = true; ///< PBR shading with the normal and roughness maps; false: albedo only (Phong)
     ViewDetail detail = ViewDetail::Automatic;
-    double lightReduction = 0.5;  ///< share of the triangles the light detail leaves out
+    /// Share of the triangles the light detail leaves out (decimateForView). 0: none. Off by default: on llvmpipe a
+    /// decimated surface's sliver triangles can stall a frame for a second (docs/simulator.md).
+    double lightReduction = 0.0;
     bool opticMask = true;        ///< the circular field and its vignetting
     bool hud = true;              ///< the heads-up text
     double clearFogPerMm = 0.004; ///< 1/mm, extinction of clear saline (a faint haze at the cavity's far end)
@@ -78,8 +81,7 @@ public:
     EndoscopicView& operator=(const EndoscopicView&) = delete;
 
     /// The surface to draw (topology, UVs, normals, maps); replaces the previous one. Its points are the rest
-    /// points until setPoints(). With the light detail, a decimated copy is drawn (decided at the first render, when
-    /// the GL renderer is known; the decimation takes a fraction of a second).
+    /// points until setPoints(). The detail is decided at the first render, when the GL renderer is known.
     void setSurface(const scene::VisualSurface& surface);
     void clear();
     bool hasSurface() const;
@@ -102,7 +104,7 @@ public:
     const std::string& glRenderer() const;
     /// Whether the light detail is drawn (ViewDetail; Automatic decides at the first render).
     bool lightDetail() const;
-    /// Triangles drawn with the outer surface shown: the visual surface's, or the decimated surface's.
+    /// Triangles drawn with the outer surface shown: the visual surface's, or fewer when decimated.
     std::size_t drawnTriangleCount() const;
     vtkActor* tissueActor() const;
 

@@ -1,8 +1,9 @@
 #pragma once
-/// The lighter surface the endoscopic view draws on a software rasterizer (docs/simulator.md, "Endoscopic view"):
-/// the visual surface with part of its points removed. Every point kept is one of the visual surface's points (the
-/// deformed points, World::visualPoints, are gathered through `sourcePoints`); borders and the texture's seams keep
-/// all their points, so the lighter surface has the same outline, the same holes and no cracks along the seams.
+/// The surface the endoscopic view draws (docs/simulator.md, "Endoscopic view"): the visual surface's points in the
+/// order its triangles first use them, the inner faces first, and, when asked, part of the points removed (a lighter
+/// surface for a software rasterizer). Every point drawn is one of the visual surface's points (the deformed points,
+/// World::visualPoints, are gathered through `sourcePoints`); borders and the texture's seams keep all their points,
+/// so a lighter surface has the same outline, the same holes and no cracks along the seams.
 
 #include "hs/core/SurfaceMesh.h"
 
@@ -24,7 +25,9 @@ struct DecimatedSurface {
 
 /// Removes points of `mesh` (Schroeder et al., "Decimation of triangle meshes", 1992: VTK's vtkDecimatePro, which
 /// keeps the points it does not remove where they are) from its inner and its outer faces separately (`outer`: one
-/// flag per triangle; empty: all inner), so the two sets still meet where they did. Deterministic.
+/// flag per triangle; empty: all inner), so the two sets still meet where they did. With no reduction the triangles
+/// stay as they are, in their order. Deterministic. vtkDecimatePro does not bound the triangles' shape: slivers
+/// appear.
 [[nodiscard]] DecimatedSurface decimateForView(const SurfaceMesh& mesh, const std::vector<bool>& outer,
                                                const ViewDecimationParams& params = {});
 
