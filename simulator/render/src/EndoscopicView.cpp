@@ -77,11 +77,11 @@ vtkSmartPointer<vtkImageData> imageOf(const ImageU8& image, int channels) {
     return data;
 }
 
-vtkSmartPointer<vtkTexture> textureOf(vtkImageData* image, bool srgb) {
+vtkSmartPointer<vtkTexture> textureOf(vtkImageData* image, bool srgb, bool mipmap = true) {
     auto texture = vtkSmartPointer<vtkTexture>::New();
     texture->SetInputData(image);
     texture->InterpolateOn();
-    texture->MipmapOn();
+    texture->SetMipmap(mipmap);
     texture->RepeatOff();
     texture->EdgeClampOn();
     texture->SetUseSRGBColorSpace(srgb);
@@ -141,6 +141,7 @@ struct SourceSurface {
     std::vector<std::array<float, 2>> uvs;
     std::vector<Vec3> normals; ///< the package's (smooth across the texture's seams), or recomputed
     vtkSmartPointer<vtkTexture> albedo, albedoSrgb, orm, normalMap;
+    vtkSmartPointer<vtkTexture> albedoUnfiltered; ///< without mipmaps: the light detail's (see applyShading)
 };
 
 enum class Renderer { Unknown, Hardware, Software };
@@ -303,6 +304,7 @@ void EndoscopicView::setSurface(const scene::VisualSurface& v) {
         vtkSmartPointer<vtkImageData> albedo = imageOf(v.albedo, 3);
         s.albedo = textureOf(albedo, false);
         s.albedoSrgb = textureOf(albedo, true);
+        s.albedoUnfiltered = textureOf(albedo, false, false);
         if (!v.normal.empty() && !v.roughness.empty()) {
             s.orm = textureOf(ormOf(v.roughness), false);
             s.normalMap = textureOf(imageOf(v.normal, 3), false);
@@ -392,7 +394,10 @@ void EndoscopicView::Impl::applyShading() {
         property->SetNormalTexture(s.normalMap);
         property->SetNormalScale(1.0);
     } else if (s.albedo) {
-        actor->SetTexture(s.albedo);
+        // On llvmpipe, mipmapped sampling on a deforming surface made some frames cost ten times the others (at
+        // 960x720 up to seconds; docs/simulator.md): the light detail samples the full-size albedo only. Seen from
+        // inside the cavity the albedo is mostly magnified, where mipmaps change nothing.
+        actor->SetTexture(light ? s.albedoUnfiltered : s.albedo);
         property->SetColor(1.0, 1.0, 1.0);
         property->SetSpecular(0.25);
         property->SetSpecularPower(30.0);
