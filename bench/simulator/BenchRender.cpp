@@ -195,7 +195,7 @@ int main(int argc, char** argv) {
     }
     int frames = 120;
     int repeat = 1;
-    double lightReduction = 0.0;
+    double lightReduction = hs::simrender::EndoscopicLook{}.lightReduction;
     std::string only;
     std::vector<Size> sizes{{640, 480}, {960, 720}};
     std::string png;

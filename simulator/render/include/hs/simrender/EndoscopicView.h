@@ -54,9 +54,8 @@ struct EndoscopicLook {
     std::array<double, 3> lampAttenuation{1.0, 0.04, 0.002};
     bool materialMaps = true; ///< PBR shading with the normal and roughness maps; false: albedo only (Phong)
     ViewDetail detail = ViewDetail::Automatic;
-    /// Share of the triangles the light detail leaves out (decimateForView). 0: none. Off by default: on llvmpipe a
-    /// decimated surface's sliver triangles can stall a frame for a second (docs/simulator.md).
-    double lightReduction = 0.0;
+    /// Share of the triangles the light detail leaves out (decimateForView); 0: none.
+    double lightReduction = 0.5;
     bool opticMask = true;        ///< the circular field and its vignetting
     bool hud = true;              ///< the heads-up text
     double clearFogPerMm = 0.004; ///< 1/mm, extinction of clear saline (a faint haze at the cavity's far end)
