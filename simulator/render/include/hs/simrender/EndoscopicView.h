@@ -38,12 +38,12 @@ CameraPose cameraPose(const sim::ScopePose& pose, const sim::ScopeConfig& config
 CameraPose cameraPose(const scene::ScopeView& view, double fieldOfViewDeg);
 
 /// How much the view draws. A software rasterizer (Mesa's llvmpipe on a machine without a GPU) shades every pixel on
-/// the CPU, where the PBR maps' shading costs most of a frame: the light detail keeps the view at 30 frames per
-/// second there (docs/simulator.md, "Endoscopic view").
+/// the CPU, where the PBR shading, mipmapped sampling of a deforming surface and every triangle cost: the light detail
+/// keeps the view above 30 frames per second there (docs/simulator.md, "Endoscopic view").
 enum class ViewDetail {
     Automatic, ///< Light when the GL renderer is a software one (isSoftwareRenderer), Full on a GPU
     Full,      ///< the maps when `materialMaps` (PBR shading)
-    Light,     ///< the albedo alone (Phong shading); the surface decimated by `lightReduction`
+    Light,     ///< the albedo alone (Phong shading, no mipmaps); the surface decimated by `lightReduction`
 };
 
 struct EndoscopicLook {
