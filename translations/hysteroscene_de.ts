@@ -180,8 +180,12 @@
         <translation>Szenenpaket öffnen</translation>
     </message>
     <message>
-        <source>%L1 fps, physics %L2 steps/s, insertion %L3 mm</source>
-        <translation>%L1 fps, Physik %L2 Schritte/s, Einführtiefe %L3 mm</translation>
+        <source> (light view: software GL)</source>
+        <translation> (leichte Ansicht: Software-GL)</translation>
+    </message>
+    <message>
+        <source>%L1 fps%4, physics %L2 steps/s, insertion %L3 mm</source>
+        <translation>%L1 fps%4, Physik %L2 Schritte/s, Einführtiefe %L3 mm</translation>
     </message>
 </context>
 <context>

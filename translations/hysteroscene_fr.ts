@@ -180,8 +180,12 @@
         <translation>Ouvrir un paquet de scène</translation>
     </message>
     <message>
-        <source>%L1 fps, physics %L2 steps/s, insertion %L3 mm</source>
-        <translation>%L1 i/s, physique %L2 pas/s, insertion %L3 mm</translation>
+        <source> (light view: software GL)</source>
+        <translation> (vue allégée : GL logiciel)</translation>
+    </message>
+    <message>
+        <source>%L1 fps%4, physics %L2 steps/s, insertion %L3 mm</source>
+        <translation>%L1 i/s%4, physique %L2 pas/s, insertion %L3 mm</translation>
     </message>
 </context>
 <context>

@@ -180,8 +180,12 @@
         <translation>Apri un pacchetto di scena</translation>
     </message>
     <message>
-        <source>%L1 fps, physics %L2 steps/s, insertion %L3 mm</source>
-        <translation>%L1 fps, fisica %L2 passi/s, inserimento %L3 mm</translation>
+        <source> (light view: software GL)</source>
+        <translation> (vista leggera: GL software)</translation>
+    </message>
+    <message>
+        <source>%L1 fps%4, physics %L2 steps/s, insertion %L3 mm</source>
+        <translation>%L1 fps%4, fisica %L2 passi/s, inserimento %L3 mm</translation>
     </message>
 </context>
 <context>

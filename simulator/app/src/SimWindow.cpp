@@ -278,10 +278,18 @@ void SimWindow::onRenderTick() {
     if (m_fpsClock.elapsed() >= 1000) {
         m_fps = m_fpsFrames * 1000.0 / static_cast<double>(m_fpsClock.restart());
         m_fpsFrames = 0;
-        m_statusLabel->setText(tr("%L1 fps, physics %L2 steps/s, insertion %L3 mm")
+        // On a software rasterizer the view draws its light detail (docs/simulator.md, "Endoscopic view").
+        const QString detail = m_endoscope->lightDetail() ? tr(" (light view: software GL)") : QString();
+        if (!m_rendererLogged && !m_endoscope->glRenderer().empty()) {
+            m_rendererLogged = true;
+            qInfo("endoscopic view: GL renderer %s, %s detail (%zu triangles)", m_endoscope->glRenderer().c_str(),
+                  m_endoscope->lightDetail() ? "light" : "full", m_endoscope->drawnTriangleCount());
+        }
+        m_statusLabel->setText(tr("%L1 fps%4, physics %L2 steps/s, insertion %L3 mm")
                                    .arg(m_fps, 0, 'f', 0)
                                    .arg(m_loop->stepsPerSecond(), 0, 'f', 0)
-                                   .arg(m_drawn.sample.insertionMm, 0, 'f', 1));
+                                   .arg(m_drawn.sample.insertionMm, 0, 'f', 1)
+                                   .arg(detail));
     }
     if (m_loop->finished()) {
         m_renderTimer->stop();

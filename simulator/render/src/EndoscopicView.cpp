@@ -1,8 +1,10 @@
-// The endoscopic view's VTK pipeline: the textured, deforming tissue surface, the lamp at the tip, the fluid's haze
-// and red-out in the surface's fragment shader, and the optic's mask and the heads-up text as 2-D overlays.
+// The endoscopic view's VTK pipeline: the textured, deforming tissue surface (lighter on a software rasterizer), the
+// lamp at the tip, the fluid's haze and red-out in the surface's fragment shader, and the optic's mask and the
+// heads-up text as 2-D overlays.
 #include "hs/simrender/EndoscopicView.h"
 
 #include "hs/clinical/Tissue.h"
+#include "hs/simrender/ViewDecimation.h"
 
 #include <vtkActor.h>
 #include <vtkActor2D.h>
@@ -12,6 +14,8 @@
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkLight.h>
+#include <vtkMatrix4x4.h>
+#include <vtkOpenGLRenderWindow.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -55,6 +59,8 @@ constexpr const char* kFluidShader = R"(//VTK::TCoord::Impl
 constexpr std::array<std::array<double, 2>, 7> kVignette{
     {{0.0, 0.0}, {0.55, 0.0}, {0.75, 0.12}, {0.88, 0.3}, {0.95, 0.55}, {1.0, 1.0}, {4.0, 1.0}}};
 constexpr int kMaskSegments = 96;
+/// The occluder's distance from the lens, in near clipping distances: in front of any tissue that is drawn.
+constexpr double kOccluderDepth = 1.05;
 
 vtkSmartPointer<vtkImageData> imageOf(const ImageU8& image, int channels) {
     auto data = vtkSmartPointer<vtkImageData>::New();
@@ -71,11 +77,11 @@ vtkSmartPointer<vtkImageData> imageOf(const ImageU8& image, int channels) {
     return data;
 }
 
-vtkSmartPointer<vtkTexture> textureOf(vtkImageData* image, bool srgb) {
+vtkSmartPointer<vtkTexture> textureOf(vtkImageData* image, bool srgb, bool mipmap = true) {
     auto texture = vtkSmartPointer<vtkTexture>::New();
     texture->SetInputData(image);
     texture->InterpolateOn();
-    texture->MipmapOn();
+    texture->SetMipmap(mipmap);
     texture->RepeatOff();
     texture->EdgeClampOn();
     texture->SetUseSRGBColorSpace(srgb);
@@ -127,14 +133,29 @@ CameraPose cameraPose(const scene::ScopeView& view, double fieldOfViewDeg) {
     return {view.eyeMm, view.direction, view.up, fieldOfViewDeg};
 }
 
+/// What setSurface() was given, kept to build the drawn surface from when the detail is decided at the first render.
+struct SourceSurface {
+    std::vector<Vec3> points; ///< mm, at rest
+    std::vector<Triangle> triangles;
+    std::vector<bool> outer; ///< per triangle: the organ's outer surface (serosa of no pathology); empty: unlabelled
+    std::vector<std::array<float, 2>> uvs;
+    std::vector<Vec3> normals; ///< the package's (smooth across the texture's seams), or recomputed
+    vtkSmartPointer<vtkTexture> albedo, albedoSrgb, orm, normalMap;
+    vtkSmartPointer<vtkTexture> albedoUnfiltered; ///< without mipmaps: the light detail's (see applyShading)
+};
+
+enum class Renderer { Unknown, Hardware, Software };
+
 struct EndoscopicView::Impl {
     vtkRenderer* renderer = nullptr;
     EndoscopicLook look;
     vtkSmartPointer<vtkActor> actor;
     vtkSmartPointer<vtkPolyDataMapper> mapper;
-    vtkSmartPointer<vtkPolyData> surface;
+    vtkSmartPointer<vtkPolyData> surface; ///< what is drawn; null without a surface
     vtkSmartPointer<vtkLight> lamp;
     vtkSmartPointer<vtkActor2D> mask;
+    vtkSmartPointer<vtkActor> occluder; ///< the mask's black ring, in depth in front of the tissue (see fitOccluder)
+    vtkSmartPointer<vtkPolyData> occluderGeometry;
     vtkSmartPointer<vtkPolyData> maskGeometry;
     vtkSmartPointer<vtkTextActor> hud;
     vtkSmartPointer<vtkTextActor> warning;
@@ -143,16 +164,28 @@ struct EndoscopicView::Impl {
     bool outerVisible = true;
     vtkSmartPointer<vtkCallbackCommand> startObserver;
     unsigned long startTag = 0;
-    std::vector<Triangle> triangles;
-    std::vector<Vec3> storedNormals; ///< the package's (smooth across UV seams)
-    std::vector<Vec3> restNormals;   ///< recomputed from the rest points, to carry deformation onto storedNormals
-    std::vector<Vec3> scratch;
+    SourceSurface source;
+    Renderer glKind = Renderer::Unknown;
+    std::string glName;
+    bool light = false;                   ///< the drawn surface is the decimated one, shaded with the albedo alone
+    std::vector<std::size_t> sourceIndex; ///< per drawn point, the source point; empty: the same points
+    std::vector<Triangle> triangles;      ///< over the drawn points
+    std::vector<Vec3> storedNormals;      ///< per drawn point, the source's
+    std::vector<Vec3> restNormals;        ///< recomputed from the rest points, to carry deformation onto storedNormals
+    std::vector<Vec3> drawnPoints, scratch;
     int maskWidth = -1, maskHeight = -1;
     double fieldOfViewDeg = 90.0;
+    double occluderFieldOfViewDeg = -1.0; ///< degrees; the field the occluder was built for
     double turbidity = 0.0, redOut = 0.0;
 
+    bool wantsLight() const;
+    void probeRenderer();
+    void buildSurface();
+    void applyShading();
     void fitOverlays();
     void buildMask(int width, int height);
+    void buildOccluder(int width, int height);
+    void fitOccluder();
     void updateUniforms();
     void setNormals(const std::vector<Vec3>& normals);
 };
@@ -170,6 +203,20 @@ EndoscopicView::EndoscopicView(vtkRenderer* renderer, const EndoscopicLook& look
     d.lamp->SetAttenuationValues(look.lampAttenuation[0], look.lampAttenuation[1], look.lampAttenuation[2]);
     d.lamp->SetIntensity(look.lampIntensity);
     renderer->AddLight(d.lamp);
+
+    // Drawn before the tissue, so the tissue's fragments behind the mask's black ring fail the depth test early.
+    d.occluderGeometry = vtkSmartPointer<vtkPolyData>::New();
+    auto occluderMapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    occluderMapper->SetInputData(d.occluderGeometry);
+    occluderMapper->ScalarVisibilityOff();
+    d.occluder = vtkSmartPointer<vtkActor>::New();
+    d.occluder->SetMapper(occluderMapper);
+    d.occluder->GetProperty()->LightingOff();
+    d.occluder->GetProperty()->SetColor(0.0, 0.0, 0.0);
+    d.occluder->UseBoundsOff(); // not part of the scene: the camera's clipping range ignores it
+    d.occluder->PickableOff();
+    d.occluder->SetVisibility(look.opticMask);
+    renderer->AddActor(d.occluder);
 
     d.mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
     d.mapper->ScalarVisibilityOff();
@@ -208,8 +255,11 @@ EndoscopicView::EndoscopicView(vtkRenderer* renderer, const EndoscopicLook& look
     // The overlays follow the viewport's size: refitted at the start of every render when it changed.
     d.startObserver = vtkSmartPointer<vtkCallbackCommand>::New();
     d.startObserver->SetClientData(&d);
-    d.startObserver->SetCallback(
-        [](vtkObject*, unsigned long, void* client, void*) { static_cast<Impl*>(client)->fitOverlays(); });
+    d.startObserver->SetCallback([](vtkObject*, unsigned long, void* client, void*) {
+        auto* impl = static_cast<Impl*>(client);
+        impl->probeRenderer();
+        impl->fitOverlays();
+    });
     d.startTag = renderer->AddObserver(vtkCommand::StartEvent, d.startObserver);
     renderer->SetBackground(look.fogColour[0], look.fogColour[1], look.fogColour[2]);
     d.updateUniforms();
@@ -219,6 +269,7 @@ EndoscopicView::~EndoscopicView() {
     Impl& d = *m_impl;
     d.renderer->RemoveObserver(d.startTag);
     d.renderer->RemoveActor(d.actor);
+    d.renderer->RemoveActor(d.occluder);
     d.renderer->RemoveActor2D(d.mask);
     d.renderer->RemoveActor2D(d.hud);
     d.renderer->RemoveActor2D(d.warning);
@@ -228,78 +279,150 @@ EndoscopicView::~EndoscopicView() {
 void EndoscopicView::setSurface(const scene::VisualSurface& v) {
     Impl& d = *m_impl;
     const SurfaceMesh& mesh = v.mesh;
-    auto points = vtkSmartPointer<vtkPoints>::New();
-    points->SetDataTypeToFloat();
-    points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.points.size()));
-    for (std::size_t i = 0; i < mesh.points.size(); ++i)
-        points->SetPoint(static_cast<vtkIdType>(i), mesh.points[i].x, mesh.points[i].y, mesh.points[i].z);
-    d.allFaces = vtkSmartPointer<vtkCellArray>::New();
-    d.innerFaces = nullptr;
+    SourceSurface& s = d.source;
+    s = {};
+    s.points = mesh.points;
+    s.triangles = mesh.triangles;
     const auto tissue = mesh.faceLabels.find(clinical::kSurfaceTissueLabel);
     const bool labelled = tissue != mesh.faceLabels.end() && tissue->second.size() == mesh.triangles.size();
     // A pathology's faces stay whatever their tissue: a submucous myoma shows in the cavity.
     const auto pathology = mesh.faceLabels.find("pathology");
     const bool pathologies = pathology != mesh.faceLabels.end() && pathology->second.size() == mesh.triangles.size();
-    if (labelled)
-        d.innerFaces = vtkSmartPointer<vtkCellArray>::New();
-    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-        const Triangle& t = mesh.triangles[f];
-        const vtkIdType ids[3] = {t[0], t[1], t[2]};
-        d.allFaces->InsertNextCell(3, ids);
-        const bool outer = labelled && tissue->second[f] == clinical::labelValue(clinical::SurfaceTissue::Serosa) &&
-                           !(pathologies && pathology->second[f] != 0);
-        if (labelled && !outer)
-            d.innerFaces->InsertNextCell(3, ids);
+    if (labelled) {
+        s.outer.resize(mesh.triangles.size());
+        for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+            s.outer[f] = tissue->second[f] == clinical::labelValue(clinical::SurfaceTissue::Serosa) &&
+                         !(pathologies && pathology->second[f] != 0);
     }
-    d.surface = vtkSmartPointer<vtkPolyData>::New();
-    d.surface->SetPoints(points);
-    d.surface->SetPolys(d.allFaces);
-    d.triangles = mesh.triangles;
-    faceNormals(d.triangles, mesh.points, d.restNormals);
-    d.storedNormals = v.normals.size() == mesh.points.size() ? v.normals : d.restNormals;
-    d.setNormals(d.storedNormals);
+    if (v.uvs.size() == mesh.points.size())
+        s.uvs = v.uvs;
+    if (v.normals.size() == mesh.points.size())
+        s.normals = v.normals;
+    else
+        faceNormals(mesh.triangles, mesh.points, s.normals);
+    if (!s.uvs.empty() && !v.albedo.empty() && v.albedo.channels() >= 3) {
+        vtkSmartPointer<vtkImageData> albedo = imageOf(v.albedo, 3);
+        s.albedo = textureOf(albedo, false);
+        s.albedoSrgb = textureOf(albedo, true);
+        s.albedoUnfiltered = textureOf(albedo, false, false);
+        if (!v.normal.empty() && !v.roughness.empty()) {
+            s.orm = textureOf(ormOf(v.roughness), false);
+            s.normalMap = textureOf(imageOf(v.normal, 3), false);
+        }
+    }
+    d.light = d.wantsLight();
+    d.buildSurface();
+    d.actor->VisibilityOn();
+}
 
-    vtkProperty* property = d.actor->GetProperty();
-    d.actor->SetTexture(nullptr);
-    property->RemoveAllTextures();
-    property->SetInterpolationToPhong();
-    property->SetColor(0.85, 0.55, 0.5);
-    const bool uvs = v.uvs.size() == mesh.points.size();
-    if (uvs) {
+bool EndoscopicView::Impl::wantsLight() const {
+    return look.detail == ViewDetail::Light || (look.detail == ViewDetail::Automatic && glKind == Renderer::Software);
+}
+
+void EndoscopicView::Impl::buildSurface() {
+    const SourceSurface& s = source;
+    sourceIndex.clear();
+    triangles.clear();
+    // The points in the order the triangles first use them (neighbouring triangles' points close together in the
+    // buffers), the inner faces first (a prefix drawn while the outer surface is hidden).
+    ViewDecimationParams params;
+    params.targetReduction = light ? look.lightReduction : 0.0;
+    DecimatedSurface drawn = decimateForView({s.points, s.triangles, {}, {}}, s.outer, params);
+    sourceIndex = std::move(drawn.sourcePoints);
+    triangles = std::move(drawn.triangles);
+    const std::size_t innerCount = drawn.innerTriangles;
+    const auto sourceOf = [&](std::size_t i) { return sourceIndex.empty() ? i : sourceIndex[i]; };
+    const std::size_t count = sourceIndex.empty() ? s.points.size() : sourceIndex.size();
+
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->SetDataTypeToFloat();
+    points->SetNumberOfPoints(static_cast<vtkIdType>(count));
+    drawnPoints.resize(count);
+    storedNormals.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        drawnPoints[i] = s.points[sourceOf(i)];
+        storedNormals[i] = s.normals[sourceOf(i)];
+        points->SetPoint(static_cast<vtkIdType>(i), drawnPoints[i].x, drawnPoints[i].y, drawnPoints[i].z);
+    }
+    allFaces = vtkSmartPointer<vtkCellArray>::New();
+    innerFaces = s.outer.empty() ? nullptr : vtkSmartPointer<vtkCellArray>::New();
+    for (std::size_t f = 0; f < triangles.size(); ++f) {
+        const vtkIdType ids[3] = {triangles[f][0], triangles[f][1], triangles[f][2]};
+        allFaces->InsertNextCell(3, ids);
+        if (innerFaces && f < innerCount)
+            innerFaces->InsertNextCell(3, ids);
+    }
+    surface = vtkSmartPointer<vtkPolyData>::New();
+    surface->SetPoints(points);
+    surface->SetPolys(allFaces);
+    faceNormals(triangles, drawnPoints, restNormals);
+    setNormals(storedNormals);
+    if (!s.uvs.empty()) {
         auto tcoords = vtkSmartPointer<vtkFloatArray>::New();
         tcoords->SetName("uv");
         tcoords->SetNumberOfComponents(2);
-        tcoords->SetNumberOfTuples(static_cast<vtkIdType>(v.uvs.size()));
-        for (std::size_t i = 0; i < v.uvs.size(); ++i) // VTK's texture origin is the image's bottom left
-            tcoords->SetTuple2(static_cast<vtkIdType>(i), v.uvs[i][0], 1.0f - v.uvs[i][1]);
-        d.surface->GetPointData()->SetTCoords(tcoords);
+        tcoords->SetNumberOfTuples(static_cast<vtkIdType>(count));
+        for (std::size_t i = 0; i < count; ++i) // VTK's texture origin is the image's bottom left
+            tcoords->SetTuple2(static_cast<vtkIdType>(i), s.uvs[sourceOf(i)][0], 1.0f - s.uvs[sourceOf(i)][1]);
+        surface->GetPointData()->SetTCoords(tcoords);
     }
-    const bool albedo = uvs && !v.albedo.empty() && v.albedo.channels() >= 3;
-    const bool maps = albedo && d.look.materialMaps && !v.normal.empty() && !v.roughness.empty();
-    if (maps) {
+    applyShading();
+    if (!outerVisible && innerFaces)
+        surface->SetPolys(innerFaces);
+    mapper->SetInputData(surface);
+}
+
+void EndoscopicView::Impl::applyShading() {
+    const SourceSurface& s = source;
+    vtkProperty* property = actor->GetProperty();
+    actor->SetTexture(nullptr);
+    property->RemoveAllTextures();
+    property->SetInterpolationToPhong();
+    property->SetColor(0.85, 0.55, 0.5);
+    if (s.albedo && s.orm && look.materialMaps && !light) {
         // Physically based shading: the albedo (sRGB), roughness and tangent-space normals the texture stage baked.
         auto tangents = vtkSmartPointer<vtkPolyDataTangents>::New();
-        tangents->SetInputData(d.surface);
+        tangents->SetInputData(surface);
         tangents->Update();
-        d.surface->GetPointData()->SetTangents(tangents->GetOutput()->GetPointData()->GetTangents());
+        surface->GetPointData()->SetTangents(tangents->GetOutput()->GetPointData()->GetTangents());
         property->SetInterpolationToPBR();
         property->SetColor(1.0, 1.0, 1.0);
         property->SetMetallic(0.0);
         property->SetRoughness(1.0);
-        property->SetBaseColorTexture(textureOf(imageOf(v.albedo, 3), true));
-        property->SetORMTexture(textureOf(ormOf(v.roughness), false));
-        property->SetNormalTexture(textureOf(imageOf(v.normal, 3), false));
+        property->SetBaseColorTexture(s.albedoSrgb);
+        property->SetORMTexture(s.orm);
+        property->SetNormalTexture(s.normalMap);
         property->SetNormalScale(1.0);
-    } else if (albedo) {
-        d.actor->SetTexture(textureOf(imageOf(v.albedo, 3), false));
+    } else if (s.albedo) {
+        // On llvmpipe, mipmapped sampling on a deforming surface made some frames cost ten times the others (at
+        // 960x720 up to seconds; docs/simulator.md): the light detail samples the full-size albedo only. Seen from
+        // inside the cavity the albedo is mostly magnified, where mipmaps change nothing.
+        actor->SetTexture(light ? s.albedoUnfiltered : s.albedo);
         property->SetColor(1.0, 1.0, 1.0);
         property->SetSpecular(0.25);
         property->SetSpecularPower(30.0);
     }
-    if (!d.outerVisible && d.innerFaces)
-        d.surface->SetPolys(d.innerFaces);
-    d.mapper->SetInputData(d.surface);
-    d.actor->VisibilityOn();
+}
+
+void EndoscopicView::Impl::probeRenderer() {
+    if (glKind != Renderer::Unknown)
+        return;
+    auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer->GetRenderWindow());
+    if (!window)
+        return;
+    const char* report = window->ReportCapabilities();
+    const std::string text = report ? report : "";
+    const std::string key = "OpenGL renderer string:";
+    const std::size_t at = text.find(key);
+    if (at == std::string::npos)
+        return; // no context yet
+    const std::size_t begin = text.find_first_not_of(' ', at + key.size());
+    glName = text.substr(begin, text.find('\n', begin) - begin);
+    glKind = isSoftwareRenderer(glName) ? Renderer::Software : Renderer::Hardware;
+    if (surface && wantsLight() != light) {
+        light = wantsLight();
+        buildSurface(); // before the tissue is drawn in this render
+    }
 }
 
 void EndoscopicView::setOuterSurfaceVisible(bool visible) {
@@ -316,9 +439,12 @@ void EndoscopicView::clear() {
     d.actor->VisibilityOff();
     d.mapper->SetInputData(nullptr);
     d.surface = nullptr;
+    d.source = {};
+    d.sourceIndex.clear();
     d.triangles.clear();
     d.storedNormals.clear();
     d.restNormals.clear();
+    d.drawnPoints.clear();
 }
 
 bool EndoscopicView::hasSurface() const {
@@ -326,7 +452,11 @@ bool EndoscopicView::hasSurface() const {
 }
 
 std::size_t EndoscopicView::pointCount() const {
-    return m_impl->surface ? static_cast<std::size_t>(m_impl->surface->GetNumberOfPoints()) : 0;
+    return m_impl->surface ? m_impl->source.points.size() : 0;
+}
+
+std::size_t EndoscopicView::drawnTriangleCount() const {
+    return m_impl->surface ? m_impl->triangles.size() : 0;
 }
 
 void EndoscopicView::setPoints(const std::vector<Vec3>& pointsMm) {
@@ -335,15 +465,17 @@ void EndoscopicView::setPoints(const std::vector<Vec3>& pointsMm) {
         return;
     vtkPoints* points = d.surface->GetPoints();
     auto* xyz = static_cast<float*>(points->GetVoidPointer(0));
-    for (std::size_t i = 0; i < pointsMm.size(); ++i) {
-        xyz[3 * i] = static_cast<float>(pointsMm[i].x);
-        xyz[3 * i + 1] = static_cast<float>(pointsMm[i].y);
-        xyz[3 * i + 2] = static_cast<float>(pointsMm[i].z);
+    for (std::size_t i = 0; i < d.drawnPoints.size(); ++i) {
+        const Vec3& p = pointsMm[d.sourceIndex.empty() ? i : d.sourceIndex[i]];
+        d.drawnPoints[i] = p;
+        xyz[3 * i] = static_cast<float>(p.x);
+        xyz[3 * i + 1] = static_cast<float>(p.y);
+        xyz[3 * i + 2] = static_cast<float>(p.z);
     }
     points->Modified();
     // The deformation turns each normal by what it turns the normal recomputed from the points; the stored normals
     // stay smooth across the texture's seams (where recomputed ones would show the split).
-    faceNormals(d.triangles, pointsMm, d.scratch);
+    faceNormals(d.triangles, d.drawnPoints, d.scratch);
     for (std::size_t i = 0; i < d.scratch.size(); ++i) {
         const Vec3 n = d.storedNormals[i] + (d.scratch[i] - d.restNormals[i]);
         const double length = norm(n);
@@ -351,7 +483,6 @@ void EndoscopicView::setPoints(const std::vector<Vec3>& pointsMm) {
     }
     d.setNormals(d.scratch);
 }
-
 void EndoscopicView::Impl::setNormals(const std::vector<Vec3>& normals) {
     vtkDataArray* existing = surface->GetPointData()->GetNormals();
     vtkSmartPointer<vtkFloatArray> array = vtkFloatArray::SafeDownCast(existing);
@@ -429,6 +560,14 @@ const EndoscopicLook& EndoscopicView::look() const {
     return m_impl->look;
 }
 
+const std::string& EndoscopicView::glRenderer() const {
+    return m_impl->glName;
+}
+
+bool EndoscopicView::lightDetail() const {
+    return m_impl->wantsLight();
+}
+
 vtkActor* EndoscopicView::tissueActor() const {
     return m_impl->actor;
 }
@@ -442,6 +581,9 @@ void EndoscopicView::Impl::fitOverlays() {
     vtkCamera* camera = renderer->GetActiveCamera();
     camera->SetUseHorizontalViewAngle(width < height);
     camera->SetViewAngle(fieldOfViewDeg);
+    if (width != maskWidth || height != maskHeight || fieldOfViewDeg != occluderFieldOfViewDeg)
+        buildOccluder(width, height);
+    fitOccluder();
     if (width == maskWidth && height == maskHeight)
         return;
     maskWidth = width;
@@ -490,6 +632,41 @@ void EndoscopicView::Impl::buildMask(int width, int height) {
     maskGeometry->SetPolys(cells);
     maskGeometry->GetPointData()->SetScalars(colours);
     maskGeometry->Modified();
+}
+
+void EndoscopicView::Impl::buildOccluder(int width, int height) {
+    occluderFieldOfViewDeg = fieldOfViewDeg;
+    // In the camera's frame (looking down -z), just beyond the near plane: a ring from a pixel and a half outside the
+    // mask's circle (where the mask is opaque black) to beyond the viewport's corners.
+    const double depth = kOccluderDepth * look.nearClipMm;
+    const double radiusPx = 0.5 * std::min(width, height);
+    const double radius = depth * std::tan(0.5 * fieldOfViewDeg * kPi / 180.0);
+    const double inner = radius * (1.0 + 1.5 / radiusPx) / std::cos(kPi / kMaskSegments);
+    const double outer = radius * 4.0 * std::max(width, height) / std::min(width, height);
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto cells = vtkSmartPointer<vtkCellArray>::New();
+    for (const double r : {inner, outer})
+        for (int s = 0; s < kMaskSegments; ++s) {
+            const double angle = 2.0 * kPi * s / kMaskSegments;
+            points->InsertNextPoint(r * std::cos(angle), r * std::sin(angle), -depth);
+        }
+    for (vtkIdType s = 0; s < kMaskSegments; ++s) {
+        const vtkIdType a = s, b = (s + 1) % kMaskSegments, c = kMaskSegments + b, e = kMaskSegments + s;
+        const vtkIdType first[3] = {a, b, c}, second[3] = {a, c, e};
+        cells->InsertNextCell(3, first);
+        cells->InsertNextCell(3, second);
+    }
+    occluderGeometry->Initialize();
+    occluderGeometry->SetPoints(points);
+    occluderGeometry->SetPolys(cells);
+    occluderGeometry->Modified();
+}
+
+void EndoscopicView::Impl::fitOccluder() {
+    // The camera's frame to the world's: the inverse of its view transform.
+    auto toWorld = vtkSmartPointer<vtkMatrix4x4>::New();
+    vtkMatrix4x4::Invert(renderer->GetActiveCamera()->GetViewTransformMatrix(), toWorld);
+    occluder->SetUserMatrix(toWorld);
 }
 
 } // namespace hs::simrender

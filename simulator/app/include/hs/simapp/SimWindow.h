@@ -100,6 +100,7 @@ private:
     QElapsedTimer m_fpsClock;
     int m_fpsFrames = 0;
     double m_fps = 0.0;
+    bool m_rendererLogged = false; ///< the GL renderer and the view's detail, logged once
     QPoint m_dragFrom;
     bool m_dragging = false;
 };

@@ -37,13 +37,25 @@ CameraPose cameraPose(const sim::ScopePose& pose, const sim::ScopeConfig& config
 /// The workstation's preview pose (scene::scopeView, scene::viewOfRegion).
 CameraPose cameraPose(const scene::ScopeView& view, double fieldOfViewDeg);
 
+/// How much the view draws. A software rasterizer (Mesa's llvmpipe on a machine without a GPU) shades every pixel on
+/// the CPU, where the PBR shading, mipmapped sampling of a deforming surface and every triangle cost: the light detail
+/// keeps the view above 30 frames per second there (docs/simulator.md, "Endoscopic view").
+enum class ViewDetail {
+    Automatic, ///< Light when the GL renderer is a software one (isSoftwareRenderer), Full on a GPU
+    Full,      ///< the maps when `materialMaps` (PBR shading)
+    Light,     ///< the albedo alone (Phong shading, no mipmaps); the surface decimated by `lightReduction`
+};
+
 struct EndoscopicLook {
     double nearClipMm = 0.3;  ///< mm; the lens sees tissue this close
     double farClipMm = 300.0; ///< mm; beyond any cavity
     double lampIntensity = 1.4;
     /// Constant, linear (per mm) and quadratic (per mm^2) attenuation of the lamp: half the light at about 14 mm.
     std::array<double, 3> lampAttenuation{1.0, 0.04, 0.002};
-    bool materialMaps = true;     ///< PBR shading with the normal and roughness maps; false: albedo only (Phong)
+    bool materialMaps = true; ///< PBR shading with the normal and roughness maps; false: albedo only (Phong)
+    ViewDetail detail = ViewDetail::Automatic;
+    /// Share of the triangles the light detail leaves out (decimateForView); 0: none.
+    double lightReduction = 0.5;
     bool opticMask = true;        ///< the circular field and its vignetting
     bool hud = true;              ///< the heads-up text
     double clearFogPerMm = 0.004; ///< 1/mm, extinction of clear saline (a faint haze at the cavity's far end)
@@ -68,7 +80,7 @@ public:
     EndoscopicView& operator=(const EndoscopicView&) = delete;
 
     /// The surface to draw (topology, UVs, normals, maps); replaces the previous one. Its points are the rest
-    /// points until setPoints().
+    /// points until setPoints(). The detail is decided at the first render, when the GL renderer is known.
     void setSurface(const scene::VisualSurface& surface);
     void clear();
     bool hasSurface() const;
@@ -87,6 +99,12 @@ public:
     void setHud(const HudText& text);
 
     const EndoscopicLook& look() const;
+    /// The GL renderer's name (glGetString(GL_RENDERER)); empty before the first render.
+    const std::string& glRenderer() const;
+    /// Whether the light detail is drawn (ViewDetail; Automatic decides at the first render).
+    bool lightDetail() const;
+    /// Triangles drawn with the outer surface shown: the visual surface's, or fewer when decimated.
+    std::size_t drawnTriangleCount() const;
     vtkActor* tissueActor() const;
 
 private:

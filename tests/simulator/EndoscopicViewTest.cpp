@@ -1,0 +1,147 @@
+// The endoscopic view (hs/simrender/EndoscopicView.h) drawing offscreen from inside a sphere (needs an X display:
+// run under xvfb-run): the detail it picks for the GL renderer, a decimated surface following the deformed points,
+// and the picture (lit tissue in the middle, black outside the optic's circle) at either detail.
+
+#include "hs/simrender/EndoscopicView.h"
+#include "hs/simrender/ViewDecimation.h"
+
+#include <gtest/gtest.h>
+
+#include <vtkActor.h>
+#include <vtkMapper.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <cmath>
+#include <cstdlib>
+
+namespace hs::simrender {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// A closed sphere of radius 20 mm around the origin, as a visual surface without maps.
+scene::VisualSurface sphere() {
+    scene::VisualSurface surface;
+    SurfaceMesh& mesh = surface.mesh;
+    const int rings = 30, segments = 60;
+    const double radius = 20.0;
+    mesh.points.push_back({0, 0, radius});
+    for (int r = 1; r <= rings; ++r)
+        for (int s = 0; s < segments; ++s) {
+            const double theta = kPi * r / (rings + 1), phi = 2.0 * kPi * s / segments;
+            mesh.points.push_back({radius * std::sin(theta) * std::cos(phi), radius * std::sin(theta) * std::sin(phi),
+                                   radius * std::cos(theta)});
+        }
+    mesh.points.push_back({0, 0, -radius});
+    const auto at = [&](int r, int s) { return static_cast<std::int32_t>(1 + (r - 1) * segments + s % segments); };
+    const auto south = static_cast<std::int32_t>(mesh.points.size() - 1);
+    for (int s = 0; s < segments; ++s) {
+        mesh.triangles.push_back({0, at(1, s), at(1, s + 1)});
+        for (int r = 1; r < rings; ++r) {
+            mesh.triangles.push_back({at(r, s), at(r + 1, s), at(r + 1, s + 1)});
+            mesh.triangles.push_back({at(r, s), at(r + 1, s + 1), at(r, s + 1)});
+        }
+        mesh.triangles.push_back({at(rings, s), south, at(rings, s + 1)});
+    }
+    return surface;
+}
+
+class EndoscopicViewTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        if (!std::getenv("DISPLAY"))
+            GTEST_SKIP() << "no X display (run under xvfb-run)";
+        m_window->SetOffScreenRendering(1);
+        m_window->SetMultiSamples(0);
+        m_window->SetSize(160, 120);
+        m_window->AddRenderer(m_renderer);
+    }
+
+    /// Draws `view` from the sphere's centre looking along +x.
+    void draw(EndoscopicView& view) {
+        view.setPose({{0, 0, 0}, {1, 0, 0}, {0, 0, 1}, 90.0});
+        m_window->Render();
+    }
+
+    /// The red channel at pixel (x, y) of the last picture.
+    int red(int x, int y) {
+        vtkNew<vtkUnsignedCharArray> pixels;
+        m_window->GetRGBACharPixelData(x, y, x, y, 0, pixels);
+        return pixels->GetValue(0);
+    }
+
+    vtkNew<vtkRenderWindow> m_window;
+    vtkNew<vtkRenderer> m_renderer;
+};
+
+TEST_F(EndoscopicViewTest, ChoosesTheLightDetailOnASoftwareRasterizer) {
+    const scene::VisualSurface surface = sphere();
+    EndoscopicView view(m_renderer);
+    view.setSurface(surface);
+    EXPECT_TRUE(view.glRenderer().empty()); // known at the first render
+    draw(view);
+    ASSERT_FALSE(view.glRenderer().empty());
+    const bool software = isSoftwareRenderer(view.glRenderer());
+    EXPECT_EQ(view.lightDetail(), software) << view.glRenderer();
+    if (software) // decimated by default
+        EXPECT_LT(view.drawnTriangleCount(), surface.mesh.triangles.size() * 6 / 10);
+    else
+        EXPECT_EQ(view.drawnTriangleCount(), surface.mesh.triangles.size());
+    EXPECT_EQ(view.pointCount(), surface.mesh.points.size());
+}
+
+TEST_F(EndoscopicViewTest, ADecimatedSurfaceFollowsTheDeformedPoints) {
+    const scene::VisualSurface surface = sphere();
+    EndoscopicLook look;
+    look.detail = ViewDetail::Light;
+    look.lightReduction = 0.5;
+    EndoscopicView view(m_renderer, look);
+    view.setSurface(surface);
+    draw(view);
+    EXPECT_TRUE(view.lightDetail());
+    EXPECT_EQ(view.pointCount(), surface.mesh.points.size()); // the host still hands over every point
+    const auto drawnBounds = [&](double out[6]) {
+        vtkPolyData::SafeDownCast(view.tissueActor()->GetMapper()->GetInput())->GetBounds(out);
+    };
+    double rest[6], bounds[6];
+    drawnBounds(rest);
+    std::vector<Vec3> moved = surface.mesh.points;
+    for (Vec3& p : moved)
+        p = p * 1.5 + Vec3{5.0, 0.0, 0.0};
+    view.setPoints(moved);
+    drawnBounds(bounds);
+    for (int k = 0; k < 6; ++k)
+        EXPECT_NEAR(bounds[k], rest[k] * 1.5 + (k < 2 ? 5.0 : 0.0), 1e-3) << k;
+    // A point list of another surface is ignored.
+    moved.pop_back();
+    for (Vec3& p : moved)
+        p = p + Vec3{0.0, 0.0, 7.0};
+    view.setPoints(moved);
+    double unchanged[6];
+    drawnBounds(unchanged);
+    EXPECT_EQ(unchanged[4], bounds[4]);
+}
+
+TEST_F(EndoscopicViewTest, BothDetailsShowTheLitWallInsideTheOpticsCircle) {
+    const scene::VisualSurface surface = sphere();
+    for (ViewDetail detail : {ViewDetail::Full, ViewDetail::Light}) {
+        EndoscopicLook look;
+        look.detail = detail;
+        look.lightReduction = 0.5;
+        look.hud = false;
+        EndoscopicView view(m_renderer, look);
+        view.setSurface(surface);
+        draw(view);
+        EXPECT_EQ(view.drawnTriangleCount() < surface.mesh.triangles.size(), detail == ViewDetail::Light);
+        EXPECT_GT(red(80, 60), 30) << "the wall in the middle";
+        EXPECT_EQ(red(1, 1), 0) << "outside the circle";
+        EXPECT_EQ(red(158, 118), 0) << "outside the circle";
+    }
+}
+
+} // namespace
+} // namespace hs::simrender
