@@ -3,6 +3,7 @@
 // and the picture (lit tissue in the middle, black outside the optic's circle) at either detail.
 
 #include "hs/simrender/EndoscopicView.h"
+#include "hs/clinical/Tissue.h"
 #include "hs/simrender/ViewDecimation.h"
 
 #include <gtest/gtest.h>
@@ -124,6 +125,60 @@ TEST_F(EndoscopicViewTest, ADecimatedSurfaceFollowsTheDeformedPoints) {
     double unchanged[6];
     drawnBounds(unchanged);
     EXPECT_EQ(unchanged[4], bounds[4]);
+}
+
+TEST_F(EndoscopicViewTest, WhileTheOuterSurfaceIsHiddenOnlyTheInnerPointsAreReadAndDrawn) {
+    // The sphere's southern half labelled serosa (the outer surface), the northern half endometrium.
+    scene::VisualSurface surface = sphere();
+    std::vector<std::int32_t> tissue(surface.mesh.triangles.size());
+    for (std::size_t f = 0; f < tissue.size(); ++f) {
+        const Triangle& t = surface.mesh.triangles[f];
+        const double z = surface.mesh.points[static_cast<std::size_t>(t[0])].z +
+                         surface.mesh.points[static_cast<std::size_t>(t[1])].z +
+                         surface.mesh.points[static_cast<std::size_t>(t[2])].z;
+        tissue[f] =
+            clinical::labelValue(z < 0.0 ? clinical::SurfaceTissue::Serosa : clinical::SurfaceTissue::Endometrium);
+    }
+    surface.mesh.faceLabels[clinical::kSurfaceTissueLabel] = tissue;
+    EndoscopicLook look;
+    look.detail = ViewDetail::Full;
+    EndoscopicView view(m_renderer, look);
+    view.setSurface(surface);
+    draw(view);
+    const auto drawn = [&] { return vtkPolyData::SafeDownCast(view.tissueActor()->GetMapper()->GetInput()); };
+    EXPECT_TRUE(view.sourcePointsInUse().empty() ||
+                view.sourcePointsInUse().size() == surface.mesh.points.size()); // all of them while shown
+    const vtkIdType allPoints = drawn()->GetNumberOfPoints();
+
+    view.setOuterSurfaceVisible(false);
+    const std::vector<std::int32_t> inUse = view.sourcePointsInUse();
+    ASSERT_FALSE(inUse.empty());
+    EXPECT_LT(inUse.size(), surface.mesh.points.size() * 7 / 10); // about the northern half
+    for (const std::int32_t i : inUse)
+        EXPECT_GE(surface.mesh.points[static_cast<std::size_t>(i)].z, -2.5) << i;  // no southern point but the rim
+    EXPECT_EQ(drawn()->GetNumberOfPoints(), static_cast<vtkIdType>(inUse.size())); // only those are uploaded
+    // Only the points in use need their deformed place: the others may be anything.
+    std::vector<Vec3> moved(surface.mesh.points.size(), Vec3{1e6, 1e6, 1e6});
+    for (const std::int32_t i : inUse)
+        moved[static_cast<std::size_t>(i)] = surface.mesh.points[static_cast<std::size_t>(i)] + Vec3{0.0, 0.0, 3.0};
+    view.setPoints(moved);
+    double bounds[6];
+    drawn()->GetBounds(bounds);
+    EXPECT_LT(bounds[5], 20.0 + 3.0 + 1e-3);
+    EXPECT_GT(bounds[4], -3.0 + 3.0 - 1.0); // the rim, moved up
+    draw(view);
+
+    // Shown again, every point is read and drawn.
+    view.setOuterSurfaceVisible(true);
+    EXPECT_TRUE(view.sourcePointsInUse().empty() || view.sourcePointsInUse().size() == surface.mesh.points.size());
+    std::vector<Vec3> all = surface.mesh.points;
+    for (Vec3& p : all)
+        p = p + Vec3{0.0, 0.0, 3.0};
+    view.setPoints(all);
+    drawn()->GetBounds(bounds);
+    EXPECT_EQ(drawn()->GetNumberOfPoints(), allPoints);
+    EXPECT_NEAR(bounds[4], -20.0 + 3.0, 1e-3);
+    EXPECT_NEAR(bounds[5], 20.0 + 3.0, 1e-3);
 }
 
 TEST_F(EndoscopicViewTest, BothDetailsShowTheLitWallInsideTheOpticsCircle) {

@@ -955,17 +955,30 @@ std::shared_ptr<const HapticFrame> World::hapticFrame() const {
 }
 
 void World::visualPoints(const std::vector<Vec3>& simulationPointsMm, std::vector<Vec3>& out) const {
+    visualPoints(simulationPointsMm, out, {});
+}
+
+void World::visualPoints(const std::vector<Vec3>& simulationPointsMm, std::vector<Vec3>& out,
+                         const std::vector<std::int32_t>& only) const {
     const auto& embedding = impl_->scene.simulation->surfaceEmbedding;
     const auto& tets = impl_->simRest.tets;
     out.resize(embedding.size());
-    for (std::size_t i = 0; i < embedding.size(); ++i) {
+    const auto place = [&](std::size_t i) {
         const TetEmbedding& e = embedding[i];
         const Tet& t = tets[static_cast<std::size_t>(e.tet)];
         out[i] = simulationPointsMm[static_cast<std::size_t>(t[0])] * e.weights[0] +
                  simulationPointsMm[static_cast<std::size_t>(t[1])] * e.weights[1] +
                  simulationPointsMm[static_cast<std::size_t>(t[2])] * e.weights[2] +
                  simulationPointsMm[static_cast<std::size_t>(t[3])] * e.weights[3];
+    };
+    if (only.empty()) {
+        for (std::size_t i = 0; i < embedding.size(); ++i)
+            place(i);
+        return;
     }
+    for (const std::int32_t i : only)
+        if (i >= 0 && static_cast<std::size_t>(i) < embedding.size())
+            place(static_cast<std::size_t>(i));
 }
 
 const TrialMetrics& World::metrics() const {

@@ -107,9 +107,13 @@ vtkSmartPointer<vtkImageData> ormOf(const ImageU8& roughness) {
 }
 
 /// Area-weighted vertex normals of `points` over `triangles`.
-void faceNormals(const std::vector<Triangle>& triangles, const std::vector<Vec3>& points, std::vector<Vec3>& out) {
-    out.assign(points.size(), Vec3{});
-    for (const Triangle& t : triangles) {
+/// Point normals from the first `triangleCount` triangles over the first `pointCount` points (the triangles use no
+/// other points).
+void faceNormals(const std::vector<Triangle>& triangles, const std::vector<Vec3>& points, std::vector<Vec3>& out,
+                 std::size_t triangleCount, std::size_t pointCount) {
+    out.assign(pointCount, Vec3{});
+    for (std::size_t f = 0; f < triangleCount; ++f) {
+        const Triangle& t = triangles[f];
         const auto a = static_cast<std::size_t>(t[0]), b = static_cast<std::size_t>(t[1]),
                    c = static_cast<std::size_t>(t[2]);
         const Vec3 n = cross(points[b] - points[a], points[c] - points[a]);
@@ -161,17 +165,30 @@ struct EndoscopicView::Impl {
     vtkSmartPointer<vtkTextActor> warning;
     vtkSmartPointer<vtkCellArray> allFaces;
     vtkSmartPointer<vtkCellArray> innerFaces; ///< all but the serosa's; null without a tissue label
+    /// The inner faces alone over their own points (a copy of the drawn points' prefix they use), drawn while the
+    /// outer surface is hidden: each frame then uploads only their points and normals, a quarter of all.
+    vtkSmartPointer<vtkPolyData> innerSurface;
+    /// The polydata drawn now.
+    vtkPolyData* active() const { return !outerVisible && innerSurface ? innerSurface.Get() : surface.Get(); }
     bool outerVisible = true;
     vtkSmartPointer<vtkCallbackCommand> startObserver;
     unsigned long startTag = 0;
     SourceSurface source;
     Renderer glKind = Renderer::Unknown;
     std::string glName;
-    bool light = false;                   ///< the drawn surface is the decimated one, shaded with the albedo alone
-    std::vector<std::size_t> sourceIndex; ///< per drawn point, the source point; empty: the same points
-    std::vector<Triangle> triangles;      ///< over the drawn points
-    std::vector<Vec3> storedNormals;      ///< per drawn point, the source's
-    std::vector<Vec3> restNormals;        ///< recomputed from the rest points, to carry deformation onto storedNormals
+    bool light = false;                    ///< the drawn surface is the decimated one, shaded with the albedo alone
+    std::vector<std::size_t> sourceIndex;  ///< per drawn point, the source point; empty: the same points
+    std::size_t innerTriangles = 0;        ///< the inner faces: a prefix of `triangles`
+    std::size_t innerPoints = 0;           ///< the points the inner faces use: a prefix of the drawn points
+    std::vector<std::int32_t> sourceInUse; ///< the source points setPoints reads now (empty: all of them)
+    void updateSourceInUse();
+    /// The drawn points (a prefix) and triangles (a prefix) that setPoints moves: the inner ones while the outer
+    /// surface is hidden.
+    std::size_t pointsInUse() const { return !outerVisible && innerFaces ? innerPoints : drawnPoints.size(); }
+    std::size_t trianglesInUse() const { return !outerVisible && innerFaces ? innerTriangles : triangles.size(); }
+    std::vector<Triangle> triangles; ///< over the drawn points
+    std::vector<Vec3> storedNormals; ///< per drawn point, the source's
+    std::vector<Vec3> restNormals;   ///< recomputed from the rest points, to carry deformation onto storedNormals
     std::vector<Vec3> drawnPoints, scratch;
     int maskWidth = -1, maskHeight = -1;
     double fieldOfViewDeg = 90.0;
@@ -187,7 +204,7 @@ struct EndoscopicView::Impl {
     void buildOccluder(int width, int height);
     void fitOccluder();
     void updateUniforms();
-    void setNormals(const std::vector<Vec3>& normals);
+    void setNormals(const std::vector<Vec3>& normals, std::size_t count); ///< the first `count` points'
 };
 
 EndoscopicView::EndoscopicView(vtkRenderer* renderer, const EndoscopicLook& look) : m_impl(std::make_unique<Impl>()) {
@@ -299,7 +316,7 @@ void EndoscopicView::setSurface(const scene::VisualSurface& v) {
     if (v.normals.size() == mesh.points.size())
         s.normals = v.normals;
     else
-        faceNormals(mesh.triangles, mesh.points, s.normals);
+        faceNormals(mesh.triangles, mesh.points, s.normals, mesh.triangles.size(), mesh.points.size());
     if (!s.uvs.empty() && !v.albedo.empty() && v.albedo.channels() >= 3) {
         vtkSmartPointer<vtkImageData> albedo = imageOf(v.albedo, 3);
         s.albedo = textureOf(albedo, false);
@@ -323,6 +340,7 @@ void EndoscopicView::Impl::buildSurface() {
     const SourceSurface& s = source;
     sourceIndex.clear();
     triangles.clear();
+    innerSurface = nullptr;
     // The points in the order the triangles first use them (neighbouring triangles' points close together in the
     // buffers), the inner faces first (a prefix drawn while the outer surface is hidden).
     ViewDecimationParams params;
@@ -331,6 +349,11 @@ void EndoscopicView::Impl::buildSurface() {
     sourceIndex = std::move(drawn.sourcePoints);
     triangles = std::move(drawn.triangles);
     const std::size_t innerCount = drawn.innerTriangles;
+    innerTriangles = innerCount;
+    innerPoints = 0;
+    for (std::size_t f = 0; f < innerCount; ++f)
+        for (const std::int32_t p : triangles[f])
+            innerPoints = std::max(innerPoints, static_cast<std::size_t>(p) + 1);
     const auto sourceOf = [&](std::size_t i) { return sourceIndex.empty() ? i : sourceIndex[i]; };
     const std::size_t count = sourceIndex.empty() ? s.points.size() : sourceIndex.size();
 
@@ -355,8 +378,8 @@ void EndoscopicView::Impl::buildSurface() {
     surface = vtkSmartPointer<vtkPolyData>::New();
     surface->SetPoints(points);
     surface->SetPolys(allFaces);
-    faceNormals(triangles, drawnPoints, restNormals);
-    setNormals(storedNormals);
+    faceNormals(triangles, drawnPoints, restNormals, triangles.size(), drawnPoints.size());
+    setNormals(storedNormals, storedNormals.size());
     if (!s.uvs.empty()) {
         auto tcoords = vtkSmartPointer<vtkFloatArray>::New();
         tcoords->SetName("uv");
@@ -367,9 +390,47 @@ void EndoscopicView::Impl::buildSurface() {
         surface->GetPointData()->SetTCoords(tcoords);
     }
     applyShading();
-    if (!outerVisible && innerFaces)
-        surface->SetPolys(innerFaces);
-    mapper->SetInputData(surface);
+    innerSurface = nullptr;
+    if (innerFaces) {
+        // The prefix of every point array (points, normals, texture coordinates, tangents) the inner faces use.
+        innerSurface = vtkSmartPointer<vtkPolyData>::New();
+        auto innerPointSet = vtkSmartPointer<vtkPoints>::New();
+        innerPointSet->SetDataTypeToFloat();
+        innerPointSet->SetNumberOfPoints(static_cast<vtkIdType>(innerPoints));
+        for (std::size_t i = 0; i < innerPoints; ++i)
+            innerPointSet->SetPoint(static_cast<vtkIdType>(i), drawnPoints[i].x, drawnPoints[i].y, drawnPoints[i].z);
+        innerSurface->SetPoints(innerPointSet);
+        innerSurface->SetPolys(innerFaces);
+        vtkPointData* from = surface->GetPointData();
+        vtkPointData* to = innerSurface->GetPointData();
+        const auto prefix = [&](vtkDataArray* array) -> vtkSmartPointer<vtkDataArray> {
+            if (!array)
+                return nullptr;
+            vtkSmartPointer<vtkDataArray> copy;
+            copy.TakeReference(array->NewInstance());
+            copy->SetName(array->GetName());
+            copy->SetNumberOfComponents(array->GetNumberOfComponents());
+            copy->SetNumberOfTuples(static_cast<vtkIdType>(innerPoints));
+            for (vtkIdType i = 0; i < static_cast<vtkIdType>(innerPoints); ++i)
+                copy->SetTuple(i, i, array);
+            return copy;
+        };
+        to->SetNormals(prefix(from->GetNormals()));
+        to->SetTCoords(prefix(from->GetTCoords()));
+        to->SetTangents(prefix(from->GetTangents()));
+    }
+    mapper->SetInputData(active());
+    updateSourceInUse();
+}
+
+void EndoscopicView::Impl::updateSourceInUse() {
+    sourceInUse.clear();
+    const std::size_t n = pointsInUse();
+    if (sourceIndex.empty() && n == source.points.size())
+        return;
+    sourceInUse.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+        sourceInUse[i] = static_cast<std::int32_t>(sourceIndex.empty() ? i : sourceIndex[i]);
 }
 
 void EndoscopicView::Impl::applyShading() {
@@ -430,8 +491,13 @@ void EndoscopicView::setOuterSurfaceVisible(bool visible) {
     if (visible == d.outerVisible)
         return;
     d.outerVisible = visible;
-    if (d.surface && d.innerFaces)
-        d.surface->SetPolys(visible ? d.allFaces : d.innerFaces);
+    if (d.surface)
+        d.mapper->SetInputData(d.active());
+    d.updateSourceInUse();
+}
+
+const std::vector<std::int32_t>& EndoscopicView::sourcePointsInUse() const {
+    return m_impl->sourceInUse;
 }
 
 void EndoscopicView::clear() {
@@ -439,6 +505,7 @@ void EndoscopicView::clear() {
     d.actor->VisibilityOff();
     d.mapper->SetInputData(nullptr);
     d.surface = nullptr;
+    d.innerSurface = nullptr;
     d.source = {};
     d.sourceIndex.clear();
     d.triangles.clear();
@@ -463,9 +530,12 @@ void EndoscopicView::setPoints(const std::vector<Vec3>& pointsMm) {
     Impl& d = *m_impl;
     if (!d.surface || pointsMm.size() != pointCount())
         return;
-    vtkPoints* points = d.surface->GetPoints();
+    // While the outer surface is hidden only the inner faces' points move (a prefix of the drawn points): the others
+    // are not drawn, and setOuterSurfaceVisible(true) wants the next setPoints before the next render.
+    const std::size_t n = d.pointsInUse();
+    vtkPoints* points = d.active()->GetPoints();
     auto* xyz = static_cast<float*>(points->GetVoidPointer(0));
-    for (std::size_t i = 0; i < d.drawnPoints.size(); ++i) {
+    for (std::size_t i = 0; i < n; ++i) {
         const Vec3& p = pointsMm[d.sourceIndex.empty() ? i : d.sourceIndex[i]];
         d.drawnPoints[i] = p;
         xyz[3 * i] = static_cast<float>(p.x);
@@ -475,26 +545,28 @@ void EndoscopicView::setPoints(const std::vector<Vec3>& pointsMm) {
     points->Modified();
     // The deformation turns each normal by what it turns the normal recomputed from the points; the stored normals
     // stay smooth across the texture's seams (where recomputed ones would show the split).
-    faceNormals(d.triangles, d.drawnPoints, d.scratch);
-    for (std::size_t i = 0; i < d.scratch.size(); ++i) {
-        const Vec3 n = d.storedNormals[i] + (d.scratch[i] - d.restNormals[i]);
-        const double length = norm(n);
-        d.scratch[i] = length > 0.0 ? n / length : d.storedNormals[i];
+    faceNormals(d.triangles, d.drawnPoints, d.scratch, d.trianglesInUse(), n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec3 v = d.storedNormals[i] + (d.scratch[i] - d.restNormals[i]);
+        const double length = norm(v);
+        d.scratch[i] = length > 0.0 ? v / length : d.storedNormals[i];
     }
-    d.setNormals(d.scratch);
+    d.setNormals(d.scratch, n);
 }
-void EndoscopicView::Impl::setNormals(const std::vector<Vec3>& normals) {
-    vtkDataArray* existing = surface->GetPointData()->GetNormals();
+void EndoscopicView::Impl::setNormals(const std::vector<Vec3>& normals, std::size_t count) {
+    vtkPolyData* target = active();
+    vtkDataArray* existing = target->GetPointData()->GetNormals();
     vtkSmartPointer<vtkFloatArray> array = vtkFloatArray::SafeDownCast(existing);
-    if (!array || array->GetNumberOfTuples() != static_cast<vtkIdType>(normals.size())) {
+    const vtkIdType all = target->GetNumberOfPoints();
+    if (!array || array->GetNumberOfTuples() != all) {
         array = vtkSmartPointer<vtkFloatArray>::New();
         array->SetName("normals");
         array->SetNumberOfComponents(3);
-        array->SetNumberOfTuples(static_cast<vtkIdType>(normals.size()));
-        surface->GetPointData()->SetNormals(array);
+        array->SetNumberOfTuples(all);
+        target->GetPointData()->SetNormals(array);
     }
     float* n = array->GetPointer(0);
-    for (std::size_t i = 0; i < normals.size(); ++i) {
+    for (std::size_t i = 0; i < count; ++i) {
         n[3 * i] = static_cast<float>(normals[i].x);
         n[3 * i + 1] = static_cast<float>(normals[i].y);
         n[3 * i + 2] = static_cast<float>(normals[i].z);

@@ -15,6 +15,7 @@
 #include <QMainWindow>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 class QActionGroup;
@@ -97,6 +98,10 @@ private:
     std::vector<Vec3> m_visualPoints;
     sim::WorldState m_drawn;
     int m_framesDrawn = 0;
+    QElapsedTimer m_hudClock;     ///< since the heads-up text was last set
+    std::string m_hudWarning;     ///< its warning line then
+    QElapsedTimer m_sessionClock; ///< since the session started: its mean frame rate, logged when the samples end
+    int m_sessionFrames = 0;
     QElapsedTimer m_fpsClock;
     int m_fpsFrames = 0;
     double m_fps = 0.0;

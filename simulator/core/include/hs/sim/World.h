@@ -117,6 +117,10 @@ public:
     std::shared_ptr<const HapticFrame> hapticFrame() const;
     /// The visual surface's points for a state of the simulation mesh (its barycentric embedding); thread-safe.
     void visualPoints(const std::vector<Vec3>& simulationPointsMm, std::vector<Vec3>& out) const;
+    /// The same for the points `only` (indices into the visual surface; empty: all): `out` has every point, those
+    /// not in `only` are left as they were (zero when `out` grows).
+    void visualPoints(const std::vector<Vec3>& simulationPointsMm, std::vector<Vec3>& out,
+                      const std::vector<std::int32_t>& only) const;
 
     const TrialMetrics& metrics() const;
     /// The report of the trial so far (with the header the trial would record).

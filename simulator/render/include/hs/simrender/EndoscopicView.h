@@ -94,6 +94,10 @@ public:
     /// hidden behind the wall, and leaving it out halves the triangles to draw; the simulator shows it while the tip
     /// is outside the external os or has perforated the wall. Default: drawn.
     void setOuterSurfaceVisible(bool visible);
+    /// The points of the visual surface setPoints reads now (indices into it; empty: every point): the ones drawn,
+    /// of the inner faces alone while the outer surface is hidden. A caller that computes the deformed points may
+    /// compute just these (sim::World::visualPoints); the others may be left as they were.
+    const std::vector<std::int32_t>& sourcePointsInUse() const;
     /// Turbidity 0 (clear) .. 1 (opaque); red-out 0 .. 1 (FluidState).
     void setFluid(double turbidity, double redOut);
     void setHud(const HudText& text);
