@@ -192,6 +192,91 @@ Status checkAppendedHeader(const std::string& path, std::string_view text, std::
     return {};
 }
 
+/// The innermost of the sections a data array can stand in that is open at `pos` ("" for none).
+std::string_view sectionAt(std::string_view xml, std::size_t pos) {
+    std::string_view best;
+    std::size_t bestOpen = 0;
+    for (const std::string_view name :
+         {"PointData", "CellData", "Points", "Cells", "Verts", "Lines", "Strips", "Polys"}) {
+        const std::string open = "<" + std::string(name), close = "</" + std::string(name);
+        std::size_t at = xml.rfind(open, pos);
+        // "<Points" must not match "<PointsX": the name ends the tag's name.
+        while (at != std::string_view::npos && at + open.size() < xml.size() &&
+               std::isalnum(static_cast<unsigned char>(xml[at + open.size()])))
+            at = at == 0 ? std::string_view::npos : xml.rfind(open, at - 1);
+        if (at == std::string_view::npos)
+            continue;
+        const std::size_t closed = xml.rfind(close, pos);
+        if ((closed == std::string_view::npos || closed < at) && (best.empty() || at > bestOpen)) {
+            best = name;
+            bestOpen = at;
+        }
+    }
+    return best;
+}
+
+/// An ASCII data array: every value a number (an integer for integer types, a cell type 0-255 for "types"), and at
+/// least as many as its piece needs (points or cells times components, one offset or type per cell). VTK 9.1 fails
+/// on fewer or unreadable values, and on some of those paths leaks the piece's arrays or reads through a null
+/// pointer (vtkXMLDataReader::ReadPieceData on an unreadable cell data value).
+Status checkAsciiArray(const std::string& path, std::string_view xml, std::size_t pos, std::string_view tag,
+                       std::size_t tagEnd) {
+    const std::size_t piece = xml.rfind("<Piece", pos);
+    const std::string_view pieceTag =
+        piece == std::string_view::npos ? std::string_view() : xml.substr(piece, xml.find('>', piece) - piece);
+    const auto count = [&](std::string_view name) {
+        std::int64_t n = 0;
+        return parseInt(attribute(pieceTag, name), n) && n > 0 ? n : std::int64_t{0};
+    };
+    const std::int64_t points = count("NumberOfPoints");
+    const std::int64_t verts = count("NumberOfVerts"), lines = count("NumberOfLines"), strips = count("NumberOfStrips"),
+                       polys = count("NumberOfPolys");
+    const std::int64_t cells = count("NumberOfCells") + verts + lines + strips + polys;
+    std::int64_t components = 1;
+    if (!parseInt(attribute(tag, "NumberOfComponents"), components) || components < 1)
+        components = 1;
+    const std::string_view section = sectionAt(xml, pos);
+    const std::string_view name = attribute(tag, "Name");
+    std::int64_t needed = 0;
+    if (section == "Points" || section == "PointData")
+        needed = points * components;
+    else if (section == "CellData")
+        needed = cells * components;
+    else if (name == "types")
+        needed = cells;
+    else if (name == "offsets")
+        needed = section == "Verts"    ? verts
+                 : section == "Lines"  ? lines
+                 : section == "Strips" ? strips
+                 : section == "Polys"  ? polys
+                                       : cells;
+    const bool integer = integerTypeSize(attribute(tag, "type")) != 0;
+    // The values are the element's text up to its end or its first child (VTK writes InformationKey elements after
+    // the values of a points array).
+    const std::size_t end = xml.find('<', tagEnd + 1);
+    TokenReader values(path, xml.substr(tagEnd + 1, end == std::string_view::npos ? 0 : end - tagEnd - 1), 0);
+    const std::string what = "the ASCII array \"" + std::string(name) + "\"";
+    std::int64_t read = 0;
+    while (!values.atEnd()) {
+        std::int64_t n = 0;
+        double x = 0.0;
+        const bool ok = name == "types" ? values.integerIn(n, 0, 255, "cell type")
+                        : integer       ? values.integer(n, "value")
+                                        : values.real(x, "value");
+        if (!ok)
+            return fileError(ErrorCode::InvalidInput, path,
+                             what + " holds a value that is not " +
+                                 (name == "types" ? "a cell type (0-255)"
+                                  : integer       ? "an integer"
+                                                  : "a finite number"));
+        ++read;
+    }
+    if (read < needed)
+        return fileError(ErrorCode::InvalidInput, path,
+                         what + " has " + std::to_string(read) + " values; its piece needs " + std::to_string(needed));
+    return {};
+}
+
 /// VTK sizes each connectivity array by the last value of its "offsets" array, which is data, not a header
 /// attribute. Checks every offset of uncompressed ASCII and raw appended offsets arrays against what the file can
 /// hold (one byte per connectivity entry at least); compressed or base64 data is left to VTK and the limits.
@@ -231,28 +316,8 @@ Status checkOffsetsArrays(const std::string& path, std::string_view text, std::s
         if (attribute(tag, "format") == "appended")
             HS_TRY(checkAppendedHeader(path, text, tag, appendedStart, rawAppended, headerSize, bigEndian, compressed,
                                        capacity));
-        if (attribute(tag, "Name") == "types" && attribute(tag, "format") == "ascii") {
-            // VTK 9.1 leaks the cell types array of a piece whose ASCII types it cannot read: every value must be a
-            // cell type (0-255), one for each of the piece's cells, before VTK sees them.
-            const std::size_t piece = xml.rfind("<Piece", pos);
-            std::int64_t cells = 0;
-            if (piece != std::string_view::npos)
-                (void)parseInt(attribute(xml.substr(piece, xml.find('>', piece) - piece), "NumberOfCells"), cells);
-            const std::size_t end = xml.find("</DataArray>", tagEnd);
-            TokenReader values(path, xml.substr(tagEnd + 1, end == std::string_view::npos ? 0 : end - tagEnd - 1), 0);
-            std::int64_t value = 0, count = 0;
-            while (!values.atEnd()) {
-                if (!values.integerIn(value, 0, 255, "cell type"))
-                    return fileError(ErrorCode::InvalidInput, path,
-                                     "a \"types\" array holds a value that is not a cell type (0-255)");
-                ++count;
-            }
-            if (count < cells)
-                return fileError(ErrorCode::InvalidInput, path,
-                                 "a \"types\" array has " + std::to_string(count) + " values for " +
-                                     std::to_string(cells) + " cells");
-            continue;
-        }
+        if (attribute(tag, "format") == "ascii")
+            HS_TRY(checkAsciiArray(path, xml, pos, tag, tagEnd));
         if (attribute(tag, "Name") != "offsets")
             continue;
         const std::size_t valueSize = integerTypeSize(attribute(tag, "type"));

@@ -326,6 +326,19 @@ std::vector<HostileCase> hostileCases() {
          ErrorCode::InvalidInput, "99"},
         {"vtuNegativeIndex", ".vtu", vtu("NumberOfPoints=\"4\" NumberOfCells=\"1\"", kTetPoints, "0 -1 2 3"),
          ErrorCode::InvalidInput, ""},
+        // ASCII arrays VTK cannot read (it fails, and on some paths leaks or reads through a null pointer).
+        {"vtuPointNotANumber", ".vtu",
+         vtu("NumberOfPoints=\"4\" NumberOfCells=\"1\"", "0 0 0 1 0 0 0 x 0 0 0 1", "0 1 2 3"), ErrorCode::InvalidInput,
+         "finite number"},
+        {"vtuTooFewPoints", ".vtu", vtu("NumberOfPoints=\"5\" NumberOfCells=\"1\"", kTetPoints, "0 1 2 3"),
+         ErrorCode::InvalidInput, "needs 15"},
+        {"vtuAppendedDataWithoutUnderscore", ".vtu",
+         "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+         "header_type=\"UInt64\">\n<UnstructuredGrid>\n<Piece NumberOfPoints=\"1\" NumberOfCells=\"0\">\n<Points>\n"
+         "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"appended\" offset=\"0\"/>\n</Points>\n"
+         "</Piece>\n</UnstructuredGrid>\n<AppendedData encoding=\"raw\">\n\bx_" +
+             std::string(32, '\0') + "\n</AppendedData>\n</VTKFile>\n",
+         ErrorCode::InvalidInput, "'_'"},
         // Wrong kinds of file.
         {"vtuHoldsPolyData", ".vtu", "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\"></VTKFile>\n",
          ErrorCode::InvalidInput, "UnstructuredGrid"},
