@@ -106,7 +106,14 @@ run_harness() {
         asan_options="fast_unwind_on_malloc=0${asan_options:+:$asan_options}"
         args+=(-detect_leaks=0)
         ;;
-    mesh_vtp | mesh_vtu | package_folder | package_zip | shape_model)
+    shape_model)
+        # HDF5 sizes its metadata cache entries by the file and answers a failed allocation with an error: malloc
+        # returns null for an impossible size here as it does outside ASan (a null then dereferenced still stops the
+        # run). Input: shape_model/huge-metadata-cache-entry.
+        asan_options="allocator_may_return_null=1${asan_options:+:$asan_options}"
+        args+=(-detect_leaks=0)
+        ;;
+    mesh_vtp | mesh_vtu | package_folder | package_zip)
         args+=(-detect_leaks=0)
         ;;
     esac
