@@ -385,11 +385,21 @@ Status readOurs(const Reader& r, ShapeModel::Data& d) {
             return l.failure();
         HS_TRY(expectDims(r.path, "/hysteroscene/template/layout", dims, {6}));
         const auto& v = *l;
-        TemplateLayout layout{v[0], v[1], v[2], v[3], v[4], v[5]};
-        if (layout.around < 4 || layout.around > 100000 ||
-            layout.vertexCount() != static_cast<int>(d.reference.points.size()) ||
-            layout.faceCount() != static_cast<int>(d.reference.triangles.size()))
+        // Each count in range first; the totals in 64 bits (the counts are the file's: their sum may not fit an int).
+        std::int64_t rings = 0;
+        for (std::size_t i = 0; i < 6; ++i) {
+            if (v[i] < 1 || v[i] > 100000)
+                return fail(ErrorCode::InvalidInput, r.path + ": /hysteroscene/template/layout value " +
+                                                         std::to_string(i) + " is " + std::to_string(v[i]) +
+                                                         ", outside 1-100000");
+            if (i > 0)
+                rings += v[i];
+        }
+        const std::int64_t around = v[0];
+        if (around < 4 || 2 + rings * around != static_cast<std::int64_t>(d.reference.points.size()) ||
+            2 * around * rings != static_cast<std::int64_t>(d.reference.triangles.size()))
             return fail(ErrorCode::InvalidInput, r.path + ": /hysteroscene/template/layout does not match the mesh");
+        const TemplateLayout layout{v[0], v[1], v[2], v[3], v[4], v[5]};
         d.layout = layout;
     }
     const std::string tissue = std::string("/hysteroscene/template/faceLabels/") + clinical::kSurfaceTissueLabel;
