@@ -3,6 +3,7 @@
 // and the picture (lit tissue in the middle, black outside the optic's circle) at either detail.
 
 #include "hs/simrender/EndoscopicView.h"
+#include "TestSpheres.h"
 #include "hs/clinical/Tissue.h"
 #include "hs/simrender/ViewDecimation.h"
 
@@ -22,32 +23,10 @@
 namespace hs::simrender {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 /// A closed sphere of radius 20 mm around the origin, as a visual surface without maps.
 scene::VisualSurface sphere() {
     scene::VisualSurface surface;
-    SurfaceMesh& mesh = surface.mesh;
-    const int rings = 30, segments = 60;
-    const double radius = 20.0;
-    mesh.points.push_back({0, 0, radius});
-    for (int r = 1; r <= rings; ++r)
-        for (int s = 0; s < segments; ++s) {
-            const double theta = kPi * r / (rings + 1), phi = 2.0 * kPi * s / segments;
-            mesh.points.push_back({radius * std::sin(theta) * std::cos(phi), radius * std::sin(theta) * std::sin(phi),
-                                   radius * std::cos(theta)});
-        }
-    mesh.points.push_back({0, 0, -radius});
-    const auto at = [&](int r, int s) { return static_cast<std::int32_t>(1 + (r - 1) * segments + s % segments); };
-    const auto south = static_cast<std::int32_t>(mesh.points.size() - 1);
-    for (int s = 0; s < segments; ++s) {
-        mesh.triangles.push_back({0, at(1, s), at(1, s + 1)});
-        for (int r = 1; r < rings; ++r) {
-            mesh.triangles.push_back({at(r, s), at(r + 1, s), at(r + 1, s + 1)});
-            mesh.triangles.push_back({at(r, s), at(r + 1, s + 1), at(r, s + 1)});
-        }
-        mesh.triangles.push_back({at(rings, s), south, at(rings, s + 1)});
-    }
+    surface.mesh = test::latitudeSphere(30, 60, false);
     return surface;
 }
 

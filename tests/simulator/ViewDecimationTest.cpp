@@ -2,6 +2,7 @@
 // cut open as a texture's seam is (the points along it duplicated), and the recognition of software GL renderers.
 
 #include "hs/simrender/ViewDecimation.h"
+#include "TestSpheres.h"
 
 #include <gtest/gtest.h>
 
@@ -13,34 +14,8 @@
 namespace hs::simrender {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-/// A sphere of radius 20 mm: `rings` latitude rings of `segments` + 1 points (the first and last of a ring coincide:
-/// the seam), one point at each pole. Outward triangles.
 SurfaceMesh seamedSphere(int rings = 24, int segments = 48) {
-    SurfaceMesh mesh;
-    const double radius = 20.0;
-    mesh.points.push_back({0, 0, radius});
-    for (int r = 1; r <= rings; ++r) {
-        const double theta = kPi * r / (rings + 1);
-        for (int s = 0; s <= segments; ++s) {
-            const double phi = 2.0 * kPi * s / segments;
-            mesh.points.push_back({radius * std::sin(theta) * std::cos(phi), radius * std::sin(theta) * std::sin(phi),
-                                   radius * std::cos(theta)});
-        }
-    }
-    mesh.points.push_back({0, 0, -radius});
-    const auto at = [&](int r, int s) { return static_cast<std::int32_t>(1 + (r - 1) * (segments + 1) + s); };
-    const auto south = static_cast<std::int32_t>(mesh.points.size() - 1);
-    for (int s = 0; s < segments; ++s) {
-        mesh.triangles.push_back({0, at(1, s), at(1, s + 1)});
-        for (int r = 1; r < rings; ++r) {
-            mesh.triangles.push_back({at(r, s), at(r + 1, s), at(r + 1, s + 1)});
-            mesh.triangles.push_back({at(r, s), at(r + 1, s + 1), at(r, s + 1)});
-        }
-        mesh.triangles.push_back({at(rings, s), south, at(rings, s + 1)});
-    }
-    return mesh;
+    return test::latitudeSphere(rings, segments, true);
 }
 
 using Edge = std::pair<std::size_t, std::size_t>;
