@@ -7,7 +7,9 @@
 // and ours under /hysteroscene: conditioning (regression, residual covariance, feature names, patient ranges),
 // template layout and face labels, pose prior, metadata.
 #include "hs/anatomy/ShapeModel.h"
+#include "hs/io/AtomicFile.h"
 
+#include "Hdf5Image.h"
 #include "ShapeModelData.h"
 
 #include <hdf5.h>
@@ -15,6 +17,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 
 namespace hs::anatomy {
@@ -26,6 +29,7 @@ constexpr hsize_t kMaxValues = 200'000'000; ///< refuse datasets above this many
 /// A dataset's values may take at most this many times the bytes it stores (deflate's largest ratio is 1032:1): a
 /// count is checked against what the file holds before anything is allocated by it.
 constexpr hsize_t kMaxInflation = 1032;
+constexpr std::int64_t kMaxFileBytes = std::int64_t{1} << 30; ///< a shape model file larger than 1 GiB is refused
 
 /// Silences HDF5's error printing for the lifetime of the object (we report errors ourselves).
 class QuietErrors {
@@ -201,11 +205,17 @@ void writeOurs(Writer& w, const ShapeModel::Data& d) {
             w.dataset("/hysteroscene/template/faceLabels/" + name, H5T_NATIVE_INT32, {values.size()}, values.data());
 }
 
+/// Reads datasets from an open file. A failed lookup is not taken for an absent object: once HDF5 has reported an
+/// error on the file, the file is `damaged` and the reader calls HDF5 no more (HDF5 1.10 may leave its metadata
+/// cache broken after a failed allocation, and the next call on the file then writes through a null pointer).
 struct Reader {
     hid_t file;
     std::string path;
+    mutable std::optional<std::string> damaged; ///< what failed first, once HDF5 has failed on the file
 
     bool exists(const std::string& object) const {
+        if (damaged)
+            return false;
         std::string prefix;
         std::stringstream parts(object);
         std::string part;
@@ -213,7 +223,10 @@ struct Reader {
             if (part.empty())
                 continue;
             prefix += "/" + part;
-            if (H5Lexists(file, prefix.c_str(), H5P_DEFAULT) <= 0)
+            const htri_t found = H5Lexists(file, prefix.c_str(), H5P_DEFAULT);
+            if (found < 0)
+                damaged = path + ": cannot look up " + prefix + " (a damaged HDF5 file)";
+            if (found <= 0)
                 return false;
         }
         return true;
@@ -222,12 +235,14 @@ struct Reader {
     template <class T>
     Result<std::vector<T>> read(const std::string& object, hid_t type, std::vector<hsize_t>& dims) const {
         if (!exists(object))
-            return fail(ErrorCode::InvalidInput, path + ": missing dataset " + object);
+            return fail(ErrorCode::InvalidInput, damaged ? *damaged : path + ": missing dataset " + object);
         Handle set(H5Dopen2(file, object.c_str(), H5P_DEFAULT), H5Dclose);
         Handle space(H5Dget_space(set.get()), H5Sclose);
         const int rank = H5Sget_simple_extent_ndims(space.get());
-        if (!set.valid() || rank < 0 || rank > 2)
-            return fail(ErrorCode::InvalidInput, path + ": dataset " + object + " is not a vector or matrix");
+        if (!set.valid() || rank < 0 || rank > 2) {
+            damaged = path + ": dataset " + object + " is not a vector or matrix";
+            return fail(ErrorCode::InvalidInput, *damaged);
+        }
         dims.assign(static_cast<std::size_t>(rank), 0);
         H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
         hsize_t total = 1;
@@ -247,8 +262,10 @@ struct Reader {
                                                      std::to_string(fileBytes) + "-byte file (at most " +
                                                      std::to_string(kMaxInflation) + " values a stored value)");
         std::vector<T> values(static_cast<std::size_t>(total));
-        if (H5Dread(set.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
-            return fail(ErrorCode::InvalidInput, path + ": cannot read dataset " + object);
+        if (H5Dread(set.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0) {
+            damaged = path + ": cannot read dataset " + object;
+            return fail(ErrorCode::InvalidInput, *damaged);
+        }
         return values;
     }
 };
@@ -449,11 +466,16 @@ Result<ShapeModel> readShapeModelFile(hid_t file, const std::string& name) {
     const auto named = [&name](const Error& e) {
         return fail(e.code, e.detail.find(name) == std::string::npos ? name + ": " + e.detail : e.detail);
     };
-    const Reader reader{file, name};
+    const Reader reader{file, name, std::nullopt};
     auto data = readModel(reader);
+    if (reader.damaged)
+        return fail(ErrorCode::InvalidInput, *reader.damaged);
     if (!data)
         return named(data.error());
-    if (Status ours = readOurs(reader, **data); !ours.ok())
+    Status ours = readOurs(reader, **data);
+    if (reader.damaged)
+        return fail(ErrorCode::InvalidInput, *reader.damaged);
+    if (!ours.ok())
         return named(ours.error());
     return ShapeModel(std::shared_ptr<const ShapeModel::Data>(std::move(data).value()));
 }
@@ -464,24 +486,21 @@ Result<ShapeModel> loadShapeModel(const std::string& path) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
         return fail(ErrorCode::NotFound, "shape model file " + path + " does not exist");
-    const QuietErrors quiet;
-    if (H5Fis_hdf5(path.c_str()) <= 0)
-        return fail(ErrorCode::InvalidInput, path + " is not an HDF5 file");
-    Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-    if (!file.valid())
-        return fail(ErrorCode::IoError, "cannot open " + path);
-    return readShapeModelFile(file.get(), path);
+    // Read whole (the models are megabytes), then through the same in-memory driver as an image.
+    auto bytes = io::readFile(path, kMaxFileBytes);
+    if (!bytes)
+        return bytes.failure();
+    return loadShapeModelImage(bytes->data(), bytes->size(), path);
 }
 
 Result<ShapeModel> loadShapeModelImage(const void* bytes, std::size_t size, const std::string& name) {
     const QuietErrors quiet;
     if (!bytes || size == 0)
         return fail(ErrorCode::InvalidInput, name + " is empty, not an HDF5 file");
-    // The core driver reads the image in memory (no backing store); H5LT_FILE_IMAGE_DONT_COPY is not used, so HDF5
-    // copies it and never writes to the caller's bytes.
-    Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
-    if (!fapl.valid() || H5Pset_fapl_core(fapl.get(), 64 * 1024, 0) < 0 ||
-        H5Pset_file_image(fapl.get(), const_cast<void*>(bytes), size) < 0)
+    // HDF5 reads the bytes through the project's read-only driver (detail::hdf5ImageAccess): never written, never
+    // copied, and no metadata accumulator, whose HDF5 1.10 code crashes on some damaged files.
+    Handle fapl(detail::hdf5ImageAccess(bytes, size), H5Pclose);
+    if (!fapl.valid())
         return fail(ErrorCode::BackendFailure, name + ": HDF5 cannot take the file image");
     Handle file(H5Fopen(name.c_str(), H5F_ACC_RDONLY, fapl.get()), H5Fclose);
     if (!file.valid())
