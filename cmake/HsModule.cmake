@@ -45,7 +45,8 @@ function(hs_gtest)
         set(T_LABELS unit)
     endif()
     add_test(NAME ${T_NAME} COMMAND ${T_NAME})
-    set_tests_properties(${T_NAME} PROPERTIES LABELS "${T_LABELS}" TIMEOUT 600
+    math(EXPR timeout "600 * ${HS_TEST_TIMEOUT_SCALE}")
+    set_tests_properties(${T_NAME} PROPERTIES LABELS "${T_LABELS}" TIMEOUT ${timeout}
         ENVIRONMENT "HS_SHARED_DATA_DIR=${HS_SHARED_DATA_DIR};HS_TEST_DATA_DIR=${PROJECT_SOURCE_DIR}/tests/data")
 endfunction()
 
