@@ -1,6 +1,7 @@
 // A read-only HDF5 file driver over bytes in memory (see Hdf5Image.h for why the project has its own).
 #include "Hdf5Image.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -137,7 +138,73 @@ hid_t imageDriver() {
     return id;
 }
 
+/// `width` bytes (2, 4 or 8) at `at` as an unsigned little-endian number; bytes past the image read as zero, as the
+/// driver reads them.
+std::uint64_t decode(const ImageInfo& image, std::uint64_t at, int width) {
+    std::uint64_t value = 0;
+    for (int i = width - 1; i >= 0; --i) {
+        const std::uint64_t byte = at + static_cast<std::uint64_t>(i);
+        value = (value << 8) | (byte >= at && byte < image.size ? image.bytes[byte] : 0u);
+    }
+    return value;
+}
+
+constexpr std::uint8_t kSuperblockSignature[8] = {0x89, 'H', 'D', 'F', '\r', '\n', 0x1a, '\n'};
+constexpr std::uint64_t kFreeListEnd = 1; ///< HDF5's H5HL_FREE_NULL
+
 } // namespace
+
+std::string findHdf5ImageDamage(const void* bytes, std::size_t size) {
+    const ImageInfo image{static_cast<const std::uint8_t*>(bytes), size};
+    if (!bytes || size == 0)
+        return {};
+    // The superblock, where HDF5 looks for it: at 0, 512, 1024, 2048, ... Its place is the base of every address.
+    std::uint64_t base = 0;
+    bool found = false;
+    for (std::uint64_t at = 0; at + sizeof kSuperblockSignature <= size; at = at ? at * 2 : 512)
+        if (std::memcmp(image.bytes + at, kSuperblockSignature, sizeof kSuperblockSignature) == 0) {
+            base = at;
+            found = true;
+            break;
+        }
+    if (!found || base + 16 > size)
+        return {}; // HDF5 refuses it by itself
+    const std::uint8_t version = image.bytes[base + 8];
+    const int addressBytes = version < 2 ? image.bytes[base + 13] : image.bytes[base + 9];
+    const int lengthBytes = version < 2 ? image.bytes[base + 14] : image.bytes[base + 10];
+    const auto supported = [](int n) { return n == 2 || n == 4 || n == 8; };
+    if (!supported(addressBytes) || !supported(lengthBytes))
+        return "the superblock gives " + std::to_string(addressBytes) + "-byte addresses and " +
+               std::to_string(lengthBytes) + "-byte lengths (2, 4 or 8 bytes are read)";
+
+    // Every local heap prefix: "HEAP", version 0, 3 reserved bytes, data size, free list head, data address.
+    const std::uint8_t heapSignature[4] = {'H', 'E', 'A', 'P'};
+    const std::uint8_t* end = image.bytes + size;
+    std::uint64_t steps = 0; // over all heaps' free lists
+    for (const std::uint8_t* p = image.bytes; (p = std::search(p, end, heapSignature, heapSignature + 4)) != end; ++p) {
+        const auto at = static_cast<std::uint64_t>(p - image.bytes);
+        if (at + 8 > size || p[4] != 0)
+            continue; // HDF5 refuses another version
+        const std::uint64_t dataSize = decode(image, at + 8, lengthBytes);
+        std::uint64_t block = decode(image, at + 8 + static_cast<std::uint64_t>(lengthBytes), lengthBytes);
+        const std::uint64_t data =
+            decode(image, at + 8 + 2 * static_cast<std::uint64_t>(lengthBytes), addressBytes) + base;
+        // As H5HL__fl_deserialize: stop (HDF5 stops with an error) at an offset outside the data, a next offset of 0
+        // or a block past the data's end. HDF5 writes free blocks apart, each at least two lengths long, so the
+        // lists of all heaps together have fewer steps than the image has bytes; more means one came back on itself.
+        while (block != kFreeListEnd && block < dataSize) {
+            if (++steps > size)
+                return "the local heap at byte " + std::to_string(at) + " has a free list that comes back on itself";
+            const std::uint64_t next = decode(image, data + block, lengthBytes);
+            const std::uint64_t length =
+                decode(image, data + block + static_cast<std::uint64_t>(lengthBytes), lengthBytes);
+            if (next == 0 || length > dataSize - block)
+                break;
+            block = next;
+        }
+    }
+    return {};
+}
 
 hid_t hdf5ImageAccess(const void* bytes, std::size_t size) {
     const hid_t driver = imageDriver();

@@ -499,6 +499,8 @@ Result<ShapeModel> loadShapeModelImage(const void* bytes, std::size_t size, cons
         return fail(ErrorCode::InvalidInput, name + " is empty, not an HDF5 file");
     // HDF5 reads the bytes through the project's read-only driver (detail::hdf5ImageAccess): never written, never
     // copied, and no metadata accumulator, whose HDF5 1.10 code crashes on some damaged files.
+    if (const std::string damage = detail::findHdf5ImageDamage(bytes, size); !damage.empty())
+        return fail(ErrorCode::InvalidInput, name + ": " + damage + " (a damaged HDF5 file)");
     Handle fapl(detail::hdf5ImageAccess(bytes, size), H5Pclose);
     if (!fapl.valid())
         return fail(ErrorCode::BackendFailure, name + ": HDF5 cannot take the file image");
