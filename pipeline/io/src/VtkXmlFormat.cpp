@@ -79,6 +79,65 @@ Status checkPointsArrays(const std::string& path, std::string_view xml) {
     return {};
 }
 
+/// The guard finds attributes as ` name="value"` (as VTK writes them). An XML parser also reads `name = 'value'`,
+/// attributes after tabs or line breaks, entities and DOCTYPE declarations; where the guard and VTK would read a tag
+/// differently, the guard would check other counts than VTK allocates by. So the markup before the appended data must
+/// be in VTK's own form: every start tag's attributes `name="value"` after spaces, no entity or DOCTYPE, comments only.
+Status checkMarkup(const std::string& path, std::string_view xml) {
+    if (xml.find('&') != std::string_view::npos)
+        return fileError(ErrorCode::InvalidInput, path, "the XML part holds an entity reference ('&'), not read");
+    const auto nameChar = [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == ':' || c == '.' || c == '-';
+    };
+    const auto bad = [&](std::size_t at) {
+        return fileError(ErrorCode::InvalidInput, path,
+                         "the tag at byte " + std::to_string(at) +
+                             " is not written as VTK writes tags (attributes name=\"value\", separated by spaces)");
+    };
+    for (std::size_t i = xml.find('<'); i != std::string_view::npos; i = xml.find('<', i + 1)) {
+        if (xml.compare(i, 4, "<!--") == 0) {
+            const std::size_t end = xml.find("-->", i + 4);
+            if (end == std::string_view::npos)
+                return bad(i);
+            i = end + 2;
+            continue;
+        }
+        if (i + 1 < xml.size() && xml[i + 1] == '!')
+            return fileError(ErrorCode::InvalidInput, path,
+                             "the XML part holds a declaration (<!DOCTYPE, <![CDATA[), not read");
+        if (i + 1 < xml.size() && (xml[i + 1] == '?' || xml[i + 1] == '/'))
+            continue; // the XML declaration, end tags
+        std::size_t j = i + 1;
+        while (j < xml.size() && nameChar(xml[j]))
+            ++j;
+        if (j == i + 1)
+            return bad(i);
+        for (;;) {
+            if (j >= xml.size())
+                return bad(i);
+            if (xml[j] == '>' || xml.compare(j, 2, "/>") == 0)
+                break;
+            if (xml[j] != ' ')
+                return bad(i);
+            while (j < xml.size() && xml[j] == ' ')
+                ++j;
+            if (j < xml.size() && (xml[j] == '>' || xml[j] == '/'))
+                continue;
+            const std::size_t name = j;
+            while (j < xml.size() && nameChar(xml[j]))
+                ++j;
+            if (j == name || xml.compare(j, 2, "=\"") != 0)
+                return bad(i);
+            const std::size_t close = xml.find('"', j + 2);
+            if (close == std::string_view::npos)
+                return bad(i);
+            j = close + 1;
+        }
+        i = j;
+    }
+    return {};
+}
+
 Status precheckXml(const std::string& path, std::string_view text, const char* dataType, const ReadLimits& limits) {
     const std::size_t root = text.find("<VTKFile");
     std::size_t lead = 0;
@@ -92,7 +151,11 @@ Status precheckXml(const std::string& path, std::string_view text, const char* d
         return fileError(ErrorCode::InvalidInput, path, std::string("not a VTK ") + dataType + " file");
 
     // Counts live in the XML part; appended binary data follows it.
-    const std::string_view xml = text.substr(0, text.find("<AppendedData"));
+    const std::size_t appendedTag = text.find("<AppendedData");
+    const std::string_view xml = text.substr(0, appendedTag);
+    HS_TRY(checkMarkup(path, xml));
+    if (appendedTag != std::string_view::npos)
+        HS_TRY(checkMarkup(path, text.substr(appendedTag, text.find('>', appendedTag) + 1 - appendedTag)));
     // Compressed data can expand; zlib and lz4 stay below ~1000:1, lzma below ~8000:1.
     const bool compressed = rootTag.find("compressor=") != std::string_view::npos;
     const std::int64_t capacity = static_cast<std::int64_t>(text.size()) * (compressed ? 8000 : 1);
@@ -313,6 +376,15 @@ Status checkOffsetsArrays(const std::string& path, std::string_view text, std::s
         if (tagEnd == std::string_view::npos)
             break;
         const std::string_view tag = xml.substr(pos, tagEnd - pos);
+        // VTK reads an array from the appended data when it has an offset attribute, whatever its format says, and
+        // inline as ASCII unless the format is "binary": the two must agree for the checks below to be VTK's reading.
+        const std::string_view arrayFormat = attribute(tag, "format");
+        const bool hasOffset = tag.find(" offset=\"") != std::string_view::npos;
+        if (hasOffset != (arrayFormat == "appended") ||
+            (arrayFormat != "appended" && arrayFormat != "ascii" && arrayFormat != "binary"))
+            return fileError(ErrorCode::InvalidInput, path,
+                             "a DataArray's format is \"" + std::string(arrayFormat) +
+                                 "\"; allowed: ascii, binary, or appended with an offset");
         if (attribute(tag, "format") == "appended")
             HS_TRY(checkAppendedHeader(path, text, tag, appendedStart, rawAppended, headerSize, bigEndian, compressed,
                                        capacity));

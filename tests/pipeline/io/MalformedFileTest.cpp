@@ -339,6 +339,26 @@ std::vector<HostileCase> hostileCases() {
          "</Piece>\n</UnstructuredGrid>\n<AppendedData encoding=\"raw\">\n\bx_" +
              std::string(32, '\0') + "\n</AppendedData>\n</VTKFile>\n",
          ErrorCode::InvalidInput, "'_'"},
+        // Where VTK would read a tag otherwise than the guard: an array with an offset but another format (VTK reads
+        // it from the appended data; found by fuzzing, VTK then asked for 4.8 TB), attributes VTK's XML parser reads
+        // but the guard would not see as written, entities.
+        {"vtuOffsetWithoutAppendedFormat", ".vtu",
+         "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+         "header_type=\"UInt64\">\n<UnstructuredGrid>\n<Piece NumberOfPoints=\"1\" NumberOfCells=\"0\">\n<Points>\n"
+         "<DataArray type=\"Float64\" NumberOfComponents=\"3\" f0rmat=\"appended\" offset=\"0\"/>\n</Points>\n"
+         "</Piece>\n</UnstructuredGrid>\n<AppendedData encoding=\"raw\">\n_" +
+             std::string(32, '\0') + "\n</AppendedData>\n</VTKFile>\n",
+         ErrorCode::InvalidInput, "allowed: ascii, binary, or appended with an offset"},
+        {"vtuSpacesAroundEquals", ".vtu",
+         vtu("NumberOfPoints = \"1000000000000\" NumberOfCells=\"1\"", kTetPoints, "0 1 2 3"), ErrorCode::InvalidInput,
+         "as VTK writes tags"},
+        {"vtuSingleQuotes", ".vtu", vtu("NumberOfPoints='1000000000000' NumberOfCells=\"1\"", kTetPoints, "0 1 2 3"),
+         ErrorCode::InvalidInput, "as VTK writes tags"},
+        {"vtuTabBeforeAttribute", ".vtu",
+         vtu("NumberOfCells=\"1\"\tNumberOfPoints=\"1000000000000\"", kTetPoints, "0 1 2 3"), ErrorCode::InvalidInput,
+         "as VTK writes tags"},
+        {"vtuEntity", ".vtu", vtu("NumberOfPoints=\"&#52;\" NumberOfCells=\"1\"", kTetPoints, "0 1 2 3"),
+         ErrorCode::InvalidInput, "entity"},
         // Wrong kinds of file.
         {"vtuHoldsPolyData", ".vtu", "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\"></VTKFile>\n",
          ErrorCode::InvalidInput, "UnstructuredGrid"},
