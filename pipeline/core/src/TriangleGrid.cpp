@@ -7,6 +7,20 @@
 
 namespace hs {
 
+namespace {
+
+/// floor(x) clamped to 0..last, for any double: NaN and values beyond int64's range (a file's 1e300 coordinates,
+/// whose areas overflow to infinity and cell sizes to NaN) are clamped before the cast, which would be undefined.
+std::int64_t clampedCell(double x, std::int64_t last) {
+    if (!(x > 0.0))
+        return 0;
+    if (x >= static_cast<double>(last))
+        return last;
+    return static_cast<std::int64_t>(std::floor(x));
+}
+
+} // namespace
+
 TriangleGrid::TriangleGrid(const SurfaceMesh& mesh, double cellSize, bool insideTests) : m_mesh(&mesh) {
     const Bounds b = bounds(mesh);
     const Vec3 size = b.size();
@@ -20,8 +34,11 @@ TriangleGrid::TriangleGrid(const SurfaceMesh& mesh, double cellSize, bool inside
         cellSize *= 1.25;
     m_cell = cellSize;
     m_origin = b.min;
-    for (int q = 0; q < 3; ++q)
-        m_dims[q] = std::max<std::int64_t>(1, static_cast<std::int64_t>(std::floor(size[q] / cellSize)) + 1);
+    for (int q = 0; q < 3; ++q) {
+        // Finite, the loop above bounds the cells; otherwise (infinite extent or cell size) one cell on that axis.
+        const double cells = size[q] / cellSize;
+        m_dims[q] = std::isfinite(cells) ? 1 + clampedCell(cells, std::int64_t{1} << 24) : 1;
+    }
     const auto cellCount = static_cast<std::size_t>(m_dims[0] * m_dims[1] * m_dims[2]);
 
     auto cellRange = [&](const Triangle& t, std::int64_t lo[3], std::int64_t hi[3]) {
@@ -31,10 +48,8 @@ TriangleGrid::TriangleGrid(const SurfaceMesh& mesh, double cellSize, bool inside
                 mn = std::min(mn, mesh.points[static_cast<std::size_t>(v)][q]);
                 mx = std::max(mx, mesh.points[static_cast<std::size_t>(v)][q]);
             }
-            lo[q] = std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor((mn - m_origin[q]) / m_cell)), 0,
-                                             m_dims[q] - 1);
-            hi[q] = std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor((mx - m_origin[q]) / m_cell)), 0,
-                                             m_dims[q] - 1);
+            lo[q] = clampedCell((mn - m_origin[q]) / m_cell, m_dims[q] - 1);
+            hi[q] = clampedCell((mx - m_origin[q]) / m_cell, m_dims[q] - 1);
         }
     };
     std::vector<std::uint32_t> counts(cellCount + 1, 0);
@@ -122,8 +137,7 @@ SurfaceHit TriangleGrid::closestWithin(const Vec3& p, double maxDistance2) const
         return best;
     std::int64_t c[3];
     for (int q = 0; q < 3; ++q)
-        c[q] = std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor((p[q] - m_origin[q]) / m_cell)), 0,
-                                        m_dims[q] - 1);
+        c[q] = clampedCell((p[q] - m_origin[q]) / m_cell, m_dims[q] - 1);
     const std::int64_t maxRing = std::max({m_dims[0], m_dims[1], m_dims[2]});
     for (std::int64_t ring = 0; ring <= maxRing; ++ring) {
         // Every point in ring r+1 or further is at least r * cell away from p's cell boundary.

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 using namespace hs;
 using namespace hs::meshing;
@@ -96,6 +97,24 @@ TEST(TriangleGrid, BoundedSearchFindsTheClosestTriangleOrNothingWithinTheBound) 
         EXPECT_LT(grid.closestWithin(p, brute * 0.99).triangle, 0);
         EXPECT_LE(grid.boxDistance2(p), brute);
     }
+}
+
+TEST(TriangleGrid, CoordinatesNearTheLimitsOfDoubleGiveOneCellNotUndefinedCasts) {
+    // Found by fuzzing scene packages (UBSan): 1e300 mm coordinates, finite so a reader takes them, overflow the area
+    // to infinity and the cell size to NaN, and the cell indices were cast from NaN. Every index is now clamped
+    // before its cast (the sanitizer build checks there is no undefined cast); the grid is one cell and answers.
+    const SurfaceMesh sphere = test::icosphere(1e300, 2, {0.0, 0.0, 0.0});
+    const TriangleGrid grid(sphere);
+    for (const Vec3& p : {Vec3{0, 0, 0}, Vec3{2e300, 0, 0}, Vec3{-1e300, 1e299, 5},
+                          Vec3{std::numeric_limits<double>::quiet_NaN(), 0, 0}}) {
+        const SurfaceHit hit = grid.closest(p);
+        EXPECT_GE(hit.triangle, -1);
+        EXPECT_LT(hit.triangle, static_cast<std::int32_t>(sphere.triangles.size()));
+    }
+    // A grid of ordinary size is unchanged: the clamped index is floor's wherever floor fits.
+    const SurfaceMesh small = test::icosphere(3.0, 2, {1e6, 0.0, 0.0});
+    const TriangleGrid smallGrid(small);
+    EXPECT_NEAR(std::sqrt(smallGrid.closest({1e6 + 10.0, 0.0, 0.0}).closest.distance2), 7.0, 0.2);
 }
 
 TEST(QualityReport, MeasuresHausdorffAndVolumeAgainstTheReference) {
