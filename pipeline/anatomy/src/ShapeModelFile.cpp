@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <optional>
 #include <sstream>
+#include <type_traits>
 
 namespace hs::anatomy {
 
@@ -261,6 +262,19 @@ struct Reader {
                                                      " values but stores " + std::to_string(stored) + " bytes of a " +
                                                      std::to_string(fileBytes) + "-byte file (at most " +
                                                      std::to_string(kMaxInflation) + " values a stored value)");
+        // The values' type in the file: HDF5 converts each value through a buffer of the file type's size, so a
+        // forged 4 GB "float" would have it allocate gigabytes. Numbers of 1 to 8 bytes, of the class asked for.
+        Handle fileType(H5Dget_type(set.get()), H5Tclose);
+        const H5T_class_t wanted = std::is_floating_point_v<T> ? H5T_FLOAT : H5T_INTEGER;
+        const std::size_t typeBytes = fileType.valid() ? H5Tget_size(fileType.get()) : 0;
+        if (!fileType.valid() || H5Tget_class(fileType.get()) != wanted || typeBytes < 1 || typeBytes > 8)
+            return fail(ErrorCode::InvalidInput,
+                        path + ": dataset " + object + " holds values of " + std::to_string(typeBytes) + " bytes" +
+                            (fileType.valid() && H5Tget_class(fileType.get()) != wanted
+                                 ? std::string(", not ") + (wanted == H5T_FLOAT ? "floating-point" : "integer")
+                                 : std::string()) +
+                            " (allowed: " + (wanted == H5T_FLOAT ? "floating-point" : "integer") +
+                            " numbers of 1 to 8 bytes)");
         std::vector<T> values(static_cast<std::size_t>(total));
         if (H5Dread(set.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0) {
             damaged = path + ": cannot read dataset " + object;
