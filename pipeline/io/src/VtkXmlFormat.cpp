@@ -340,6 +340,51 @@ Status checkAsciiArray(const std::string& path, std::string_view xml, std::size_
     return {};
 }
 
+/// The cell types array of an unstructured grid's piece. VTK 9.1 leaks it when it cannot use it (another type than
+/// UInt8, fewer values than cells), so those are refused before VTK reads it: its type, its components, and for raw
+/// appended data the byte count its header declares (uncompressed, or the blocks' sizes when compressed).
+Status checkCellTypesArray(const std::string& path, std::string_view text, std::string_view xml, std::size_t pos,
+                           std::string_view tag, std::size_t appendedStart, bool rawAppended, std::size_t headerSize,
+                           bool bigEndian, bool compressed) {
+    const std::string_view components = attribute(tag, "NumberOfComponents");
+    if (attribute(tag, "type") != "UInt8" || !(components.empty() || components == "1"))
+        return fileError(ErrorCode::InvalidInput, path,
+                         "the cell types array must be UInt8 with one component (it is " +
+                             std::string(attribute(tag, "type")) + ")");
+    if (attribute(tag, "format") != "appended" || !rawAppended || appendedStart == std::string_view::npos)
+        return {};
+    const std::size_t piece = xml.rfind("<Piece", pos);
+    std::int64_t cells = 0;
+    if (piece == std::string_view::npos ||
+        !parseInt(attribute(xml.substr(piece, xml.find('>', piece) - piece), "NumberOfCells"), cells) || cells < 0)
+        return {};
+    std::int64_t offset = 0;
+    if (!parseInt(attribute(tag, "offset"), offset) || offset < 0)
+        return {};
+    const std::size_t start = appendedStart + static_cast<std::size_t>(offset);
+    if (start > text.size() || text.size() - start < 3 * headerSize)
+        return {}; // checkAppendedHeader names it
+    auto load = [&](std::size_t index) {
+        std::uint64_t value = 0;
+        for (std::size_t k = 0; k < headerSize; ++k) {
+            const auto byte =
+                static_cast<std::uint64_t>(static_cast<unsigned char>(text[start + index * headerSize + k]));
+            value |= byte << (8 * (bigEndian ? headerSize - 1 - k : k));
+        }
+        return value;
+    };
+    std::uint64_t bytes = load(0);
+    if (compressed) {
+        const std::uint64_t blocks = bytes, blockSize = load(1), lastBlock = load(2);
+        bytes = blocks == 0 ? 0 : (blocks - 1) * blockSize + (lastBlock == 0 ? blockSize : lastBlock);
+    }
+    if (bytes < static_cast<std::uint64_t>(cells))
+        return fileError(ErrorCode::InvalidInput, path,
+                         "the cell types array holds " + std::to_string(bytes) + " values; its piece has " +
+                             std::to_string(cells) + " cells");
+    return {};
+}
+
 /// VTK sizes each connectivity array by the last value of its "offsets" array, which is data, not a header
 /// attribute. Checks every offset of uncompressed ASCII and raw appended offsets arrays against what the file can
 /// hold (one byte per connectivity entry at least); compressed or base64 data is left to VTK and the limits.
@@ -390,6 +435,9 @@ Status checkOffsetsArrays(const std::string& path, std::string_view text, std::s
                                        capacity));
         if (attribute(tag, "format") == "ascii")
             HS_TRY(checkAsciiArray(path, xml, pos, tag, tagEnd));
+        if (attribute(tag, "Name") == "types" && sectionAt(xml, pos) == "Cells")
+            HS_TRY(checkCellTypesArray(path, text, xml, pos, tag, appendedStart, rawAppended, headerSize, bigEndian,
+                                       compressed));
         if (attribute(tag, "Name") != "offsets")
             continue;
         const std::size_t valueSize = integerTypeSize(attribute(tag, "type"));
