@@ -227,6 +227,16 @@ std::string vtu(const std::string& pieceAttributes, const std::string& points, c
            "</UnstructuredGrid>\n</VTKFile>\n";
 }
 
+/// One point in raw appended data: `format` is the points array's format attribute, `beforeUnderscore` what stands
+/// between the <AppendedData> tag and its '_'.
+std::string appendedPointsVtu(const std::string& format, const std::string& beforeUnderscore) {
+    return "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+           "header_type=\"UInt64\">\n<UnstructuredGrid>\n<Piece NumberOfPoints=\"1\" NumberOfCells=\"0\">\n<Points>\n"
+           "<DataArray type=\"Float64\" NumberOfComponents=\"3\" " +
+           format + " offset=\"0\"/>\n</Points>\n</Piece>\n</UnstructuredGrid>\n<AppendedData encoding=\"raw\">\n" +
+           beforeUnderscore + "_" + std::string(32, '\0') + "\n</AppendedData>\n</VTKFile>\n";
+}
+
 const std::string kTetPoints = "0 0 0 1 0 0 0 1 0 0 0 1";
 const std::string kPlyHead = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
                              "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
@@ -332,22 +342,12 @@ std::vector<HostileCase> hostileCases() {
          "finite number"},
         {"vtuTooFewPoints", ".vtu", vtu("NumberOfPoints=\"5\" NumberOfCells=\"1\"", kTetPoints, "0 1 2 3"),
          ErrorCode::InvalidInput, "needs 15"},
-        {"vtuAppendedDataWithoutUnderscore", ".vtu",
-         "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
-         "header_type=\"UInt64\">\n<UnstructuredGrid>\n<Piece NumberOfPoints=\"1\" NumberOfCells=\"0\">\n<Points>\n"
-         "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"appended\" offset=\"0\"/>\n</Points>\n"
-         "</Piece>\n</UnstructuredGrid>\n<AppendedData encoding=\"raw\">\n\bx_" +
-             std::string(32, '\0') + "\n</AppendedData>\n</VTKFile>\n",
+        {"vtuAppendedDataWithoutUnderscore", ".vtu", appendedPointsVtu("format=\"appended\"", "\bx"),
          ErrorCode::InvalidInput, "'_'"},
         // Where VTK would read a tag otherwise than the guard: an array with an offset but another format (VTK reads
         // it from the appended data; found by fuzzing, VTK then asked for 4.8 TB), attributes VTK's XML parser reads
         // but the guard would not see as written, entities.
-        {"vtuOffsetWithoutAppendedFormat", ".vtu",
-         "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
-         "header_type=\"UInt64\">\n<UnstructuredGrid>\n<Piece NumberOfPoints=\"1\" NumberOfCells=\"0\">\n<Points>\n"
-         "<DataArray type=\"Float64\" NumberOfComponents=\"3\" f0rmat=\"appended\" offset=\"0\"/>\n</Points>\n"
-         "</Piece>\n</UnstructuredGrid>\n<AppendedData encoding=\"raw\">\n_" +
-             std::string(32, '\0') + "\n</AppendedData>\n</VTKFile>\n",
+        {"vtuOffsetWithoutAppendedFormat", ".vtu", appendedPointsVtu("f0rmat=\"appended\"", ""),
          ErrorCode::InvalidInput, "allowed: ascii, binary, or appended with an offset"},
         {"vtuSpacesAroundEquals", ".vtu",
          vtu("NumberOfPoints = \"1000000000000\" NumberOfCells=\"1\"", kTetPoints, "0 1 2 3"), ErrorCode::InvalidInput,
