@@ -1,7 +1,9 @@
 #include "hs/core/SurfaceMesh.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
+#include <sstream>
 #include <unordered_map>
 
 namespace hs {
@@ -38,11 +40,22 @@ struct DisjointSets {
 
 } // namespace
 
-Status validate(const SurfaceMesh& mesh) {
-    for (std::size_t i = 0; i < mesh.points.size(); ++i) {
-        if (!isFinite(mesh.points[i]))
-            return fail(ErrorCode::InvalidInput, "vertex " + std::to_string(i) + " has a non-finite coordinate");
+Status checkCoordinates(const std::vector<Vec3>& points, const char* element) {
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        for (const double c : {points[i].x, points[i].y, points[i].z}) {
+            if (!(std::abs(c) <= kMaxCoordinate)) { // NaN fails this too
+                std::ostringstream out;
+                out << element << ' ' << i << " has coordinate " << c << ", allowed " << -kMaxCoordinate << ".."
+                    << kMaxCoordinate;
+                return fail(ErrorCode::InvalidInput, out.str());
+            }
+        }
     }
+    return {};
+}
+
+Status validate(const SurfaceMesh& mesh) {
+    HS_TRY(checkCoordinates(mesh.points, "vertex"));
     const auto n = static_cast<std::int64_t>(mesh.points.size());
     for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
         for (auto v : mesh.triangles[f]) {

@@ -54,10 +54,7 @@ std::vector<std::array<std::int32_t, 4>> tetNeighbours(const TetMesh& mesh) {
 }
 
 Status validate(const TetMesh& mesh) {
-    for (std::size_t i = 0; i < mesh.points.size(); ++i) {
-        if (!isFinite(mesh.points[i]))
-            return fail(ErrorCode::InvalidInput, "point " + std::to_string(i) + " has a non-finite coordinate");
-    }
+    HS_TRY(checkCoordinates(mesh.points, "point"));
     const auto n = static_cast<std::int64_t>(mesh.points.size());
     for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
         for (auto v : mesh.tets[t]) {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 namespace {
 
 /// Unit cube [0,1]^3, 12 outward triangles.
@@ -75,4 +77,20 @@ TEST(SurfaceMesh, ValidateNamesTheBadIndexAndTheBadCoordinate) {
     m = cube();
     m.faceLabels["region"] = {1, 2};
     EXPECT_FALSE(hs::validate(m).ok());
+}
+
+TEST(SurfaceMesh, ValidateRefusesFiniteCoordinatesBeyondTheLimitNamingTheRange) {
+    // 1e300 is finite, but its square is not: areas and grid cells computed from it would be inf or NaN.
+    for (const double bad : {1e300, -1e300, 2.0 * hs::kMaxCoordinate, std::numeric_limits<double>::max()}) {
+        auto m = cube();
+        m.points[5].z = bad;
+        const auto s = hs::validate(m);
+        ASSERT_FALSE(s.ok()) << bad;
+        EXPECT_EQ(s.error().code, hs::ErrorCode::InvalidInput);
+        EXPECT_NE(s.error().detail.find("vertex 5"), std::string::npos) << s.error().detail;
+        EXPECT_NE(s.error().detail.find("allowed -1e+09..1e+09"), std::string::npos) << s.error().detail;
+    }
+    auto m = cube();
+    m.points[5].z = -hs::kMaxCoordinate; // the limit itself is allowed
+    EXPECT_TRUE(hs::validate(m).ok());
 }

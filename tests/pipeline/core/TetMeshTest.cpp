@@ -55,6 +55,11 @@ TEST(TetMesh, ValidateRejectsOutOfRangeIndicesAndWrongRegionCount) {
     m = twoTets();
     m.regions.push_back(3);
     EXPECT_FALSE(hs::validate(m).ok());
+    m = twoTets();
+    m.points[2].x = 1e300; // finite, beyond kMaxCoordinate
+    const auto s = hs::validate(m);
+    ASSERT_FALSE(s.ok());
+    EXPECT_NE(s.error().detail.find("point 2 has coordinate 1e+300"), std::string::npos) << s.error().detail;
 }
 
 TEST(TetMesh, NeighboursAreTheTetsAcrossEachFaceAndMinusOneOnTheBoundary) {

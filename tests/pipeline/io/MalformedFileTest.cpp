@@ -300,6 +300,15 @@ std::vector<HostileCase> hostileCases() {
          ErrorCode::InvalidInput, "line 8"},
         {"vtuNan", ".vtu", vtu("NumberOfPoints=\"4\" NumberOfCells=\"1\"", "0 0 0 1 0 0 0 nan 0 0 0 1", "0 1 2 3"),
          ErrorCode::InvalidInput, ""},
+        // Finite coordinates beyond hs::kMaxCoordinate (1e9): their squares overflow.
+        {"objHugeCoordinate", ".obj", "v 0 0 0\nv 1e300 0 0\nv 0 1 0\nf 1 2 3\n", ErrorCode::InvalidInput,
+         "vertex 1 has coordinate 1e+300, allowed -1e+09..1e+09"},
+        {"meditHugeCoordinate", ".mesh",
+         kMeditHead + "Vertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 -2e9 0\nTetrahedra\n1\n1 2 3 4 1\nEnd\n",
+         ErrorCode::InvalidInput, "allowed -1e+09..1e+09"},
+        {"vtuHugeCoordinate", ".vtu",
+         vtu("NumberOfPoints=\"4\" NumberOfCells=\"1\"", "0 0 0 1 0 0 0 1e300 0 0 0 1", "0 1 2 3"),
+         ErrorCode::InvalidInput, "point 2 has coordinate 1e+300"},
         // Indices out of range.
         {"objIndexTooLarge", ".obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n", ErrorCode::InvalidInput, "line 4"},
         {"objIndexZero", ".obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", ErrorCode::InvalidInput, "line 4"},

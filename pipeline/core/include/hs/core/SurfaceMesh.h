@@ -27,6 +27,15 @@ struct SurfaceMesh {
     std::size_t faceCount() const { return triangles.size(); }
 };
 
+/// The largest magnitude a mesh coordinate may have, in any length unit: 1e9 (1000 km in mm). Far beyond any real
+/// object, and small enough that what is computed from coordinates stays finite: areas, volumes, grid cell sizes.
+/// A finite 1e300 does not (its square is infinite, and a grid over it has NaN cells).
+constexpr double kMaxCoordinate = 1e9;
+
+/// Every coordinate finite and within +-kMaxCoordinate. Fails with InvalidInput naming the first offending
+/// `element` ("point", "vertex") by index, its value and the allowed range.
+Status checkCoordinates(const std::vector<Vec3>& points, const char* element);
+
 /// Structural checks of a surface: what a mesher or a boolean needs to know before it starts.
 struct SurfaceTopology {
     std::size_t boundaryEdges = 0;       ///< edges with one incident face (holes)
@@ -43,8 +52,8 @@ struct SurfaceTopology {
     bool isWatertight() const { return isClosed() && isManifold() && inconsistentEdges == 0 && degenerateFaces == 0; }
 };
 
-/// Indices in range, finite coordinates, label arrays of the right size. Fails with InvalidInput naming the
-/// first offending element.
+/// Indices in range, coordinates finite and within +-kMaxCoordinate, label arrays of the right size. Fails with
+/// InvalidInput naming the first offending element.
 Status validate(const SurfaceMesh& mesh);
 
 Bounds bounds(const SurfaceMesh& mesh);

@@ -26,7 +26,8 @@ struct TetMesh {
     std::int32_t regionOf(std::size_t tet) const { return regions.empty() ? 0 : regions[tet]; }
 };
 
-/// Indices in range, finite coordinates, array sizes. Fails with InvalidInput naming the first offence.
+/// Indices in range, coordinates finite and within +-kMaxCoordinate, array sizes. Fails with InvalidInput naming the
+/// first offence.
 Status validate(const TetMesh& mesh);
 
 Bounds bounds(const TetMesh& mesh);
