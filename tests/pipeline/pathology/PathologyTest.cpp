@@ -1,5 +1,6 @@
 // The pathology stage's bars: FIGO type and size measured from the geometry, impossible requests, timings.
 #include "SampleOrgans.h"
+#include "TestSupport.h"
 
 #include "hs/merge/Merge.h"
 
@@ -278,7 +279,10 @@ TEST(Pathology, PlacesAndMergesFivePathologiesWithinTenSeconds) {
     const double seconds = secondsOf(start);
     ASSERT_TRUE(body.ok()) << body.error().detail;
     EXPECT_EQ(body->body.surfaces.size(), 6u);
-    EXPECT_LE(seconds, 10.0);
+    std::printf("five pathologies grown and merged: %.2f s\n", seconds);
+    if (test::kTimeBarsApply) {
+        EXPECT_LE(seconds, 10.0);
+    }
 }
 
 // ---- Impossible requests: an error that says what is impossible. ----
