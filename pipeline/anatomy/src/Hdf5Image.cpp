@@ -177,6 +177,26 @@ std::string findHdf5ImageDamage(const void* bytes, std::size_t size) {
         return "the superblock gives " + std::to_string(addressBytes) + "-byte addresses and " +
                std::to_string(lengthBytes) + "-byte lengths (2, 4 or 8 bytes are read)";
 
+    // Versions 0 and 1 may point to a driver information block. HDF5 reads the block's size from its header and
+    // allocates that much before reading it: 2.75 GB from a 50-byte file, zero-filled past the image's end. The
+    // block must lie inside the file. Its address follows the fixed part (24 bytes, 28 in version 1) and the base,
+    // free-space and end-of-file addresses; all ones is "none".
+    if (version < 2) {
+        const std::uint64_t fixed = version == 0 ? 24 : 28;
+        const std::uint64_t driver =
+            decode(image, base + fixed + 3 * static_cast<std::uint64_t>(addressBytes), addressBytes);
+        const std::uint64_t none = addressBytes == 8 ? ~std::uint64_t{0} : (std::uint64_t{1} << (8 * addressBytes)) - 1;
+        if (driver != none) {
+            const std::uint64_t at = driver < size ? driver + base : size; // HDF5 adds the base to every address
+            const std::uint64_t infoBytes = at < size ? decode(image, at + 4, 4) : 0;
+            constexpr std::uint64_t kHeaderBytes = 16; // version, 3 reserved, info size (4), driver id (8)
+            if (at >= size || kHeaderBytes + infoBytes > size - at)
+                return "the driver information block at address " + std::to_string(driver) + " (" +
+                       std::to_string(kHeaderBytes + infoBytes) + " bytes) does not fit in the file (" +
+                       std::to_string(size) + " bytes)";
+        }
+    }
+
     // Every local heap prefix: "HEAP", version 0, 3 reserved bytes, data size, free list head, data address.
     const std::uint8_t heapSignature[4] = {'H', 'E', 'A', 'P'};
     const std::uint8_t* end = image.bytes + size;

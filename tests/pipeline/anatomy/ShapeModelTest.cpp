@@ -94,10 +94,13 @@ TEST(ShapeModel, ADamagedFileIsAnErrorNamingItNotACrash) {
     // Found by fuzzing, each a crash or an unbounded allocation inside HDF5 1.10 before the project's driver and check:
     // a B-tree node at a damaged address made the metadata accumulator (core and sec2 drivers) copy from a null
     // buffer; a local heap's free list that comes back on itself made HDF5 allocate until memory ran out (21 GB).
-    // A float of 4 GB in the file made HDF5 allocate a conversion buffer of that size.
-    const std::pair<const char*, const char*> cases[] = {{"null-read-in-the-metadata-accumulator", "damaged"},
-                                                         {"local-heap-free-list-comes-back-on-itself", "damaged"},
-                                                         {"four-gigabyte-float", "numbers of 1 to 8 bytes"}};
+    // A float of 4 GB in the file made HDF5 allocate a conversion buffer of that size. A 50-byte file whose driver
+    // information block claimed 2.75 GB made HDF5 allocate and zero that much.
+    const std::pair<const char*, const char*> cases[] = {
+        {"null-read-in-the-metadata-accumulator", "damaged"},
+        {"local-heap-free-list-comes-back-on-itself", "damaged"},
+        {"four-gigabyte-float", "numbers of 1 to 8 bytes"},
+        {"driver-block-larger-than-the-file", "driver information block"}};
     for (const auto& [name, mention] : cases) {
         const auto input = hs::test::testDataDir() / "fuzz-regressions/shape_model" / name;
         ASSERT_TRUE(std::filesystem::is_regular_file(input)) << input;
