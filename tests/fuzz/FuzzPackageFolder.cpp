@@ -70,6 +70,10 @@ void unpack(const std::uint8_t* data, std::size_t size, const fs::path& root) {
 
 /// The manifest's "bytes" and "sha256" of every listed regular file set to the real ones.
 void fixChecksums(const fs::path& root) {
+    std::error_code status;
+    // A folder named manifest.json opens, and libstdc++ then throws on the first read (EISDIR).
+    if (!fs::is_regular_file(fs::symlink_status(root / "manifest.json", status)))
+        return;
     std::ifstream in(root / "manifest.json", std::ios::binary);
     if (!in)
         return;
