@@ -2,9 +2,9 @@
 """Writes resources/surfaces/default-organ.off: a closed, smooth, pear-shaped stand-in for a uterus.
 
 It is the surface the workstation opens by default until the statistical shape model supplies the mean organ.
-Dimensions follow the multiparous example in the project's domain notes (about 79 x 43 x 35 mm, length x width x
-AP): a corpus that narrows through the isthmus into a cylindrical cervix (about 30 mm long). Units: mm; the long
-axis is +z from the external os (z = 0) to the fundus.
+Dimensions follow a published multiparous example (about 79 x 43 x 35 mm, length x width x AP; docs/references.md
+[NayabMultiparous]): a corpus that narrows through the isthmus into a cylindrical cervix (about 30 mm long).
+Units: mm; the long axis is +z from the external os (z = 0) to the fundus.
 Usage: python3 tools/make_placeholder_organ.py resources/surfaces/default-organ.off
 """
 import math

@@ -18,7 +18,7 @@ FIGO = ["0", "1", "2", "3", "4", "5", "6", "7", "2-5"]
 LOCATIONS = ["posterior", "anterior", "fundal", "left-lateral", "right-lateral"]
 MYOMA_MODELS = ["skeleton", "particles", "ca"]
 POLYP_MODELS = ["skeleton", "particles"]
-POSTMENOPAUSAL_SUBMUCOSAL_MAX_MM = 20.0  # Lasmar size score 0 (UTERUS.md)
+POSTMENOPAUSAL_SUBMUCOSAL_MAX_MM = 20.0  # Lasmar size score 0 (docs/references.md [Lasmar2005])
 
 
 def figo_value(text):
@@ -48,7 +48,8 @@ def sweep_case(i, base):
         # A FIGO 0 or 1 myoma stands mostly in the cavity, and the cavity after menopause is small (the model's
         # 72- and 75-year-olds: 22-23 mm long, 17 mm between the ostia, about 5 mm deep): a 24 mm one is longer than
         # the whole cavity and covers the fundus. Leiomyomas regress after menopause (Stewart, N Engl J Med 2015;
-        # 372:1646-55), so these are drawn from Lasmar's smallest size class, <= 20 mm (UTERUS.md).
+        # 372:1646-55), so these are drawn from Lasmar's smallest size class, <= 20 mm
+        # (docs/references.md [Stewart2015], [Lasmar2005]).
         size = min(size, POSTMENOPAUSAL_SUBMUCOSAL_MAX_MM)
     pathologies.append({
         "id": "myoma-1",

@@ -15,7 +15,7 @@ constexpr double kMenopauseMean = 51.0, kMenopauseSd = 3.5; ///< years; median n
 constexpr double kHeightMean = 164.0, kHeightSd = 7.0;      ///< cm
 constexpr double kBmiMean = 25.5, kBmiSd = 4.5;             ///< kg/m^2
 
-// ---- Relations (UTERUS.md; docs/anatomy.md gives the source of each) ----
+// ---- Relations (docs/anatomy.md gives the source of each; docs/references.md lists the sources) ----
 /// Post-menopausal atrophy of linear dimensions per year since menopause, so that the length falls from about 72 mm
 /// at 40 to about 42-45 mm at 80 (Verguts et al. 2013).
 constexpr double kAtrophyPerYear = 0.017;
@@ -203,7 +203,8 @@ UterusShapeParams sampleShape(const clinical::PatientParams& patient, double men
     // A wider cavity comes with a wider organ.
     s.widthMm += cavityWidthNoise + rng.normal(0.0, kWidthSd) * m.widthMm / 45.0;
     s.apDepthMm += rng.normal(0.0, kApDepthSd) * m.apDepthMm / 40.0;
-    // Version and flexion: anteverted-anteflexed is most common, about 20 % are retroverted (UTERUS.md).
+    // Version and flexion: anteverted-anteflexed is most common, about 20 % are retroverted (docs/references.md
+    // [Retroversion]).
     const bool retroverted = rng.bernoulli(0.2);
     s.versionDeg =
         retroverted ? truncatedNormal(rng, -25.0, 10.0, -60.0, -5.0) : truncatedNormal(rng, 20.0, 10.0, 0.0, 60.0);

@@ -21,7 +21,8 @@ constexpr double kWallWindowMm = 7.0; ///< mm; half-height of the window in whic
 // collapsed at rest and the scope opens it (Nott et al. 2016: "outside of pregnancy the cervical canal is
 // collapsed"); the scene is the rest state a simulator starts from, so it keeps the way open for the thinnest office
 // hysteroscope (2.9 mm), with about 0.5 mm each side for what meshing takes off a narrow canal (docs/anatomy.md,
-// "Open canal"). 4 mm is also the narrowest internal os of Chen et al.'s 95 % range (4-11 mm, UTERUS.md).
+// "Open canal"). 4 mm is also the narrowest internal os of Chen et al.'s 95 % range (4-11 mm; docs/references.md
+// [Chen2020]).
 
 double smoothstep(double e0, double e1, double x) {
     const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);

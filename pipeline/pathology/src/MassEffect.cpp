@@ -153,11 +153,12 @@ Vec3 protrusionDirection(const Planned& p) {
 /// A submucosal myoma (types 1, 2) on a wall beside the cavity's flat plane (lateral, fundal, cornual) stands across
 /// the cavity's depth: a lateral myoma wider than the 5 mm of an atrophic cavity lies in its anterior and posterior
 /// walls, which then close the cavity to a scope and count it as intramural. Those walls part as the distension medium
-/// holds them off it (UTERUS.md, 45-75 mmHg): everything on either side of the cavity's midplane through the myoma's
-/// centre moves away from that plane over its footprint until the walls keep the distended gap, and the uterus
-/// thickens there. The sides do not fold: each line across the plane maps onto itself monotonically. Nothing when the
-/// myoma stands out of the anterior or posterior wall (its far wall moves instead). Polyps and hybrids do not part the
-/// walls: with them too the default organ intersected itself and two sweep myomas nearby changed type.
+/// holds them off it (45-75 mmHg, docs/references.md [Vulgaropulos1992]): everything on either side of the cavity's
+/// midplane through the myoma's centre moves away from that plane over its footprint until the walls keep the distended
+/// gap, and the uterus thickens there. The sides do not fold: each line across the plane maps onto itself
+/// monotonically. Nothing when the myoma stands out of the anterior or posterior wall (its far wall moves instead).
+/// Polyps and hybrids do not part the walls: with them too the default organ intersected itself and two sweep myomas
+/// nearby changed type.
 std::optional<Push> partingPush(const Planned& p, const Vec3& d, const OrganInfo& info, const PathologyParams& params,
                                 double windowRamp) {
     Vec3 m = info.anterior - d * dot(info.anterior, d);
@@ -188,8 +189,8 @@ std::optional<Push> partingPush(const Planned& p, const Vec3& d, const OrganInfo
     return part;
 }
 
-/// The pushes a pathology needs, by where it must and must not reach (UTERUS.md: types 0-2 bulge into the cavity,
-/// 3 touches the endometrium, 4 stays in the wall, 5-7 bulge outwards).
+/// The pushes a pathology needs, by where it must and must not reach (FIGO, docs/references.md [Munro2011]: types
+/// 0-2 bulge into the cavity, 3 touches the endometrium, 4 stays in the wall, 5-7 bulge outwards).
 std::vector<Push> planPushes(const Planned& p, const OrganInfo& info, const PathologyParams& params) {
     const SurfaceMesh& mesh = p.surface;
     const Vec3 e = p.seat.endometrium, u = p.seat.intoWall;
@@ -329,9 +330,9 @@ Status adaptOrgan(SurfaceMesh& organ, std::vector<Planned>& all, std::size_t whi
         for (Vec3& x : organ.points)
             x = push.apply(x);
         // Other pathologies move with the tissue, rigidly: a myoma in the wall by its mean motion (it is stiffer than
-        // the myometrium, UTERUS.md), a polyp or a stalked myoma with the root of its stalk, which the wall carries
-        // (the head hangs in the free cavity). A push's ramps would stretch whatever stands in them: a far-wall push
-        // once stretched a 25 mm myoma to 31 mm and a 10 mm polyp to 20 mm.
+        // the myometrium, docs/references.md [Omari2015]), a polyp or a stalked myoma with the root of its stalk, which
+        // the wall carries (the head hangs in the free cavity). A push's ramps would stretch whatever stands in them: a
+        // far-wall push once stretched a 25 mm myoma to 31 mm and a 10 mm polyp to 20 mm.
         for (std::size_t j = 0; j < all.size(); ++j) {
             if (j == which)
                 continue;

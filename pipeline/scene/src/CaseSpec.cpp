@@ -129,22 +129,22 @@ bool operator!=(const CaseSpec& a, const CaseSpec& b) {
     return !(a == b);
 }
 
-// ---- Materials (UTERUS.md lines 52-59) ----
+// ---- Materials (docs/references.md, "Tissue mechanics"; the keys below are its entries) ----
 
 TissueMaterial defaultMaterial(clinical::Tissue tissue) {
-    constexpr double kPoisson = 0.47;   // middle of 0.45-0.49 (line 59)
-    constexpr double kDensity = 1050.0; // generic soft tissue (line 59)
+    constexpr double kPoisson = 0.47;   // middle of 0.45-0.49 [SoftTissue]
+    constexpr double kDensity = 1050.0; // generic soft tissue [SoftTissue]
     switch (tissue) {
     case clinical::Tissue::Myometrium:
-        return {30.0, kPoisson, kDensity}; // line 55
+        return {30.0, kPoisson, kDensity}; // [Kiss2006]
     case clinical::Tissue::Endometrium:
-        return {26.2, kPoisson, kDensity}; // line 58, proliferative phase
+        return {26.2, kPoisson, kDensity}; // [Du2021], proliferative phase
     case clinical::Tissue::Cervix:
-        return {30.0, kPoisson, kDensity}; // no figure in the domain sheet: the myometrium's
+        return {30.0, kPoisson, kDensity}; // the myometrium's: cervical tissue spans the same 30-90 kPa [Kiss2006]
     case clinical::Tissue::Myoma:
-        return {65.0, kPoisson, kDensity}; // line 56
+        return {65.0, kPoisson, kDensity}; // [Omari2015]
     case clinical::Tissue::Polyp:
-        return {15.0, kPoisson, kDensity}; // line 57
+        return {15.0, kPoisson, kDensity}; // [Du2021]
     }
     return {30.0, kPoisson, kDensity};
 }
@@ -153,13 +153,13 @@ Range youngsModulusRangeKpa(clinical::Tissue tissue) {
     switch (tissue) {
     case clinical::Tissue::Myometrium:
     case clinical::Tissue::Cervix:
-        return {6.0, 90.0}; // line 55
+        return {6.0, 90.0}; // [Stader2024], [Kiss2006]
     case clinical::Tissue::Endometrium:
-        return {12.5, 26.2}; // line 58
+        return {12.5, 26.2}; // [Du2021]
     case clinical::Tissue::Myoma:
-        return {13.0, 206.0}; // 2.17 x 6 .. 2.29 x 90 (lines 55-56)
+        return {13.0, 206.0}; // 2.17 x 6 .. 2.29 x 90 [Omari2015]
     case clinical::Tissue::Polyp:
-        return {1.0, 32.0}; // 15.7 + 2 x 8.2 (line 57), floored at 1 kPa
+        return {1.0, 32.0}; // 15.7 + 2 x 8.2 [Du2021], floored at 1 kPa
     }
     return {6.0, 90.0};
 }
@@ -184,7 +184,7 @@ CaseSpec defaultCase() {
     myoma.id = "myoma-1";
     myoma.kind = clinical::PathologyKind::Myoma;
     myoma.growthModel = clinical::GrowthModel::Skeleton;
-    myoma.sizeMm = 20.0; // Lasmar size class <= 2 cm (line 67); resectable type (line 66)
+    myoma.sizeMm = 20.0; // Lasmar size class <= 2 cm [Lasmar2005]; resectable type [Munro2011]
     myoma.figo = clinical::FigoType{2, -1};
     myoma.placement =
         clinical::ClinicalPlacement{clinical::UterineLocation::LeftLateral}; // lateral wall: +1 in the Lasmar score
@@ -193,11 +193,11 @@ CaseSpec defaultCase() {
     PathologySpec polyp;
     polyp.id = "polyp-1";
     polyp.kind = clinical::PathologyKind::Polyp;
-    polyp.growthModel = clinical::GrowthModel::Skeleton; // a stalk is a skeleton with revolved contours (line 12)
-    polyp.sizeMm = 10.0;                                 // within the usual 5-30 mm (line 71)
+    polyp.growthModel = clinical::GrowthModel::Skeleton; // a stalk is a skeleton with revolved contours [Sierra2004]
+    polyp.sizeMm = 10.0;                                 // within the usual 5-30 mm [PolypSize]
     polyp.attachment = clinical::PolypAttachment::Sessile;
     polyp.placement =
-        clinical::ClinicalPlacement{clinical::UterineLocation::CornualRight}; // cornual is common (line 71)
+        clinical::ClinicalPlacement{clinical::UterineLocation::CornualRight}; // cornual is common [PolypSize]
     spec.pathologies.push_back(polyp);
     return spec;
 }

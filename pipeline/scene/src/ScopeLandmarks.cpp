@@ -95,7 +95,7 @@ std::vector<Vec3> faceVertices(const SurfaceMesh& surface, const std::vector<std
 }
 
 /// Two halves of the ostium faces this close are one ostium: an ostium spans a few triangles, a millimetre or two,
-/// while the two lie 25-40 mm apart across the cavity (UTERUS.md, Chen et al.).
+/// while the two lie 25-40 mm apart across the cavity (Chen et al., docs/references.md [Chen2020]).
 constexpr double kMinOstiaDistanceMm = 5.0;
 
 /// Midpoint of the two ostia: the ostium faces split by the sign of their offset along their principal direction

@@ -25,7 +25,8 @@ std::string number(double v) {
 }
 
 /// Volume-weighted mean density of the body, kg/m^3: SOFA's MeshMatrixMass takes one density per mass component,
-/// and all tissues share 1050 kg/m^3 by default (UTERUS.md), so one mass for the body loses nothing by default.
+/// and all tissues share 1050 kg/m^3 by default (docs/references.md [SoftTissue]), so one mass for the body loses
+/// nothing by default.
 double meanDensity(const Scene& scene) {
     std::map<std::int32_t, double> densityOfRegion;
     for (const auto& m : scene.materials)

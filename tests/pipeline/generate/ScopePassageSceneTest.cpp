@@ -22,7 +22,7 @@ TEST(ScopePassageScene, MeasuresTheNarrowestWidthOfTheDefaultScene) {
     auto landmarks = scene::findScopeLandmarks(sc);
     ASSERT_TRUE(landmarks.ok()) << landmarks.error().message();
     const double canalMm = distance(landmarks->externalOsMm, landmarks->internalOsMm);
-    EXPECT_GT(canalMm, 15.0); // cervix about 30 mm long (UTERUS.md)
+    EXPECT_GT(canalMm, 15.0); // cervix about 30 mm long (docs/references.md [CervixParity])
     EXPECT_LT(canalMm, 45.0);
 
     auto passage = scene::checkScopePassage(sc.tets, *landmarks);
@@ -36,7 +36,7 @@ TEST(ScopePassageScene, MeasuresTheNarrowestWidthOfTheDefaultScene) {
                 passage->straightWidthMm, passage->route.back().arcLengthMm, (long long)passage->gridDims[0],
                 (long long)passage->gridDims[1], (long long)passage->gridDims[2], passage->voxelSizeMm);
     EXPECT_GE(n.freeWidthMm, 0.0);
-    EXPECT_LT(n.freeWidthMm, 12.0); // no wider than the widest real internal os (UTERUS.md: 4-11 mm)
+    EXPECT_LT(n.freeWidthMm, 12.0); // the widest real internal os is 11 mm (docs/references.md [Chen2020])
     EXPECT_EQ(passage->ballPasses, n.freeWidthMm >= 2.9);
     EXPECT_TRUE(passage->open);
     EXPECT_GE(n.freeWidthMm, 2.9);

@@ -38,7 +38,8 @@ struct ShapeModelParams {
 };
 
 /// The organ's tilt in the pelvis, drawn apart from the shape (version is a pose; the shape model sees organs with
-/// version 0). About 20 % of uteri are retroverted (UTERUS.md); the angles are assumptions (docs/anatomy.md).
+/// version 0). About 20 % of uteri are retroverted (docs/references.md [Retroversion]); the angles are assumptions
+/// (docs/anatomy.md).
 struct PosePrior {
     double retroversionProbability = 0.2;
     double antevertedMeanDeg = 20.0, antevertedSdDeg = 10.0;    ///< degree

@@ -113,7 +113,7 @@ struct UterusDimensions {
 /// does not have the layout's vertex count.
 [[nodiscard]] Result<UterusDimensions> measureUterus(const SurfaceMesh& mesh, const TemplateLayout& layout);
 
-/// Clinical ultrasound volume estimate of a uterus, L * W * AP * 0.523 (UTERUS.md), mL from mm.
+/// Clinical ultrasound volume estimate of a uterus, L * W * AP * 0.523 (docs/references.md [Ellipsoid]), mL from mm.
 double ellipsoidVolumeMl(double lengthMm, double widthMm, double apDepthMm);
 
 /// Dimensions of a body grown from an instance of the template (pathologies added, merged, meshed), by measureUterus

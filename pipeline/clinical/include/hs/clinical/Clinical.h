@@ -1,6 +1,7 @@
 #pragma once
 /// The clinical description of a pathology, as the case file states it and the pathology stage grows it
-/// (Sierra et al. 2004, sec. 2.1; UTERUS.md). One definition shared by the stages, the case format and the scene.
+/// (Sierra et al. 2004, sec. 2.1; docs/references.md [Sierra2004]). One definition shared by the stages, the case
+/// format and the scene.
 ///
 /// Each enumeration has a stable lower-case key: toString() / fromString(). The keys are written into case.json
 /// and scene packages, so they never change.
@@ -12,9 +13,9 @@ namespace hs::clinical {
 
 enum class PathologyKind { Myoma, Polyp };
 enum class GrowthModel {
-    CellularAutomaton, ///< "ca": voxel automaton; myomas only (UTERUS.md line 11)
-    Skeleton,          ///< "skeleton": object skeleton + revolved contours; myomas and polyps (line 12)
-    Particles,         ///< "particles": dividing cells that push each other; myomas and polyps (lines 13-14)
+    CellularAutomaton, ///< "ca": voxel automaton; myomas only [Sierra2004]
+    Skeleton,          ///< "skeleton": object skeleton + revolved contours; myomas and polyps [Sierra2004]
+    Particles,         ///< "particles": dividing cells that push each other; myomas and polyps [Sierra2004]
 };
 enum class UterineLocation {
     Fundal,

@@ -1,6 +1,6 @@
 #pragma once
-/// FIGO leiomyoma classification (PALM-COEIN; UTERUS.md lines 62-66) and the Lasmar (STEPW) score for
-/// hysteroscopic myomectomy (Lasmar et al. 2005; UTERUS.md, "Lasmar").
+/// FIGO leiomyoma classification (PALM-COEIN; docs/references.md [Munro2011]) and the Lasmar (STEPW) score for
+/// hysteroscopic myomectomy (Lasmar et al. 2005; docs/references.md [Lasmar2005]).
 
 #include <optional>
 #include <string>
@@ -19,7 +19,7 @@ struct FigoType {
     constexpr bool isValid() const {
         return isHybrid() ? (type >= 1 && type <= 3 && serosal >= 5 && serosal <= 6) : (type >= 0 && type <= 8);
     }
-    /// Only types 0-2 are resectable hysteroscopically (line 66); a hybrid counts by its endometrial part.
+    /// Only types 0-2 are resectable hysteroscopically [Munro2011]; a hybrid counts by its endometrial part.
     constexpr bool isHysteroscopicallyResectable() const { return type >= 0 && type <= 2; }
     /// "2" or "2-5"; "-" when not classified.
     std::string toString() const;
@@ -29,7 +29,7 @@ struct FigoType {
 bool operator==(const FigoType& a, const FigoType& b);
 bool operator!=(const FigoType& a, const FigoType& b);
 
-/// The FIGO definition of a plain type 0..8 (line 62-65), e.g. "submucosal, >= 50 % intramural"; "" otherwise.
+/// The FIGO definition of a plain type 0..8 [Munro2011], e.g. "submucosal, >= 50 % intramural"; "" otherwise.
 std::string_view figoDefinition(int type);
 
 /// Lasmar (STEPW) score components; each -1 when not computed (the pathology stage computes them for myomas).

@@ -49,10 +49,10 @@ struct Appearance {
     std::vector<std::string> warnings;
 };
 
-/// Edge length the visual surface aims at where the hysteroscope sees it, mm. The scope looks at the wall from a
-/// few millimetres (a lesion inspected closely) to the cavity's length (26-44 mm, shared/domain/UTERUS.md); at 5 mm a
-/// 0.75 mm facet spans under 9 degrees of a 90-degree view, and smooth normals hide its shading. See
-/// docs/scene-format.md, "The visual surface".
+/// Edge length the visual surface aims at where the hysteroscope sees it, mm. The scope looks at the wall from a few
+/// millimetres (a lesion inspected closely) to the cavity's length (26-44 mm, docs/references.md [Chen2020],
+/// [Goldstuck2012]); at 5 mm a 0.75 mm facet spans under 9 degrees of a 90-degree view, and smooth normals hide its
+/// shading. See docs/scene-format.md, "The visual surface".
 inline constexpr double kVisualEdgeLengthMm = 0.75;
 /// At most this many Loop levels (each quadruples the triangles; 3 levels of a 30 000-vertex scene's boundary is
 /// about half a million triangles).

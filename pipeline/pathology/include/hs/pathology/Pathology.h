@@ -48,9 +48,9 @@ struct PathologyParams {
                               ///< not reach (it is displaced to make room)
     /// mm the cavity keeps open in front of a pathology that stands in it (FIGO 0-2, hybrids reaching it, polyps):
     /// the far wall moves away until it is this far from the pathology. Hysteroscopy distends the cavity with fluid
-    /// (45-75 mmHg, UTERUS.md), which holds the walls off a mass as it does elsewhere: the model's cavity has its
-    /// distended depth (8 mm, docs/anatomy.md), 4 mm on either side of its midplane, and a 2.9 mm office scope
-    /// passes in front of the mass (docs/pathology.md, "The organ adapts").
+    /// (45-75 mmHg, docs/references.md [Vulgaropulos1992]), which holds the walls off a mass as it does elsewhere:
+    /// the model's cavity has its distended depth (8 mm, docs/anatomy.md), 4 mm on either side of its midplane, and
+    /// a 2.9 mm office scope passes in front of the mass (docs/pathology.md, "The organ adapts").
     double distendedGapMm = 4.0;
     double contactToleranceMm = 1.0;          ///< mm; closer than this to the endometrium counts as contact (FIGO 3)
     double minimumGapMm = 1.0;                ///< mm; two pathologies closer than this overlap (an error)
@@ -148,9 +148,10 @@ struct WallFractions {
     bool pedunculated = false;
 };
 
-/// FIGO type from fractions and contacts (UTERUS.md: 0 pedunculated intracavitary, 1 < 50 % intramural, 2 >= 50 %,
-/// 3 contacts the endometrium, 4 intramural, 5 subserosal >= 50 % intramural, 6 < 50 %, 7 pedunculated subserosal;
-/// hybrids X-Y when it reaches both sides). In the cavity means more than 0.01 of the volume, outside more than 0.02.
+/// FIGO type from fractions and contacts (docs/references.md [Munro2011]: 0 pedunculated intracavitary,
+/// 1 < 50 % intramural, 2 >= 50 %, 3 contacts the endometrium, 4 intramural, 5 subserosal >= 50 % intramural,
+/// 6 < 50 %, 7 pedunculated subserosal; hybrids X-Y when it reaches both sides). In the cavity means more than 0.01
+/// of the volume, outside more than 0.02.
 clinical::FigoType classifyFigo(const WallFractions& f, double contactToleranceMm);
 
 /// A pathology against the wall it grows from, as some measurement found it.

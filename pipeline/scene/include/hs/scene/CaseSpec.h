@@ -3,7 +3,8 @@
 /// pathologies, every stage's parameters and the seed.
 ///
 /// The document format, every field with its unit, default, range and source, and the versioning rule are in
-/// docs/case-format.md. Defaults and ranges cite the domain sheet (UTERUS.md, "line N") or name another source.
+/// docs/case-format.md. Defaults and ranges cite their published sources by key, e.g. [Verguts2013]: the entries
+/// of docs/references.md.
 /// Optional fields (std::optional) mean "not set": the stage derives the value itself (from the shape model or the
 /// tissue defaults below); they are written as JSON null.
 
@@ -53,34 +54,34 @@ struct Range {
 
 /// Supported ranges. Values outside are rejected, never clamped: no stage extrapolates silently.
 namespace limits {
-// Patient. Adults only: pre-menarche proportions differ (UTERUS.md line 39-40) and the published adult
-// morphometry ends at 80 years (line 30). The other bounds are those the default shape model's synthetic cohort
+// Patient. Adults only: pre-menarche proportions differ [CorpusCervixRatio] and the published adult
+// morphometry ends at 80 years [Verguts2013]. The other bounds are those the default shape model's synthetic cohort
 // covers (hs::anatomy::supportedPatientRanges()), so a valid case never asks the model to extrapolate.
 constexpr Range kAgeYears{18.0, 80.0};
-constexpr Range kParity{0.0, 6.0};     ///< births; "multiparous" is the highest published group (line 34)
+constexpr Range kParity{0.0, 6.0};     ///< births; "multiparous" is the highest published group [IraqParity]
 constexpr Range kGravidity{0.0, 10.0}; ///< pregnancies; must also be >= parity
 constexpr Range kHeightCm{140.0, 195.0};
 constexpr Range kWeightKg{35.0, 160.0};
 constexpr double kMenopausalMinAgeYears = 40.0;    ///< earlier is premature ovarian insufficiency: not modelled
 constexpr double kPremenopausalMaxAgeYears = 60.0; ///< later lies beyond the cohort's ages at menopause
-// Anatomy overrides (mm, degrees): the published spread (lines 30-43) with margin.
-constexpr Range kVersionDeg{-90.0, 90.0};            ///< + anteverted, - retroverted (line 44)
-constexpr Range kFlexionDeg{-90.0, 90.0};            ///< + anteflexed, - retroflexed (line 44)
-constexpr Range kLengthMm{30.0, 95.0};               ///< 42 at 80 y .. 79 multiparous (lines 30, 34)
-constexpr Range kWidthMm{20.0, 65.0};                ///< 39.9 +- 7.2, +- 3 SD (line 32)
-constexpr Range kApMm{20.0, 70.0};                   ///< 45.0 +- 8.1, +- 3 SD (line 32)
-constexpr Range kCavityLengthMm{20.0, 55.0};         ///< 95 % range 26-38; 44.3 multiparous (lines 37-38)
-constexpr Range kCavityWidthMm{20.0, 45.0};          ///< 95 % range 25-40 (line 37)
-constexpr Range kCornualAngleDeg{30.0, 100.0};       ///< 95 % range 39-88 (line 37)
-constexpr Range kFundalWallThicknessMm{5.0, 20.0};   ///< 10.8-13.6 by age (line 41); >= 5 mm wall
-constexpr Range kCervixLengthMm{20.0, 45.0};         ///< about 30 (line 39)
+// Anatomy overrides (mm, degrees): the published spread (docs/references.md, "Anatomy and dimensions") with margin.
+constexpr Range kVersionDeg{-90.0, 90.0};            ///< + anteverted, - retroverted [Retroversion]
+constexpr Range kFlexionDeg{-90.0, 90.0};            ///< + anteflexed, - retroflexed [Retroversion]
+constexpr Range kLengthMm{30.0, 95.0};               ///< 42 at 80 y .. 79 multiparous [Verguts2013], [NayabMultiparous]
+constexpr Range kWidthMm{20.0, 65.0};                ///< 39.9 +- 7.2, +- 3 SD [Gao2018]
+constexpr Range kApMm{20.0, 70.0};                   ///< 45.0 +- 8.1, +- 3 SD [Gao2018]
+constexpr Range kCavityLengthMm{20.0, 55.0};         ///< 95 % range 26-38 [Chen2020]; 44.3 multiparous [Goldstuck2012]
+constexpr Range kCavityWidthMm{20.0, 45.0};          ///< 95 % range 25-40 [Chen2020]
+constexpr Range kCornualAngleDeg{30.0, 100.0};       ///< 95 % range 39-88 [Chen2020]
+constexpr Range kFundalWallThicknessMm{5.0, 20.0};   ///< 10.8-13.6 by age [FundusMRI]; >= 5 mm wall
+constexpr Range kCervixLengthMm{20.0, 45.0};         ///< about 30 [CervixParity]
 constexpr Range kSurfaceCoordinateMm{-500.0, 500.0}; ///< a click on the organ lies well inside this box
 /// Endometrial thickness as ultrasound reports it (both layers): 2-16 mm premenopausal, <= 4 postmenopausal
 /// (docs/anatomy.md, "Tissue layers"), with margin; 1 mm is about the finest lining a 30 000-vertex mesh resolves.
 constexpr Range kEndometrialThicknessMm{1.0, 20.0};
 // Pathologies (mm).
-constexpr Range kMyomaSizeMm{5.0, 100.0};  ///< Lasmar size classes <= 20, 20-50, > 50 mm (line 67)
-constexpr Range kPolypSizeMm{3.0, 40.0};   ///< usually 5-30 mm (line 71)
+constexpr Range kMyomaSizeMm{5.0, 100.0};  ///< Lasmar size classes <= 20, 20-50, > 50 mm [Lasmar2005]
+constexpr Range kPolypSizeMm{3.0, 40.0};   ///< usually 5-30 mm [PolypSize]
 constexpr Range kStalkLengthMm{1.0, 30.0}; ///< pedunculated polyps only
 // Meshing.
 constexpr Range kTargetEdgeLengthMm{0.2, 20.0};
@@ -93,9 +94,9 @@ constexpr Range kHeterogeneity{0.0, 0.5}; ///< coefficient of variation of Young
 constexpr Range kTextureSizePx{64.0, 8192.0}; ///< and a power of two
 constexpr Range kVesselDensity{0.0, 4.0};     ///< relative to the default network; 0 = no vessels
 // Scene.
-constexpr Range kHydrometraPressureKpa{0.0, 20.0}; ///< 0 = undistended; 20 kPa = 150 mmHg, the measured point (line 48)
-constexpr Range kPoissonRatio{0.45, 0.49};         ///< nearly incompressible (line 59)
-constexpr Range kDensityKgPerM3{1000.0, 1100.0};   ///< around the generic 1050 (line 59)
+constexpr Range kHydrometraPressureKpa{0.0, 20.0}; ///< 0 = undistended; 20 kPa (150 mmHg) was measured [Bajka2009]
+constexpr Range kPoissonRatio{0.45, 0.49};         ///< nearly incompressible [SoftTissue]
+constexpr Range kDensityKgPerM3{1000.0, 1100.0};   ///< around the generic 1050 [SoftTissue]
 } // namespace limits
 
 // ---- Enumerations of the case's own choices. Each has a stable lower-case JSON key: toString() / fromString().
@@ -127,21 +128,21 @@ bool fromString(std::string_view key, MeshingSeeding& out);
 
 /// Optional clinical measurements the shape model conditions on (mm, degrees); unset = derived from the patient.
 struct UterusDimensions {
-    std::optional<double> lengthMm;              ///< external corpus + cervix length (line 30-34)
-    std::optional<double> widthMm;               ///< (line 32)
-    std::optional<double> apMm;                  ///< antero-posterior depth (line 32)
-    std::optional<double> cavityLengthMm;        ///< < lengthMm (line 37-38)
-    std::optional<double> cavityWidthMm;         ///< fundal cavity width, < widthMm (line 37-38)
-    std::optional<double> cornualAngleDeg;       ///< (line 37)
-    std::optional<double> fundalWallThicknessMm; ///< (line 41)
-    std::optional<double> cervixLengthMm;        ///< (line 39)
+    std::optional<double> lengthMm;              ///< external corpus + cervix length [Verguts2013], [IraqParity]
+    std::optional<double> widthMm;               ///< [Gao2018]
+    std::optional<double> apMm;                  ///< antero-posterior depth [Gao2018]
+    std::optional<double> cavityLengthMm;        ///< < lengthMm [Chen2020], [Goldstuck2012]
+    std::optional<double> cavityWidthMm;         ///< fundal cavity width, < widthMm [Chen2020], [Benacerraf2010]
+    std::optional<double> cornualAngleDeg;       ///< [Chen2020]
+    std::optional<double> fundalWallThicknessMm; ///< [FundusMRI]
+    std::optional<double> cervixLengthMm;        ///< [CervixParity]
 };
 
 struct AnatomyParams {
     ShapeMode shape = ShapeMode::Sample;  ///< a seeded sample for the patient, or the model's mean for the patient
     std::optional<std::string> modelPath; ///< statistical shape model file; unset = the bundled default model
-    std::optional<double> versionDeg;     ///< degrees, cervix against vagina; + anteverted, - retroverted (line 44)
-    std::optional<double> flexionDeg;     ///< degrees, corpus against cervix; + anteflexed, - retroflexed (line 44)
+    std::optional<double> versionDeg;     ///< degrees, cervix-vagina angle; + anteverted, - retroverted [Retroversion]
+    std::optional<double> flexionDeg;     ///< degrees, corpus-cervix angle; + anteflexed, - retroflexed [Retroversion]
     UterusDimensions dimensions;
     /// mm, both layers as ultrasound measures them; unset = typical for the patient's cycle phase or menopause
     /// (clinical::typicalEndometrialThicknessMm). Each wall's lining is half of it.
@@ -190,12 +191,12 @@ struct MaterialOverride {
     std::optional<double> poissonRatio;     ///< dimensionless
     std::optional<double> densityKgPerM3;   ///< kg/m^3
     /// Coefficient of variation of Young's modulus per tet, seeded (0 or unset: homogeneous). Myomas are
-    /// heterogeneous (UTERUS.md, tissue mechanics); the spread is the user's.
+    /// heterogeneous [Kiss2006]; the spread is the user's.
     std::optional<double> heterogeneity;
 };
 
 struct SceneParams {
-    double hydrometraPressureKpa = 8.0; ///< kPa; 8 kPa = 60 mmHg, middle of the clinical 45-75 mmHg (line 47)
+    double hydrometraPressureKpa = 8.0; ///< kPa; 8 kPa = 60 mmHg, middle of the clinical 45-75 mmHg [Vulgaropulos1992]
     std::array<MaterialOverride, clinical::kTissues.size()> materials{}; ///< indexed by clinical::Tissue
 };
 
@@ -221,7 +222,7 @@ bool operator==(const SceneParams& a, const SceneParams& b);
 bool operator==(const CaseSpec& a, const CaseSpec& b);
 bool operator!=(const CaseSpec& a, const CaseSpec& b);
 
-// ---- Tissue materials (UTERUS.md lines 52-59). ----
+// ---- Tissue materials (docs/references.md, "Tissue mechanics"). ----
 
 struct TissueMaterial {
     double youngsModulusKpa = 0.0; ///< kPa

@@ -2,7 +2,7 @@
 /// Hydrometra: the volume of the uterine cavity distended by fluid at a given pressure.
 ///
 /// Bajka et al. (Surg Endosc 2009) measured the cavity volume at 20 kPa (150 mmHg) in excised uteri: 0.6-11.4 mL,
-/// fitted by y = 0.00037 x^2 + 0.036 x (R^2 0.74), x = uterine volume in mL (UTERUS.md, "Distension"). Only that
+/// fitted by y = 0.00037 x^2 + 0.036 x (R^2 0.74), x = uterine volume in mL (docs/references.md [Bajka2009]). Only that
 /// one pressure was published; below it the volume is interpolated linearly in pressure from 0 mL at 0 kPa (an
 /// assumption of this project, documented in docs/scene-format.md; the loading branch of the hysteresis).
 

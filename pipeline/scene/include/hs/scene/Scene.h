@@ -37,7 +37,7 @@ struct SceneRegion {
     std::string pathologyId; ///< the case's pathology id for pathology regions; empty otherwise
 };
 
-/// The mechanical parameters of one region (UTERUS.md, tissue mechanics).
+/// The mechanical parameters of one region (docs/references.md, "Tissue mechanics").
 struct SceneMaterial {
     std::int32_t id = 0; ///< index in Scene::materials; the value of the "material" tet array
     std::int32_t regionId = 0;
@@ -138,7 +138,7 @@ struct OrganDimensions {
     double apMm = 0.0;
     double cavityLengthMm = 0.0;
     double cavityWidthMm = 0.0;
-    double uterineVolumeMl = 0.0; ///< mL; the clinical estimate L x W x AP x 0.523 (UTERUS.md)
+    double uterineVolumeMl = 0.0; ///< mL; the clinical estimate L x W x AP x 0.523 (docs/references.md [Ellipsoid])
 };
 
 struct ClinicalDescriptors {
@@ -185,7 +185,7 @@ struct Scene {
 /// Options of the material assignment; the mean of each material is the case's effective material.
 struct MaterialOptions {
     /// Coefficient of variation of Young's modulus per tet (0: homogeneous; <= 0.5). Myomas are heterogeneous
-    /// (UTERUS.md); the draw is log-normal with this spread, clamped to the tissue's range.
+    /// (docs/references.md [Kiss2006]); the draw is log-normal with this spread, clamped to the tissue's range.
     double heterogeneity = 0.0;
     std::uint64_t seed = 1; ///< same seed, same per-tet values
 };

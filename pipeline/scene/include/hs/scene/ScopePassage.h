@@ -3,8 +3,9 @@
 /// meshed) is measured along the widest route from outside the external os, up the cervical canal, through the
 /// internal os to the fundus of the cavity. docs/scene-format.md ("Scope passage") describes the method.
 ///
-/// Office hysteroscopes are 2.9-5 mm across; the internal os of a real uterus is 4-11 mm wide (UTERUS.md, Chen et
-/// al.), so a scene whose canal is narrower than the thinnest scope cannot be used for a diagnostic exploration.
+/// Office hysteroscopes are 2.9-5 mm across; the internal os of a real uterus is 4-11 mm wide (docs/references.md
+/// [Bradley], [Chen2020]), so a scene whose canal is narrower than the thinnest scope cannot be used for a
+/// diagnostic exploration.
 
 #include "hs/core/Progress.h"
 #include "hs/core/Result.h"

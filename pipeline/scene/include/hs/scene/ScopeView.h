@@ -5,8 +5,8 @@
 ///
 /// Frame: the scene's (the organ's) mm frame, in which +y is anterior. The shaft runs from the external os through
 /// the internal os. An oblique optic looks `opticDeg` off the shaft; at roll 0 it looks towards anterior, and the
-/// roll turns that direction about the shaft (the light post's rotation). UTERUS.md: optics 0/12/15/30/70 degrees,
-/// office scopes typically 30 degrees and 2.9 mm.
+/// roll turns that direction about the shaft (the light post's rotation). Optics 0/12/15/30/70 degrees,
+/// office scopes typically 30 degrees and 2.9 mm (docs/references.md [Bradley]).
 
 #include "hs/core/Result.h"
 #include "hs/core/Vec3.h"

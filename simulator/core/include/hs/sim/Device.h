@@ -19,7 +19,7 @@ enum DeviceButton : std::uint32_t {
 
 /// The allowed range of every field (the HID codec clamps to these; a sample outside them is refused).
 inline constexpr double kMinInsertionMm = -50.0; ///< mm, the tip this far outside the pivot (external os)
-inline constexpr double kMaxInsertionMm = 150.0; ///< mm, longer than any uterus (UTERUS.md: length <= 10 cm)
+inline constexpr double kMaxInsertionMm = 150.0; ///< mm, longer than any uterus (docs/references.md [Verguts2013])
 inline constexpr double kMaxPivotDeg = 60.0;     ///< degrees, |pitch| and |yaw| about the cervical pivot
 inline constexpr double kMaxRollDeg = 180.0;     ///< degrees, |roll| and |camera roll|
 

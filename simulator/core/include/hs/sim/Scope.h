@@ -13,7 +13,7 @@
 
 namespace hs::sim {
 
-/// Rigid office and operative hysteroscopes (UTERUS.md; shared notes: optics 0/12/15/30/70 degrees, 2.9-5 mm).
+/// Rigid office and operative hysteroscopes: optics 0/12/15/30/70 degrees, 2.9-5 mm (docs/references.md [Bradley]).
 struct ScopeConfig {
     double opticDeg = 30.0;    ///< degrees: 0, 12 or 30
     double diameterMm = 2.9;   ///< mm, outer sheath: 2.9, 4 or 5
