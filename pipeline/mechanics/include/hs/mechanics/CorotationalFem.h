@@ -1,0 +1,166 @@
+#pragma once
+// The soft tissue: corotational linear finite elements on the simulation mesh's tets (Muller & Gross, "Interactive
+// Virtual Materials", GI 2004; Nesme et al., "Efficient, physically plausible finite elements", Eurographics 2005),
+// the real density (lumped), Rayleigh damping, advanced by backward Euler. Each step solves the implicit equations by
+// a chord (quasi-) Newton iteration whose matrix, H = M (1/h^2 + alpha/h) + (1 + beta/h) K0 + T, is built from the
+// rest stiffness K0 and factored once (sparse LDL^T): every iteration evaluates the exact corotated forces, so a
+// converged step, and every steady state, is the material's equilibrium; only the speed of convergence depends on
+// how far the tets have turned. Contacts are unilateral constraints solved as a small linear complementarity problem
+// with the solver's own compliance W = J H^-1 J^T (Duriez et al., "Realistic haptic rendering of interacting
+// deformable objects in virtual environments", IEEE TVCG 12(1), 2006; the precomputed compliance of Saupin, Duriez &
+// Cotin, "Contact model for haptic medical simulations", ISBMS 2008). docs/simulator.md ("Tissue") gives the
+// verification against Boussinesq's punch and Lame's sphere.
+//
+// SI units inside (m, kg, s, Pa, N). Deterministic: the same inputs give the same state, bit for bit.
+
+#include "hs/core/Result.h"
+#include "hs/core/TetMesh.h"
+#include "hs/core/Vec3.h"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace hs::mechanics {
+
+struct FemMaterial {
+    double youngsModulusPa = 30e3;
+    double poissonRatio = 0.47;
+    double densityKgPerM3 = 1050.0;
+};
+
+struct FemSettings {
+    double stepS = 0.005; ///< s, the time step h
+    /// Rayleigh damping D = alpha M + beta K (docs/simulator.md, "Tissue": soft tissue's loss factor).
+    double rayleighMassPerS = 1.0;    ///< alpha, 1/s
+    double rayleighStiffnessS = 0.01; ///< beta, s
+    int iterations = 2;               ///< chord iterations per step (the convergence study chose it)
+    int contactSweeps = 60;           ///< projected Gauss-Seidel sweeps of a step's contact problem
+    /// The volumetric strain averaged over each point's tets (the average nodal pressure tet of Bonet & Burton,
+    /// Commun Numer Meth Eng 14:437-449, 1998): linear tets lock for nearly incompressible tissue (Poisson ratio
+    /// 0.45-0.49) and come out too stiff; averaging the volume change at the points frees them.
+    bool nodalPressure = true;
+};
+
+/// A unilateral contact: the point sum_k weights[k] * x[points[k]] of the tissue stays behind the plane through
+/// `planePoint` with the unit normal `normal` (the obstacle's side is in front): C = dot(normal, planePoint - p) >= 0
+/// is the gap. `obstacleCompliance` rows let the obstacle itself give way (a coupled scope): see solveContacts.
+struct FemContact {
+    std::array<std::int32_t, 3> points{-1, -1, -1};
+    std::array<double, 3> weights{0.0, 0.0, 0.0};
+    Vec3 normal;         ///< unit, from the tissue towards the obstacle
+    Vec3 planePoint;     ///< m, a point of the obstacle's surface
+    double forceN = 0.0; ///< out: the contact's force (>= 0) on the tissue, along -normal, after the step
+};
+
+/// The obstacle's own compliance between contacts (m/N, row-major k x k; empty: a rigid obstacle held in place).
+struct ObstacleCompliance {
+    std::vector<double> matrix;
+};
+
+class CorotationalFem {
+public:
+    CorotationalFem();
+    ~CorotationalFem();
+    CorotationalFem(CorotationalFem&&) noexcept;
+    CorotationalFem& operator=(CorotationalFem&&) noexcept;
+
+    /// `pointsM` at rest (m); one material per tet; `fixedDof` per point 3 flags (x, y, z held at their target,
+    /// initially the rest position); `tethers` (point, N/m) pull a point back to its rest position isotropically.
+    /// Fails (InvalidInput) for a bad material, an inverted or flat tet or a step out of range.
+    [[nodiscard]] Status build(const std::vector<Vec3>& pointsM, const std::vector<Tet>& tets,
+                               const std::vector<FemMaterial>& materials,
+                               const std::vector<std::array<bool, 3>>& fixedDof,
+                               const std::vector<std::pair<std::int32_t, double>>& tethers,
+                               const FemSettings& settings);
+
+    /// Where the held degrees of freedom of `point` are (m; the free ones ignore it).
+    void setTarget(std::size_t point, const Vec3& positionM);
+
+    /// One step: external forces (N per point, held constant over the step), contacts (re-linearized by the caller
+    /// between steps; their forceN is set), the obstacle's compliance between them. Returns the contact forces'
+    /// obstacle displacement through `obstacleCompliance` implicitly: the caller moves its obstacle by C lambda.
+    void step(const std::vector<Vec3>& externalForcesN, std::vector<FemContact>& contacts,
+              const ObstacleCompliance& obstacle = {});
+
+    /// Removes tets (they carry no force; the matrix is rebuilt and factored again) and with them every piece they
+    /// cut free: the live tets fall into pieces joined through shared faces, and a piece with no held or tethered point
+    /// (one that hangs on by an edge or a point, or floats) is removed too and returned, one list of tets per piece
+    /// (the chips). Points left without a tet are held where they are. Out-of-range and removed tets are ignored.
+    std::vector<std::vector<std::size_t>> removeTets(const std::vector<std::size_t>& tets);
+    bool tetRemoved(std::size_t tet) const { return tet < m_removed.size() && m_removed[tet] != 0; }
+
+    /// Precomputes the compliance H^-1 between the degrees of freedom of `points` (the surface a tool can touch), so a
+    /// step's contact problem costs no solve per contact; contacts on other points compute their columns on demand.
+    void precomputeCompliance(const std::vector<std::int32_t>& points);
+
+    const std::vector<Vec3>& positionsM() const { return m_x; }
+    const std::vector<Vec3>& restM() const { return m_rest; }
+    const std::vector<Vec3>& velocitiesMPerS() const { return m_v; }
+    std::size_t pointCount() const { return m_x.size(); }
+    std::size_t tetCount() const { return m_tets.size(); }
+    const FemSettings& settings() const { return m_settings; }
+
+    /// The force the supports exert on `point` to hold its fixed degrees of freedom (N; zero on free ones), from
+    /// the last step's final residual: at rest, minus the tissue's force on the support.
+    Vec3 reactionN(std::size_t point) const;
+    /// The norm of the free degrees of freedom's residual (N) after the last step: the equations' imbalance.
+    double residualN() const { return m_residualNorm; }
+    /// Steps whose result was not finite and were undone (the tissue held still instead): 0 in a healthy run.
+    std::size_t recoveries() const { return m_recoveries; }
+    /// The compliance W = J H^-1 J^T of the last step's contacts (m/N, row-major k x k).
+    const std::vector<double>& lastContactCompliance() const { return m_lastW; }
+
+    /// Elastic energy of the corotated linear material (J), the smallest tet volume ratio (<= 0: inverted) with the
+    /// count of inverted tets, the largest speed (m/s): the stability checks.
+    double elasticEnergyJ() const;
+    double minVolumeRatio(std::size_t& inverted) const;
+    double maxSpeedMPerS() const;
+    double kineticEnergyJ() const;
+
+private:
+    void assembleAndFactor();
+    /// Internal elastic plus damping forces at positions x with velocity v (N per point), updating the rotations.
+    void internalForces(const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& out);
+    void solveInPlace(std::vector<double>& b) const;
+    /// R H^-1 R^T b with each point's rotation R (the rest factor warped to the tissue's turn: Muller & Gross 2004's
+    /// stiffness warping applied to the preconditioner, as SOFA's PrecomputedWarpPreconditioner does), so parts that
+    /// turn far (the corpus tilting, a flap left by a cut) converge as fast as at rest.
+    void solveWarped(std::vector<double>& b) const;
+    void updatePointRotations();
+    /// H^-1 column for dof (cached when precomputed).
+    void complianceBetween(const std::vector<FemContact>& contacts, std::vector<double>& w);
+    void solveContacts(std::vector<FemContact>& contacts, const ObstacleCompliance& obstacle,
+                       const std::vector<Vec3>& xFree, std::vector<double>& lambda);
+
+    struct Factor;
+    std::unique_ptr<Factor> m_factor;
+    FemSettings m_settings;
+    std::vector<Vec3> m_rest, m_x, m_v, m_target, m_xStart, m_force, m_reaction;
+    std::vector<std::array<bool, 3>> m_fixed;
+    std::vector<double> m_mass; ///< kg, lumped
+    std::vector<Tet> m_tets;
+    std::vector<char> m_removed;
+    std::vector<std::array<double, 9>> m_dmInv; ///< inverse rest shape matrix, row-major
+    std::vector<double> m_volume;               ///< m^3 at rest
+    std::vector<double> m_mu, m_lambda;         ///< Pa
+    std::vector<double> m_pointVolume;          ///< m^3, a quarter of each tet round a point
+    std::vector<double> m_pointBulk;            ///< Pa, the bulk modulus averaged over a point's tets by volume
+    std::vector<double> m_tetDilatation, m_tetRate, m_pointDilatation, m_pointRate; ///< scratch of internalForces
+    std::vector<std::array<double, 9>> m_tetR;
+    std::vector<std::array<double, 9>> m_pointR;    ///< each point's rotation (identity where a dof is held)
+    std::vector<std::array<double, 4>> m_pointQuat; ///< its warm start
+    std::size_t m_recoveries = 0;                   ///< scratch: each tet's rotation in the last force evaluation
+    std::vector<std::array<double, 4>> m_rotation;
+    std::vector<std::pair<std::int32_t, double>> m_tethers;
+    std::vector<double> m_tetherStiffness; ///< N/m per point
+    // Precomputed compliance between surface dofs: index of a point in it (-1: none), the dense block.
+    std::vector<std::int32_t> m_compliantIndex;
+    std::vector<double> m_compliance; ///< (3 m) x (3 m), row-major
+    std::size_t m_compliantCount = 0;
+    std::vector<double> m_lastW;
+    double m_residualNorm = 0.0;
+};
+
+} // namespace hs::mechanics

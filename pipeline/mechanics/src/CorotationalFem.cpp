@@ -1,0 +1,735 @@
+#include "hs/mechanics/CorotationalFem.h"
+
+#include "TetMath.h"
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace hs::mechanics {
+
+struct CorotationalFem::Factor {
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+};
+
+namespace {
+
+/// The rest gradients of the tet's four shape functions (rows of Dm^-1 for points 1-3; point 0 their negated sum).
+std::array<Vec3, 4> shapeGradients(const Mat3& dmInv) {
+    std::array<Vec3, 4> g;
+    for (std::size_t a = 0; a < 3; ++a)
+        g[a + 1] = {dmInv[3 * a], dmInv[3 * a + 1], dmInv[3 * a + 2]};
+    g[0] = (g[1] + g[2] + g[3]) * -1.0;
+    return g;
+}
+
+/// The isotropic linear stress 2 mu e + lambda tr(e) I of the symmetric part of `s` minus `identity` (0 or 1).
+Mat3 linearStress(const Mat3& s, double identity, double mu, double lambda) {
+    Mat3 e;
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j)
+            e[3 * i + j] = 0.5 * (s[3 * i + j] + s[3 * j + i]) - (i == j ? identity : 0.0);
+    const double trace = e[0] + e[4] + e[8];
+    for (std::size_t k = 0; k < 9; ++k)
+        e[k] *= 2.0 * mu;
+    e[0] += lambda * trace;
+    e[4] += lambda * trace;
+    e[8] += lambda * trace;
+    return e;
+}
+
+} // namespace
+
+CorotationalFem::CorotationalFem() = default;
+CorotationalFem::~CorotationalFem() = default;
+CorotationalFem::CorotationalFem(CorotationalFem&&) noexcept = default;
+CorotationalFem& CorotationalFem::operator=(CorotationalFem&&) noexcept = default;
+
+Status CorotationalFem::build(const std::vector<Vec3>& pointsM, const std::vector<Tet>& tets,
+                              const std::vector<FemMaterial>& materials,
+                              const std::vector<std::array<bool, 3>>& fixedDof,
+                              const std::vector<std::pair<std::int32_t, double>>& tethers,
+                              const FemSettings& settings) {
+    if (!(settings.stepS > 0.0 && settings.stepS <= 0.1) || settings.iterations < 1 || settings.iterations > 50 ||
+        !(settings.rayleighMassPerS >= 0.0) || !(settings.rayleighStiffnessS >= 0.0) || settings.contactSweeps < 1)
+        return fail(ErrorCode::InvalidInput, "tissue solver: step 0-0.1 s, iterations 1-50, damping >= 0");
+    const std::size_t n = pointsM.size();
+    if (materials.size() != tets.size() || fixedDof.size() != n)
+        return fail(ErrorCode::InvalidInput, "tissue solver: one material per tet and one fixed flag per point");
+    m_settings = settings;
+    m_rest = pointsM;
+    m_x = pointsM;
+    m_target = pointsM;
+    m_v.assign(n, Vec3{});
+    m_reaction.assign(n, Vec3{});
+    m_fixed = fixedDof;
+    m_tets = tets;
+    m_removed.assign(tets.size(), 0);
+    m_mass.assign(n, 0.0);
+    m_dmInv.resize(tets.size());
+    m_volume.resize(tets.size());
+    m_mu.resize(tets.size());
+    m_lambda.resize(tets.size());
+    m_rotation.assign(tets.size(), {1.0, 0.0, 0.0, 0.0});
+    for (std::size_t t = 0; t < tets.size(); ++t) {
+        const Tet& tet = tets[t];
+        for (const std::int32_t p : tet)
+            if (p < 0 || static_cast<std::size_t>(p) >= n)
+                return fail(ErrorCode::InvalidInput,
+                            "tissue solver: tet " + std::to_string(t) + " has a point out of range");
+        const FemMaterial& m = materials[t];
+        if (!(m.youngsModulusPa > 0.0) || !(m.poissonRatio >= 0.0 && m.poissonRatio < 0.5) || !(m.densityKgPerM3 > 0.0))
+            return fail(ErrorCode::InvalidInput, "tissue solver: tet " + std::to_string(t) +
+                                                     ": Young's modulus > 0, Poisson ratio 0-0.5, density > 0");
+        const Mat3 dm =
+            shapeMatrix(pointsM[static_cast<std::size_t>(tet[0])], pointsM[static_cast<std::size_t>(tet[1])],
+                        pointsM[static_cast<std::size_t>(tet[2])], pointsM[static_cast<std::size_t>(tet[3])]);
+        double det = 0.0;
+        if (!invert(dm, m_dmInv[t], det) || std::abs(det) < 1e-24)
+            return fail(ErrorCode::InvalidInput, "tissue solver: tet " + std::to_string(t) + " is flat");
+        m_volume[t] = std::abs(det) / 6.0;
+        m_mu[t] = m.youngsModulusPa / (2.0 * (1.0 + m.poissonRatio));
+        m_lambda[t] = m.youngsModulusPa * m.poissonRatio / ((1.0 + m.poissonRatio) * (1.0 - 2.0 * m.poissonRatio));
+        for (const std::int32_t p : tet)
+            m_mass[static_cast<std::size_t>(p)] += m.densityKgPerM3 * m_volume[t] / 4.0;
+    }
+    m_tetherStiffness.assign(n, 0.0);
+    for (const auto& [p, k] : tethers) {
+        if (p < 0 || static_cast<std::size_t>(p) >= n || !(k >= 0.0) || !std::isfinite(k))
+            return fail(ErrorCode::InvalidInput, "tissue solver: a tether's point or stiffness is out of range");
+        m_tetherStiffness[static_cast<std::size_t>(p)] += k;
+    }
+    m_pointVolume.assign(n, 0.0);
+    m_pointBulk.assign(n, 0.0);
+    for (std::size_t t = 0; t < tets.size(); ++t)
+        for (const std::int32_t p : tets[t]) {
+            m_pointVolume[static_cast<std::size_t>(p)] += m_volume[t] / 4.0;
+            m_pointBulk[static_cast<std::size_t>(p)] += (m_lambda[t] + 2.0 * m_mu[t] / 3.0) * m_volume[t] / 4.0;
+        }
+    for (std::size_t i = 0; i < n; ++i)
+        if (m_pointVolume[i] > 0.0)
+            m_pointBulk[i] /= m_pointVolume[i];
+    for (std::size_t i = 0; i < n; ++i)
+        if (!(m_mass[i] > 0.0))
+            m_mass[i] = 1e-12; // a point of no tet: it keeps the matrix definite and never moves
+    m_compliantIndex.assign(n, -1);
+    m_compliance.clear();
+    m_compliantCount = 0;
+    assembleAndFactor();
+    return {};
+}
+
+void CorotationalFem::assembleAndFactor() {
+    const std::size_t n = m_x.size();
+    const double h = m_settings.stepS;
+    const double stiffnessScale = 1.0 + m_settings.rayleighStiffnessS / h;
+    const double massScale = 1.0 / (h * h) + m_settings.rayleighMassPerS / h;
+    const auto heldDof = [this](std::size_t dof) { return m_fixed[dof / 3][dof % 3]; };
+    std::vector<Eigen::Triplet<double>> triplets;
+    triplets.reserve(m_tets.size() * 144 + 3 * n);
+    const bool nodal = m_settings.nodalPressure;
+    for (std::size_t t = 0; t < m_tets.size(); ++t) {
+        if (m_removed[t])
+            continue;
+        const std::array<Vec3, 4> g = shapeGradients(m_dmInv[t]);
+        // With nodal pressure the tet keeps only its deviatoric part (lambda -> -2 mu / 3); the volumetric part is
+        // assembled per point below.
+        const double v = m_volume[t] * stiffnessScale, mu = m_mu[t], la = nodal ? -2.0 * mu / 3.0 : m_lambda[t];
+        for (std::size_t a = 0; a < 4; ++a)
+            for (std::size_t b = 0; b < 4; ++b) {
+                const double gg = dot(g[a], g[b]);
+                for (int i = 0; i < 3; ++i)
+                    for (int j = 0; j < 3; ++j) {
+                        const auto row = static_cast<std::size_t>(3 * m_tets[t][a] + i);
+                        const auto col = static_cast<std::size_t>(3 * m_tets[t][b] + j);
+                        if (heldDof(row) || heldDof(col))
+                            continue;
+                        const double k =
+                            v * (la * g[a][i] * g[b][j] + mu * g[a][j] * g[b][i] + (i == j ? mu * gg : 0.0));
+                        triplets.emplace_back(static_cast<int>(row), static_cast<int>(col), k);
+                    }
+            }
+    }
+    if (nodal) {
+        // Per point n: kappa_n V_n b_n b_n^T, with b_n the gradient of its averaged dilatation
+        // theta_n = sum over its tets of (V_t / 4 V_n) theta_t.
+        std::vector<std::vector<std::size_t>> tetsOf(n);
+        for (std::size_t t = 0; t < m_tets.size(); ++t)
+            if (!m_removed[t])
+                for (const std::int32_t p : m_tets[t])
+                    tetsOf[static_cast<std::size_t>(p)].push_back(t);
+        std::vector<std::pair<std::size_t, Vec3>> gradient; // (point, d theta_n / d x_point)
+        for (std::size_t p = 0; p < n; ++p) {
+            if (tetsOf[p].empty() || !(m_pointVolume[p] > 0.0))
+                continue;
+            gradient.clear();
+            for (const std::size_t t : tetsOf[p]) {
+                const std::array<Vec3, 4> g = shapeGradients(m_dmInv[t]);
+                for (std::size_t a = 0; a < 4; ++a) {
+                    const auto q = static_cast<std::size_t>(m_tets[t][a]);
+                    const Vec3 add = g[a] * (m_volume[t] / (4.0 * m_pointVolume[p]));
+                    auto it = std::find_if(gradient.begin(), gradient.end(),
+                                           [q](const std::pair<std::size_t, Vec3>& e) { return e.first == q; });
+                    if (it == gradient.end())
+                        gradient.emplace_back(q, add);
+                    else
+                        it->second += add;
+                }
+            }
+            const double scale = m_pointBulk[p] * m_pointVolume[p] * stiffnessScale;
+            for (const auto& [qa, ga] : gradient)
+                for (const auto& [qb, gb] : gradient)
+                    for (int i = 0; i < 3; ++i)
+                        for (int j = 0; j < 3; ++j) {
+                            const std::size_t row = 3 * qa + static_cast<std::size_t>(i);
+                            const std::size_t col = 3 * qb + static_cast<std::size_t>(j);
+                            if (heldDof(row) || heldDof(col))
+                                continue;
+                            triplets.emplace_back(static_cast<int>(row), static_cast<int>(col), scale * ga[i] * gb[j]);
+                        }
+        }
+    }
+    for (std::size_t dof = 0; dof < 3 * n; ++dof) {
+        const double d = heldDof(dof) ? 1.0 : m_mass[dof / 3] * massScale + m_tetherStiffness[dof / 3];
+        triplets.emplace_back(static_cast<int>(dof), static_cast<int>(dof), d);
+    }
+    Eigen::SparseMatrix<double> h3(static_cast<Eigen::Index>(3 * n), static_cast<Eigen::Index>(3 * n));
+    h3.setFromTriplets(triplets.begin(), triplets.end());
+    if (!m_factor)
+        m_factor = std::make_unique<Factor>();
+    m_factor->ldlt.compute(h3);
+}
+
+void CorotationalFem::setTarget(std::size_t point, const Vec3& positionM) {
+    if (point < m_target.size())
+        m_target[point] = positionM;
+}
+
+void CorotationalFem::internalForces(const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& out) {
+    out.assign(x.size(), Vec3{});
+    const double beta = m_settings.rayleighStiffnessS;
+    const bool nodal = m_settings.nodalPressure;
+    const std::size_t tets = m_tets.size();
+    m_tetR.resize(tets);
+    m_tetDilatation.assign(tets, 0.0);
+    m_tetRate.assign(tets, 0.0);
+    std::vector<Mat3> strain(tets), rate(tets);
+    // Pass 1: each tet's rotation, its corotated strain and strain rate.
+    for (std::size_t t = 0; t < tets; ++t) {
+        if (m_removed[t])
+            continue;
+        const Tet& tet = m_tets[t];
+        const auto p = [&tet](std::size_t k) { return static_cast<std::size_t>(tet[k]); };
+        const Mat3& dmInv = m_dmInv[t];
+        const Mat3 f = multiply(shapeMatrix(x[p(0)], x[p(1)], x[p(2)], x[p(3)]), dmInv);
+        m_tetR[t] = rotationOf(f, m_rotation[t], 3);
+        strain[t] = multiplyTransposed(m_tetR[t], f);
+        m_tetDilatation[t] = strain[t][0] + strain[t][4] + strain[t][8] - 3.0;
+        if (beta > 0.0) {
+            const Mat3 l = multiply(shapeMatrix(v[p(0)], v[p(1)], v[p(2)], v[p(3)]), dmInv);
+            rate[t] = multiplyTransposed(m_tetR[t], l);
+            m_tetRate[t] = rate[t][0] + rate[t][4] + rate[t][8];
+        }
+    }
+    if (nodal) {
+        m_pointDilatation.assign(x.size(), 0.0);
+        m_pointRate.assign(x.size(), 0.0);
+        for (std::size_t t = 0; t < tets; ++t) {
+            if (m_removed[t])
+                continue;
+            for (const std::int32_t q : m_tets[t]) {
+                const auto qi = static_cast<std::size_t>(q);
+                const double w = m_volume[t] / (4.0 * m_pointVolume[qi]);
+                m_pointDilatation[qi] += w * m_tetDilatation[t];
+                m_pointRate[qi] += w * m_tetRate[t];
+            }
+        }
+    }
+    updatePointRotations();
+    // Pass 2: stresses and forces.
+    for (std::size_t t = 0; t < tets; ++t) {
+        if (m_removed[t])
+            continue;
+        const Tet& tet = m_tets[t];
+        const auto p = [&tet](std::size_t k) { return static_cast<std::size_t>(tet[k]); };
+        const Mat3& dmInv = m_dmInv[t];
+        const double mu = m_mu[t];
+        double pressure = 0.0, pressureRate = 0.0; // the volumetric stress, and its rate's
+        if (nodal) {
+            for (std::size_t k = 0; k < 4; ++k) {
+                pressure += 0.25 * m_pointBulk[p(k)] * m_pointDilatation[p(k)];
+                pressureRate += 0.25 * m_pointBulk[p(k)] * m_pointRate[p(k)];
+            }
+        } else {
+            const double bulk = m_lambda[t] + 2.0 * mu / 3.0;
+            pressure = bulk * m_tetDilatation[t];
+            pressureRate = bulk * m_tetRate[t];
+        }
+        // sigma = 2 mu dev(e) + pressure I, and beta times the same of the strain rate.
+        Mat3 sigma = linearStress(strain[t], 1.0, mu, -2.0 * mu / 3.0);
+        sigma[0] += pressure;
+        sigma[4] += pressure;
+        sigma[8] += pressure;
+        if (beta > 0.0) {
+            const Mat3 damping = linearStress(rate[t], 0.0, mu, -2.0 * mu / 3.0);
+            for (std::size_t k = 0; k < 9; ++k)
+                sigma[k] += beta * damping[k];
+            sigma[0] += beta * pressureRate;
+            sigma[4] += beta * pressureRate;
+            sigma[8] += beta * pressureRate;
+        }
+        const Mat3 piola = multiply(m_tetR[t], sigma);
+        // f_a = -V P g_a with g_a the rows of Dm^-1: the columns of -V P Dm^-T.
+        Vec3 sum{};
+        for (std::size_t a = 0; a < 3; ++a) {
+            const Vec3 g{dmInv[3 * a], dmInv[3 * a + 1], dmInv[3 * a + 2]};
+            const Vec3 fa =
+                Vec3{piola[0] * g.x + piola[1] * g.y + piola[2] * g.z, piola[3] * g.x + piola[4] * g.y + piola[5] * g.z,
+                     piola[6] * g.x + piola[7] * g.y + piola[8] * g.z} *
+                -m_volume[t];
+            out[p(a + 1)] += fa;
+            sum += fa;
+        }
+        out[p(0)] -= sum;
+    }
+}
+
+void CorotationalFem::solveInPlace(std::vector<double>& b) const {
+    for (std::size_t dof = 0; dof < b.size(); ++dof)
+        if (m_fixed[dof / 3][dof % 3])
+            b[dof] = 0.0;
+    Eigen::Map<Eigen::VectorXd> map(b.data(), static_cast<Eigen::Index>(b.size()));
+    const Eigen::VectorXd x = m_factor->ldlt.solve(map);
+    map = x;
+}
+
+void CorotationalFem::updatePointRotations() {
+    const std::size_t n = m_x.size();
+    m_pointR.assign(n, Mat3{1, 0, 0, 0, 1, 0, 0, 0, 1});
+    m_pointQuat.resize(n, {1.0, 0.0, 0.0, 0.0});
+    std::vector<Mat3> sum(n, Mat3{});
+    std::vector<char> any(n, 0);
+    for (std::size_t t = 0; t < m_tets.size(); ++t) {
+        if (m_removed[t])
+            continue;
+        for (const std::int32_t p : m_tets[t]) {
+            const auto pi = static_cast<std::size_t>(p);
+            any[pi] = 1;
+            for (std::size_t k = 0; k < 9; ++k)
+                sum[pi][k] += m_volume[t] * m_tetR[t][k];
+        }
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!any[i] || m_fixed[i][0] || m_fixed[i][1] || m_fixed[i][2])
+            continue;
+        m_pointR[i] = rotationOf(sum[i], m_pointQuat[i], 4);
+    }
+}
+
+void CorotationalFem::solveWarped(std::vector<double>& b) const {
+    const std::size_t n = m_x.size();
+    const bool warped = m_pointR.size() == n;
+    if (warped)
+        for (std::size_t i = 0; i < n; ++i) {
+            const Mat3& r = m_pointR[i];
+            const double x = b[3 * i], y = b[3 * i + 1], z = b[3 * i + 2];
+            b[3 * i] = r[0] * x + r[3] * y + r[6] * z;
+            b[3 * i + 1] = r[1] * x + r[4] * y + r[7] * z;
+            b[3 * i + 2] = r[2] * x + r[5] * y + r[8] * z;
+        }
+    solveInPlace(b);
+    if (warped)
+        for (std::size_t i = 0; i < n; ++i) {
+            const Mat3& r = m_pointR[i];
+            const double x = b[3 * i], y = b[3 * i + 1], z = b[3 * i + 2];
+            b[3 * i] = r[0] * x + r[1] * y + r[2] * z;
+            b[3 * i + 1] = r[3] * x + r[4] * y + r[5] * z;
+            b[3 * i + 2] = r[6] * x + r[7] * y + r[8] * z;
+        }
+}
+
+void CorotationalFem::precomputeCompliance(const std::vector<std::int32_t>& points) {
+    const std::size_t n = m_x.size();
+    m_compliantIndex.assign(n, -1);
+    std::vector<std::int32_t> list;
+    for (const std::int32_t p : points)
+        if (p >= 0 && static_cast<std::size_t>(p) < n && m_compliantIndex[static_cast<std::size_t>(p)] < 0) {
+            m_compliantIndex[static_cast<std::size_t>(p)] = static_cast<std::int32_t>(list.size());
+            list.push_back(p);
+        }
+    m_compliantCount = list.size();
+    const std::size_t m3 = 3 * m_compliantCount;
+    m_compliance.assign(m3 * m3, 0.0);
+    std::vector<double> column(3 * n);
+    for (std::size_t k = 0; k < list.size(); ++k)
+        for (std::size_t d = 0; d < 3; ++d) {
+            std::fill(column.begin(), column.end(), 0.0);
+            column[3 * static_cast<std::size_t>(list[k]) + d] = 1.0;
+            solveInPlace(column);
+            for (std::size_t j = 0; j < list.size(); ++j)
+                for (std::size_t e = 0; e < 3; ++e)
+                    m_compliance[(3 * j + e) * m3 + 3 * k + d] = column[3 * static_cast<std::size_t>(list[j]) + e];
+        }
+}
+
+void CorotationalFem::complianceBetween(const std::vector<FemContact>& contacts, std::vector<double>& w) {
+    const std::size_t k = contacts.size();
+    w.assign(k * k, 0.0);
+    bool allPrecomputed = m_compliantCount > 0;
+    for (const FemContact& c : contacts)
+        for (std::size_t a = 0; a < 3; ++a)
+            if (c.weights[a] != 0.0 && m_compliantIndex[static_cast<std::size_t>(c.points[a])] < 0)
+                allPrecomputed = false;
+    if (allPrecomputed) {
+        const std::size_t m3 = 3 * m_compliantCount;
+        const auto toRest = [this](const Vec3& v, std::size_t point) {
+            if (m_pointR.size() != m_x.size())
+                return v;
+            const Mat3& r = m_pointR[point];
+            return Vec3{r[0] * v.x + r[3] * v.y + r[6] * v.z, r[1] * v.x + r[4] * v.y + r[7] * v.z,
+                        r[2] * v.x + r[5] * v.y + r[8] * v.z};
+        };
+        for (std::size_t i = 0; i < k; ++i)
+            for (std::size_t j = 0; j < k; ++j) {
+                double s = 0.0;
+                for (std::size_t a = 0; a < 3; ++a) {
+                    if (contacts[i].weights[a] == 0.0)
+                        continue;
+                    const auto ri =
+                        3 * static_cast<std::size_t>(m_compliantIndex[static_cast<std::size_t>(contacts[i].points[a])]);
+                    for (std::size_t b = 0; b < 3; ++b) {
+                        if (contacts[j].weights[b] == 0.0)
+                            continue;
+                        const auto cj = 3 * static_cast<std::size_t>(
+                                                m_compliantIndex[static_cast<std::size_t>(contacts[j].points[b])]);
+                        const Vec3 ni = toRest(contacts[i].normal, static_cast<std::size_t>(contacts[i].points[a]));
+                        const Vec3 nj = toRest(contacts[j].normal, static_cast<std::size_t>(contacts[j].points[b]));
+                        double block = 0.0;
+                        for (std::size_t r = 0; r < 3; ++r)
+                            for (std::size_t c = 0; c < 3; ++c)
+                                block += ni[static_cast<int>(r)] * m_compliance[(ri + r) * m3 + cj + c] *
+                                         nj[static_cast<int>(c)];
+                        s += contacts[i].weights[a] * contacts[j].weights[b] * block;
+                    }
+                }
+                w[i * k + j] = s;
+            }
+        return;
+    }
+    // One solve per contact: u_i = H^-1 J_i^T, W_ij = J_j u_i.
+    const std::size_t n3 = 3 * m_x.size();
+    std::vector<double> u(n3);
+    for (std::size_t i = 0; i < k; ++i) {
+        std::fill(u.begin(), u.end(), 0.0);
+        for (std::size_t a = 0; a < 3; ++a)
+            for (int d = 0; d < 3; ++d)
+                u[3 * static_cast<std::size_t>(contacts[i].points[a]) + static_cast<std::size_t>(d)] +=
+                    contacts[i].weights[a] * contacts[i].normal[d];
+        solveWarped(u);
+        for (std::size_t j = 0; j < k; ++j) {
+            double s = 0.0;
+            for (std::size_t b = 0; b < 3; ++b)
+                for (int d = 0; d < 3; ++d)
+                    s += contacts[j].weights[b] * contacts[j].normal[d] *
+                         u[3 * static_cast<std::size_t>(contacts[j].points[b]) + static_cast<std::size_t>(d)];
+            w[i * k + j] = s;
+        }
+    }
+}
+
+void CorotationalFem::solveContacts(std::vector<FemContact>& contacts, const ObstacleCompliance& obstacle,
+                                    const std::vector<Vec3>& xFree, std::vector<double>& lambda) {
+    const std::size_t k = contacts.size();
+    complianceBetween(contacts, m_lastW);
+    std::vector<double> w = m_lastW;
+    if (obstacle.matrix.size() == k * k)
+        for (std::size_t i = 0; i < k * k; ++i)
+            w[i] += obstacle.matrix[i];
+    std::vector<double> gap(k);
+    for (std::size_t i = 0; i < k; ++i) {
+        const FemContact& c = contacts[i];
+        Vec3 q{};
+        for (std::size_t a = 0; a < 3; ++a)
+            q += xFree[static_cast<std::size_t>(c.points[a])] * c.weights[a];
+        gap[i] = dot(c.normal, c.planePoint - q);
+    }
+    // Projected Gauss-Seidel on gap + W lambda >= 0, lambda >= 0, complementary (Duriez et al. 2006).
+    lambda.assign(k, 0.0);
+    for (int sweep = 0; sweep < m_settings.contactSweeps; ++sweep) {
+        double change = 0.0;
+        for (std::size_t i = 0; i < k; ++i) {
+            if (!(w[i * k + i] > 0.0))
+                continue;
+            double g = gap[i];
+            for (std::size_t j = 0; j < k; ++j)
+                g += w[i * k + j] * lambda[j];
+            const double next = std::max(0.0, lambda[i] - g / w[i * k + i]);
+            change = std::max(change, std::abs(next - lambda[i]));
+            lambda[i] = next;
+        }
+        if (change < 1e-12)
+            break;
+    }
+}
+
+void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector<FemContact>& contacts,
+                           const ObstacleCompliance& obstacle) {
+    const std::size_t n = m_x.size();
+    const double h = m_settings.stepS, alpha = m_settings.rayleighMassPerS;
+    m_xStart = m_x;
+    const std::vector<Vec3> vStart = m_v;
+    // Valid contacts only (a point out of range would corrupt memory: dropped).
+    contacts.erase(std::remove_if(contacts.begin(), contacts.end(),
+                                  [n](const FemContact& c) {
+                                      for (const std::int32_t p : c.points)
+                                          if (p < 0 || static_cast<std::size_t>(p) >= n)
+                                              return true;
+                                      return !isFinite(c.normal) || !isFinite(c.planePoint);
+                                  }),
+                   contacts.end());
+    // The predictor x_n + h v_n, with the held degrees of freedom at their targets.
+    std::vector<Vec3> x(n), v(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        x[i] = m_x[i] + m_v[i] * h;
+        for (int d = 0; d < 3; ++d)
+            if (m_fixed[i][static_cast<std::size_t>(d)])
+                x[i][d] = m_target[i][d];
+    }
+    std::vector<double> rhs(3 * n), lambda;
+    for (int it = 0; it < m_settings.iterations; ++it) {
+        for (std::size_t i = 0; i < n; ++i)
+            v[i] = (x[i] - m_xStart[i]) / h;
+        internalForces(x, v, m_force);
+        for (std::size_t i = 0; i < n; ++i) {
+            const Vec3 inertia =
+                (x[i] - m_xStart[i] - vStart[i] * h) * (m_mass[i] / (h * h)) + v[i] * (alpha * m_mass[i]);
+            const Vec3 tether = (x[i] - m_rest[i]) * m_tetherStiffness[i];
+            const Vec3 f = i < externalForcesN.size() && isFinite(externalForcesN[i]) ? externalForcesN[i] : Vec3{};
+            const Vec3 r = inertia + tether - m_force[i] - f;
+            for (int d = 0; d < 3; ++d)
+                rhs[3 * i + static_cast<std::size_t>(d)] = -r[d];
+        }
+        solveWarped(rhs);
+        for (std::size_t i = 0; i < n; ++i)
+            x[i] += Vec3{rhs[3 * i], rhs[3 * i + 1], rhs[3 * i + 2]};
+        if (contacts.empty())
+            continue;
+        // The contacts' forces against the free motion: lambda, total (the residual above has none).
+        solveContacts(contacts, obstacle, x, lambda);
+        bool any = false;
+        std::fill(rhs.begin(), rhs.end(), 0.0);
+        for (std::size_t c = 0; c < contacts.size(); ++c) {
+            if (lambda[c] <= 0.0)
+                continue;
+            any = true;
+            for (std::size_t a = 0; a < 3; ++a)
+                for (int d = 0; d < 3; ++d)
+                    rhs[3 * static_cast<std::size_t>(contacts[c].points[a]) + static_cast<std::size_t>(d)] -=
+                        lambda[c] * contacts[c].weights[a] * contacts[c].normal[d];
+        }
+        if (any) {
+            solveWarped(rhs);
+            for (std::size_t i = 0; i < n; ++i)
+                x[i] += Vec3{rhs[3 * i], rhs[3 * i + 1], rhs[3 * i + 2]};
+        }
+    }
+    for (std::size_t c = 0; c < contacts.size(); ++c)
+        contacts[c].forceN = c < lambda.size() ? lambda[c] : 0.0;
+    bool finite = true;
+    for (std::size_t i = 0; i < n && finite; ++i)
+        finite = isFinite(x[i]);
+    if (!finite) {
+        // Never hand on a NaN: the step is undone and the tissue held where it was, at rest.
+        ++m_recoveries;
+        x = m_xStart;
+        std::fill(m_v.begin(), m_v.end(), Vec3{});
+        for (FemContact& c : contacts)
+            c.forceN = 0.0;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        m_v[i] = finite ? (x[i] - m_xStart[i]) / h : Vec3{};
+        m_x[i] = x[i];
+    }
+    // The residual at the step's end: the supports' reactions and the imbalance of the free degrees of freedom.
+    internalForces(m_x, m_v, m_force);
+    std::vector<Vec3> contactForce(n, Vec3{});
+    for (const FemContact& c : contacts)
+        for (std::size_t a = 0; a < 3; ++a)
+            contactForce[static_cast<std::size_t>(c.points[a])] -= c.normal * (c.forceN * c.weights[a]);
+    double sum2 = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec3 inertia = (m_v[i] - vStart[i]) * (m_mass[i] / h) + m_v[i] * (alpha * m_mass[i]);
+        const Vec3 tether = (m_x[i] - m_rest[i]) * m_tetherStiffness[i];
+        const Vec3 f = i < externalForcesN.size() && isFinite(externalForcesN[i]) ? externalForcesN[i] : Vec3{};
+        const Vec3 r = inertia + tether - m_force[i] - f - contactForce[i];
+        Vec3 reaction{};
+        for (int d = 0; d < 3; ++d) {
+            if (m_fixed[i][static_cast<std::size_t>(d)])
+                reaction[d] = r[d];
+            else
+                sum2 += r[d] * r[d];
+        }
+        m_reaction[i] = reaction;
+    }
+    m_residualNorm = std::sqrt(sum2);
+}
+
+std::vector<std::vector<std::size_t>> CorotationalFem::removeTets(const std::vector<std::size_t>& tets) {
+    std::vector<std::vector<std::size_t>> pieces;
+    bool changed = false;
+    for (const std::size_t t : tets)
+        if (t < m_removed.size() && !m_removed[t]) {
+            m_removed[t] = 1;
+            changed = true;
+        }
+    if (!changed)
+        return pieces;
+    // The live tets' pieces: union-find over shared faces (a face is its sorted point triple).
+    const std::size_t count = m_tets.size();
+    std::vector<std::size_t> parent(count);
+    for (std::size_t t = 0; t < count; ++t)
+        parent[t] = t;
+    const auto root = [&parent](std::size_t t) {
+        while (parent[t] != t)
+            t = parent[t] = parent[parent[t]];
+        return t;
+    };
+    std::vector<std::pair<std::array<std::int32_t, 3>, std::size_t>> faces;
+    faces.reserve(4 * count);
+    for (std::size_t t = 0; t < count; ++t) {
+        if (m_removed[t])
+            continue;
+        const Tet& k = m_tets[t];
+        for (std::size_t skip = 0; skip < 4; ++skip) {
+            std::array<std::int32_t, 3> f{};
+            for (std::size_t i = 0, j = 0; i < 4; ++i)
+                if (i != skip)
+                    f[j++] = k[i];
+            std::sort(f.begin(), f.end());
+            faces.emplace_back(f, t);
+        }
+    }
+    std::sort(faces.begin(), faces.end());
+    for (std::size_t i = 1; i < faces.size(); ++i)
+        if (faces[i].first == faces[i - 1].first) {
+            const std::size_t a = root(faces[i].second), b = root(faces[i - 1].second);
+            if (a != b)
+                parent[std::max(a, b)] = std::min(a, b);
+        }
+    std::vector<char> anchored(count, 0);
+    for (std::size_t t = 0; t < count; ++t) {
+        if (m_removed[t])
+            continue;
+        for (const std::int32_t p : m_tets[t]) {
+            const auto pi = static_cast<std::size_t>(p);
+            if (m_fixed[pi][0] || m_fixed[pi][1] || m_fixed[pi][2] || m_tetherStiffness[pi] > 0.0)
+                anchored[root(t)] = 1;
+        }
+    }
+    std::vector<std::int64_t> pieceOf(count, -1);
+    for (std::size_t t = 0; t < count; ++t) {
+        if (m_removed[t] || anchored[root(t)])
+            continue;
+        const std::size_t r = root(t);
+        if (pieceOf[r] < 0) {
+            pieceOf[r] = static_cast<std::int64_t>(pieces.size());
+            pieces.emplace_back();
+        }
+        pieces[static_cast<std::size_t>(pieceOf[r])].push_back(t);
+    }
+    for (const auto& piece : pieces)
+        for (const std::size_t t : piece)
+            m_removed[t] = 1;
+    // Points of no live tet are held where they are.
+    std::vector<char> live(m_x.size(), 0);
+    for (std::size_t t = 0; t < count; ++t)
+        if (!m_removed[t])
+            for (const std::int32_t p : m_tets[t])
+                live[static_cast<std::size_t>(p)] = 1;
+    for (std::size_t i = 0; i < m_x.size(); ++i)
+        if (!live[i] && !(m_fixed[i][0] && m_fixed[i][1] && m_fixed[i][2])) {
+            m_fixed[i] = {true, true, true};
+            m_target[i] = m_x[i];
+            m_v[i] = Vec3{};
+        }
+    assembleAndFactor();
+    if (m_compliantCount > 0) {
+        std::vector<std::int32_t> points;
+        for (std::size_t i = 0; i < m_compliantIndex.size(); ++i)
+            if (m_compliantIndex[i] >= 0)
+                points.push_back(static_cast<std::int32_t>(i));
+        precomputeCompliance(points);
+    }
+    return pieces;
+}
+
+Vec3 CorotationalFem::reactionN(std::size_t point) const {
+    return point < m_reaction.size() ? m_reaction[point] : Vec3{};
+}
+
+double CorotationalFem::elasticEnergyJ() const {
+    // mu |dev e|^2 per tet plus kappa / 2 theta^2, per tet or per point (nodal pressure).
+    double energy = 0.0;
+    std::vector<double> pointTheta(m_x.size(), 0.0);
+    for (std::size_t t = 0; t < m_tets.size(); ++t) {
+        if (m_removed[t])
+            continue;
+        const Tet& tet = m_tets[t];
+        const auto p = [&tet](std::size_t k) { return static_cast<std::size_t>(tet[k]); };
+        const Mat3 f = multiply(shapeMatrix(m_x[p(0)], m_x[p(1)], m_x[p(2)], m_x[p(3)]), m_dmInv[t]);
+        std::array<double, 4> q = m_rotation[t];
+        const Mat3 s = multiplyTransposed(rotationOf(f, q, 8), f);
+        const double theta = s[0] + s[4] + s[8] - 3.0;
+        double dev2 = 0.0;
+        for (std::size_t i = 0; i < 3; ++i)
+            for (std::size_t j = 0; j < 3; ++j) {
+                const double e = 0.5 * (s[3 * i + j] + s[3 * j + i]) - (i == j ? 1.0 + theta / 3.0 : 0.0);
+                dev2 += e * e;
+            }
+        energy += m_mu[t] * dev2 * m_volume[t];
+        if (m_settings.nodalPressure)
+            for (std::size_t k = 0; k < 4; ++k)
+                pointTheta[p(k)] += m_volume[t] / (4.0 * m_pointVolume[p(k)]) * theta;
+        else
+            energy += 0.5 * (m_lambda[t] + 2.0 * m_mu[t] / 3.0) * theta * theta * m_volume[t];
+    }
+    if (m_settings.nodalPressure)
+        for (std::size_t i = 0; i < m_x.size(); ++i)
+            energy += 0.5 * m_pointBulk[i] * pointTheta[i] * pointTheta[i] * m_pointVolume[i];
+    return energy;
+}
+
+double CorotationalFem::minVolumeRatio(std::size_t& inverted) const {
+    inverted = 0;
+    double smallest = 1e300;
+    for (std::size_t t = 0; t < m_tets.size(); ++t) {
+        if (m_removed[t])
+            continue;
+        const Tet& tet = m_tets[t];
+        const auto p = [&tet](std::size_t k) { return static_cast<std::size_t>(tet[k]); };
+        const double j = determinant(multiply(shapeMatrix(m_x[p(0)], m_x[p(1)], m_x[p(2)], m_x[p(3)]), m_dmInv[t]));
+        if (j <= 0.0)
+            ++inverted;
+        smallest = std::min(smallest, j);
+    }
+    return smallest > 1e299 ? 1.0 : smallest;
+}
+
+double CorotationalFem::maxSpeedMPerS() const {
+    double fastest = 0.0;
+    for (const Vec3& v : m_v)
+        fastest = std::max(fastest, norm(v));
+    return fastest;
+}
+
+double CorotationalFem::kineticEnergyJ() const {
+    double e = 0.0;
+    for (std::size_t i = 0; i < m_v.size(); ++i)
+        e += 0.5 * m_mass[i] * norm2(m_v[i]);
+    return e;
+}
+
+} // namespace hs::mechanics

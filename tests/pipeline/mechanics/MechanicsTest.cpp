@@ -1,0 +1,256 @@
+// The tissue solver verified against textbook solutions of linear elasticity (docs/simulator.md, "Verification"):
+// Boussinesq's flat punch within 15 % and Lame's thick-walled sphere within 10 %, for the tissues' moduli and
+// Poisson ratios; its steady state independent of the step and the damping; contacts that agree with the held punch;
+// tets removed at run time.
+#include "hs/mechanics/CorotationalFem.h"
+#include "hs/mechanics/Verification.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace {
+
+using namespace hs;
+using namespace hs::mechanics;
+
+struct Corner {
+    double youngsModulusKpa;
+    double poissonRatio;
+};
+
+class PunchCorners : public ::testing::TestWithParam<Corner> {};
+
+TEST_P(PunchCorners, ForceIsBoussinesqsWithinFifteenPercent) {
+    PunchParams p;
+    p.youngsModulusKpa = GetParam().youngsModulusKpa;
+    p.poissonRatio = GetParam().poissonRatio;
+    const auto r = runPunch(p);
+    ASSERT_TRUE(r) << r.error().detail;
+    std::printf("punch E %.0f kPa nu %.2f: %.5f N, Boussinesq %.5f N, error %+.1f %% (%zu points, %zu tets, %.1f s)\n",
+                p.youngsModulusKpa, p.poissonRatio, r->simulated, r->analytic, r->errorPercent, r->points, r->tets,
+                r->seconds);
+    EXPECT_LT(std::abs(r->errorPercent), 15.0);
+    EXPECT_LT(r->residualN, 1e-6 * r->analytic); // the steady state is converged
+}
+
+INSTANTIATE_TEST_SUITE_P(TissueRange, PunchCorners,
+                         ::testing::Values(Corner{15.0, 0.45}, Corner{15.0, 0.49}, Corner{65.0, 0.45},
+                                           Corner{65.0, 0.49}));
+
+class SphereCorners : public ::testing::TestWithParam<Corner> {};
+
+TEST_P(SphereCorners, InnerWallMovesAsLamesSolutionWithinTenPercent) {
+    LameParams p;
+    p.youngsModulusKpa = GetParam().youngsModulusKpa;
+    p.poissonRatio = GetParam().poissonRatio;
+    // Lame's is a small-strain solution: a pressure of 1.5 % of E strains the inner wall by about 1.3 %. (At E 15 kPa
+    // and 1 kPa the follower load on the widening wall already adds 10 %: docs/simulator.md.)
+    p.pressureKpa = 0.015 * p.youngsModulusKpa;
+    const auto r = runLameSphere(p);
+    ASSERT_TRUE(r) << r.error().detail;
+    std::printf("sphere E %.0f kPa nu %.2f: %.4f mm, Lame %.4f mm, error %+.1f %%\n", p.youngsModulusKpa,
+                p.poissonRatio, r->simulated, r->analytic, r->errorPercent);
+    EXPECT_LT(std::abs(r->errorPercent), 10.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(TissueRange, SphereCorners,
+                         ::testing::Values(Corner{15.0, 0.45}, Corner{15.0, 0.49}, Corner{65.0, 0.45},
+                                           Corner{65.0, 0.49}));
+
+TEST(Mechanics, ElementPressureLocksForNearlyIncompressibleTissue) {
+    // Without the nodal pressure, linear tets come out too stiff at nu 0.49: the bar above is not met by any solver.
+    LameParams p;
+    p.poissonRatio = 0.49;
+    p.solver.nodalPressure = false;
+    const auto locked = runLameSphere(p);
+    ASSERT_TRUE(locked);
+    PunchParams q;
+    q.poissonRatio = 0.49;
+    q.solver.nodalPressure = false;
+    const auto punch = runPunch(q);
+    ASSERT_TRUE(punch);
+    std::printf("element pressure at nu 0.49: sphere %+.1f %%, punch %+.1f %%\n", locked->errorPercent,
+                punch->errorPercent);
+    EXPECT_GT(punch->errorPercent, 15.0);
+}
+
+TEST(Mechanics, SteadyStateDoesNotDependOnTheStepOrTheDamping) {
+    LameParams p;
+    p.settleS = 1.5;
+    const auto a = runLameSphere(p);
+    p.solver.stepS = 0.002;
+    p.solver.rayleighMassPerS = 20.0;
+    p.solver.rayleighStiffnessS = 0.05;
+    const auto b = runLameSphere(p);
+    ASSERT_TRUE(a && b);
+    EXPECT_NEAR(a->simulated, b->simulated, 1e-4 * a->simulated);
+}
+
+/// A block 20 x 20 x 10 mm of 2 mm cubes cut into tets, its base held.
+struct Block {
+    std::vector<Vec3> points;
+    std::vector<Tet> tets;
+    std::vector<std::array<bool, 3>> fixed;
+    int nx = 11, nz = 6;
+    std::int32_t at(int i, int j, int k) const { return static_cast<std::int32_t>((k * nx + j) * nx + i); }
+};
+
+Block makeBlock() {
+    Block b;
+    for (int k = 0; k < b.nz; ++k)
+        for (int j = 0; j < b.nx; ++j)
+            for (int i = 0; i < b.nx; ++i)
+                b.points.push_back(Vec3{2.0 * i - 10.0, 2.0 * j - 10.0, -2.0 * (b.nz - 1 - k)} * 1e-3);
+    for (int k = 0; k + 1 < b.nz; ++k)
+        for (int j = 0; j + 1 < b.nx; ++j)
+            for (int i = 0; i + 1 < b.nx; ++i) {
+                const std::int32_t v[8] = {
+                    b.at(i, j, k),     b.at(i + 1, j, k),     b.at(i + 1, j + 1, k),     b.at(i, j + 1, k),
+                    b.at(i, j, k + 1), b.at(i + 1, j, k + 1), b.at(i + 1, j + 1, k + 1), b.at(i, j + 1, k + 1)};
+                const int kuhn[6][4] = {{0, 1, 2, 6}, {0, 2, 3, 6}, {0, 3, 7, 6},
+                                        {0, 7, 4, 6}, {0, 4, 5, 6}, {0, 5, 1, 6}};
+                for (const auto& t : kuhn)
+                    b.tets.push_back({v[t[0]], v[t[1]], v[t[2]], v[t[3]]});
+            }
+    b.fixed.assign(b.points.size(), {false, false, false});
+    for (std::size_t i = 0; i < b.points.size(); ++i)
+        if (b.points[i].z < -9e-3)
+            b.fixed[i] = {true, true, true};
+    return b;
+}
+
+TEST(Mechanics, ContactsPushLikeAHeldPunch) {
+    // The four top points round the centre pressed 0.3 mm down, once held (Dirichlet) and once by a rigid plane
+    // through contacts: the same force, within the contact solve's tolerance.
+    const Block block = makeBlock();
+    const std::vector<FemMaterial> materials(block.tets.size(), FemMaterial{30e3, 0.47, 1050.0});
+    const std::int32_t top[4] = {block.at(5, 5, 5), block.at(6, 5, 5), block.at(5, 6, 5), block.at(6, 6, 5)};
+    FemSettings settings;
+    CorotationalFem held, pressed;
+    std::vector<std::array<bool, 3>> fixed = block.fixed;
+    for (const std::int32_t p : top)
+        fixed[static_cast<std::size_t>(p)][2] = true;
+    ASSERT_TRUE(held.build(block.points, block.tets, materials, fixed, {}, settings));
+    ASSERT_TRUE(pressed.build(block.points, block.tets, materials, block.fixed, {}, settings));
+    std::vector<FemContact> none, contacts;
+    for (int s = 0; s < 200; ++s) {
+        for (const std::int32_t p : top)
+            held.setTarget(static_cast<std::size_t>(p), block.points[static_cast<std::size_t>(p)] - Vec3{0, 0, 3e-4});
+        held.step({}, none);
+        contacts.clear();
+        for (const std::int32_t p : top) {
+            FemContact c;
+            c.points = {p, p, p};
+            c.weights = {1.0, 0.0, 0.0};
+            c.normal = {0.0, 0.0, 1.0};
+            c.planePoint = {0.0, 0.0, -3e-4};
+            contacts.push_back(c);
+        }
+        pressed.step({}, contacts);
+    }
+    double heldForce = 0.0, contactForce = 0.0;
+    for (const std::int32_t p : top)
+        heldForce -= held.reactionN(static_cast<std::size_t>(p)).z;
+    for (const FemContact& c : contacts)
+        contactForce += c.forceN;
+    EXPECT_GT(heldForce, 0.0);
+    EXPECT_NEAR(contactForce, heldForce, 0.01 * heldForce);
+    for (const std::int32_t p : top)
+        EXPECT_NEAR(pressed.positionsM()[static_cast<std::size_t>(p)].z, -3e-4, 1e-6);
+}
+
+TEST(Mechanics, PrecomputedComplianceGivesTheSameContacts) {
+    const Block block = makeBlock();
+    const std::vector<FemMaterial> materials(block.tets.size(), FemMaterial{30e3, 0.47, 1050.0});
+    FemSettings settings;
+    CorotationalFem onDemand, precomputed;
+    ASSERT_TRUE(onDemand.build(block.points, block.tets, materials, block.fixed, {}, settings));
+    ASSERT_TRUE(precomputed.build(block.points, block.tets, materials, block.fixed, {}, settings));
+    std::vector<std::int32_t> top;
+    for (int j = 0; j < block.nx; ++j)
+        for (int i = 0; i < block.nx; ++i)
+            top.push_back(block.at(i, j, block.nz - 1));
+    precomputed.precomputeCompliance(top);
+    std::vector<FemContact> a, b;
+    for (int s = 0; s < 20; ++s) {
+        FemContact c;
+        c.points = {block.at(5, 5, 5), block.at(6, 5, 5), block.at(5, 6, 5)};
+        c.weights = {0.5, 0.25, 0.25};
+        c.normal = normalized(Vec3{0.1, 0.0, 1.0});
+        c.planePoint = {0.0, 0.0, -5e-4};
+        a = {c};
+        b = {c};
+        onDemand.step({}, a);
+        precomputed.step({}, b);
+    }
+    ASSERT_EQ(a.size(), 1u);
+    EXPECT_GT(a[0].forceN, 0.0);
+    EXPECT_NEAR(a[0].forceN, b[0].forceN, 1e-9 * a[0].forceN);
+}
+
+TEST(Mechanics, RemovingTetsKeepsTheSolverStable) {
+    const Block block = makeBlock();
+    const std::vector<FemMaterial> materials(block.tets.size(), FemMaterial{30e3, 0.47, 1050.0});
+    CorotationalFem fem;
+    ASSERT_TRUE(fem.build(block.points, block.tets, materials, block.fixed, {}, FemSettings{}));
+    std::vector<Vec3> gravity(block.points.size(), Vec3{0.0, 0.0, -1e-3});
+    std::vector<FemContact> none;
+    for (int s = 0; s < 400; ++s) {
+        if (s % 20 == 10) {
+            // A strip of the top layer's tets, as a loop would take it.
+            std::vector<std::size_t> strip;
+            for (std::size_t t = 0; t < block.tets.size(); ++t)
+                if (t % 40 == static_cast<std::size_t>(s / 20))
+                    strip.push_back(t);
+            fem.removeTets(strip);
+        }
+        fem.step(gravity, none);
+    }
+    std::size_t inverted = 0;
+    const double ratio = fem.minVolumeRatio(inverted);
+    EXPECT_EQ(inverted, 0u);
+    EXPECT_GT(ratio, 0.5);
+    EXPECT_TRUE(std::isfinite(fem.elasticEnergyJ()));
+    EXPECT_LT(fem.maxSpeedMPerS(), 1.0);
+}
+
+TEST(Mechanics, APieceCutFreeIsReturnedAsAChip) {
+    // Cutting through the block's fourth layer of cubes frees the top layer: it comes back as one piece, and its
+    // points are held (no stiffness is left to move them).
+    const Block block = makeBlock();
+    const std::vector<FemMaterial> materials(block.tets.size(), FemMaterial{30e3, 0.47, 1050.0});
+    CorotationalFem fem;
+    ASSERT_TRUE(fem.build(block.points, block.tets, materials, block.fixed, {}, FemSettings{}));
+    const std::size_t perLayer = 6 * static_cast<std::size_t>((block.nx - 1) * (block.nx - 1));
+    std::vector<std::size_t> layer;
+    for (std::size_t t = 3 * perLayer; t < 4 * perLayer; ++t)
+        layer.push_back(t);
+    const auto pieces = fem.removeTets(layer);
+    ASSERT_EQ(pieces.size(), 1u);
+    EXPECT_EQ(pieces[0].size(), perLayer);
+    for (std::size_t t = 4 * perLayer; t < 5 * perLayer; ++t)
+        EXPECT_TRUE(fem.tetRemoved(t));
+    EXPECT_FALSE(fem.tetRemoved(0));
+    std::vector<FemContact> none;
+    fem.step(std::vector<Vec3>(block.points.size(), Vec3{0.0, 0.0, -1e-3}), none);
+    EXPECT_EQ(fem.recoveries(), 0u);
+    EXPECT_DOUBLE_EQ(fem.positionsM()[static_cast<std::size_t>(block.at(5, 5, 5))].z, 0.0);
+}
+
+TEST(Mechanics, RefusesBadMaterialsAndFlatTets) {
+    const Block block = makeBlock();
+    std::vector<FemMaterial> materials(block.tets.size(), FemMaterial{30e3, 0.5, 1050.0});
+    CorotationalFem fem;
+    const Status bad = fem.build(block.points, block.tets, materials, block.fixed, {}, FemSettings{});
+    ASSERT_FALSE(bad);
+    EXPECT_NE(bad.error().detail.find("Poisson ratio"), std::string::npos);
+    materials.assign(block.tets.size(), FemMaterial{});
+    std::vector<Tet> tets = block.tets;
+    tets[3] = {tets[3][0], tets[3][0], tets[3][1], tets[3][2]};
+    const Status flat = fem.build(block.points, tets, materials, block.fixed, {}, FemSettings{});
+    ASSERT_FALSE(flat);
+    EXPECT_NE(flat.error().detail.find("tet 3"), std::string::npos);
+}
+
+} // namespace
