@@ -6,6 +6,7 @@
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -16,6 +17,12 @@ struct CorotationalFem::Factor {
 };
 
 namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point t) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
 
 /// The rest gradients of the tet's four shape functions (rows of Dm^-1 for points 1-3; point 0 their negated sum).
 std::array<Vec3, 4> shapeGradients(const Mat3& dmInv) {
@@ -65,6 +72,8 @@ Status CorotationalFem::build(const std::vector<Vec3>& pointsM, const std::vecto
     m_target = pointsM;
     m_v.assign(n, Vec3{});
     m_reaction.assign(n, Vec3{});
+    m_constraintForce.assign(n, Vec3{});
+    m_forcedPoints.clear();
     m_fixed = fixedDof;
     m_tets = tets;
     m_removed.assign(tets.size(), 0);
@@ -130,7 +139,7 @@ void CorotationalFem::assembleAndFactor() {
     const auto heldDof = [this](std::size_t dof) { return m_fixed[dof / 3][dof % 3]; };
     std::vector<Eigen::Triplet<double>> triplets;
     triplets.reserve(m_tets.size() * 144 + 3 * n);
-    const bool nodal = m_settings.nodalPressure;
+    const bool nodal = m_settings.nodalPressure && m_settings.nodalPressureMatrix;
     for (std::size_t t = 0; t < m_tets.size(); ++t) {
         if (m_removed[t])
             continue;
@@ -209,6 +218,7 @@ void CorotationalFem::setTarget(std::size_t point, const Vec3& positionM) {
 }
 
 void CorotationalFem::internalForces(const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& out) {
+    const auto started = Clock::now();
     out.assign(x.size(), Vec3{});
     const double beta = m_settings.rayleighStiffnessS;
     const bool nodal = m_settings.nodalPressure;
@@ -295,15 +305,18 @@ void CorotationalFem::internalForces(const std::vector<Vec3>& x, const std::vect
         }
         out[p(0)] -= sum;
     }
+    m_timings.forcesMs += msSince(started);
 }
 
 void CorotationalFem::solveInPlace(std::vector<double>& b) const {
+    const auto started = Clock::now();
     for (std::size_t dof = 0; dof < b.size(); ++dof)
         if (m_fixed[dof / 3][dof % 3])
             b[dof] = 0.0;
     Eigen::Map<Eigen::VectorXd> map(b.data(), static_cast<Eigen::Index>(b.size()));
     const Eigen::VectorXd x = m_factor->ldlt.solve(map);
     map = x;
+    m_timings.solveMs += msSince(started);
 }
 
 void CorotationalFem::updatePointRotations() {
@@ -361,6 +374,7 @@ void CorotationalFem::precomputeCompliance(const std::vector<std::int32_t>& poin
             list.push_back(p);
         }
     m_compliantCount = list.size();
+    m_compliantList = list;
     const std::size_t m3 = 3 * m_compliantCount;
     m_compliance.assign(m3 * m3, 0.0);
     std::vector<double> column(3 * n);
@@ -375,91 +389,141 @@ void CorotationalFem::precomputeCompliance(const std::vector<std::int32_t>& poin
         }
 }
 
-void CorotationalFem::complianceBetween(const std::vector<FemContact>& contacts, std::vector<double>& w) {
-    const std::size_t k = contacts.size();
+FemConstraint contactRow(const std::array<std::int32_t, 3>& points, const std::array<double, 3>& weights,
+                         const Vec3& normal, const Vec3& planePointM) {
+    FemConstraint row;
+    row.offset = dot(normal, planePointM);
+    for (std::size_t k = 0; k < 3; ++k) {
+        if (weights[k] == 0.0)
+            continue;
+        row.points.push_back(points[k]);
+        row.gradient.push_back(normal * -weights[k]);
+    }
+    return row;
+}
+
+void CorotationalFem::complianceBetween(const std::vector<FemConstraint>& rows, std::vector<double>& w) {
+    // Rows of a few points on the precomputed surface: W_ij = sum g_ia^T R_a S_ab R_b^T g_jb from the block S.
+    // Other rows: their column u_i = R H^-1 R^T g_i by one solve, W_ij = g_j . u_i.
+    constexpr std::size_t kPrecomputedRowPoints = 24;
+    const std::size_t k = rows.size();
     w.assign(k * k, 0.0);
-    bool allPrecomputed = m_compliantCount > 0;
-    for (const FemContact& c : contacts)
-        for (std::size_t a = 0; a < 3; ++a)
-            if (c.weights[a] != 0.0 && m_compliantIndex[static_cast<std::size_t>(c.points[a])] < 0)
-                allPrecomputed = false;
-    if (allPrecomputed) {
-        const std::size_t m3 = 3 * m_compliantCount;
-        const auto toRest = [this](const Vec3& v, std::size_t point) {
-            if (m_pointR.size() != m_x.size())
-                return v;
-            const Mat3& r = m_pointR[point];
-            return Vec3{r[0] * v.x + r[3] * v.y + r[6] * v.z, r[1] * v.x + r[4] * v.y + r[7] * v.z,
-                        r[2] * v.x + r[5] * v.y + r[8] * v.z};
-        };
-        for (std::size_t i = 0; i < k; ++i)
-            for (std::size_t j = 0; j < k; ++j) {
-                double s = 0.0;
-                for (std::size_t a = 0; a < 3; ++a) {
-                    if (contacts[i].weights[a] == 0.0)
-                        continue;
-                    const auto ri =
-                        3 * static_cast<std::size_t>(m_compliantIndex[static_cast<std::size_t>(contacts[i].points[a])]);
-                    for (std::size_t b = 0; b < 3; ++b) {
-                        if (contacts[j].weights[b] == 0.0)
-                            continue;
-                        const auto cj = 3 * static_cast<std::size_t>(
-                                                m_compliantIndex[static_cast<std::size_t>(contacts[j].points[b])]);
-                        const Vec3 ni = toRest(contacts[i].normal, static_cast<std::size_t>(contacts[i].points[a]));
-                        const Vec3 nj = toRest(contacts[j].normal, static_cast<std::size_t>(contacts[j].points[b]));
-                        double block = 0.0;
+    const auto toRest = [this](const Vec3& v, std::size_t point) {
+        if (m_pointR.size() != m_x.size())
+            return v;
+        const Mat3& r = m_pointR[point];
+        return Vec3{r[0] * v.x + r[3] * v.y + r[6] * v.z, r[1] * v.x + r[4] * v.y + r[7] * v.z,
+                    r[2] * v.x + r[5] * v.y + r[8] * v.z};
+    };
+    std::vector<char> solved(k, 0);
+    std::vector<std::vector<double>> column(k);
+    for (std::size_t i = 0; i < k; ++i) {
+        bool precomputed = m_compliantCount > 0 && rows[i].points.size() <= kPrecomputedRowPoints;
+        for (const std::int32_t p : rows[i].points)
+            precomputed = precomputed && m_compliantIndex[static_cast<std::size_t>(p)] >= 0;
+        if (precomputed)
+            continue;
+        solved[i] = 1;
+        std::vector<double>& u = column[i];
+        u.assign(3 * m_x.size(), 0.0);
+        for (std::size_t a = 0; a < rows[i].points.size(); ++a)
+            for (int d = 0; d < 3; ++d)
+                u[3 * static_cast<std::size_t>(rows[i].points[a]) + static_cast<std::size_t>(d)] +=
+                    rows[i].gradient[a][d];
+        solveWarped(u);
+    }
+    const std::size_t m3 = 3 * m_compliantCount;
+    for (std::size_t i = 0; i < k; ++i)
+        for (std::size_t j = i; j < k; ++j) {
+            double s = 0.0;
+            if (solved[i] || solved[j]) {
+                const std::size_t from = solved[i] ? i : j, to = solved[i] ? j : i;
+                const std::vector<double>& u = column[from];
+                for (std::size_t b = 0; b < rows[to].points.size(); ++b)
+                    for (int d = 0; d < 3; ++d)
+                        s += rows[to].gradient[b][d] *
+                             u[3 * static_cast<std::size_t>(rows[to].points[b]) + static_cast<std::size_t>(d)];
+            } else {
+                for (std::size_t a = 0; a < rows[i].points.size(); ++a) {
+                    const auto pa = static_cast<std::size_t>(rows[i].points[a]);
+                    const Vec3 ga = toRest(rows[i].gradient[a], pa);
+                    const std::size_t ra = 3 * static_cast<std::size_t>(m_compliantIndex[pa]);
+                    for (std::size_t b = 0; b < rows[j].points.size(); ++b) {
+                        const auto pb = static_cast<std::size_t>(rows[j].points[b]);
+                        const Vec3 gb = toRest(rows[j].gradient[b], pb);
+                        const std::size_t cb = 3 * static_cast<std::size_t>(m_compliantIndex[pb]);
                         for (std::size_t r = 0; r < 3; ++r)
                             for (std::size_t c = 0; c < 3; ++c)
-                                block += ni[static_cast<int>(r)] * m_compliance[(ri + r) * m3 + cj + c] *
-                                         nj[static_cast<int>(c)];
-                        s += contacts[i].weights[a] * contacts[j].weights[b] * block;
+                                s += ga[static_cast<int>(r)] * m_compliance[(ra + r) * m3 + cb + c] *
+                                     gb[static_cast<int>(c)];
                     }
                 }
-                w[i * k + j] = s;
             }
-        return;
-    }
-    // One solve per contact: u_i = H^-1 J_i^T, W_ij = J_j u_i.
-    const std::size_t n3 = 3 * m_x.size();
-    std::vector<double> u(n3);
-    for (std::size_t i = 0; i < k; ++i) {
-        std::fill(u.begin(), u.end(), 0.0);
-        for (std::size_t a = 0; a < 3; ++a)
-            for (int d = 0; d < 3; ++d)
-                u[3 * static_cast<std::size_t>(contacts[i].points[a]) + static_cast<std::size_t>(d)] +=
-                    contacts[i].weights[a] * contacts[i].normal[d];
-        solveWarped(u);
-        for (std::size_t j = 0; j < k; ++j) {
-            double s = 0.0;
-            for (std::size_t b = 0; b < 3; ++b)
-                for (int d = 0; d < 3; ++d)
-                    s += contacts[j].weights[b] * contacts[j].normal[d] *
-                         u[3 * static_cast<std::size_t>(contacts[j].points[b]) + static_cast<std::size_t>(d)];
             w[i * k + j] = s;
+            w[j * k + i] = s;
+        }
+}
+
+bool CorotationalFem::onPrecomputedSurface(const std::vector<FemConstraint>& rows) const {
+    if (m_compliantCount == 0)
+        return false;
+    for (const FemConstraint& row : rows)
+        for (const std::int32_t p : row.points)
+            if (m_compliantIndex[static_cast<std::size_t>(p)] < 0)
+                return false;
+    for (const std::int32_t p : m_forcedPoints)
+        if (m_compliantIndex[static_cast<std::size_t>(p)] < 0)
+            return false;
+    return true;
+}
+
+void CorotationalFem::surfaceResponse(const std::vector<std::pair<std::int32_t, Vec3>>& forces,
+                                      std::vector<Vec3>& out) const {
+    // out = R S R^T f on every precomputed point (the rest compliance warped by the points' rotations).
+    const std::size_t m3 = 3 * m_compliantCount;
+    out.assign(m_compliantCount, Vec3{});
+    const bool warped = m_pointR.size() == m_x.size();
+    std::vector<double> local(m3, 0.0);
+    for (const auto& [p, f] : forces) {
+        const auto pi = static_cast<std::size_t>(p);
+        Vec3 g = f;
+        if (warped) {
+            const Mat3& r = m_pointR[pi];
+            g = {r[0] * f.x + r[3] * f.y + r[6] * f.z, r[1] * f.x + r[4] * f.y + r[7] * f.z,
+                 r[2] * f.x + r[5] * f.y + r[8] * f.z};
+        }
+        const std::size_t c = 3 * static_cast<std::size_t>(m_compliantIndex[pi]);
+        for (std::size_t row = 0; row < m3; ++row) {
+            const double* s = &m_compliance[row * m3 + c];
+            local[row] += s[0] * g.x + s[1] * g.y + s[2] * g.z;
+        }
+    }
+    for (std::size_t k = 0; k < m_compliantCount; ++k) {
+        const Vec3 u{local[3 * k], local[3 * k + 1], local[3 * k + 2]};
+        out[k] = u;
+        if (warped) {
+            const Mat3& r = m_pointR[static_cast<std::size_t>(m_compliantList[k])];
+            out[k] = {r[0] * u.x + r[1] * u.y + r[2] * u.z, r[3] * u.x + r[4] * u.y + r[5] * u.z,
+                      r[6] * u.x + r[7] * u.y + r[8] * u.z};
         }
     }
 }
 
-void CorotationalFem::solveContacts(std::vector<FemContact>& contacts, const ObstacleCompliance& obstacle,
-                                    const std::vector<Vec3>& xFree, std::vector<double>& lambda) {
-    const std::size_t k = contacts.size();
-    complianceBetween(contacts, m_lastW);
+void CorotationalFem::solveContacts(std::vector<FemConstraint>& rows, const ObstacleCompliance& obstacle,
+                                    const std::vector<double>& gap, std::vector<double>& lambda) {
+    const auto started = Clock::now();
+    const std::size_t k = rows.size();
+    complianceBetween(rows, m_lastW);
     std::vector<double> w = m_lastW;
     if (obstacle.matrix.size() == k * k)
         for (std::size_t i = 0; i < k * k; ++i)
-            w[i] += obstacle.matrix[i];
-    std::vector<double> gap(k);
-    for (std::size_t i = 0; i < k; ++i) {
-        const FemContact& c = contacts[i];
-        Vec3 q{};
-        for (std::size_t a = 0; a < 3; ++a)
-            q += xFree[static_cast<std::size_t>(c.points[a])] * c.weights[a];
-        gap[i] = dot(c.normal, c.planePoint - q);
-    }
+            w[i] += std::isfinite(obstacle.matrix[i]) ? obstacle.matrix[i] : 0.0;
+    for (std::size_t i = 0; i < k; ++i)
+        w[i * k + i] += std::max(0.0, rows[i].selfCompliance);
     // Projected Gauss-Seidel on gap + W lambda >= 0, lambda >= 0, complementary (Duriez et al. 2006).
     lambda.assign(k, 0.0);
     for (int sweep = 0; sweep < m_settings.contactSweeps; ++sweep) {
-        double change = 0.0;
+        double change = 0.0, largest = 0.0;
         for (std::size_t i = 0; i < k; ++i) {
             if (!(w[i * k + i] > 0.0))
                 continue;
@@ -467,27 +531,34 @@ void CorotationalFem::solveContacts(std::vector<FemContact>& contacts, const Obs
             for (std::size_t j = 0; j < k; ++j)
                 g += w[i * k + j] * lambda[j];
             const double next = std::max(0.0, lambda[i] - g / w[i * k + i]);
-            change = std::max(change, std::abs(next - lambda[i]));
+            change = std::max(change, std::abs(next - lambda[i]) * std::sqrt(w[i * k + i]));
+            largest = std::max(largest, std::abs(next) * std::sqrt(w[i * k + i]));
             lambda[i] = next;
         }
-        if (change < 1e-12)
+        if (change <= 1e-10 * largest)
             break;
     }
+    m_timings.contactsMs += msSince(started);
 }
 
-void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector<FemContact>& contacts,
+void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector<FemConstraint>& contacts,
                            const ObstacleCompliance& obstacle) {
     const std::size_t n = m_x.size();
     const double h = m_settings.stepS, alpha = m_settings.rayleighMassPerS;
+    m_timings = {};
     m_xStart = m_x;
     const std::vector<Vec3> vStart = m_v;
-    // Valid contacts only (a point out of range would corrupt memory: dropped).
+    // Valid rows only (a point out of range would corrupt memory: dropped).
     contacts.erase(std::remove_if(contacts.begin(), contacts.end(),
-                                  [n](const FemContact& c) {
-                                      for (const std::int32_t p : c.points)
-                                          if (p < 0 || static_cast<std::size_t>(p) >= n)
+                                  [n](const FemConstraint& c) {
+                                      if (c.points.size() != c.gradient.size() || !std::isfinite(c.offset) ||
+                                          !std::isfinite(c.selfCompliance))
+                                          return true;
+                                      for (std::size_t a = 0; a < c.points.size(); ++a)
+                                          if (c.points[a] < 0 || static_cast<std::size_t>(c.points[a]) >= n ||
+                                              !isFinite(c.gradient[a]))
                                               return true;
-                                      return !isFinite(c.normal) || !isFinite(c.planePoint);
+                                      return false;
                                   }),
                    contacts.end());
     // The predictor x_n + h v_n, with the held degrees of freedom at their targets.
@@ -498,46 +569,102 @@ void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector
             if (m_fixed[i][static_cast<std::size_t>(d)])
                 x[i][d] = m_target[i][d];
     }
-    std::vector<double> rhs(3 * n), lambda;
+    std::vector<double> rhs(3 * n), lambda, gap;
+    std::vector<std::pair<std::int32_t, Vec3>> change;
+    std::vector<Vec3> response;
     for (int it = 0; it < m_settings.iterations; ++it) {
         for (std::size_t i = 0; i < n; ++i)
             v[i] = (x[i] - m_xStart[i]) / h;
         internalForces(x, v, m_force);
+        // The free motion carries the constraints' last forces (a warm start): at a steady contact it needs no
+        // correction, and the correction below moves only the surface.
         for (std::size_t i = 0; i < n; ++i) {
             const Vec3 inertia =
                 (x[i] - m_xStart[i] - vStart[i] * h) * (m_mass[i] / (h * h)) + v[i] * (alpha * m_mass[i]);
             const Vec3 tether = (x[i] - m_rest[i]) * m_tetherStiffness[i];
             const Vec3 f = i < externalForcesN.size() && isFinite(externalForcesN[i]) ? externalForcesN[i] : Vec3{};
-            const Vec3 r = inertia + tether - m_force[i] - f;
+            const Vec3 r = inertia + tether - m_force[i] - f - m_constraintForce[i];
             for (int d = 0; d < 3; ++d)
                 rhs[3 * i + static_cast<std::size_t>(d)] = -r[d];
         }
         solveWarped(rhs);
         for (std::size_t i = 0; i < n; ++i)
             x[i] += Vec3{rhs[3 * i], rhs[3 * i + 1], rhs[3 * i + 2]};
-        if (contacts.empty())
+        if (contacts.empty() && m_forcedPoints.empty())
             continue;
-        // The contacts' forces against the free motion: lambda, total (the residual above has none).
-        solveContacts(contacts, obstacle, x, lambda);
-        bool any = false;
-        std::fill(rhs.begin(), rhs.end(), 0.0);
+        // The constraints' forces lambda (total): the gaps after the free motion, less what the last forces did in it.
+        const bool surface = onPrecomputedSurface(contacts);
+        std::vector<double> lastResponse; // full-path: H^-1 f_last on every dof
+        if (surface) {
+            change.clear();
+            for (const std::int32_t p : m_forcedPoints)
+                change.emplace_back(p, m_constraintForce[static_cast<std::size_t>(p)]);
+            surfaceResponse(change, response);
+        } else if (!m_forcedPoints.empty()) {
+            lastResponse.assign(3 * n, 0.0);
+            for (const std::int32_t p : m_forcedPoints)
+                for (int d = 0; d < 3; ++d)
+                    lastResponse[3 * static_cast<std::size_t>(p) + static_cast<std::size_t>(d)] =
+                        m_constraintForce[static_cast<std::size_t>(p)][d];
+            solveWarped(lastResponse);
+        }
+        gap.assign(contacts.size(), 0.0);
+        for (std::size_t c = 0; c < contacts.size(); ++c) {
+            const FemConstraint& row = contacts[c];
+            double g = row.offset;
+            for (std::size_t a = 0; a < row.points.size(); ++a) {
+                const auto p = static_cast<std::size_t>(row.points[a]);
+                Vec3 last{};
+                if (surface && !m_forcedPoints.empty())
+                    last = response[static_cast<std::size_t>(m_compliantIndex[p])];
+                else if (!lastResponse.empty())
+                    last = {lastResponse[3 * p], lastResponse[3 * p + 1], lastResponse[3 * p + 2]};
+                g += dot(row.gradient[a], x[p] - last);
+            }
+            gap[c] = g;
+        }
+        solveContacts(contacts, obstacle, gap, lambda);
+        // The correction: the new forces less the last, on the surface through the precomputed compliance (the
+        // interior follows in the next step's free motion), or on every dof by a solve.
+        std::vector<Vec3> next(n, Vec3{});
+        std::vector<std::int32_t> nextPoints;
         for (std::size_t c = 0; c < contacts.size(); ++c) {
             if (lambda[c] <= 0.0)
                 continue;
-            any = true;
-            for (std::size_t a = 0; a < 3; ++a)
-                for (int d = 0; d < 3; ++d)
-                    rhs[3 * static_cast<std::size_t>(contacts[c].points[a]) + static_cast<std::size_t>(d)] -=
-                        lambda[c] * contacts[c].weights[a] * contacts[c].normal[d];
+            for (std::size_t a = 0; a < contacts[c].points.size(); ++a) {
+                const auto p = static_cast<std::size_t>(contacts[c].points[a]);
+                if (next[p] == Vec3{})
+                    nextPoints.push_back(contacts[c].points[a]);
+                next[p] += contacts[c].gradient[a] * lambda[c];
+            }
         }
-        if (any) {
+        change.clear();
+        for (const std::int32_t p : nextPoints)
+            change.emplace_back(p, next[static_cast<std::size_t>(p)] - m_constraintForce[static_cast<std::size_t>(p)]);
+        for (const std::int32_t p : m_forcedPoints)
+            if (next[static_cast<std::size_t>(p)] == Vec3{})
+                change.emplace_back(p, m_constraintForce[static_cast<std::size_t>(p)] * -1.0);
+        if (surface) {
+            surfaceResponse(change, response);
+            for (std::size_t k = 0; k < m_compliantCount; ++k)
+                x[static_cast<std::size_t>(m_compliantList[k])] += response[k];
+        } else {
+            std::fill(rhs.begin(), rhs.end(), 0.0);
+            for (const auto& [p, f] : change)
+                for (int d = 0; d < 3; ++d)
+                    rhs[3 * static_cast<std::size_t>(p) + static_cast<std::size_t>(d)] += f[d];
             solveWarped(rhs);
             for (std::size_t i = 0; i < n; ++i)
                 x[i] += Vec3{rhs[3 * i], rhs[3 * i + 1], rhs[3 * i + 2]};
         }
+        for (const std::int32_t p : m_forcedPoints)
+            m_constraintForce[static_cast<std::size_t>(p)] = Vec3{};
+        m_forcedPoints = nextPoints;
+        for (const std::int32_t p : m_forcedPoints)
+            m_constraintForce[static_cast<std::size_t>(p)] = next[static_cast<std::size_t>(p)];
     }
     for (std::size_t c = 0; c < contacts.size(); ++c)
-        contacts[c].forceN = c < lambda.size() ? lambda[c] : 0.0;
+        contacts[c].force = c < lambda.size() ? lambda[c] : 0.0;
     bool finite = true;
     for (std::size_t i = 0; i < n && finite; ++i)
         finite = isFinite(x[i]);
@@ -545,26 +672,26 @@ void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector
         // Never hand on a NaN: the step is undone and the tissue held where it was, at rest.
         ++m_recoveries;
         x = m_xStart;
-        std::fill(m_v.begin(), m_v.end(), Vec3{});
-        for (FemContact& c : contacts)
-            c.forceN = 0.0;
+        for (FemConstraint& c : contacts)
+            c.force = 0.0;
+        for (const std::int32_t p : m_forcedPoints)
+            m_constraintForce[static_cast<std::size_t>(p)] = Vec3{};
+        m_forcedPoints.clear();
     }
     for (std::size_t i = 0; i < n; ++i) {
         m_v[i] = finite ? (x[i] - m_xStart[i]) / h : Vec3{};
         m_x[i] = x[i];
     }
+    if (!m_settings.endResidual)
+        return;
     // The residual at the step's end: the supports' reactions and the imbalance of the free degrees of freedom.
     internalForces(m_x, m_v, m_force);
-    std::vector<Vec3> contactForce(n, Vec3{});
-    for (const FemContact& c : contacts)
-        for (std::size_t a = 0; a < 3; ++a)
-            contactForce[static_cast<std::size_t>(c.points[a])] -= c.normal * (c.forceN * c.weights[a]);
     double sum2 = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
         const Vec3 inertia = (m_v[i] - vStart[i]) * (m_mass[i] / h) + m_v[i] * (alpha * m_mass[i]);
         const Vec3 tether = (m_x[i] - m_rest[i]) * m_tetherStiffness[i];
         const Vec3 f = i < externalForcesN.size() && isFinite(externalForcesN[i]) ? externalForcesN[i] : Vec3{};
-        const Vec3 r = inertia + tether - m_force[i] - f - contactForce[i];
+        const Vec3 r = inertia + tether - m_force[i] - f - m_constraintForce[i];
         Vec3 reaction{};
         for (int d = 0; d < 3; ++d) {
             if (m_fixed[i][static_cast<std::size_t>(d)])
@@ -664,6 +791,10 @@ std::vector<std::vector<std::size_t>> CorotationalFem::removeTets(const std::vec
         precomputeCompliance(points);
     }
     return pieces;
+}
+
+std::size_t CorotationalFem::factorNonZeros() const {
+    return m_factor ? static_cast<std::size_t>(m_factor->ldlt.matrixL().nestedExpression().nonZeros()) : 0;
 }
 
 Vec3 CorotationalFem::reactionN(std::size_t point) const {

@@ -139,7 +139,7 @@ Result<VerificationResult> runPunch(const PunchParams& p) {
     CorotationalFem fem;
     HS_TRY(fem.build(points, tets, uniform(tets.size(), p.youngsModulusKpa, p.poissonRatio), fixed, {}, p.solver));
     const std::vector<Vec3> none;
-    std::vector<FemContact> contacts;
+    std::vector<FemConstraint> contacts;
     const auto ramp = static_cast<int>(std::lround(0.1 / p.solver.stepS));
     const auto hold = static_cast<int>(std::lround(p.settleS / p.solver.stepS));
     for (int s = 1; s <= ramp + hold; ++s) {
@@ -203,7 +203,7 @@ Result<VerificationResult> runLameSphere(const LameParams& p) {
     CorotationalFem fem;
     HS_TRY(fem.build(points, tets, uniform(tets.size(), p.youngsModulusKpa, p.poissonRatio), fixed, {}, p.solver));
     std::vector<Vec3> forces(points.size());
-    std::vector<FemContact> contacts;
+    std::vector<FemConstraint> contacts;
     const auto ramp = static_cast<int>(std::lround(0.1 / p.solver.stepS));
     const auto hold = static_cast<int>(std::lround(p.settleS / p.solver.stepS));
     for (int s = 1; s <= ramp + hold; ++s) {

@@ -30,6 +30,13 @@ struct FemMaterial {
     double densityKgPerM3 = 1050.0;
 };
 
+/// Where the last step's time went, ms (wall clock).
+struct FemStepTimings {
+    double forcesMs = 0.0;   ///< the corotated forces (and rotations)
+    double solveMs = 0.0;    ///< the factor's solves
+    double contactsMs = 0.0; ///< the constraints' compliance and their complementarity problem
+};
+
 struct FemSettings {
     double stepS = 0.005; ///< s, the time step h
     /// Rayleigh damping D = alpha M + beta K (docs/simulator.md, "Tissue": soft tissue's loss factor).
@@ -41,20 +48,34 @@ struct FemSettings {
     /// Commun Numer Meth Eng 14:437-449, 1998): linear tets lock for nearly incompressible tissue (Poisson ratio
     /// 0.45-0.49) and come out too stiff; averaging the volume change at the points frees them.
     bool nodalPressure = true;
+    /// Assemble the iteration's matrix with the nodal pressure too. Off, the matrix keeps each tet's own pressure: a
+    /// third of the factor's size and of a solve's time, while the forces (and so every converged state) stay the
+    /// nodal pressure's; the iteration then converges a little slower in the volume-changing modes.
+    bool nodalPressureMatrix = false;
+    /// Evaluate the residual at the end of each step (reactionN, residualN): one more force evaluation per step.
+    bool endResidual = true;
 };
 
-/// A unilateral contact: the point sum_k weights[k] * x[points[k]] of the tissue stays behind the plane through
-/// `planePoint` with the unit normal `normal` (the obstacle's side is in front): C = dot(normal, planePoint - p) >= 0
-/// is the gap. `obstacleCompliance` rows let the obstacle itself give way (a coupled scope): see solveContacts.
-struct FemContact {
-    std::array<std::int32_t, 3> points{-1, -1, -1};
-    std::array<double, 3> weights{0.0, 0.0, 0.0};
-    Vec3 normal;         ///< unit, from the tissue towards the obstacle
-    Vec3 planePoint;     ///< m, a point of the obstacle's surface
-    double forceN = 0.0; ///< out: the contact's force (>= 0) on the tissue, along -normal, after the step
+/// A unilateral constraint, linear in the points: C(x) = offset + sum_k gradient[k] . x[points[k]] >= 0, with a
+/// force lambda >= 0 that acts on the tissue as lambda * gradient (N on each point when C is a length in m), and
+/// lambda C = 0 (Signorini). A contact of a point of the surface with an obstacle is one (C the gap along the contact
+/// normal); so is the cavity's volume against the fluid in it (C the room the cavity leaves the fluid, m^3, lambda the
+/// pressure, Pa). `selfCompliance` adds give to the row itself (the fluid's outflow over a step, m^3/Pa; 0: none).
+struct FemConstraint {
+    std::vector<std::int32_t> points;
+    std::vector<Vec3> gradient; ///< dC/dx at each point
+    double offset = 0.0;
+    double selfCompliance = 0.0;
+    double force = 0.0; ///< out: lambda after the step
 };
 
-/// The obstacle's own compliance between contacts (m/N, row-major k x k; empty: a rigid obstacle held in place).
+/// A point of the tissue (sum of weights[k] x[points[k]]) kept behind the plane through `planePointM` with the unit
+/// `normal` pointing away from the tissue: C = dot(normal, planePoint - point), the gap, in m; lambda in N.
+FemConstraint contactRow(const std::array<std::int32_t, 3>& points, const std::array<double, 3>& weights,
+                         const Vec3& normal, const Vec3& planePointM);
+
+/// The obstacles' own compliance between constraints (row-major k x k, in C per unit force; empty: rigid obstacles
+/// held in place). A scope held by a virtual coupling gives way by G K^-1 G^T.
 struct ObstacleCompliance {
     std::vector<double> matrix;
 };
@@ -78,10 +99,10 @@ public:
     /// Where the held degrees of freedom of `point` are (m; the free ones ignore it).
     void setTarget(std::size_t point, const Vec3& positionM);
 
-    /// One step: external forces (N per point, held constant over the step), contacts (re-linearized by the caller
-    /// between steps; their forceN is set), the obstacle's compliance between them. Returns the contact forces'
-    /// obstacle displacement through `obstacleCompliance` implicitly: the caller moves its obstacle by C lambda.
-    void step(const std::vector<Vec3>& externalForcesN, std::vector<FemContact>& contacts,
+    /// One step: external forces (N per point, held constant over the step) and the constraints (linearized by the
+    /// caller between steps; their force is set), with the obstacles' compliance between them (the caller moves its
+    /// obstacles by that compliance times the forces). Rows naming a point out of range are dropped.
+    void step(const std::vector<Vec3>& externalForcesN, std::vector<FemConstraint>& constraints,
               const ObstacleCompliance& obstacle = {});
 
     /// Removes tets (they carry no force; the matrix is rebuilt and factored again) and with them every piece they
@@ -92,7 +113,8 @@ public:
     bool tetRemoved(std::size_t tet) const { return tet < m_removed.size() && m_removed[tet] != 0; }
 
     /// Precomputes the compliance H^-1 between the degrees of freedom of `points` (the surface a tool can touch), so a
-    /// step's contact problem costs no solve per contact; contacts on other points compute their columns on demand.
+    /// step's contact problem costs no solve per contact; rows on other points, or on more than a few dozen points
+    /// (the cavity's volume), get their column from a solve.
     void precomputeCompliance(const std::vector<std::int32_t>& points);
 
     const std::vector<Vec3>& positionsM() const { return m_x; }
@@ -101,6 +123,9 @@ public:
     std::size_t pointCount() const { return m_x.size(); }
     std::size_t tetCount() const { return m_tets.size(); }
     const FemSettings& settings() const { return m_settings; }
+    const FemStepTimings& lastTimings() const { return m_timings; }
+    /// Non-zeros of the factor's L: what a solve reads.
+    std::size_t factorNonZeros() const;
 
     /// The force the supports exert on `point` to hold its fixed degrees of freedom (N; zero on free ones), from
     /// the last step's final residual: at rest, minus the tissue's force on the support.
@@ -109,7 +134,8 @@ public:
     double residualN() const { return m_residualNorm; }
     /// Steps whose result was not finite and were undone (the tissue held still instead): 0 in a healthy run.
     std::size_t recoveries() const { return m_recoveries; }
-    /// The compliance W = J H^-1 J^T of the last step's contacts (m/N, row-major k x k).
+    /// The compliance W = J H^-1 J^T of the last step's constraints (row-major k x k): the solver's own give at the
+    /// contacts, which the haptics loop renders between steps.
     const std::vector<double>& lastContactCompliance() const { return m_lastW; }
 
     /// Elastic energy of the corotated linear material (J), the smallest tet volume ratio (<= 0: inverted) with the
@@ -130,9 +156,12 @@ private:
     void solveWarped(std::vector<double>& b) const;
     void updatePointRotations();
     /// H^-1 column for dof (cached when precomputed).
-    void complianceBetween(const std::vector<FemContact>& contacts, std::vector<double>& w);
-    void solveContacts(std::vector<FemContact>& contacts, const ObstacleCompliance& obstacle,
-                       const std::vector<Vec3>& xFree, std::vector<double>& lambda);
+    void complianceBetween(const std::vector<FemConstraint>& rows, std::vector<double>& w);
+    void solveContacts(std::vector<FemConstraint>& rows, const ObstacleCompliance& obstacle,
+                       const std::vector<double>& gap, std::vector<double>& lambda);
+    bool onPrecomputedSurface(const std::vector<FemConstraint>& rows) const;
+    /// R S R^T f on the precomputed points for forces f on some of them.
+    void surfaceResponse(const std::vector<std::pair<std::int32_t, Vec3>>& forces, std::vector<Vec3>& out) const;
 
     struct Factor;
     std::unique_ptr<Factor> m_factor;
@@ -156,11 +185,14 @@ private:
     std::vector<std::pair<std::int32_t, double>> m_tethers;
     std::vector<double> m_tetherStiffness; ///< N/m per point
     // Precomputed compliance between surface dofs: index of a point in it (-1: none), the dense block.
-    std::vector<std::int32_t> m_compliantIndex;
-    std::vector<double> m_compliance; ///< (3 m) x (3 m), row-major
+    std::vector<std::int32_t> m_compliantIndex, m_compliantList;
+    std::vector<Vec3> m_constraintForce;      ///< N per point: the constraints' forces of the last step
+    std::vector<std::int32_t> m_forcedPoints; ///< the points those act on
+    std::vector<double> m_compliance;         ///< (3 m) x (3 m), row-major
     std::size_t m_compliantCount = 0;
     std::vector<double> m_lastW;
     double m_residualNorm = 0.0;
+    mutable FemStepTimings m_timings;
 };
 
 } // namespace hs::mechanics

@@ -1,0 +1,194 @@
+// The tissue solver (hs::mechanics::CorotationalFem): its verification against textbook solutions, the same problems
+// on a scene's simulation-mesh resolution, and on the scene's simulation mesh its cost and its convergence per
+// iteration. Tables, not tests (the bars are asserted by test_mechanics).
+//
+//   bench_tissue [PACKAGE]
+// PACKAGE: a scene package with a simulation mesh (hysteroscene-cli generate resources/cases/default.json -o DIR).
+
+#include "hs/mechanics/CorotationalFem.h"
+#include "hs/mechanics/Verification.h"
+#include "hs/scene/ScenePackage.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace hs;
+using namespace hs::mechanics;
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point t) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
+
+void verificationTable() {
+    std::printf("Verification (steady state of the solver's time steps; test_mechanics asserts the bars)\n");
+    std::printf("%-34s %6s %5s %12s %12s %8s %7s %7s\n", "problem", "E kPa", "nu", "solver", "textbook", "error",
+                "tets", "s");
+    for (const double nu : {0.45, 0.47, 0.49})
+        for (const double e : {15.0, 65.0}) {
+            PunchParams p;
+            p.youngsModulusKpa = e;
+            p.poissonRatio = nu;
+            const auto r = runPunch(p);
+            if (r)
+                std::printf("%-34s %6.0f %5.2f %10.5f N %10.5f N %+7.1f%% %7zu %7.1f\n",
+                            "punch a 1.45 mm, delta 0.15 mm", e, nu, r->simulated, r->analytic, r->errorPercent,
+                            r->tets, r->seconds);
+        }
+    for (const double nu : {0.45, 0.47, 0.49})
+        for (const double e : {15.0, 65.0}) {
+            LameParams p;
+            p.youngsModulusKpa = e;
+            p.poissonRatio = nu;
+            p.pressureKpa = 0.015 * e;
+            const auto r = runLameSphere(p);
+            if (r)
+                std::printf("%-34s %6.0f %5.2f %9.4f mm %9.4f mm %+7.1f%% %7zu %7.1f\n", "sphere 10/20 mm, p = 1.5 % E",
+                            e, nu, r->simulated, r->analytic, r->errorPercent, r->tets, r->seconds);
+        }
+    // Beyond the small-strain solution: the distension pressures on the softest wall.
+    for (const double mmHg : {40.0, 60.0, 100.0}) {
+        LameParams p;
+        p.youngsModulusKpa = 30.0;
+        p.pressureKpa = mmHg * 0.133322;
+        const auto r = runLameSphere(p);
+        if (r)
+            std::printf("sphere 10/20 mm, %3.0f mmHg (large)    %6.0f %5.2f %9.4f mm %9.4f mm %+7.1f%% %7zu %7.1f\n",
+                        mmHg, p.youngsModulusKpa, p.poissonRatio, r->simulated, r->analytic, r->errorPercent, r->tets,
+                        r->seconds);
+    }
+    // Without the nodal pressure: linear tets lock.
+    for (const double nu : {0.45, 0.49}) {
+        PunchParams p;
+        p.poissonRatio = nu;
+        p.solver.nodalPressure = false;
+        const auto r = runPunch(p);
+        if (r)
+            std::printf("%-34s %6.0f %5.2f %10.5f N %10.5f N %+7.1f%% %7zu %7.1f\n", "punch, element pressure (locks)",
+                        p.youngsModulusKpa, nu, r->simulated, r->analytic, r->errorPercent, r->tets, r->seconds);
+    }
+}
+
+double meanEdgeMm(const TetMesh& mesh) {
+    double sum = 0.0;
+    std::size_t count = 0;
+    for (const Tet& t : mesh.tets)
+        for (std::size_t a = 0; a < 4; ++a)
+            for (std::size_t b = a + 1; b < 4; ++b) {
+                sum +=
+                    distance(mesh.points[static_cast<std::size_t>(t[a])], mesh.points[static_cast<std::size_t>(t[b])]);
+                ++count;
+            }
+    return count ? sum / static_cast<double>(count) : 0.0;
+}
+
+void packageTables(const std::string& package) {
+    auto scene = scene::readScenePackage(package);
+    if (!scene || !scene->simulation) {
+        std::fprintf(stderr, "bench_tissue: %s: %s\n", package.c_str(),
+                     scene ? "no simulation mesh" : scene.error().detail.c_str());
+        return;
+    }
+    const TetMesh& mesh = scene->simulation->tets;
+    const double edge = meanEdgeMm(mesh);
+    std::printf("\nThe same problems at the simulation mesh's resolution (mean edge %.2f mm)\n", edge);
+    {
+        PunchParams p;
+        p.finestMm = edge;
+        p.growth = 1.0;
+        p.domainRadii = std::max(20.0, 8.0 * edge / p.punchRadiusMm);
+        p.sectors = 4;
+        const auto r = runPunch(p);
+        if (r)
+            std::printf("punch a 1.45 mm on %.1f mm elements: %.5f N, Boussinesq %.5f N, error %+.1f %% (%zu tets)\n",
+                        edge, r->simulated, r->analytic, r->errorPercent, r->tets);
+    }
+    {
+        LameParams p;
+        p.layers = std::max(1, static_cast<int>(std::lround((p.outerRadiusMm - p.innerRadiusMm) / edge)));
+        p.subdivisions = std::max(1, static_cast<int>(std::lround(0.5 * 3.14159265 * p.innerRadiusMm / edge)));
+        p.pressureKpa = 0.015 * p.youngsModulusKpa;
+        const auto r = runLameSphere(p);
+        if (r)
+            std::printf("sphere 10/20 mm, %d layers: %.4f mm, Lame %.4f mm, error %+.1f %% (%zu tets)\n", p.layers,
+                        r->simulated, r->analytic, r->errorPercent, r->tets);
+    }
+
+    // The solver on the simulation mesh: the portio held, a load like the distension's on the whole mesh.
+    std::vector<Vec3> points;
+    for (const Vec3& q : mesh.points)
+        points.push_back(q * 1e-3);
+    const auto& ids = mesh.tetLabels.at("material");
+    std::vector<FemMaterial> materials;
+    for (std::size_t t = 0; t < mesh.tetCount(); ++t) {
+        const auto& m = scene->materials[static_cast<std::size_t>(ids[t])].material;
+        materials.push_back({m.youngsModulusKpa * 1e3, m.poissonRatio, m.densityKgPerM3});
+    }
+    std::vector<std::array<bool, 3>> fixed(points.size(), {false, false, false});
+    const auto& support = mesh.tetLabels.at("support");
+    for (std::size_t t = 0; t < mesh.tetCount(); ++t)
+        if (support[t] == 1)
+            for (const std::int32_t q : mesh.tets[t])
+                fixed[static_cast<std::size_t>(q)] = {true, true, true};
+    const std::vector<Vec3> load(points.size(), Vec3{0.0, 2e-4, 0.0});
+    std::printf("\nOn the simulation mesh (%zu points, %zu tets): cost and convergence under a load held 1 s\n",
+                points.size(), mesh.tetCount());
+    std::printf("%10s %9s %10s %12s %12s %16s %16s\n", "iterations", "matrix", "L nnz", "factor ms", "step ms",
+                "residual 1st N", "residual end N");
+    std::vector<Vec3> reference;
+    struct Variant {
+        int iterations;
+        bool nodalMatrix;
+    };
+    for (const Variant variant : {Variant{8, true}, Variant{1, true}, Variant{2, true}, Variant{1, false},
+                                  Variant{2, false}, Variant{3, false}}) {
+        FemSettings settings;
+        settings.iterations = variant.iterations;
+        settings.nodalPressureMatrix = variant.nodalMatrix;
+        CorotationalFem fem;
+        const auto t0 = Clock::now();
+        if (!fem.build(points, mesh.tets, materials, fixed, {}, settings))
+            return;
+        const double factorMs = msSince(t0);
+        std::vector<FemConstraint> none;
+        const auto t1 = Clock::now();
+        double first = 0.0;
+        for (int s = 0; s < 200; ++s) {
+            fem.step(load, none);
+            if (s == 0)
+                first = fem.residualN();
+        }
+        const double stepMs = msSince(t1) / 200.0;
+        const FemStepTimings timing = fem.lastTimings();
+        std::printf("%10d %9s %10zu %12.1f %12.3f %16.3e %16.3e", variant.iterations,
+                    variant.nodalMatrix ? "nodal" : "element", fem.factorNonZeros(), factorMs, stepMs, first,
+                    fem.residualN());
+        if (reference.empty()) {
+            reference = fem.positionsM();
+            std::printf("   (the reference)");
+        } else {
+            double worst = 0.0;
+            for (std::size_t i = 0; i < points.size(); ++i)
+                worst = std::max(worst, distance(fem.positionsM()[i], reference[i]));
+            std::printf("   off the reference by %.2e mm", worst * 1e3);
+            std::printf("   (last step: forces %.2f ms, solves %.2f ms)\n", timing.forcesMs, timing.solveMs);
+        }
+    }
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    std::setvbuf(stdout, nullptr, _IOLBF, 0);
+    if (argc < 3 || std::string(argv[2]) != "--package-only")
+        verificationTable();
+    if (argc > 1)
+        packageTables(argv[1]);
+    return 0;
+}
