@@ -245,22 +245,8 @@ void orientOutward(SurfaceMesh& mesh) {
 
 bool rayTriangle(const Vec3& origin, const Vec3& dir, const Vec3& a, const Vec3& b, const Vec3& c, double tMin,
                  double& t) {
-    const Vec3 e1 = b - a, e2 = c - a;
-    const Vec3 p = cross(dir, e2);
-    const double det = dot(e1, p);
-    if (std::fabs(det) < 1e-14)
-        return false;
-    const double inv = 1.0 / det;
-    const Vec3 s = origin - a;
-    const double u = dot(s, p) * inv;
-    if (u < 0.0 || u > 1.0)
-        return false;
-    const Vec3 q = cross(s, e1);
-    const double v = dot(dir, q) * inv;
-    if (v < 0.0 || u + v > 1.0)
-        return false;
-    t = dot(e2, q) * inv;
-    return t > tMin;
+    double u = 0.0, v = 0.0;
+    return hs::rayTriangle(origin, dir, a, b, c, tMin, t, u, v);
 }
 
 double diameter(const std::vector<Vec3>& points) {
