@@ -60,9 +60,10 @@ Status CorotationalFem::build(const std::vector<Vec3>& pointsM, const std::vecto
                               const std::vector<std::array<bool, 3>>& fixedDof,
                               const std::vector<std::pair<std::int32_t, double>>& tethers,
                               const FemSettings& settings) {
-    if (!(settings.stepS > 0.0 && settings.stepS <= 0.1) || settings.iterations < 1 || settings.iterations > 50 ||
-        !(settings.rayleighMassPerS >= 0.0) || !(settings.rayleighStiffnessS >= 0.0) || settings.contactSweeps < 1)
-        return fail(ErrorCode::InvalidInput, "tissue solver: step 0-0.1 s, iterations 1-50, damping >= 0");
+    if (!(settings.stepS > 0.0 && settings.stepS <= 10.0) || settings.iterations < 1 || settings.iterations > 50 ||
+        !(settings.rayleighMassPerS >= 0.0) || !(settings.rayleighStiffnessS >= 0.0) || settings.contactSweeps < 1 ||
+        !(settings.tetPressureShare >= 0.0 && settings.tetPressureShare <= 1.0))
+        return fail(ErrorCode::InvalidInput, "tissue solver: step 0-10 s, iterations 1-50, damping >= 0");
     const std::size_t n = pointsM.size();
     if (materials.size() != tets.size() || fixedDof.size() != n)
         return fail(ErrorCode::InvalidInput, "tissue solver: one material per tet and one fixed flag per point");
@@ -76,6 +77,8 @@ Status CorotationalFem::build(const std::vector<Vec3>& pointsM, const std::vecto
     m_forcedPoints.clear();
     m_fixed = fixedDof;
     m_tets = tets;
+    m_materials = materials;
+    m_tethers = tethers;
     m_removed.assign(tets.size(), 0);
     m_mass.assign(n, 0.0);
     m_dmInv.resize(tets.size());
@@ -131,6 +134,15 @@ Status CorotationalFem::build(const std::vector<Vec3>& pointsM, const std::vecto
     return {};
 }
 
+Status CorotationalFem::buildLike(const CorotationalFem& other, const FemSettings& settings) {
+    if (this == &other)
+        return fail(ErrorCode::InvalidInput, "tissue solver: a model cannot be built like itself");
+    HS_TRY(build(other.m_rest, other.m_tets, other.m_materials, other.m_fixed, other.m_tethers, settings));
+    m_removed = other.m_removed;
+    assembleAndFactor();
+    return {};
+}
+
 void CorotationalFem::assembleAndFactor() {
     const std::size_t n = m_x.size();
     const double h = m_settings.stepS;
@@ -146,7 +158,11 @@ void CorotationalFem::assembleAndFactor() {
         const std::array<Vec3, 4> g = shapeGradients(m_dmInv[t]);
         // With nodal pressure the tet keeps only its deviatoric part (lambda -> -2 mu / 3); the volumetric part is
         // assembled per point below.
-        const double v = m_volume[t] * stiffnessScale, mu = m_mu[t], la = nodal ? -2.0 * mu / 3.0 : m_lambda[t];
+        // The deviatoric part at the tet's tangent stiffening (1 at rest: refactorStiffened() sets it).
+        const double share = m_settings.tetPressureShare, bulk = m_lambda[t] + 2.0 * m_mu[t] / 3.0;
+        const double v = m_volume[t] * stiffnessScale;
+        const double mu = m_mu[t] * (m_matrixStiffening.empty() ? 1.0 : m_matrixStiffening[t]);
+        const double la = -2.0 * mu / 3.0 + (nodal ? share * bulk : bulk);
         for (std::size_t a = 0; a < 4; ++a)
             for (std::size_t b = 0; b < 4; ++b) {
                 const double gg = dot(g[a], g[b]);
@@ -188,7 +204,8 @@ void CorotationalFem::assembleAndFactor() {
                         it->second += add;
                 }
             }
-            const double scale = m_pointBulk[p] * m_pointVolume[p] * stiffnessScale;
+            const double scale =
+                (1.0 - m_settings.tetPressureShare) * m_pointBulk[p] * m_pointVolume[p] * stiffnessScale;
             for (const auto& [qa, ga] : gradient)
                 for (const auto& [qb, gb] : gradient)
                     for (int i = 0; i < 3; ++i)
@@ -269,17 +286,22 @@ void CorotationalFem::internalForces(const std::vector<Vec3>& x, const std::vect
         const double mu = m_mu[t];
         double pressure = 0.0, pressureRate = 0.0; // the volumetric stress, and its rate's
         if (nodal) {
+            const double share = m_settings.tetPressureShare, bulk = m_lambda[t] + 2.0 * mu / 3.0;
             for (std::size_t k = 0; k < 4; ++k) {
-                pressure += 0.25 * m_pointBulk[p(k)] * m_pointDilatation[p(k)];
-                pressureRate += 0.25 * m_pointBulk[p(k)] * m_pointRate[p(k)];
+                pressure += 0.25 * (1.0 - share) * m_pointBulk[p(k)] * m_pointDilatation[p(k)];
+                pressureRate += 0.25 * (1.0 - share) * m_pointBulk[p(k)] * m_pointRate[p(k)];
             }
+            pressure += share * bulk * m_tetDilatation[t];
+            pressureRate += share * bulk * m_tetRate[t];
         } else {
             const double bulk = m_lambda[t] + 2.0 * mu / 3.0;
             pressure = bulk * m_tetDilatation[t];
             pressureRate = bulk * m_tetRate[t];
         }
-        // sigma = 2 mu dev(e) + pressure I, and beta times the same of the strain rate.
-        Mat3 sigma = linearStress(strain[t], 1.0, mu, -2.0 * mu / 3.0);
+        // sigma = 2 mu s dev(e) + pressure I (s: the exponential stiffening's secant factor, 1 for a linear tet), and
+        // beta times the same of the strain rate.
+        Mat3 sigma =
+            linearStress(strain[t], 1.0, mu * stiffening(t, strain[t]), -2.0 * mu / 3.0 * stiffening(t, strain[t]));
         sigma[0] += pressure;
         sigma[4] += pressure;
         sigma[8] += pressure;
@@ -420,7 +442,8 @@ void CorotationalFem::complianceBetween(const std::vector<FemConstraint>& rows, 
     for (std::size_t i = 0; i < k; ++i) {
         bool precomputed = m_compliantCount > 0 && rows[i].points.size() <= kPrecomputedRowPoints;
         for (const std::int32_t p : rows[i].points)
-            precomputed = precomputed && m_compliantIndex[static_cast<std::size_t>(p)] >= 0;
+            precomputed = precomputed &&
+                          (m_compliantIndex[static_cast<std::size_t>(p)] >= 0 || held(static_cast<std::size_t>(p)));
         if (precomputed)
             continue;
         solved[i] = 1;
@@ -446,10 +469,14 @@ void CorotationalFem::complianceBetween(const std::vector<FemConstraint>& rows, 
             } else {
                 for (std::size_t a = 0; a < rows[i].points.size(); ++a) {
                     const auto pa = static_cast<std::size_t>(rows[i].points[a]);
+                    if (m_compliantIndex[pa] < 0)
+                        continue; // a held point: it does not move
                     const Vec3 ga = toRest(rows[i].gradient[a], pa);
                     const std::size_t ra = 3 * static_cast<std::size_t>(m_compliantIndex[pa]);
                     for (std::size_t b = 0; b < rows[j].points.size(); ++b) {
                         const auto pb = static_cast<std::size_t>(rows[j].points[b]);
+                        if (m_compliantIndex[pb] < 0)
+                            continue;
                         const Vec3 gb = toRest(rows[j].gradient[b], pb);
                         const std::size_t cb = 3 * static_cast<std::size_t>(m_compliantIndex[pb]);
                         for (std::size_t r = 0; r < 3; ++r)
@@ -469,12 +496,16 @@ bool CorotationalFem::onPrecomputedSurface(const std::vector<FemConstraint>& row
         return false;
     for (const FemConstraint& row : rows)
         for (const std::int32_t p : row.points)
-            if (m_compliantIndex[static_cast<std::size_t>(p)] < 0)
+            if (m_compliantIndex[static_cast<std::size_t>(p)] < 0 && !held(static_cast<std::size_t>(p)))
                 return false;
     for (const std::int32_t p : m_forcedPoints)
-        if (m_compliantIndex[static_cast<std::size_t>(p)] < 0)
+        if (m_compliantIndex[static_cast<std::size_t>(p)] < 0 && !held(static_cast<std::size_t>(p)))
             return false;
     return true;
+}
+
+bool CorotationalFem::held(std::size_t point) const {
+    return m_fixed[point][0] && m_fixed[point][1] && m_fixed[point][2];
 }
 
 void CorotationalFem::surfaceResponse(const std::vector<std::pair<std::int32_t, Vec3>>& forces,
@@ -486,6 +517,8 @@ void CorotationalFem::surfaceResponse(const std::vector<std::pair<std::int32_t, 
     std::vector<double> local(m3, 0.0);
     for (const auto& [p, f] : forces) {
         const auto pi = static_cast<std::size_t>(p);
+        if (m_compliantIndex[pi] < 0)
+            continue; // a held point: its force goes to the support
         Vec3 g = f;
         if (warped) {
             const Mat3& r = m_pointR[pi];
@@ -530,7 +563,7 @@ void CorotationalFem::solveContacts(std::vector<FemConstraint>& rows, const Obst
             double g = gap[i];
             for (std::size_t j = 0; j < k; ++j)
                 g += w[i * k + j] * lambda[j];
-            const double next = std::max(0.0, lambda[i] - g / w[i * k + i]);
+            const double next = std::clamp(lambda[i] - g / w[i * k + i], 0.0, m_settings.maxConstraintForce);
             change = std::max(change, std::abs(next - lambda[i]) * std::sqrt(w[i * k + i]));
             largest = std::max(largest, std::abs(next) * std::sqrt(w[i * k + i]));
             lambda[i] = next;
@@ -564,7 +597,7 @@ void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector
     // The predictor x_n + h v_n, with the held degrees of freedom at their targets.
     std::vector<Vec3> x(n), v(n);
     for (std::size_t i = 0; i < n; ++i) {
-        x[i] = m_x[i] + m_v[i] * h;
+        x[i] = m_x[i];
         for (int d = 0; d < 3; ++d)
             if (m_fixed[i][static_cast<std::size_t>(d)])
                 x[i][d] = m_target[i][d];
@@ -572,24 +605,47 @@ void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector
     std::vector<double> rhs(3 * n), lambda, gap;
     std::vector<std::pair<std::int32_t, Vec3>> change;
     std::vector<Vec3> response;
-    for (int it = 0; it < m_settings.iterations; ++it) {
+    // The residual at positions y (into rhs as -r, free dofs), its norm.
+    const auto residual = [&](const std::vector<Vec3>& y) {
         for (std::size_t i = 0; i < n; ++i)
-            v[i] = (x[i] - m_xStart[i]) / h;
-        internalForces(x, v, m_force);
-        // The free motion carries the constraints' last forces (a warm start): at a steady contact it needs no
-        // correction, and the correction below moves only the surface.
+            v[i] = (y[i] - m_xStart[i]) / h;
+        internalForces(y, v, m_force);
+        double sum2 = 0.0;
         for (std::size_t i = 0; i < n; ++i) {
             const Vec3 inertia =
-                (x[i] - m_xStart[i] - vStart[i] * h) * (m_mass[i] / (h * h)) + v[i] * (alpha * m_mass[i]);
-            const Vec3 tether = (x[i] - m_rest[i]) * m_tetherStiffness[i];
+                (y[i] - m_xStart[i] - vStart[i] * h) * (m_mass[i] / (h * h)) + v[i] * (alpha * m_mass[i]);
+            const Vec3 tether = (y[i] - m_rest[i]) * m_tetherStiffness[i];
             const Vec3 f = i < externalForcesN.size() && isFinite(externalForcesN[i]) ? externalForcesN[i] : Vec3{};
             const Vec3 r = inertia + tether - m_force[i] - f - m_constraintForce[i];
-            for (int d = 0; d < 3; ++d)
+            for (int d = 0; d < 3; ++d) {
                 rhs[3 * i + static_cast<std::size_t>(d)] = -r[d];
+                if (!m_fixed[i][static_cast<std::size_t>(d)])
+                    sum2 += r[d] * r[d];
+            }
         }
+        return std::sqrt(sum2);
+    };
+    std::vector<Vec3> trial(n);
+    std::vector<double> increment(3 * n);
+    for (int it = 0; it < m_settings.iterations; ++it) {
+        const double before = residual(x);
         solveWarped(rhs);
-        for (std::size_t i = 0; i < n; ++i)
-            x[i] += Vec3{rhs[3 * i], rhs[3 * i + 1], rhs[3 * i + 2]};
+        increment = rhs;
+        // The chord step is the rest matrix's: where the tissue has stiffened beyond twice that it overshoots, so the
+        // step is shortened until the residual falls (a backtracking line search; the last length is tried first).
+        double length = std::min(1.0, 2.0 * m_stepLength);
+        for (int tries = 0;; ++tries) {
+            for (std::size_t i = 0; i < n; ++i)
+                trial[i] = x[i] + Vec3{increment[3 * i], increment[3 * i + 1], increment[3 * i + 2]} * length;
+            if (!m_settings.lineSearch || tries >= 12)
+                break;
+            const double after = residual(trial);
+            if (std::isfinite(after) && after <= before * (1.0 + 1e-9) + 1e-12)
+                break;
+            length *= 0.5;
+        }
+        m_stepLength = length;
+        x = trial;
         if (contacts.empty() && m_forcedPoints.empty())
             continue;
         // The constraints' forces lambda (total): the gaps after the free motion, less what the last forces did in it.
@@ -615,7 +671,7 @@ void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector
             for (std::size_t a = 0; a < row.points.size(); ++a) {
                 const auto p = static_cast<std::size_t>(row.points[a]);
                 Vec3 last{};
-                if (surface && !m_forcedPoints.empty())
+                if (surface && !m_forcedPoints.empty() && m_compliantIndex[p] >= 0)
                     last = response[static_cast<std::size_t>(m_compliantIndex[p])];
                 else if (!lastResponse.empty())
                     last = {lastResponse[3 * p], lastResponse[3 * p + 1], lastResponse[3 * p + 2]};
@@ -793,12 +849,73 @@ std::vector<std::vector<std::size_t>> CorotationalFem::removeTets(const std::vec
     return pieces;
 }
 
+double CorotationalFem::loadCompliance(const std::vector<Vec3>& forces) const {
+    std::vector<double> u(3 * m_x.size(), 0.0);
+    for (std::size_t i = 0; i < std::min(forces.size(), m_x.size()); ++i)
+        for (int d = 0; d < 3; ++d)
+            u[3 * i + static_cast<std::size_t>(d)] = isFinite(forces[i]) ? forces[i][d] : 0.0;
+    std::vector<double> f = u;
+    solveWarped(u);
+    double s = 0.0;
+    for (std::size_t k = 0; k < u.size(); ++k)
+        s += f[k] * u[k];
+    return s;
+}
+
 std::size_t CorotationalFem::factorNonZeros() const {
     return m_factor ? static_cast<std::size_t>(m_factor->ldlt.matrixL().nestedExpression().nonZeros()) : 0;
 }
 
 Vec3 CorotationalFem::reactionN(std::size_t point) const {
     return point < m_reaction.size() ? m_reaction[point] : Vec3{};
+}
+
+double CorotationalFem::stiffeningArgument(std::size_t tet, const std::array<double, 9>& s) const {
+    const double c = m_materials[tet].stiffeningStrain;
+    if (!(c > 0.0))
+        return 0.0;
+    const double theta = (s[0] + s[4] + s[8] - 3.0) / 3.0;
+    double dev2 = 0.0;
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) {
+            const double e = 0.5 * (s[3 * i + j] + s[3 * j + i]) - (i == j ? 1.0 + theta : 0.0);
+            dev2 += e * e;
+        }
+    return std::min(std::sqrt(dev2) / c, 20.0);
+}
+
+double CorotationalFem::refactorStiffened() {
+    // Each tet's tangent stiffening cosh(x) at the current shape: the chord iteration then converges as at rest.
+    m_matrixStiffening.assign(m_tets.size(), 1.0);
+    double largest = 1.0;
+    for (std::size_t t = 0; t < m_tets.size(); ++t) {
+        if (m_removed[t])
+            continue;
+        const Tet& tet = m_tets[t];
+        const auto p = [&tet](std::size_t k) { return static_cast<std::size_t>(tet[k]); };
+        const Mat3 f = multiply(shapeMatrix(m_x[p(0)], m_x[p(1)], m_x[p(2)], m_x[p(3)]), m_dmInv[t]);
+        std::array<double, 4> q = m_rotation[t];
+        const Mat3 s = multiplyTransposed(rotationOf(f, q, 4), f);
+        m_matrixStiffening[t] = std::cosh(stiffeningArgument(t, s));
+        largest = std::max(largest, m_matrixStiffening[t]);
+    }
+    assembleAndFactor();
+    return largest;
+}
+
+double CorotationalFem::stiffening(std::size_t tet, const std::array<double, 9>& s) const {
+    const double c = m_materials[tet].stiffeningStrain;
+    if (!(c > 0.0))
+        return 1.0;
+    const double theta = (s[0] + s[4] + s[8] - 3.0) / 3.0;
+    double dev2 = 0.0;
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) {
+            const double e = 0.5 * (s[3 * i + j] + s[3 * j + i]) - (i == j ? 1.0 + theta : 0.0);
+            dev2 += e * e;
+        }
+    const double x = std::min(std::sqrt(dev2) / c, 20.0);
+    return std::min(x < 1e-4 ? 1.0 + x * x / 6.0 : std::sinh(x) / x, m_settings.maxStiffening);
 }
 
 double CorotationalFem::elasticEnergyJ() const {
@@ -820,16 +937,19 @@ double CorotationalFem::elasticEnergyJ() const {
                 const double e = 0.5 * (s[3 * i + j] + s[3 * j + i]) - (i == j ? 1.0 + theta / 3.0 : 0.0);
                 dev2 += e * e;
             }
-        energy += m_mu[t] * dev2 * m_volume[t];
+        const double c = m_materials[t].stiffeningStrain;
+        const double x = c > 0.0 ? std::min(std::sqrt(dev2) / c, 20.0) : 0.0;
+        energy += (c > 0.0 ? 2.0 * m_mu[t] * c * c * (std::cosh(x) - 1.0) : m_mu[t] * dev2) * m_volume[t];
+        const double tetShare = m_settings.nodalPressure ? m_settings.tetPressureShare : 1.0;
         if (m_settings.nodalPressure)
             for (std::size_t k = 0; k < 4; ++k)
                 pointTheta[p(k)] += m_volume[t] / (4.0 * m_pointVolume[p(k)]) * theta;
-        else
-            energy += 0.5 * (m_lambda[t] + 2.0 * m_mu[t] / 3.0) * theta * theta * m_volume[t];
+        energy += tetShare * 0.5 * (m_lambda[t] + 2.0 * m_mu[t] / 3.0) * theta * theta * m_volume[t];
     }
     if (m_settings.nodalPressure)
         for (std::size_t i = 0; i < m_x.size(); ++i)
-            energy += 0.5 * m_pointBulk[i] * pointTheta[i] * pointTheta[i] * m_pointVolume[i];
+            energy += (1.0 - m_settings.tetPressureShare) * 0.5 * m_pointBulk[i] * pointTheta[i] * pointTheta[i] *
+                      m_pointVolume[i];
     return energy;
 }
 

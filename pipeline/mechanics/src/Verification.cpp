@@ -63,8 +63,8 @@ double seconds(std::chrono::steady_clock::time_point since) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
 
-std::vector<FemMaterial> uniform(std::size_t tets, double eKpa, double nu) {
-    return std::vector<FemMaterial>(tets, FemMaterial{eKpa * 1e3, nu, 1050.0});
+std::vector<FemMaterial> uniform(std::size_t tets, double eKpa, double nu, double stiffeningStrain = 0.0) {
+    return std::vector<FemMaterial>(tets, FemMaterial{eKpa * 1e3, nu, 1050.0, stiffeningStrain});
 }
 
 Status checkMaterial(double eKpa, double nu) {
@@ -201,7 +201,8 @@ Result<VerificationResult> runLameSphere(const LameParams& p) {
         for (int d = 0; d < 3; ++d)
             fixed[i][static_cast<std::size_t>(d)] = std::abs(points[i][d]) < 1e-12;
     CorotationalFem fem;
-    HS_TRY(fem.build(points, tets, uniform(tets.size(), p.youngsModulusKpa, p.poissonRatio), fixed, {}, p.solver));
+    HS_TRY(fem.build(points, tets, uniform(tets.size(), p.youngsModulusKpa, p.poissonRatio, p.stiffeningStrain), fixed,
+                     {}, p.solver));
     std::vector<Vec3> forces(points.size());
     std::vector<FemConstraint> contacts;
     const auto ramp = static_cast<int>(std::lround(0.1 / p.solver.stepS));

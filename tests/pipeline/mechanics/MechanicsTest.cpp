@@ -233,6 +233,56 @@ TEST(Mechanics, APieceCutFreeIsReturnedAsAChip) {
     EXPECT_DOUBLE_EQ(fem.positionsM()[static_cast<std::size_t>(block.at(5, 5, 5))].z, 0.0);
 }
 
+/// The block's top pressed down by `depthMm` through held points (its centre's 4 points), settled; the force, N.
+double pressBlock(const Block& block, const std::vector<FemMaterial>& materials, double depthMm, bool refactor,
+                  std::size_t* recoveries = nullptr) {
+    const std::int32_t top[4] = {block.at(5, 5, 5), block.at(6, 5, 5), block.at(5, 6, 5), block.at(6, 6, 5)};
+    std::vector<std::array<bool, 3>> fixed = block.fixed;
+    for (const std::int32_t p : top)
+        fixed[static_cast<std::size_t>(p)][2] = true;
+    FemSettings settings;
+    settings.maxStiffening = 1e6;
+    CorotationalFem fem;
+    if (!fem.build(block.points, block.tets, materials, fixed, {}, settings))
+        return -1.0;
+    std::vector<FemConstraint> none;
+    for (int s = 1; s <= 400; ++s) {
+        const double depth = depthMm * std::min(1.0, s / 100.0) * 1e-3;
+        for (const std::int32_t p : top)
+            fem.setTarget(static_cast<std::size_t>(p), block.points[static_cast<std::size_t>(p)] - Vec3{0, 0, depth});
+        if (refactor && s % 20 == 0)
+            fem.refactorStiffened();
+        fem.step({}, none);
+    }
+    if (recoveries)
+        *recoveries = fem.recoveries();
+    double force = 0.0;
+    for (const std::int32_t p : top)
+        force -= fem.reactionN(static_cast<std::size_t>(p)).z;
+    return force;
+}
+
+TEST(Mechanics, StiffeningTissueIsLinearWhenBarelyStrainedAndStifferWhenPressedFar) {
+    // The exponential stiffening (Fung; Pearsall & Roberts' myometrium): the same as the linear material for a small
+    // press, far stiffer for a deep one; the line search keeps the rest matrix's iteration converging either way.
+    const Block block = makeBlock();
+    const std::vector<FemMaterial> linear(block.tets.size(), FemMaterial{30e3, 0.47, 1050.0, 0.0});
+    const std::vector<FemMaterial> stiffening(block.tets.size(), FemMaterial{30e3, 0.47, 1050.0, 0.104});
+    const double smallLinear = pressBlock(block, linear, 0.05, false);
+    const double smallStiff = pressBlock(block, stiffening, 0.05, false);
+    EXPECT_NEAR(smallStiff, smallLinear, 0.01 * smallLinear);
+    std::size_t recoveries = 1;
+    const double deepLinear = pressBlock(block, linear, 3.0, false);
+    const double deepStiff = pressBlock(block, stiffening, 3.0, false, &recoveries);
+    std::printf("press 0.05 mm: %.5f N linear, %.5f N stiffening; 3 mm: %.4f N, %.4f N\n", smallLinear, smallStiff,
+                deepLinear, deepStiff);
+    EXPECT_GT(deepStiff, 1.5 * deepLinear);
+    EXPECT_EQ(recoveries, 0u);
+    // With the matrix refactored to the stiffened tissue, the same equilibrium.
+    const double refactored = pressBlock(block, stiffening, 3.0, true);
+    EXPECT_NEAR(refactored, deepStiff, 0.01 * deepStiff);
+}
+
 TEST(Mechanics, RefusesBadMaterialsAndFlatTets) {
     const Block block = makeBlock();
     std::vector<FemMaterial> materials(block.tets.size(), FemMaterial{30e3, 0.5, 1050.0});

@@ -25,9 +25,15 @@
 namespace hs::mechanics {
 
 struct FemMaterial {
-    double youngsModulusPa = 30e3;
+    double youngsModulusPa = 30e3; ///< at small strain
     double poissonRatio = 0.47;
     double densityKgPerM3 = 1050.0;
+    /// Soft tissue stiffens exponentially as it stretches (Fung, Am J Physiol 213:1532-1544, 1967): the deviatoric
+    /// energy is 2 mu c^2 (cosh(|dev e| / c) - 1), mu |dev e|^2 at small strain, its tangent growing as e^(|e|/c).
+    /// Human myometrium in vitro follows strain = C ln(stress) + B with tangent moduli of 70-200 psi at 10 psi
+    /// (Pearsall & Roberts, J Biomech 11:167-176, 1978), so C = 0.05-0.14. c is that strain scale, for |dev e|
+    /// (sqrt(3/2) times a uniaxial strain); 0: linear (the textbook verification).
+    double stiffeningStrain = 0.0;
 };
 
 /// Where the last step's time went, ms (wall clock).
@@ -38,7 +44,7 @@ struct FemStepTimings {
 };
 
 struct FemSettings {
-    double stepS = 0.005; ///< s, the time step h
+    double stepS = 0.005; ///< s, the time step h (up to 10 s: a static solve takes a long step)
     /// Rayleigh damping D = alpha M + beta K (docs/simulator.md, "Tissue": soft tissue's loss factor).
     double rayleighMassPerS = 1.0;    ///< alpha, 1/s
     double rayleighStiffnessS = 0.01; ///< beta, s
@@ -48,10 +54,25 @@ struct FemSettings {
     /// Commun Numer Meth Eng 14:437-449, 1998): linear tets lock for nearly incompressible tissue (Poisson ratio
     /// 0.45-0.49) and come out too stiff; averaging the volume change at the points frees them.
     bool nodalPressure = true;
+    /// The share of the volumetric energy kept per tet with the nodal pressure on (0-1). The nodal average alone lets a
+    /// single small tet collapse at no cost in volume (the average nodal pressure tet's known spurious modes); a share
+    /// held per tet stops that, at a little of the locking back (docs/simulator.md, "Verification").
+    double tetPressureShare = 0.1;
     /// Assemble the iteration's matrix with the nodal pressure too. Off, the matrix keeps each tet's own pressure: a
     /// third of the factor's size and of a solve's time, while the forces (and so every converged state) stay the
     /// nodal pressure's; the iteration then converges a little slower in the volume-changing modes.
     bool nodalPressureMatrix = false;
+    /// The stiffening's secant factor is held below this: the iteration's matrix is the rest stiffness, and a chord
+    /// step converges only while the tissue is less than twice as stiff as that (docs/simulator.md, "Tissue").
+    double maxStiffening = 1.9;
+    /// (maxStiffening above applies to the forces; with refactorStiffened() called as the tissue stiffens it may be
+    /// large.)
+    /// The largest force a constraint row may carry (N for a contact): beyond it the row gives (a perforation's
+    /// business, not the solver's); infinite by default.
+    double maxConstraintForce = 1e300;
+    /// Shorten a step whose residual would grow (a backtracking line search; one more force evaluation per iteration).
+    /// Needed with stiffening materials, whose tangent outgrows the rest matrix.
+    bool lineSearch = true;
     /// Evaluate the residual at the end of each step (reactionN, residualN): one more force evaluation per step.
     bool endResidual = true;
 };
@@ -96,6 +117,15 @@ public:
                                const std::vector<std::pair<std::int32_t, double>>& tethers,
                                const FemSettings& settings);
 
+    /// Factors the iteration's matrix again with each tet's tangent stiffening at the current shape (the precomputed
+    /// surface compliance is kept: it only guides the contacts' first guess). Returns the largest factor. Call it
+    /// at a fixed point of the step (replays stay bit for bit) when the tissue has stiffened or relaxed.
+    double refactorStiffened();
+
+    /// The same tissue as `other` (its rest shape, tets, materials, supports, tethers and removed tets) with other
+    /// settings, at rest: a static solve of a running model takes a long step.
+    [[nodiscard]] Status buildLike(const CorotationalFem& other, const FemSettings& settings);
+
     /// Where the held degrees of freedom of `point` are (m; the free ones ignore it).
     void setTarget(std::size_t point, const Vec3& positionM);
 
@@ -112,6 +142,11 @@ public:
     std::vector<std::vector<std::size_t>> removeTets(const std::vector<std::size_t>& tets);
     bool tetRemoved(std::size_t tet) const { return tet < m_removed.size() && m_removed[tet] != 0; }
 
+    /// The give of the tissue over one step under the load pattern `forces` (N per point): f^T R H^-1 R^T f, in m per
+    /// N times the pattern's units squared (one solve). For the cavity's pressure pattern (m^2 per point) it is the
+    /// cavity's volume change per pascal, m^3/Pa.
+    double loadCompliance(const std::vector<Vec3>& forces) const;
+
     /// Precomputes the compliance H^-1 between the degrees of freedom of `points` (the surface a tool can touch), so a
     /// step's contact problem costs no solve per contact; rows on other points, or on more than a few dozen points
     /// (the cavity's volume), get their column from a solve.
@@ -124,6 +159,8 @@ public:
     std::size_t tetCount() const { return m_tets.size(); }
     const FemSettings& settings() const { return m_settings; }
     const FemStepTimings& lastTimings() const { return m_timings; }
+    /// The line search's last step length (1: the full chord step).
+    double lastStepLength() const { return m_stepLength; }
     /// Non-zeros of the factor's L: what a solve reads.
     std::size_t factorNonZeros() const;
 
@@ -155,11 +192,15 @@ private:
     /// turn far (the corpus tilting, a flap left by a cut) converge as fast as at rest.
     void solveWarped(std::vector<double>& b) const;
     void updatePointRotations();
+    /// The exponential stiffening's secant factor sinh(x)/x, x = |dev e| / c, for a tet's corotated stretch `s`.
+    double stiffening(std::size_t tet, const std::array<double, 9>& s) const;
+    double stiffeningArgument(std::size_t tet, const std::array<double, 9>& s) const;
     /// H^-1 column for dof (cached when precomputed).
     void complianceBetween(const std::vector<FemConstraint>& rows, std::vector<double>& w);
     void solveContacts(std::vector<FemConstraint>& rows, const ObstacleCompliance& obstacle,
                        const std::vector<double>& gap, std::vector<double>& lambda);
     bool onPrecomputedSurface(const std::vector<FemConstraint>& rows) const;
+    bool held(std::size_t point) const;
     /// R S R^T f on the precomputed points for forces f on some of them.
     void surfaceResponse(const std::vector<std::pair<std::int32_t, Vec3>>& forces, std::vector<Vec3>& out) const;
 
@@ -170,6 +211,8 @@ private:
     std::vector<std::array<bool, 3>> m_fixed;
     std::vector<double> m_mass; ///< kg, lumped
     std::vector<Tet> m_tets;
+    std::vector<FemMaterial> m_materials;
+    std::vector<double> m_matrixStiffening; ///< per tet, the deviatoric stiffness factor the matrix was built with
     std::vector<char> m_removed;
     std::vector<std::array<double, 9>> m_dmInv; ///< inverse rest shape matrix, row-major
     std::vector<double> m_volume;               ///< m^3 at rest
@@ -192,6 +235,7 @@ private:
     std::size_t m_compliantCount = 0;
     std::vector<double> m_lastW;
     double m_residualNorm = 0.0;
+    double m_stepLength = 1.0; ///< the line search's last step length
     mutable FemStepTimings m_timings;
 };
 

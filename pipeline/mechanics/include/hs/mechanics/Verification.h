@@ -48,9 +48,10 @@ struct LameParams {
     double poissonRatio = 0.47;
     double innerRadiusMm = 10.0;
     double outerRadiusMm = 20.0;
-    double pressureKpa = 1.0; ///< 7.5 mmHg: strains of a few percent, the linear regime of the solution
-    int layers = 8;           ///< elements through the wall
-    int subdivisions = 10;    ///< elements along an octant's edge
+    double pressureKpa = 1.0;      ///< 7.5 mmHg: strains of a few percent, the linear regime of the solution
+    double stiffeningStrain = 0.0; ///< FemMaterial::stiffeningStrain (0: linear, the textbook's material)
+    int layers = 8;                ///< elements through the wall
+    int subdivisions = 10;         ///< elements along an octant's edge
     FemSettings solver;
     double settleS = 0.5; ///< s, after a 0.1 s ramp of the pressure
 };
