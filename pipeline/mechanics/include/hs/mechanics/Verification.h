@@ -27,7 +27,7 @@ struct PunchParams {
     double growth = 1.25;        ///< the elements' size grows by this from ring to ring beyond the punch (1: uniform)
     int sectors = 8;             ///< elements round the quarter circle
     FemSettings solver;          ///< the solver's step, iterations, damping, pressure (its defaults)
-    double settleS = 0.4;        ///< s, held at depth after a 0.1 s ramp
+    double settleS = 1.0;        ///< s, held at depth after a 0.1 s ramp
 };
 
 struct VerificationResult {
