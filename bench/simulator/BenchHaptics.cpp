@@ -4,12 +4,14 @@
 // it pops ticksPerStep() device samples, steps the world and publishes world.hapticFrame(), as hysteroscene-sim
 // does. Without, a stand-in publishes a ~5000-triangle sphere every 5 ms after burning ~4 ms of CPU.
 //
-//   bench_haptics [--seconds 10] [--package DIR]
+//   bench_haptics [--seconds 10] [--package DIR [--throttle-hz 100]]
+// --throttle-hz: the physics held to that rate; the table gains the lag between the device and the world.
 #include "hs/haptics/Clock.h"
 #include "hs/haptics/HapticsLoop.h"
 #include "hs/haptics/ScriptedDevice.h"
 #include "hs/sim/World.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -118,29 +120,46 @@ std::uint64_t fakePhysics(HapticsLoop& loop, const std::atomic<bool>& stop) {
     return step;
 }
 
-/// The World on a scene package: the device's samples step it; every step publishes its surface.
-Physics worldPhysics(sim::World& world, std::uint64_t& steps) {
-    return [&world, &steps](HapticsLoop& loop, const std::atomic<bool>& stop) -> std::uint64_t {
+/// What the world's steps saw of the device: when each step ended against when the loop took the newest sample the
+/// step consumed (ms), and the samples dropped because the physics had fallen behind.
+struct LagLog {
+    std::vector<double> lagMs;
+    std::size_t skipped = 0;
+};
+
+/// The World on a scene package: the device's samples step it, the newest ones when it has fallen behind (as
+/// hysteroscene-sim's HapticsSource takes them); every step publishes its haptic frame. `throttleHz` > 0 holds each
+/// step to at least 1/throttleHz of wall time (a slow machine, or a heavy scene).
+Physics worldPhysics(sim::World& world, std::uint64_t& steps, double throttleHz, LagLog& log) {
+    return [&world, &steps, throttleHz, &log](HapticsLoop& loop, const std::atomic<bool>& stop) -> std::uint64_t {
         const std::size_t per = world.ticksPerStep();
         std::vector<sim::DeviceSample> samples(per);
         std::uint64_t tick = 0;
         loop.publish(world.hapticFrame());
         while (!stop.load()) {
-            std::size_t have = 0;
-            while (have < per && !stop.load()) {
-                sim::DeviceSample s;
-                if (loop.popSample(s)) {
-                    s = sim::clamped(s);
-                    s.tick = tick + have;
-                    samples[have++] = s;
-                } else {
-                    std::this_thread::sleep_for(std::chrono::microseconds(200));
-                }
+            std::size_t skipped = 0;
+            std::int64_t newestNs = 0;
+            if (!loop.takeNewest(per, samples.data(), skipped, newestNs)) {
+                std::this_thread::sleep_for(std::chrono::microseconds(200));
+                continue;
             }
-            if (have < per)
-                break;
+            const std::int64_t started = monotonicNs();
+            for (std::size_t i = 0; i < per; ++i) {
+                samples[i] = sim::clamped(samples[i]);
+                samples[i].tick = tick + i;
+            }
             if (!world.step(samples.data(), per).ok())
                 break;
+            if (throttleHz > 0.0) {
+                // Sleep to 0.3 ms before, then spin: the throttle itself adds no lag.
+                const auto until = started + static_cast<std::int64_t>(1e9 / throttleHz);
+                if (until - monotonicNs() > 300000)
+                    std::this_thread::sleep_for(std::chrono::nanoseconds(until - monotonicNs() - 300000));
+                while (monotonicNs() < until) {
+                }
+            }
+            log.lagMs.push_back(static_cast<double>(monotonicNs() - newestNs) * 1e-6);
+            log.skipped += skipped;
             tick += per;
             ++steps;
             loop.publish(world.hapticFrame());
@@ -171,7 +190,8 @@ sim::Script pushScript() {
 
 struct BenchConfig {
     double seconds = 10.0;
-    std::string package; ///< empty: the stand-in physics
+    std::string package;     ///< empty: the stand-in physics
+    double throttleHz = 0.0; ///< with --package: each physics step takes at least 1/throttleHz s
     DeviceLimits limits{5.0, 300.0};
 };
 
@@ -228,10 +248,12 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--seconds") == 0 && i + 1 < argc) {
             config.seconds = std::atof(argv[++i]);
+        } else if (std::strcmp(argv[i], "--throttle-hz") == 0 && i + 1 < argc) {
+            config.throttleHz = std::atof(argv[++i]);
         } else if (std::strcmp(argv[i], "--package") == 0 && i + 1 < argc) {
             config.package = argv[++i];
         } else {
-            std::fprintf(stderr, "usage: bench_haptics [--seconds S] [--package DIR]\n");
+            std::fprintf(stderr, "usage: bench_haptics [--seconds S] [--package DIR [--throttle-hz H]]\n");
             return 1;
         }
     }
@@ -247,7 +269,24 @@ int main(int argc, char** argv) {
         return 3;
     }
     std::uint64_t steps = 0;
-    const int code = runBench(config, worldPhysics(**world, steps), "the World on the package (paced by the device)");
+    LagLog log;
+    const int code = runBench(config, worldPhysics(**world, steps, config.throttleHz, log),
+                              config.throttleHz > 0.0 ? "the World on the package, throttled"
+                                                      : "the World on the package (paced by the device)");
+    std::vector<double> lags = log.lagMs;
+    std::sort(lags.begin(), lags.end());
+    const auto quantile = [&lags](double q) {
+        return lags.empty() ? 0.0
+                            : lags[std::min(lags.size() - 1,
+                                            static_cast<std::size_t>(q * static_cast<double>(lags.size() - 1)))];
+    };
+    const double stepMs = config.throttleHz > 0.0 ? 1e3 / config.throttleHz : 0.0;
+    std::printf("%-34s %.2f / %.2f / %.2f ms", "lag device -> world p50/p99/max", quantile(0.5), quantile(0.99),
+                quantile(1.0));
+    if (stepMs > 0.0)
+        std::printf(" (bar: one step + 1 ms = %.1f ms at p99)", stepMs + 1.0);
+    std::printf("\n");
+    std::printf("%-34s %zu\n", "samples skipped (physics behind)", log.skipped);
     std::printf("%-34s %llu (%.0f Hz)\n", "physics steps", static_cast<unsigned long long>(steps),
                 static_cast<double>(steps) / config.seconds);
     return code;

@@ -143,6 +143,33 @@ TEST(HapticsLoop, AScriptedPushIntoTheWallNeverExceedsTheClamp) {
         ASSERT_EQ(consumer.samples[i].insertionMm, script.sampleAt(i).insertionMm) << "tick " << i;
 }
 
+TEST(HapticsLoop, APhysicsThatFellBehindTakesTheNewestSamples) {
+    // No consumer for 60 ms: some 60 samples wait. The physics takes the newest step's worth, consecutive ticks of
+    // the device, and drops the older; with fewer than a step's worth waiting it takes nothing.
+    ScriptedDevice device(pushScript());
+    ASSERT_TRUE(device.open().ok());
+    HapticsLoop loop(device, HapticsLoopOptions{});
+    ASSERT_TRUE(loop.start().ok());
+    Publisher publisher(loop);
+    std::this_thread::sleep_for(60ms);
+    sim::DeviceSample out[5];
+    std::size_t skipped = 0;
+    std::int64_t newestNs = 0;
+    ASSERT_TRUE(loop.takeNewest(5, out, skipped, newestNs));
+    const std::size_t left = loop.pendingSamples();
+    loop.stop();
+    publisher.stop();
+    EXPECT_GE(skipped, 30u);
+    for (std::size_t i = 1; i < 5; ++i)
+        EXPECT_EQ(out[i].tick, out[0].tick + i);
+    EXPECT_GE(out[4].tick, skipped + 4); // nothing older than the dropped ones
+    EXPECT_LE(left, 5u);                 // what waits now came after the take
+    EXPECT_GT(newestNs, 0);              // (the lag it gives is measured by bench_haptics --throttle-hz)
+    sim::DeviceSample more[5];
+    HapticsLoop idle(device, HapticsLoopOptions{});
+    EXPECT_FALSE(idle.takeNewest(5, more, skipped, newestNs)); // nothing waits: nothing taken
+}
+
 TEST(HapticsLoop, WatchdogZeroesTheForceWhenFramesStop) {
     ManualDevice device("keyboard", {5.0, 300.0});
     sim::DeviceSample pressed;

@@ -18,6 +18,9 @@ Trial sampleTrial(std::size_t count, std::uint64_t seed = 7) {
     Trial trial;
     trial.header.sceneSha256 = std::string(64, 'a');
     trial.header.seed = 0xFFFFFFFFFFFFFFF1ull; // above 2^63: the JSON must keep every bit
+    trial.header.physics.engine = "test-engine/3";
+    trial.header.physics.stepS = 0.002;
+    trial.header.physics.solverIterations = 7;
     trial.header.exercise = Exercise::Diagnosis;
     trial.header.scope.opticDeg = 12.0;
     trial.header.scope.diameterMm = 4.0;
@@ -98,6 +101,9 @@ TEST_F(TrialFile, ReadsBackBitForBit) {
     EXPECT_EQ(read->header.scope.diameterMm, 4.0);
     EXPECT_EQ(read->header.device, original.header.device);
     EXPECT_EQ(read->header.startedUtc, original.header.startedUtc);
+    EXPECT_EQ(read->header.physics.engine, "test-engine/3");
+    EXPECT_EQ(read->header.physics.stepS, 0.002);
+    EXPECT_EQ(read->header.physics.solverIterations, 7);
     ASSERT_EQ(read->samples.size(), original.samples.size());
     for (std::size_t i = 0; i < original.samples.size(); ++i) {
         const DeviceSample& a = original.samples[i];
@@ -208,6 +214,28 @@ TEST_F(TrialFile, RefusesHeaderFieldsOutOfRange) {
     const std::size_t e = exercise.find("diagnosis");
     exercise.replace(e, 9, "diagnoses");
     EXPECT_TRUE(refusedNaming(parseTrial(exercise, "e.hstrial"), "e.hstrial", "exercise"));
+}
+
+TEST_F(TrialFile, RefusesAHeaderWithoutItsPhysicsOrFromAnOlderFormat) {
+    Trial trial = sampleTrial(10);
+    trial.header.physics.engine.clear();
+    Status status = writeTrial(trial, dir.file("no-engine.hstrial"));
+    ASSERT_FALSE(status);
+    EXPECT_NE(status.error().detail.find("header.physics.engine"), std::string::npos) << status.error().detail;
+    trial = sampleTrial(10);
+    trial.header.physics.solverIterations = 0;
+    status = writeTrial(trial, dir.file("iterations.hstrial"));
+    ASSERT_FALSE(status);
+    EXPECT_NE(status.error().detail.find("header.physics.solverIterations"), std::string::npos);
+    // A version 1 header (before the physics was recorded) is refused by its version.
+    trial = sampleTrial(10);
+    const std::string old = dir.file("old.hstrial");
+    ASSERT_TRUE(writeTrial(trial, old));
+    std::string oldBytes = fileBytes(old);
+    const std::size_t at = oldBytes.find("\"version\":2");
+    ASSERT_NE(at, std::string::npos);
+    oldBytes[at + 10] = '1';
+    EXPECT_TRUE(refusedNaming(parseTrial(oldBytes, "old.hstrial"), "old.hstrial", "/version"));
 }
 
 TEST(Trial, ReadingAMissingFileNamesIt) {

@@ -194,6 +194,19 @@ TEST(World, PushingThroughTheFundusIsAPerforation) {
     EXPECT_EQ(std::memcmp(&a.perforations[0].depthMm, &b.perforations[0].depthMm, sizeof(double)), 0);
     EXPECT_EQ(a.wallContacts, b.wallContacts);
 
+    // A trial of another physics engine, or replayed with other settings, is refused by the field.
+    Trial other = trial;
+    other.header.physics.engine = "xpbd-fixed-corotated/0";
+    auto engine = replayTrial(test::SimPackage::folder(), other);
+    ASSERT_FALSE(engine);
+    EXPECT_NE(engine.error().detail.find("header.physics.engine"), std::string::npos) << engine.error().detail;
+    WorldOptions options = world->options();
+    options.solverIterations += 1;
+    const Status settings = checkReplay(trial.header, options);
+    ASSERT_FALSE(settings);
+    EXPECT_NE(settings.error().detail.find("header.physics.solverIterations"), std::string::npos);
+    EXPECT_TRUE(checkReplay(trial.header, world->options()));
+
     // A trial of another scene is refused.
     trial.header.sceneSha256 = std::string(64, '0');
     auto refused = replayTrial(test::SimPackage::folder(), trial);

@@ -117,19 +117,22 @@ HapticsSource::~HapticsSource() {
 }
 
 bool HapticsSource::next(std::uint64_t firstTick, std::size_t count, sim::DeviceSample* out) {
-    // The loop numbers its ticks from 0 like the world; wait for the step's samples (the device's pace).
-    std::size_t have = 0;
-    while (have < count) {
+    // Wait for the step's samples (the device's pace); when the physics has fallen behind, take the newest ones and
+    // drop the rest, so the world follows the device's present, not its past. The world numbers the ticks it
+    // consumed (they are what the trial records, and what a replay steps through).
+    std::size_t skipped = 0;
+    std::int64_t newestNs = 0;
+    while (!m_loop->takeNewest(count, out, skipped, newestNs)) {
         if (m_cancelled.load() || m_loop->deviceLost() || !m_loop->running())
             return false;
-        sim::DeviceSample s;
-        if (m_loop->popSample(s)) {
-            s.tick = firstTick + have;
-            out[have++] = sim::clamped(s);
-        } else {
-            std::this_thread::sleep_for(std::chrono::microseconds(200));
-        }
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
     }
+    for (std::size_t i = 0; i < count; ++i) {
+        out[i] = sim::clamped(out[i]);
+        out[i].tick = firstTick + i;
+    }
+    m_skipped.fetch_add(skipped);
+    m_newestNs.store(newestNs);
     return true;
 }
 

@@ -199,6 +199,13 @@ void SimWindow::startSession(std::unique_ptr<sim::World> world) {
             emit loadFailed(fromUtf8(trial.error().message()));
             return;
         }
+        // A trial replays bit for bit only on the physics and settings that recorded it.
+        if (Status same = sim::checkReplay(trial->header, m_world->options()); !same) {
+            MessageBox::critical(this, tr("Replay"), tr("The trial was recorded with other settings."),
+                                 fromUtf8(same.error().message()));
+            emit loadFailed(fromUtf8(same.error().message()));
+            return;
+        }
         m_replay = std::move(*trial);
         m_source = std::make_unique<TrialSource>(m_replay);
     } else if (m_options.device.kind == DeviceSpec::Kind::Scripted) {

@@ -100,6 +100,12 @@ void writeHeader(JsonWriter& w, const TrialHeader& h) {
     w.open('{');
     w.field("sceneSha256", h.sceneSha256);
     w.field("seed", h.seed);
+    w.key("physics");
+    w.open('{');
+    w.field("engine", h.physics.engine);
+    w.field("stepS", h.physics.stepS);
+    w.field("solverIterations", h.physics.solverIterations);
+    w.close('}');
     w.field("exercise", std::string(toString(h.exercise)));
     w.key("scope");
     w.open('{');

@@ -23,7 +23,7 @@ using nlohmann::ordered_json;
 
 constexpr char kMagic[8] = {'H', 'S', 'T', 'R', 'I', 'A', 'L', '1'};
 constexpr std::string_view kHeaderFormat = "hysteroscene-trial";
-constexpr int kHeaderVersion = 1;
+constexpr int kHeaderVersion = 2; // 2: the physics that recorded it (engine, step, iterations)
 constexpr std::size_t kRecordBytes = 72;
 constexpr std::size_t kMaxTextField = 256;
 constexpr std::uint32_t kKnownButtons = kButtonMark | kButtonCapture;
@@ -144,6 +144,14 @@ Status checkHeader(const TrialHeader& h, const std::string& name) {
         return invalid(name, "header.device", "is longer than " + std::to_string(kMaxTextField) + " bytes");
     if (h.startedUtc.size() > kMaxTextField)
         return invalid(name, "header.startedUtc", "is longer than " + std::to_string(kMaxTextField) + " bytes");
+    if (h.physics.engine.empty() || h.physics.engine.size() > kMaxTextField)
+        return invalid(name, "header.physics.engine", "must be 1-" + std::to_string(kMaxTextField) + " bytes");
+    const double ticks = h.physics.stepS * kDeviceRateHz;
+    if (!std::isfinite(h.physics.stepS) || h.physics.stepS < 0.001 || h.physics.stepS > 0.02 ||
+        std::abs(ticks - std::round(ticks)) > 1e-9)
+        return invalid(name, "header.physics.stepS", "must be 0.001-0.02 s, a whole number of 1 ms device ticks");
+    if (h.physics.solverIterations < 1 || h.physics.solverIterations > 50)
+        return invalid(name, "header.physics.solverIterations", "must be 1-50");
     if (Status s = checkScopeConfig(h.scope); !s)
         return Error{ErrorCode::InvalidInput, name + ": header." + s.error().detail};
     if (Status s = checkFluidSettings(h.fluid); !s)
@@ -157,6 +165,8 @@ std::string headerJson(const TrialHeader& h) {
     j["version"] = kHeaderVersion;
     j["sceneSha256"] = h.sceneSha256;
     j["seed"] = h.seed;
+    j["physics"] = {
+        {"engine", h.physics.engine}, {"stepS", h.physics.stepS}, {"solverIterations", h.physics.solverIterations}};
     j["exercise"] = std::string(toString(h.exercise));
     j["scope"] = {{"opticDeg", h.scope.opticDeg},
                   {"diameterMm", h.scope.diameterMm},
@@ -185,6 +195,13 @@ void readHeaderFields(const json& document, TrialHeader& h, scene::JsonIssues& i
                                           std::to_string(kHeaderVersion) + ")"});
     root.read("sceneSha256", h.sceneSha256, true);
     root.read("seed", h.seed, true);
+    if (const json* p = root.member("physics", true)) {
+        scene::ObjectReader physics(*p, "/physics", issues);
+        physics.read("engine", h.physics.engine, true);
+        physics.read("stepS", h.physics.stepS, true);
+        physics.read("solverIterations", h.physics.solverIterations, true);
+        physics.finish();
+    }
     if (const json* e = root.member("exercise", true)) {
         if (!e->is_string() || !fromString(e->get_ref<const std::string&>(), h.exercise))
             issues.push_back({"/exercise", "must be \"exploration\" or \"diagnosis\""});

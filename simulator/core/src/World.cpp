@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <mutex>
 #include <string>
@@ -985,10 +986,52 @@ const TrialMetrics& World::metrics() const {
     return impl_->metrics;
 }
 
+std::string_view physicsEngine() {
+    return "xpbd-fixed-corotated/1";
+}
+
+Status checkReplay(const TrialHeader& trial, const WorldOptions& options) {
+    const auto differs = [](const std::string& field, const std::string& recorded, const std::string& now) {
+        return fail(ErrorCode::InvalidInput, "the trial cannot be replayed bit for bit here: header." + field + " is " +
+                                                 recorded + ", this world's is " + now);
+    };
+    const auto number = [](double v) {
+        char buffer[32];
+        std::snprintf(buffer, sizeof buffer, "%.17g", v);
+        return std::string(buffer);
+    };
+    if (trial.physics.engine != physicsEngine())
+        return differs("physics.engine", "\"" + trial.physics.engine + "\"",
+                       "\"" + std::string(physicsEngine()) + "\"");
+    if (trial.physics.stepS != options.stepS)
+        return differs("physics.stepS", number(trial.physics.stepS), number(options.stepS));
+    if (trial.physics.solverIterations != options.solverIterations)
+        return differs("physics.solverIterations", std::to_string(trial.physics.solverIterations),
+                       std::to_string(options.solverIterations));
+    if (trial.seed != options.seed)
+        return differs("seed", std::to_string(trial.seed), std::to_string(options.seed));
+    if (trial.exercise != options.exercise)
+        return differs("exercise", std::string(toString(trial.exercise)), std::string(toString(options.exercise)));
+    const ScopeConfig& a = trial.scope;
+    const ScopeConfig& b = options.scope;
+    if (a.opticDeg != b.opticDeg || a.diameterMm != b.diameterMm || a.fieldOfViewDeg != b.fieldOfViewDeg ||
+        a.focusNearMm != b.focusNearMm || a.focusFarMm != b.focusFarMm)
+        return differs("scope", "another scope", "its own");
+    const FluidSettings& f = trial.fluid;
+    const FluidSettings& g = options.fluid;
+    if (f.pumpPressureKpa != g.pumpPressureKpa || f.meanArterialPressureKpa != g.meanArterialPressureKpa ||
+        f.deficitWarningMl != g.deficitWarningMl || f.deficitLimitMl != g.deficitLimitMl)
+        return differs("fluid", "other fluid settings", "its own");
+    return {};
+}
+
 TrialHeader World::trialHeader() const {
     TrialHeader h;
     h.sceneSha256 = impl_->sha;
     h.seed = impl_->options.seed;
+    h.physics.engine = std::string(physicsEngine());
+    h.physics.stepS = impl_->options.stepS;
+    h.physics.solverIterations = impl_->options.solverIterations;
     h.exercise = impl_->options.exercise;
     h.scope = impl_->options.scope;
     h.fluid = impl_->options.fluid;
@@ -1039,6 +1082,9 @@ Result<TrialReport> replayTrial(const std::string& packageFolder, const Trial& t
     options.fluid = trial.header.fluid;
     options.exercise = trial.header.exercise;
     options.seed = trial.header.seed;
+    options.stepS = trial.header.physics.stepS;
+    options.solverIterations = trial.header.physics.solverIterations;
+    HS_TRY(checkReplay(trial.header, options));
     auto world = World::load(packageFolder, options, progress);
     if (!world)
         return world.failure();

@@ -128,8 +128,32 @@ void HapticsLoop::publish(std::shared_ptr<const sim::HapticFrame> frame) {
     m_framePublishedNs.store(monotonicNs(), std::memory_order_release);
 }
 
-bool HapticsLoop::popSample(sim::DeviceSample& out) {
-    return m_queue.pop(out);
+bool HapticsLoop::popSample(sim::DeviceSample& out, std::int64_t* takenNs) {
+    TimedSample t;
+    if (!m_queue.pop(t))
+        return false;
+    out = t.sample;
+    if (takenNs)
+        *takenNs = t.takenNs;
+    return true;
+}
+
+bool HapticsLoop::takeNewest(std::size_t count, sim::DeviceSample* out, std::size_t& skipped, std::int64_t& newestNs) {
+    skipped = 0;
+    const std::size_t waiting = m_queue.size();
+    if (count == 0 || waiting < count)
+        return false;
+    TimedSample t;
+    for (std::size_t i = 0; i + count < waiting; ++i)
+        if (m_queue.pop(t))
+            ++skipped;
+    for (std::size_t i = 0; i < count; ++i) {
+        if (!m_queue.pop(t))
+            return false; // cannot happen with one consumer: the producer only adds
+        out[i] = t.sample;
+        newestNs = t.takenNs;
+    }
+    return true;
 }
 
 HapticsStats HapticsLoop::stats() const {
@@ -202,7 +226,7 @@ void HapticsLoop::tick(std::int64_t now, std::int64_t previousStart) {
         m_lastSampleNs = now;
     }
     m_held.tick = m_tick;
-    if (!m_queue.push(m_held))
+    if (!m_queue.push(TimedSample{m_held, now}))
         ++m_local.samplesDropped;
 
     const auto frame = std::atomic_load(&m_frame);

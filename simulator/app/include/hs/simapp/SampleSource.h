@@ -30,6 +30,10 @@ public:
     /// True when next() waits for a device running at its own rate (the physics thread then does not pace itself
     /// by the clock).
     virtual bool paced() const { return false; }
+    /// When the newest sample of the last next() was taken from the device (monotonicNs; 0: not a device).
+    virtual std::int64_t newestSampleNs() const { return 0; }
+    /// Device samples dropped so far because the physics fell behind (the world took the newest instead).
+    virtual std::uint64_t skippedSamples() const { return 0; }
 };
 
 /// A script's samples; ends after its last key frame (the last step is filled with the last key frame's sample).
@@ -105,6 +109,8 @@ public:
     ~HapticsSource() override;
     bool next(std::uint64_t firstTick, std::size_t count, sim::DeviceSample* out) override;
     bool paced() const override { return true; }
+    std::int64_t newestSampleNs() const override { return m_newestNs.load(); }
+    std::uint64_t skippedSamples() const override { return m_skipped.load(); }
     /// Physics thread, after each step.
     void publish(std::shared_ptr<const sim::HapticFrame> frame);
     /// Ends next()'s wait (the window is closing).
@@ -118,6 +124,8 @@ private:
     std::unique_ptr<haptics::HapticDevice> m_device;
     std::unique_ptr<haptics::HapticsLoop> m_loop;
     std::atomic<bool> m_cancelled{false};
+    std::atomic<std::uint64_t> m_skipped{0};
+    std::atomic<std::int64_t> m_newestNs{0};
 };
 
 } // namespace hs::simapp

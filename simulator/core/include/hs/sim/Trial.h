@@ -36,9 +36,18 @@ struct FluidSettings {
 /// InvalidInput naming the field and its range.
 [[nodiscard]] Status checkFluidSettings(const FluidSettings& settings);
 
+/// The physics that recorded a trial: a replay on another engine or with other settings would diverge silently,
+/// so both are recorded and a replay must match them (checkReplay).
+struct TrialPhysics {
+    std::string engine;       ///< the physics engine and its version (physicsEngine() of the recording build)
+    double stepS = 0.005;     ///< s, the physics step
+    int solverIterations = 2; ///< the tissue solver's iterations (or substeps) per step
+};
+
 struct TrialHeader {
     std::string sceneSha256; ///< SHA-256 of the package's manifest.json, lower-case hex
     std::uint64_t seed = 1;  ///< the world's seed
+    TrialPhysics physics;
     Exercise exercise = Exercise::Exploration;
     ScopeConfig scope;
     FluidSettings fluid;

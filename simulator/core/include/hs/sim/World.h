@@ -145,8 +145,18 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
+/// The physics engine and its version, recorded in every trial: bumped whenever a change alters what a step computes,
+/// so a trial recorded by another engine is refused instead of replayed into different results.
+std::string_view physicsEngine();
+
+/// Whether a trial recorded with `trial` can be replayed bit for bit by a world with `options`: InvalidInput naming
+/// the header field that differs (header.physics.engine, header.physics.stepS, header.physics.solverIterations,
+/// header.seed, header.exercise, header.scope, header.fluid).
+[[nodiscard]] Status checkReplay(const TrialHeader& trial, const WorldOptions& options);
+
 /// Replays a trial on a world built from `packageFolder`: refuses (InvalidInput) a trial whose scene checksum is not
-/// the package's, then steps through every sample. The world's options come from the trial's header.
+/// the package's or that another physics engine recorded, then steps through every sample. The world's options come
+/// from the trial's header.
 [[nodiscard]] Result<TrialReport> replayTrial(const std::string& packageFolder, const Trial& trial,
                                               Progress& progress = Progress::none());
 

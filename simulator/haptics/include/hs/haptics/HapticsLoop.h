@@ -107,9 +107,15 @@ public:
 
     /// Physics thread: the newest surface to render forces against (frames are immutable once published).
     void publish(std::shared_ptr<const sim::HapticFrame> frame);
-    /// Physics thread (the one consumer): the next device sample in tick order; false when none is waiting.
-    bool popSample(sim::DeviceSample& out);
+    /// Physics thread (the one consumer): the next device sample in tick order, and when the loop took it
+    /// (monotonicNs); false when none is waiting.
+    bool popSample(sim::DeviceSample& out, std::int64_t* takenNs = nullptr);
     std::size_t pendingSamples() const { return m_queue.size(); }
+    /// Physics thread: the newest `count` samples once at least `count` wait (false, nothing taken, before), the
+    /// older ones dropped: a physics step slower than the device time it covers consumes the newest device state
+    /// instead of falling further behind. `skipped` counts the dropped samples, `newestNs` is when the loop took the
+    /// last one. The caller renumbers the ticks (the world's own sequence) and records exactly what it consumed.
+    bool takeNewest(std::size_t count, sim::DeviceSample* out, std::size_t& skipped, std::int64_t& newestNs);
 
     bool deviceLost() const { return m_deviceLost.load(std::memory_order_acquire); }
     /// Any thread: the statistics (refreshed every 100 ticks while running; complete after stop()).
@@ -126,7 +132,11 @@ private:
     const HapticsLoopOptions m_options;
     DeviceLimits m_limits;
     ContactModel m_contact;
-    SpscQueue<sim::DeviceSample> m_queue;
+    struct TimedSample {
+        sim::DeviceSample sample;
+        std::int64_t takenNs = 0;
+    };
+    SpscQueue<TimedSample> m_queue;
     std::thread m_thread;
     std::atomic<bool> m_running{false};
     std::atomic<bool> m_stop{false};
