@@ -186,8 +186,8 @@ void packageTables(const std::string& package) {
             for (std::size_t i = 0; i < points.size(); ++i)
                 worst = std::max(worst, distance(fem.positionsM()[i], reference[i]));
             std::printf("   off the reference by %.2e mm", worst * 1e3);
-            std::printf("   (last step: forces %.2f ms, solves %.2f ms)\n", timing.forcesMs, timing.solveMs);
         }
+        std::printf("   (last step: forces %.2f ms, solves %.2f ms)\n", timing.forcesMs, timing.solveMs);
     }
 }
 
