@@ -158,9 +158,9 @@ std::int32_t TriangleBvh::raycast(const std::vector<Vec3>& points, const Vec3& o
                 const std::int32_t f = order_[static_cast<std::size_t>(i)];
                 const Triangle& tri = (*triangles_)[static_cast<std::size_t>(f)];
                 double ht = 0.0, hu = 0.0, hv = 0.0;
-                if (rayTriangle(origin, direction, points[static_cast<std::size_t>(tri[0])],
-                                points[static_cast<std::size_t>(tri[1])], points[static_cast<std::size_t>(tri[2])], ht,
-                                hu, hv) &&
+                if (hs::rayTriangle(origin, direction, points[static_cast<std::size_t>(tri[0])],
+                                    points[static_cast<std::size_t>(tri[1])], points[static_cast<std::size_t>(tri[2])],
+                                    0.0, ht, hu, hv) &&
                     (ht < bestT || (ht == bestT && f < best))) {
                     best = f;
                     bestT = ht;
@@ -175,70 +175,6 @@ std::int32_t TriangleBvh::raycast(const std::vector<Vec3>& points, const Vec3& o
     }
     t = bestT;
     return best;
-}
-
-Vec3 closestOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, double& wa, double& wb, double& wc) {
-    const Vec3 ab = b - a, ac = c - a, ap = p - a;
-    const double d1 = dot(ab, ap), d2 = dot(ac, ap);
-    if (d1 <= 0.0 && d2 <= 0.0) {
-        wa = 1.0, wb = 0.0, wc = 0.0;
-        return a;
-    }
-    const Vec3 bp = p - b;
-    const double d3 = dot(ab, bp), d4 = dot(ac, bp);
-    if (d3 >= 0.0 && d4 <= d3) {
-        wa = 0.0, wb = 1.0, wc = 0.0;
-        return b;
-    }
-    const double vc = d1 * d4 - d3 * d2;
-    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
-        const double s = d1 / (d1 - d3);
-        wa = 1.0 - s, wb = s, wc = 0.0;
-        return a + ab * s;
-    }
-    const Vec3 cp = p - c;
-    const double d5 = dot(ab, cp), d6 = dot(ac, cp);
-    if (d6 >= 0.0 && d5 <= d6) {
-        wa = 0.0, wb = 0.0, wc = 1.0;
-        return c;
-    }
-    const double vb = d5 * d2 - d1 * d6;
-    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
-        const double s = d2 / (d2 - d6);
-        wa = 1.0 - s, wb = 0.0, wc = s;
-        return a + ac * s;
-    }
-    const double va = d3 * d6 - d5 * d4;
-    if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
-        const double s = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-        wa = 0.0, wb = 1.0 - s, wc = s;
-        return b + (c - b) * s;
-    }
-    const double denom = 1.0 / (va + vb + vc);
-    wb = vb * denom;
-    wc = vc * denom;
-    wa = 1.0 - wb - wc;
-    return a + ab * wb + ac * wc;
-}
-
-bool rayTriangle(const Vec3& o, const Vec3& d, const Vec3& a, const Vec3& b, const Vec3& c, double& t, double& u,
-                 double& v) {
-    const Vec3 e1 = b - a, e2 = c - a;
-    const Vec3 p = cross(d, e2);
-    const double det = dot(e1, p);
-    if (std::abs(det) < 1e-14)
-        return false;
-    const double inv = 1.0 / det;
-    const Vec3 s = o - a;
-    u = dot(s, p) * inv;
-    if (u < 0.0 || u > 1.0)
-        return false;
-    const Vec3 q = cross(s, e1);
-    v = dot(d, q) * inv;
-    if (v < 0.0 || u + v > 1.0)
-        return false;
-    t = dot(e2, q) * inv;
-    return t > 0.0;
 }
 
 } // namespace hs::sim::detail

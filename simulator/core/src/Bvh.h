@@ -3,6 +3,7 @@
 // new point positions every step (the topology may change later, e.g. by cutting: then it is rebuilt).
 
 #include "hs/core/SurfaceMesh.h"
+#include "hs/core/TriangleGeometry.h"
 #include "hs/core/Vec3.h"
 
 #include <cstdint>
@@ -38,13 +39,5 @@ private:
     std::vector<std::int32_t> order_;
     std::vector<Node> nodes_;
 };
-
-/// Closest point of triangle (a, b, c) to p, with its barycentric coordinates (Ericson, Real-Time Collision
-/// Detection, 5.1.5).
-Vec3 closestOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, double& wa, double& wb, double& wc);
-
-/// Ray-triangle intersection (Moller-Trumbore): t along the ray and the barycentric u (of b) and v (of c).
-bool rayTriangle(const Vec3& o, const Vec3& d, const Vec3& a, const Vec3& b, const Vec3& c, double& t, double& u,
-                 double& v);
 
 } // namespace hs::sim::detail

@@ -272,8 +272,8 @@ void TissueModel::solveContacts(std::vector<ContactPair>& contacts, const std::v
         if (area2 < 1e-18)
             continue;
         const Vec3 normal = n / area2;
-        double b0 = 0.0, b1 = 0.0, b2 = 0.0;
-        closestOnTriangle(pair.centre, x_[i0], x_[i1], x_[i2], b0, b1, b2);
+        const ClosestPoint closest = closestPointOnTriangle(pair.centre, x_[i0], x_[i1], x_[i2]);
+        const double b0 = closest.wa, b1 = closest.wb, b2 = closest.wc;
         const Vec3 q = x_[i0] * b0 + x_[i1] * b1 + x_[i2] * b2;
         const double s = dot(pair.centre - q, normal);
         // Only a sphere in front of the face (or just through it) pushes it; the tissue lies behind the face.

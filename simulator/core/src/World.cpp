@@ -196,10 +196,10 @@ double World::Impl::clearanceMm(const std::vector<Vec3>& pts, const detail::Tria
     double nearest = reachMm, signedDistance = reachMm, alignment = -1.0;
     for (const std::int32_t f : near) {
         const Triangle& tri = (*triangles)[static_cast<std::size_t>(f)];
-        double w0 = 0.0, w1 = 0.0, w2 = 0.0;
         const Vec3 q =
-            detail::closestOnTriangle(p, pts[static_cast<std::size_t>(tri[0])], pts[static_cast<std::size_t>(tri[1])],
-                                      pts[static_cast<std::size_t>(tri[2])], w0, w1, w2);
+            closestPointOnTriangle(p, pts[static_cast<std::size_t>(tri[0])], pts[static_cast<std::size_t>(tri[1])],
+                                   pts[static_cast<std::size_t>(tri[2])])
+                .point;
         const double d = distance(p, q);
         if (d > nearest + 1e-9)
             continue;
@@ -552,9 +552,9 @@ bool World::Impl::insideRestHull(const Vec3& p) const {
             continue;
         const Triangle& t = (*triangles)[f];
         double th = 0.0, u = 0.0, v = 0.0;
-        if (detail::rayTriangle(p, cavityAxis, simRest.points[static_cast<std::size_t>(t[0])],
-                                simRest.points[static_cast<std::size_t>(t[1])],
-                                simRest.points[static_cast<std::size_t>(t[2])], th, u, v))
+        if (hs::rayTriangle(p, cavityAxis, simRest.points[static_cast<std::size_t>(t[0])],
+                            simRest.points[static_cast<std::size_t>(t[1])],
+                            simRest.points[static_cast<std::size_t>(t[2])], 0.0, th, u, v))
             ++crossings;
     }
     return crossings % 2 == 1;
@@ -729,11 +729,11 @@ void World::Impl::physics(const ScopePose& pose, double pressureKpa) {
         if (!pair.tip || !faceInCavity[static_cast<std::size_t>(pair.triangle)])
             continue;
         const Triangle& tri = (*triangles)[static_cast<std::size_t>(pair.triangle)];
-        double w0 = 0.0, w1 = 0.0, w2 = 0.0;
-        const Vec3 q = detail::closestOnTriangle(pose.tipMm, pointsMm[static_cast<std::size_t>(tri[0])],
-                                                 pointsMm[static_cast<std::size_t>(tri[1])],
-                                                 pointsMm[static_cast<std::size_t>(tri[2])], w0, w1, w2);
-        const bool over = w0 > 0.0 && w1 > 0.0 && w2 > 0.0;
+        const ClosestPoint closest = closestPointOnTriangle(pose.tipMm, pointsMm[static_cast<std::size_t>(tri[0])],
+                                                            pointsMm[static_cast<std::size_t>(tri[1])],
+                                                            pointsMm[static_cast<std::size_t>(tri[2])]);
+        const Vec3 q = closest.point;
+        const bool over = closest.wa > 0.0 && closest.wb > 0.0 && closest.wc > 0.0;
         if (over && dot(pose.tipMm - q, faceNormal(pair.triangle)) < -radius) {
             through = true;
             throughAt = q;

@@ -1,6 +1,7 @@
 // The god-object proxy of the scope's tip (ContactModel.h).
 #include "hs/haptics/ContactModel.h"
 
+#include "hs/core/TriangleGeometry.h"
 #include "hs/sim/Scope.h"
 
 #include <algorithm>
@@ -22,31 +23,9 @@ Tri triangleOf(const sim::HapticFrame& frame, std::int32_t index) {
             frame.pointsMm[static_cast<std::size_t>(t[2])]};
 }
 
-/// The closest point of triangle `t` to `p` (Ericson, Real-Time Collision Detection, 5.1.5).
+/// The closest point of triangle `t` to `p` (core's, the one home of this test).
 Vec3 closestOnTriangle(const Vec3& p, const Tri& t) {
-    const Vec3 ab = t.b - t.a, ac = t.c - t.a, ap = p - t.a;
-    const double d1 = dot(ab, ap), d2 = dot(ac, ap);
-    if (d1 <= 0.0 && d2 <= 0.0)
-        return t.a;
-    const Vec3 bp = p - t.b;
-    const double d3 = dot(ab, bp), d4 = dot(ac, bp);
-    if (d3 >= 0.0 && d4 <= d3)
-        return t.b;
-    const double vc = d1 * d4 - d3 * d2;
-    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)
-        return t.a + ab * (d1 / (d1 - d3));
-    const Vec3 cp = p - t.c;
-    const double d5 = dot(ab, cp), d6 = dot(ac, cp);
-    if (d6 >= 0.0 && d5 <= d6)
-        return t.c;
-    const double vb = d5 * d2 - d1 * d6;
-    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0)
-        return t.a + ac * (d2 / (d2 - d6));
-    const double va = d3 * d6 - d5 * d4;
-    if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0)
-        return t.b + (t.c - t.b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
-    const double denom = 1.0 / (va + vb + vc);
-    return t.a + ab * (vb * denom) + ac * (vc * denom);
+    return closestPointOnTriangle(p, t.a, t.b, t.c).point;
 }
 
 /// The unit normal (outward from the tissue: into the free space); zero for a degenerate triangle.
