@@ -1,6 +1,7 @@
 #include "hs/mechanics/CorotationalFem.h"
 
 #include "TetMath.h"
+#include "hs/core/Parallel.h"
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
@@ -62,7 +63,8 @@ Status CorotationalFem::build(const std::vector<Vec3>& pointsM, const std::vecto
                               const FemSettings& settings) {
     if (!(settings.stepS > 0.0 && settings.stepS <= 10.0) || settings.iterations < 1 || settings.iterations > 50 ||
         !(settings.rayleighMassPerS >= 0.0) || !(settings.rayleighStiffnessS >= 0.0) || settings.contactSweeps < 1 ||
-        !(settings.tetPressureShare >= 0.0 && settings.tetPressureShare <= 1.0))
+        !(settings.tetPressureShare >= 0.0 && settings.tetPressureShare <= 1.0) || settings.threads < 1 ||
+        settings.threads > 64)
         return fail(ErrorCode::InvalidInput, "tissue solver: step 0-10 s, iterations 1-50, damping >= 0");
     const std::size_t n = pointsM.size();
     if (materials.size() != tets.size() || fixedDof.size() != n)
@@ -130,6 +132,7 @@ Status CorotationalFem::build(const std::vector<Vec3>& pointsM, const std::vecto
     m_compliantIndex.assign(n, -1);
     m_compliance.clear();
     m_compliantCount = 0;
+    buildIncidence();
     assembleAndFactor();
     return {};
 }
@@ -234,99 +237,146 @@ void CorotationalFem::setTarget(std::size_t point, const Vec3& positionM) {
         m_target[point] = positionM;
 }
 
+void CorotationalFem::buildIncidence() {
+    // Each point's tets (with the point's corner in each), in increasing tet order: the gathers below add in the
+    // order a serial scatter over the tets would, so every thread count gives the same bits.
+    const std::size_t n = m_x.size();
+    m_incidenceStart.assign(n + 1, 0);
+    for (const Tet& tet : m_tets)
+        for (const std::int32_t p : tet)
+            ++m_incidenceStart[static_cast<std::size_t>(p) + 1];
+    for (std::size_t i = 0; i < n; ++i)
+        m_incidenceStart[i + 1] += m_incidenceStart[i];
+    m_incidence.assign(m_incidenceStart[n], {0, 0});
+    std::vector<std::size_t> fill(m_incidenceStart.begin(), m_incidenceStart.end() - 1);
+    for (std::size_t t = 0; t < m_tets.size(); ++t)
+        for (std::uint32_t k = 0; k < 4; ++k)
+            m_incidence[fill[static_cast<std::size_t>(m_tets[t][k])]++] = {static_cast<std::uint32_t>(t), k};
+}
+
 void CorotationalFem::internalForces(const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& out) {
     const auto started = Clock::now();
-    out.assign(x.size(), Vec3{});
+    const std::size_t n = x.size();
+    out.assign(n, Vec3{});
     const double beta = m_settings.rayleighStiffnessS;
     const bool nodal = m_settings.nodalPressure;
     const std::size_t tets = m_tets.size();
+    const int threads = std::max(1, m_settings.threads);
     m_tetR.resize(tets);
     m_tetDilatation.assign(tets, 0.0);
     m_tetRate.assign(tets, 0.0);
-    std::vector<Mat3> strain(tets), rate(tets);
-    // Pass 1: each tet's rotation, its corotated strain and strain rate.
-    for (std::size_t t = 0; t < tets; ++t) {
-        if (m_removed[t])
-            continue;
-        const Tet& tet = m_tets[t];
-        const auto p = [&tet](std::size_t k) { return static_cast<std::size_t>(tet[k]); };
-        const Mat3& dmInv = m_dmInv[t];
-        const Mat3 f = multiply(shapeMatrix(x[p(0)], x[p(1)], x[p(2)], x[p(3)]), dmInv);
-        m_tetR[t] = rotationOf(f, m_rotation[t], 3);
-        strain[t] = multiplyTransposed(m_tetR[t], f);
-        m_tetDilatation[t] = strain[t][0] + strain[t][4] + strain[t][8] - 3.0;
-        if (beta > 0.0) {
-            const Mat3 l = multiply(shapeMatrix(v[p(0)], v[p(1)], v[p(2)], v[p(3)]), dmInv);
-            rate[t] = multiplyTransposed(m_tetR[t], l);
-            m_tetRate[t] = rate[t][0] + rate[t][4] + rate[t][8];
-        }
-    }
-    if (nodal) {
-        m_pointDilatation.assign(x.size(), 0.0);
-        m_pointRate.assign(x.size(), 0.0);
-        for (std::size_t t = 0; t < tets; ++t) {
+    m_tetStrain.resize(tets);
+    m_tetStrainRate.resize(tets);
+    m_tetForces.resize(tets);
+    // Pass 1 (tets): each tet's rotation, its corotated strain and strain rate.
+    parallelChunks(tets, evenChunk(tets, threads), threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+        for (std::size_t t = begin; t < end; ++t) {
             if (m_removed[t])
                 continue;
-            for (const std::int32_t q : m_tets[t]) {
-                const auto qi = static_cast<std::size_t>(q);
-                const double w = m_volume[t] / (4.0 * m_pointVolume[qi]);
-                m_pointDilatation[qi] += w * m_tetDilatation[t];
-                m_pointRate[qi] += w * m_tetRate[t];
+            const Tet& tet = m_tets[t];
+            const auto p = [&tet](std::size_t k) { return static_cast<std::size_t>(tet[k]); };
+            const Mat3& dmInv = m_dmInv[t];
+            const Mat3 f = multiply(shapeMatrix(x[p(0)], x[p(1)], x[p(2)], x[p(3)]), dmInv);
+            m_tetR[t] = rotationOf(f, m_rotation[t], 3);
+            m_tetStrain[t] = multiplyTransposed(m_tetR[t], f);
+            m_tetDilatation[t] = m_tetStrain[t][0] + m_tetStrain[t][4] + m_tetStrain[t][8] - 3.0;
+            if (beta > 0.0) {
+                const Mat3 l = multiply(shapeMatrix(v[p(0)], v[p(1)], v[p(2)], v[p(3)]), dmInv);
+                m_tetStrainRate[t] = multiplyTransposed(m_tetR[t], l);
+                m_tetRate[t] = m_tetStrainRate[t][0] + m_tetStrainRate[t][4] + m_tetStrainRate[t][8];
             }
         }
+    });
+    // Pass 2 (points): the averaged dilatation and each point's rotation.
+    if (nodal) {
+        m_pointDilatation.assign(n, 0.0);
+        m_pointRate.assign(n, 0.0);
     }
-    updatePointRotations();
-    // Pass 2: stresses and forces.
-    for (std::size_t t = 0; t < tets; ++t) {
-        if (m_removed[t])
-            continue;
-        const Tet& tet = m_tets[t];
-        const auto p = [&tet](std::size_t k) { return static_cast<std::size_t>(tet[k]); };
-        const Mat3& dmInv = m_dmInv[t];
-        const double mu = m_mu[t];
-        double pressure = 0.0, pressureRate = 0.0; // the volumetric stress, and its rate's
-        if (nodal) {
-            const double share = m_settings.tetPressureShare, bulk = m_lambda[t] + 2.0 * mu / 3.0;
-            for (std::size_t k = 0; k < 4; ++k) {
-                pressure += 0.25 * (1.0 - share) * m_pointBulk[p(k)] * m_pointDilatation[p(k)];
-                pressureRate += 0.25 * (1.0 - share) * m_pointBulk[p(k)] * m_pointRate[p(k)];
+    m_pointR.assign(n, Mat3{1, 0, 0, 0, 1, 0, 0, 0, 1});
+    m_pointQuat.resize(n, {1.0, 0.0, 0.0, 0.0});
+    parallelChunks(n, evenChunk(n, threads), threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            Mat3 sum{};
+            bool any = false;
+            for (std::size_t k = m_incidenceStart[i]; k < m_incidenceStart[i + 1]; ++k) {
+                const std::size_t t = m_incidence[k].first;
+                if (m_removed[t])
+                    continue;
+                any = true;
+                if (nodal) {
+                    const double w = m_volume[t] / (4.0 * m_pointVolume[i]);
+                    m_pointDilatation[i] += w * m_tetDilatation[t];
+                    m_pointRate[i] += w * m_tetRate[t];
+                }
+                for (std::size_t c = 0; c < 9; ++c)
+                    sum[c] += m_volume[t] * m_tetR[t][c];
             }
-            pressure += share * bulk * m_tetDilatation[t];
-            pressureRate += share * bulk * m_tetRate[t];
-        } else {
-            const double bulk = m_lambda[t] + 2.0 * mu / 3.0;
-            pressure = bulk * m_tetDilatation[t];
-            pressureRate = bulk * m_tetRate[t];
+            if (any && !m_fixed[i][0] && !m_fixed[i][1] && !m_fixed[i][2])
+                m_pointR[i] = rotationOf(sum, m_pointQuat[i], 4);
         }
-        // sigma = 2 mu s dev(e) + pressure I (s: the exponential stiffening's secant factor, 1 for a linear tet), and
-        // beta times the same of the strain rate.
-        Mat3 sigma =
-            linearStress(strain[t], 1.0, mu * stiffening(t, strain[t]), -2.0 * mu / 3.0 * stiffening(t, strain[t]));
-        sigma[0] += pressure;
-        sigma[4] += pressure;
-        sigma[8] += pressure;
-        if (beta > 0.0) {
-            const Mat3 damping = linearStress(rate[t], 0.0, mu, -2.0 * mu / 3.0);
-            for (std::size_t k = 0; k < 9; ++k)
-                sigma[k] += beta * damping[k];
-            sigma[0] += beta * pressureRate;
-            sigma[4] += beta * pressureRate;
-            sigma[8] += beta * pressureRate;
+    });
+    // Pass 3 (tets): stresses and each corner's force.
+    parallelChunks(tets, evenChunk(tets, threads), threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+        for (std::size_t t = begin; t < end; ++t) {
+            if (m_removed[t])
+                continue;
+            const Tet& tet = m_tets[t];
+            const auto p = [&tet](std::size_t k) { return static_cast<std::size_t>(tet[k]); };
+            const Mat3& dmInv = m_dmInv[t];
+            const double mu = m_mu[t];
+            double pressure = 0.0, pressureRate = 0.0; // the volumetric stress, and its rate's
+            if (nodal) {
+                const double share = m_settings.tetPressureShare, bulk = m_lambda[t] + 2.0 * mu / 3.0;
+                for (std::size_t k = 0; k < 4; ++k) {
+                    pressure += 0.25 * (1.0 - share) * m_pointBulk[p(k)] * m_pointDilatation[p(k)];
+                    pressureRate += 0.25 * (1.0 - share) * m_pointBulk[p(k)] * m_pointRate[p(k)];
+                }
+                pressure += share * bulk * m_tetDilatation[t];
+                pressureRate += share * bulk * m_tetRate[t];
+            } else {
+                const double bulk = m_lambda[t] + 2.0 * mu / 3.0;
+                pressure = bulk * m_tetDilatation[t];
+                pressureRate = bulk * m_tetRate[t];
+            }
+            // sigma = 2 mu s dev(e) + pressure I (s: the exponential stiffening's secant factor, 1 for a linear
+            // tet), and beta times the same of the strain rate.
+            const double s = stiffening(t, m_tetStrain[t]);
+            Mat3 sigma = linearStress(m_tetStrain[t], 1.0, mu * s, -2.0 * mu / 3.0 * s);
+            sigma[0] += pressure;
+            sigma[4] += pressure;
+            sigma[8] += pressure;
+            if (beta > 0.0) {
+                const Mat3 damping = linearStress(m_tetStrainRate[t], 0.0, mu, -2.0 * mu / 3.0);
+                for (std::size_t k = 0; k < 9; ++k)
+                    sigma[k] += beta * damping[k];
+                sigma[0] += beta * pressureRate;
+                sigma[4] += beta * pressureRate;
+                sigma[8] += beta * pressureRate;
+            }
+            const Mat3 piola = multiply(m_tetR[t], sigma);
+            // f_a = -V P g_a with g_a the rows of Dm^-1: the columns of -V P Dm^-T; corner 0 takes minus their sum.
+            Vec3 sum{};
+            for (std::size_t a = 0; a < 3; ++a) {
+                const Vec3 g{dmInv[3 * a], dmInv[3 * a + 1], dmInv[3 * a + 2]};
+                const Vec3 fa = Vec3{piola[0] * g.x + piola[1] * g.y + piola[2] * g.z,
+                                     piola[3] * g.x + piola[4] * g.y + piola[5] * g.z,
+                                     piola[6] * g.x + piola[7] * g.y + piola[8] * g.z} *
+                                -m_volume[t];
+                m_tetForces[t][a + 1] = fa;
+                sum += fa;
+            }
+            m_tetForces[t][0] = sum * -1.0;
         }
-        const Mat3 piola = multiply(m_tetR[t], sigma);
-        // f_a = -V P g_a with g_a the rows of Dm^-1: the columns of -V P Dm^-T.
-        Vec3 sum{};
-        for (std::size_t a = 0; a < 3; ++a) {
-            const Vec3 g{dmInv[3 * a], dmInv[3 * a + 1], dmInv[3 * a + 2]};
-            const Vec3 fa =
-                Vec3{piola[0] * g.x + piola[1] * g.y + piola[2] * g.z, piola[3] * g.x + piola[4] * g.y + piola[5] * g.z,
-                     piola[6] * g.x + piola[7] * g.y + piola[8] * g.z} *
-                -m_volume[t];
-            out[p(a + 1)] += fa;
-            sum += fa;
-        }
-        out[p(0)] -= sum;
-    }
+    });
+    // Pass 4 (points): each point's force, its tets' corners in tet order.
+    parallelChunks(n, evenChunk(n, threads), threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+            for (std::size_t k = m_incidenceStart[i]; k < m_incidenceStart[i + 1]; ++k) {
+                const std::size_t t = m_incidence[k].first;
+                if (!m_removed[t])
+                    out[i] += m_tetForces[t][m_incidence[k].second];
+            }
+    });
     m_timings.forcesMs += msSince(started);
 }
 
@@ -339,29 +389,6 @@ void CorotationalFem::solveInPlace(std::vector<double>& b) const {
     const Eigen::VectorXd x = m_factor->ldlt.solve(map);
     map = x;
     m_timings.solveMs += msSince(started);
-}
-
-void CorotationalFem::updatePointRotations() {
-    const std::size_t n = m_x.size();
-    m_pointR.assign(n, Mat3{1, 0, 0, 0, 1, 0, 0, 0, 1});
-    m_pointQuat.resize(n, {1.0, 0.0, 0.0, 0.0});
-    std::vector<Mat3> sum(n, Mat3{});
-    std::vector<char> any(n, 0);
-    for (std::size_t t = 0; t < m_tets.size(); ++t) {
-        if (m_removed[t])
-            continue;
-        for (const std::int32_t p : m_tets[t]) {
-            const auto pi = static_cast<std::size_t>(p);
-            any[pi] = 1;
-            for (std::size_t k = 0; k < 9; ++k)
-                sum[pi][k] += m_volume[t] * m_tetR[t][k];
-        }
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!any[i] || m_fixed[i][0] || m_fixed[i][1] || m_fixed[i][2])
-            continue;
-        m_pointR[i] = rotationOf(sum[i], m_pointQuat[i], 4);
-    }
 }
 
 void CorotationalFem::solveWarped(std::vector<double>& b) const {

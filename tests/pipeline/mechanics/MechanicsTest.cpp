@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 
 namespace {
 
@@ -281,6 +282,28 @@ TEST(Mechanics, StiffeningTissueIsLinearWhenBarelyStrainedAndStifferWhenPressedF
     // With the matrix refactored to the stiffened tissue, the same equilibrium.
     const double refactored = pressBlock(block, stiffening, 3.0, true);
     EXPECT_NEAR(refactored, deepStiff, 0.01 * deepStiff);
+}
+
+TEST(Mechanics, OneOrTwoThreadsGiveTheSameBits) {
+    const Block block = makeBlock();
+    const std::vector<FemMaterial> materials(block.tets.size(), FemMaterial{30e3, 0.47, 1050.0, 0.104});
+    FemSettings one, two;
+    one.threads = 1;
+    two.threads = 2;
+    CorotationalFem a, b;
+    ASSERT_TRUE(a.build(block.points, block.tets, materials, block.fixed, {}, one));
+    ASSERT_TRUE(b.build(block.points, block.tets, materials, block.fixed, {}, two));
+    std::vector<Vec3> load(block.points.size(), Vec3{1e-4, 0.0, -2e-3});
+    for (int s = 0; s < 50; ++s) {
+        std::vector<FemConstraint> ca{contactRow({block.at(5, 5, 5), block.at(6, 5, 5), block.at(5, 6, 5)},
+                                                 {0.4, 0.3, 0.3}, {0.0, 0.0, 1.0}, {0.0, 0.0, -2e-4})};
+        std::vector<FemConstraint> cb = ca;
+        a.step(load, ca);
+        b.step(load, cb);
+        ASSERT_EQ(std::memcmp(&ca[0].force, &cb[0].force, sizeof(double)), 0) << "step " << s;
+    }
+    for (std::size_t i = 0; i < block.points.size(); ++i)
+        ASSERT_EQ(std::memcmp(&a.positionsM()[i], &b.positionsM()[i], sizeof(Vec3)), 0) << "point " << i;
 }
 
 TEST(Mechanics, RefusesBadMaterialsAndFlatTets) {

@@ -73,6 +73,9 @@ struct FemSettings {
     /// Shorten a step whose residual would grow (a backtracking line search; one more force evaluation per iteration).
     /// Needed with stiffening materials, whose tangent outgrows the rest matrix.
     bool lineSearch = true;
+    /// Threads for the force evaluation (each tet's and each point's work is independent, and the sums run in a
+    /// fixed order: every thread count gives the same bits).
+    int threads = 2;
     /// Evaluate the residual at the end of each step (reactionN, residualN): one more force evaluation per step.
     bool endResidual = true;
 };
@@ -191,7 +194,7 @@ private:
     /// stiffness warping applied to the preconditioner, as SOFA's PrecomputedWarpPreconditioner does), so parts that
     /// turn far (the corpus tilting, a flap left by a cut) converge as fast as at rest.
     void solveWarped(std::vector<double>& b) const;
-    void updatePointRotations();
+    void buildIncidence();
     /// The exponential stiffening's secant factor sinh(x)/x, x = |dev e| / c, for a tet's corotated stretch `s`.
     double stiffening(std::size_t tet, const std::array<double, 9>& s) const;
     double stiffeningArgument(std::size_t tet, const std::array<double, 9>& s) const;
@@ -221,6 +224,10 @@ private:
     std::vector<double> m_pointBulk;            ///< Pa, the bulk modulus averaged over a point's tets by volume
     std::vector<double> m_tetDilatation, m_tetRate, m_pointDilatation, m_pointRate; ///< scratch of internalForces
     std::vector<std::array<double, 9>> m_tetR;
+    std::vector<std::array<double, 9>> m_tetStrain, m_tetStrainRate;  ///< scratch: sym parts' sources per tet
+    std::vector<std::array<Vec3, 4>> m_tetForces;                     ///< scratch: each tet's corner forces
+    std::vector<std::size_t> m_incidenceStart;                        ///< CSR offsets into m_incidence, per point
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> m_incidence; ///< (tet, corner) per point, tet order
     std::vector<std::array<double, 9>> m_pointR;    ///< each point's rotation (identity where a dof is held)
     std::vector<std::array<double, 4>> m_pointQuat; ///< its warm start
     std::size_t m_recoveries = 0;                   ///< scratch: each tet's rotation in the last force evaluation
