@@ -111,9 +111,10 @@ void writeHeader(JsonWriter& w, const TrialHeader& h) {
     w.open('{');
     w.field("opticDeg", h.scope.opticDeg);
     w.field("diameterMm", h.scope.diameterMm);
-    w.field("fieldOfViewDeg", h.scope.fieldOfViewDeg);
-    w.field("focusNearMm", h.scope.focusNearMm);
-    w.field("focusFarMm", h.scope.focusFarMm);
+    // The optic's values where the trial left them to it (0 in the trial's header): the report says what was used.
+    w.field("fieldOfViewDeg", scopeFieldOfViewDeg(h.scope));
+    w.field("focusNearMm", scopeFocusNearMm(h.scope));
+    w.field("focusFarMm", scopeFocusFarMm(h.scope));
     w.close('}');
     w.key("fluid");
     w.open('{');
