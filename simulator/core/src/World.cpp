@@ -32,7 +32,7 @@ constexpr double kPerforationHoldS = 0.3;
 /// N/m, spread over the serosa's free points by area (docs/simulator.md, "Boundary").
 constexpr double kSurroundStiffnessNPerM = 1000.0;
 /// The portio: the support's points this close to the external os along the canal are fixed, mm (about the vaginal
-/// part of a 25-30 mm cervix; UTERUS.md).
+/// part of a 25-30 mm cervix; docs/references.md [CervixParity]).
 constexpr double kHeldPortioMm = 12.0;
 /// Total stiffness of the cardinal and uterosacral ligaments on the supravaginal cervix, N/m, spread over its points.
 constexpr double kLigamentStiffnessNPerM = 3000.0;
@@ -81,7 +81,7 @@ struct Ostium {
     int target = -1; ///< index in metrics.targets
 };
 /// Ostium faces spread wider than this across the cavity are two ostia, mm (the intercornual distance is 41-47 mm;
-/// UTERUS.md).
+/// docs/references.md [FundusMRI]).
 constexpr double kOstiumSeparationMm = 15.0;
 /// The coarse simulation mesh rounds the cornual recess where an ostium opens: the ostium's centre may lie this far
 /// behind the contact surface and still be seen, mm.
