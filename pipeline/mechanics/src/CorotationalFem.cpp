@@ -1,7 +1,7 @@
 #include "hs/mechanics/CorotationalFem.h"
 
-#include "TetMath.h"
 #include "hs/core/Parallel.h"
+#include "hs/mechanics/TetMath.h"
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
@@ -23,6 +23,18 @@ using Clock = std::chrono::steady_clock;
 
 double msSince(Clock::time_point t) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
+
+/// |dev e|^2 for the corotated stretch s (e = sym(s) - I).
+double deviatoricNorm2(const Mat3& s) {
+    const double theta = (s[0] + s[4] + s[8] - 3.0) / 3.0;
+    double dev2 = 0.0;
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) {
+            const double e = 0.5 * (s[3 * i + j] + s[3 * j + i]) - (i == j ? 1.0 + theta : 0.0);
+            dev2 += e * e;
+        }
+    return dev2;
 }
 
 /// The rest gradients of the tet's four shape functions (rows of Dm^-1 for points 1-3; point 0 their negated sum).
@@ -901,14 +913,15 @@ double CorotationalFem::stiffeningArgument(std::size_t tet, const std::array<dou
     const double c = m_materials[tet].stiffeningStrain;
     if (!(c > 0.0))
         return 0.0;
-    const double theta = (s[0] + s[4] + s[8] - 3.0) / 3.0;
-    double dev2 = 0.0;
-    for (std::size_t i = 0; i < 3; ++i)
-        for (std::size_t j = 0; j < 3; ++j) {
-            const double e = 0.5 * (s[3 * i + j] + s[3 * j + i]) - (i == j ? 1.0 + theta : 0.0);
-            dev2 += e * e;
-        }
-    return std::min(std::sqrt(dev2) / c, 20.0);
+    return std::min(std::sqrt(deviatoricNorm2(s)) / c, 20.0);
+}
+
+std::array<double, 9> CorotationalFem::corotatedStretch(std::size_t t, int iterations) const {
+    const Tet& tet = m_tets[t];
+    const auto p = [&tet](std::size_t k) { return static_cast<std::size_t>(tet[k]); };
+    const Mat3 f = multiply(shapeMatrix(m_x[p(0)], m_x[p(1)], m_x[p(2)], m_x[p(3)]), m_dmInv[t]);
+    std::array<double, 4> q = m_rotation[t];
+    return multiplyTransposed(rotationOf(f, q, iterations), f);
 }
 
 double CorotationalFem::refactorStiffened() {
@@ -918,12 +931,7 @@ double CorotationalFem::refactorStiffened() {
     for (std::size_t t = 0; t < m_tets.size(); ++t) {
         if (m_removed[t])
             continue;
-        const Tet& tet = m_tets[t];
-        const auto p = [&tet](std::size_t k) { return static_cast<std::size_t>(tet[k]); };
-        const Mat3 f = multiply(shapeMatrix(m_x[p(0)], m_x[p(1)], m_x[p(2)], m_x[p(3)]), m_dmInv[t]);
-        std::array<double, 4> q = m_rotation[t];
-        const Mat3 s = multiplyTransposed(rotationOf(f, q, 4), f);
-        m_matrixStiffening[t] = std::cosh(stiffeningArgument(t, s));
+        m_matrixStiffening[t] = std::cosh(stiffeningArgument(t, corotatedStretch(t, 4)));
         largest = std::max(largest, m_matrixStiffening[t]);
     }
     assembleAndFactor();
@@ -931,17 +939,9 @@ double CorotationalFem::refactorStiffened() {
 }
 
 double CorotationalFem::stiffening(std::size_t tet, const std::array<double, 9>& s) const {
-    const double c = m_materials[tet].stiffeningStrain;
-    if (!(c > 0.0))
+    if (!(m_materials[tet].stiffeningStrain > 0.0))
         return 1.0;
-    const double theta = (s[0] + s[4] + s[8] - 3.0) / 3.0;
-    double dev2 = 0.0;
-    for (std::size_t i = 0; i < 3; ++i)
-        for (std::size_t j = 0; j < 3; ++j) {
-            const double e = 0.5 * (s[3 * i + j] + s[3 * j + i]) - (i == j ? 1.0 + theta : 0.0);
-            dev2 += e * e;
-        }
-    const double x = std::min(std::sqrt(dev2) / c, 20.0);
+    const double x = stiffeningArgument(tet, s);
     return std::min(x < 1e-4 ? 1.0 + x * x / 6.0 : std::sinh(x) / x, m_settings.maxStiffening);
 }
 
@@ -954,16 +954,9 @@ double CorotationalFem::elasticEnergyJ() const {
             continue;
         const Tet& tet = m_tets[t];
         const auto p = [&tet](std::size_t k) { return static_cast<std::size_t>(tet[k]); };
-        const Mat3 f = multiply(shapeMatrix(m_x[p(0)], m_x[p(1)], m_x[p(2)], m_x[p(3)]), m_dmInv[t]);
-        std::array<double, 4> q = m_rotation[t];
-        const Mat3 s = multiplyTransposed(rotationOf(f, q, 8), f);
+        const Mat3 s = corotatedStretch(t, 8);
         const double theta = s[0] + s[4] + s[8] - 3.0;
-        double dev2 = 0.0;
-        for (std::size_t i = 0; i < 3; ++i)
-            for (std::size_t j = 0; j < 3; ++j) {
-                const double e = 0.5 * (s[3 * i + j] + s[3 * j + i]) - (i == j ? 1.0 + theta / 3.0 : 0.0);
-                dev2 += e * e;
-            }
+        const double dev2 = deviatoricNorm2(s);
         const double c = m_materials[t].stiffeningStrain;
         const double x = c > 0.0 ? std::min(std::sqrt(dev2) / c, 20.0) : 0.0;
         energy += (c > 0.0 ? 2.0 * m_mu[t] * c * c * (std::cosh(x) - 1.0) : m_mu[t] * dev2) * m_volume[t];

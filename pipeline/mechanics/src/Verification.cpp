@@ -67,6 +67,19 @@ std::vector<FemMaterial> uniform(std::size_t tets, double eKpa, double nu, doubl
     return std::vector<FemMaterial>(tets, FemMaterial{eKpa * 1e3, nu, 1050.0, stiffeningStrain});
 }
 
+VerificationResult result(double simulated, double analytic, std::size_t points, std::size_t tets,
+                          const CorotationalFem& fem, std::chrono::steady_clock::time_point start) {
+    VerificationResult r;
+    r.simulated = simulated;
+    r.analytic = analytic;
+    r.errorPercent = 100.0 * (simulated - analytic) / analytic;
+    r.points = points;
+    r.tets = tets;
+    r.residualN = fem.residualN();
+    r.seconds = seconds(start);
+    return r;
+}
+
 Status checkMaterial(double eKpa, double nu) {
     if (!(eKpa > 0.0 && eKpa < 1e6) || !(nu >= 0.0 && nu < 0.5))
         return fail(ErrorCode::InvalidInput, "verification: Young's modulus 0-1e6 kPa, Poisson ratio 0-0.5");
@@ -152,15 +165,8 @@ Result<VerificationResult> runPunch(const PunchParams& p) {
     double force = 0.0;
     for (const std::size_t i : punched)
         force -= fem.reactionN(i).z;
-    VerificationResult r;
-    r.simulated = 4.0 * force;
-    r.analytic = boussinesqPunchForceN(a, p.depthMm, p.youngsModulusKpa, p.poissonRatio);
-    r.errorPercent = 100.0 * (r.simulated - r.analytic) / r.analytic;
-    r.points = points.size();
-    r.tets = tets.size();
-    r.residualN = fem.residualN();
-    r.seconds = seconds(start);
-    return r;
+    return result(4.0 * force, boussinesqPunchForceN(a, p.depthMm, p.youngsModulusKpa, p.poissonRatio), points.size(),
+                  tets.size(), fem, start);
 }
 
 Result<VerificationResult> runLameSphere(const LameParams& p) {
@@ -226,16 +232,10 @@ Result<VerificationResult> runLameSphere(const LameParams& p) {
     double sum = 0.0;
     for (std::size_t i = 0; i < unit.size(); ++i)
         sum += dot(fem.positionsM()[i] - points[i], unit[i]) / kMm;
-    VerificationResult r;
-    r.simulated = sum / static_cast<double>(unit.size());
-    r.analytic =
-        lameInnerDisplacementMm(p.innerRadiusMm, p.outerRadiusMm, p.pressureKpa, p.youngsModulusKpa, p.poissonRatio);
-    r.errorPercent = 100.0 * (r.simulated - r.analytic) / r.analytic;
-    r.points = points.size();
-    r.tets = tets.size();
-    r.residualN = fem.residualN();
-    r.seconds = seconds(start);
-    return r;
+    return result(
+        sum / static_cast<double>(unit.size()),
+        lameInnerDisplacementMm(p.innerRadiusMm, p.outerRadiusMm, p.pressureKpa, p.youngsModulusKpa, p.poissonRatio),
+        points.size(), tets.size(), fem, start);
 }
 
 } // namespace hs::mechanics

@@ -198,6 +198,8 @@ private:
     /// The exponential stiffening's secant factor sinh(x)/x, x = |dev e| / c, for a tet's corotated stretch `s`.
     double stiffening(std::size_t tet, const std::array<double, 9>& s) const;
     double stiffeningArgument(std::size_t tet, const std::array<double, 9>& s) const;
+    /// R^T F of tet `t` at the current positions (its rotation found from the last one, which stays as it was).
+    std::array<double, 9> corotatedStretch(std::size_t t, int iterations) const;
     /// H^-1 column for dof (cached when precomputed).
     void complianceBetween(const std::vector<FemConstraint>& rows, std::vector<double>& w);
     void solveContacts(std::vector<FemConstraint>& rows, const ObstacleCompliance& obstacle,
