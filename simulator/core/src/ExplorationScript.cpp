@@ -1,0 +1,196 @@
+// The built-in exploration: in through the canal, the walls, the fundus, each ostium and each pathology, and out.
+#include "WorldImpl.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hs::sim {
+
+using namespace detail;
+
+namespace {
+
+/// The device sample that puts the tip at `tip` and turns the optic so it looks as nearly as possible at `target`.
+DeviceSample aimAt(const World& world, const Vec3& tip, const Vec3& target) {
+    DeviceSample best = sampleAiming(world.frame(), tip);
+    double bestAngle = 1e300;
+    for (int roll = -180; roll < 180; roll += 5) {
+        DeviceSample s = sampleAiming(world.frame(), tip, roll);
+        const ScopePose pose = scopePose(world.frame(), world.options().scope, s);
+        const Vec3 to = target - pose.tipMm;
+        if (norm(to) < 1e-9)
+            continue;
+        const double angle = std::acos(std::clamp(dot(normalized(to), pose.direction), -1.0, 1.0));
+        if (angle < bestAngle - 1e-12) {
+            bestAngle = angle;
+            best = s;
+        }
+    }
+    return best;
+}
+
+} // namespace
+
+Script explorationScript(const World& world, double durationS) {
+    const World::Impl& w = *world.impl_;
+    const scene::ScopeLandmarks& lm = w.landmarks;
+    const ScopeConfig& scope = w.options.scope;
+    const double cavityLength = distance(lm.internalOsMm, lm.fundusMm);
+    const auto onAxis = [&](double fraction) { return lm.internalOsMm + w.cavityAxis * (fraction * cavityLength); };
+    const auto depthOf = [&](const Vec3& p) { return dot(p - lm.internalOsMm, w.cavityAxis) / cavityLength; };
+    // Planned in the cavity opened by the fluid (as the calibration left it), where the trial's scope moves.
+    detail::TriangleBvh open;
+    open.build(*w.triangles, w.openPointsMm);
+    const auto clearance = [&](const Vec3& tip) {
+        return w.scopeClearanceMm(w.openPointsMm, open, scopePose(w.frame, scope, sampleAiming(w.frame, tip)));
+    };
+    // The cavity's middle at each tenth of its length: the tip's place within kMiddleSearchMm of the cavity's axis
+    // farthest from the walls (up to kScriptClearanceMm; nearer the axis wins among those): the path keeps off a
+    // myoma or a polyp that bulges into the cavity, and off a wall the axis runs close to.
+    std::vector<Vec3> middle(10);
+    for (std::size_t k = 1; k < middle.size(); ++k) {
+        const Vec3 base = onAxis(0.1 * static_cast<double>(k));
+        double bestScore = -1e300;
+        for (double side = -kMiddleSearchMm; side <= kMiddleSearchMm + 1e-9; side += kMiddleStepMm)
+            for (double up = -kMiddleSearchMm; up <= kMiddleSearchMm + 1e-9; up += kMiddleStepMm) {
+                const Vec3 p = base + w.cavityLeft * side + w.cavityAnterior * up;
+                const double score =
+                    std::min(clearance(p), kScriptClearanceMm) - 0.05 * std::sqrt(side * side + up * up);
+                if (score > bestScore + 1e-12) {
+                    bestScore = score;
+                    middle[k] = p;
+                }
+            }
+    }
+    middle[0] = middle[1];
+    const auto middleAt = [&](double fraction) {
+        return middle[static_cast<std::size_t>(std::clamp(std::lround(fraction * 10.0), 1L, 9L))];
+    };
+
+    std::vector<std::pair<double, DeviceSample>> plan; // (time on the plan, sample), scaled to durationS at the end
+    double t = 0.0;
+    const auto add = [&plan, &t](double afterS, DeviceSample s) {
+        t += afterS;
+        s.inflow = 1.0;
+        s.outflow = 0.3;
+        plan.emplace_back(t, s);
+    };
+    DeviceSample outside;
+    outside.insertionMm = -5.0;
+    DeviceSample inOs = outside;
+    inOs.insertionMm = distance(lm.externalOsMm, lm.internalOsMm) + 2.0;
+    const Vec3 inOsTip = scopePose(w.frame, scope, inOs).tipMm;
+    add(0.0, outside);
+    add(2.0, outside);
+    add(4.0, inOs);
+    // Every move inside the cavity goes along its middle: back to the middle where the tip is, along it a tenth of
+    // the cavity at a time, then to the place asked for; each leg at kScriptSpeedMmPerS.
+    Vec3 tipNow = inOsTip;
+    double depthNow = 0.0;
+    const auto leg = [&](const Vec3& to, const DeviceSample& look) {
+        const double d = distance(tipNow, to);
+        if (d < 0.5)
+            return;
+        add(std::max(0.3, d / kScriptSpeedMmPerS), look);
+        tipNow = to;
+    };
+    const auto via = [&](const Vec3& p, const DeviceSample& s) {
+        leg(p, sampleAiming(w.frame, p, s.rollDeg, s.cameraRollDeg));
+    };
+    const auto go = [&](const DeviceSample& s, double holdS) {
+        const Vec3 tip = scopePose(w.frame, scope, s).tipMm;
+        const double depth = std::clamp(depthOf(tip), 0.1, 0.9);
+        const long from = std::lround(std::clamp(depthNow, 0.1, 0.9) * 10.0), to = std::lround(depth * 10.0);
+        for (long k = from;; k += (to > from ? 1 : -1)) {
+            via(middle[static_cast<std::size_t>(k)], s);
+            if (k == to)
+                break;
+        }
+        leg(tip, s);
+        add(holdS, s);
+        depthNow = depth;
+    };
+    // The walls: the optic turned all round at two depths.
+    for (const double depth : {0.3, 0.55})
+        for (int roll = -180; roll <= 180; roll += 90)
+            go(sampleAiming(w.frame, middleAt(depth), roll), 1.5);
+    // The fundus from near it; each ostium and each pathology from where it is in view: searched beside the middle
+    // at several depths, among the places the scope reaches from the middle without touching a wall.
+    go(aimAt(world, middleAt(0.6), lm.fundusMm), 2.0);
+    std::vector<Vec3> vantage;
+    for (const double depth : {0.6, 0.45, 0.75, 0.3, 0.85, 0.2})
+        for (const double side : {0.0, 3.0, -3.0, 6.0, -6.0})
+            for (const double up : {0.0, 3.0, -3.0, 6.0, -6.0}) {
+                const Vec3 from = middleAt(depth);
+                const Vec3 p = from + w.cavityLeft * side + w.cavityAnterior * up;
+                bool clear = true;
+                for (double f = 0.0; f <= 1.0 && clear; f += 0.125)
+                    clear = clearance(from + (p - from) * f) >= kScriptClearanceMm * 0.5;
+                if (clear)
+                    vantage.push_back(p);
+            }
+    const auto lookAt = [&](const Vec3& target, const Vec3& normal, auto&& seen) {
+        for (const Vec3& tip : vantage) {
+            const DeviceSample s = aimAt(world, tip, target);
+            if (seen(scopePose(w.frame, scope, s), target, normal))
+                return s;
+        }
+        return aimAt(world, middleAt(0.6), target);
+    };
+    for (const auto& o : w.ostia) {
+        const DeviceSample s =
+            lookAt(w.ostiumPoint(o), o.normal, [&](const ScopePose& pose, const Vec3& p, const Vec3& n) {
+                return w.visibleFrom(pose, p, n, -1, kOstiumOcclusionSlackMm);
+            });
+        go(s, 1.0);
+    }
+    for (std::size_t p = 0; p < w.metrics.pathologies.size(); ++p) {
+        // The pathology's face nearest the cavity's axis, marked with the view's centre on it.
+        std::int32_t best = -1;
+        double bestDistance = 1e300;
+        for (std::size_t f = 0; f < w.facePathology.size(); ++f) {
+            if (w.facePathology[f] != static_cast<int>(p))
+                continue;
+            const Vec3 c = triangleCentre(w.simRest.points, (*w.triangles)[f]);
+            const double along = dot(c - lm.internalOsMm, w.cavityAxis);
+            const double off = norm(c - lm.internalOsMm - w.cavityAxis * along);
+            if (off < bestDistance) {
+                bestDistance = off;
+                best = static_cast<std::int32_t>(f);
+            }
+        }
+        if (best < 0)
+            continue;
+        const Vec3 centre = triangleCentre(w.simRest.points, (*w.triangles)[static_cast<std::size_t>(best)]);
+        const DeviceSample look =
+            lookAt(centre, w.faceNormal(best), [&](const ScopePose& pose, const Vec3&, const Vec3&) {
+                double th = 0.0, a = 0.0, b = 0.0;
+                const std::int32_t hit =
+                    w.bvh.raycast(w.pointsMm, pose.tipMm, pose.direction, scopeFocusFarMm(scope), th, a, b);
+                return hit >= 0 && w.facePathology[static_cast<std::size_t>(hit)] == static_cast<int>(p);
+            });
+        go(look, 1.0);
+        DeviceSample press = look;
+        press.buttons = kButtonMark;
+        add(1.0, press);
+        add(0.3, look);
+        add(1.0, look);
+    }
+    // Out along the middle.
+    go(sampleAiming(w.frame, middle[1]), 0.5);
+    add(std::max(0.3, distance(tipNow, inOsTip) / kScriptSpeedMmPerS), inOs);
+    add(3.0, outside);
+    const double scale = durationS > 0.0 ? durationS / t : 1.0;
+    Script script;
+    for (const auto& [time, sample] : plan) {
+        KeyFrame k;
+        k.timeS = time * scale;
+        k.sample = clamped(sample);
+        if (!script.keyframes.empty() && k.timeS <= script.keyframes.back().timeS)
+            k.timeS = script.keyframes.back().timeS + 0.001;
+        script.keyframes.push_back(k);
+    }
+    return script;
+}
+
+} // namespace hs::sim

@@ -1,0 +1,176 @@
+#pragma once
+// The World's state, shared by its parts, one file each: World.cpp (loading, the step, what others read),
+// WorldSurface.cpp (the contact surface's faces, zones, ostia and pathologies), WorldTissue.cpp (the tissue, its
+// supports, the cavity's volume and the fluid's load), WorldContact.cpp (the scope's contacts, perforation, the haptics
+// frame), WorldVisibility.cpp (what the optic sees, marking, clearance) and ExplorationScript.cpp.
+
+#include "Bvh.h"
+#include "Fluid.h"
+#include "Tissue.h"
+#include "hs/core/TetEmbedding.h"
+#include "hs/sim/World.h"
+
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace hs::sim {
+
+namespace detail {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDeg = kPi / 180.0;
+constexpr double kMm = 1e-3;
+
+/// The tip force at which the wall gives way, N (docs/simulator.md, "Perforation": an assumption of this project;
+/// blunt-instrument puncture of soft tissue takes a few newtons).
+constexpr double kPerforationForceN = 5.0;
+/// ... held this long, s: the wall gives way under a sustained push, not a tap.
+constexpr double kPerforationHoldS = 0.3;
+/// Total stiffness of what holds the corpus besides the cervix (broad and round ligaments, the organs around it),
+/// N/m, spread over the serosa's free points by area (docs/simulator.md, "Boundary").
+constexpr double kSurroundStiffnessNPerM = 1000.0;
+/// The portio: the support's points this close to the external os along the canal are fixed, mm (about the vaginal
+/// part of a 25-30 mm cervix; docs/references.md [CervixParity]).
+constexpr double kHeldPortioMm = 12.0;
+/// Total stiffness of the cardinal and uterosacral ligaments on the supravaginal cervix, N/m, spread over its points.
+constexpr double kLigamentStiffnessNPerM = 3000.0;
+/// The shaft's spheres up to this far beyond the internal os (along the canal) do not collide: the canal wraps the
+/// sheath, mm.
+constexpr double kCanalContactFreeMm = 2.0;
+/// The shaft is checked for contact from its tip back to this far behind the pivot, mm.
+constexpr double kShaftCheckBehindPivotMm = 10.0;
+/// The exploration script: the tip's speed inside the cavity, mm/s of its plan (scaled to the duration asked for),
+/// the clearance from the walls it looks for, mm, and how far beside the cavity's axis it looks for it, mm.
+constexpr double kScriptSpeedMmPerS = 10.0;
+constexpr double kScriptClearanceMm = 3.0;
+constexpr double kMiddleSearchMm = 8.0;
+constexpr double kMiddleStepMm = 1.0;
+/// The clearance of a point is looked for this far, mm: more than half the wall's thickness, so a point inside the
+/// wall finds the wall's surface and its side.
+constexpr double kClearanceReachMm = 12.0;
+/// Contact candidates are gathered this far beyond the scope's radius, mm (covers one step's motion).
+constexpr double kContactMarginMm = 1.5;
+/// Visibility is updated every kVisibilityPeriodS for a tenth of the faces (all of them every 50 ms), and the
+/// series sampled every kSeriesPeriodS.
+constexpr double kVisibilityPeriodS = 0.005;
+constexpr std::size_t kVisibilitySlices = 10;
+constexpr double kSeriesPeriodS = 0.1;
+/// A contact ends after this long without touching (so a sliding scope counts once), s.
+constexpr double kContactGapS = 0.05;
+/// A pathology's faces: cavity faces this close to the visual faces over it, mm.
+constexpr double kPathologyReachMm = 3.0;
+/// The fundus zone: cavity faces this close to the fundus point, mm.
+constexpr double kFundusZoneMm = 10.0;
+/// The pressure at which the load is calibrated against the hydrometra curve, kPa (60 mmHg).
+constexpr double kCalibrationPressureKpa = 8.0;
+constexpr double kCalibrationSeconds = 0.4; ///< s of settling per round (the opening settles in about 0.2 s)
+constexpr int kCalibrationRounds = 4;
+
+struct Zone {
+    std::string name;
+    std::vector<std::int32_t> faces;
+    double area = 0.0;
+};
+
+struct Ostium {
+    std::string name;
+    TetEmbedding at; ///< the centre of its faces on the visual surface, bound to the simulation mesh
+    Vec3 normal;     ///< into the cavity, at rest
+    int target = -1; ///< index in metrics.targets
+};
+/// Ostium faces spread wider than this across the cavity are two ostia, mm (the intercornual distance is 41-47 mm;
+/// docs/references.md [FundusMRI]).
+constexpr double kOstiumSeparationMm = 15.0;
+/// The coarse simulation mesh rounds the cornual recess where an ostium opens: the ostium's centre may lie this far
+/// behind the contact surface and still be seen, mm.
+constexpr double kOstiumOcclusionSlackMm = 2.5;
+
+Vec3 triangleNormal(const std::vector<Vec3>& pts, const Triangle& t);
+Vec3 triangleCentre(const std::vector<Vec3>& pts, const Triangle& t);
+
+} // namespace detail
+
+struct World::Impl {
+    WorldOptions options;
+    scene::Scene scene;
+    std::string sha;
+    scene::ScopeLandmarks landmarks;
+    ScopeFrame frame;
+    TetMesh simRest;
+    SurfaceMesh contactSurface; ///< points: the simulation mesh's (mm, at rest); triangles in its point indices
+    std::shared_ptr<const std::vector<Triangle>> triangles;
+    std::vector<char> faceCavity;   ///< a cavity-side face (the scope sees it, the fluid presses on it)
+    std::vector<char> faceInCavity; ///< beyond the internal os (the exploration's surface)
+    std::vector<double> faceArea;   ///< mm^2 at rest
+    std::vector<std::int32_t> faceRegion;
+    std::vector<int> facePathology; ///< index into scene.clinical.pathologies, -1 none
+    std::vector<SurfaceSample> faceUnrolled;
+    std::vector<detail::Zone> zones;
+    std::vector<detail::Ostium> ostia;
+    Vec3 cavityAxis, cavityAnterior, cavityLeft;
+    double cavityArea = 0.0;
+
+    detail::TissueModel tissue;
+    detail::TriangleBvh bvh;
+    detail::FluidModel fluid;
+    double pressureGain = 1.0;
+    double restCavityMl = 0.0;
+    /// The points as the calibration left them: the cavity opened at the calibration pressure (scripts plan with it).
+    std::vector<Vec3> openPointsMm;
+    double contactStiffnessNPerMm = 0.1;
+
+    std::vector<Vec3> pointsMm;
+    WorldState state;
+    TrialMetrics metrics;
+    std::vector<SeriesPoint> series;
+    std::vector<char> faceSeen;
+    std::uint64_t samplesConsumed = 0;
+    std::uint32_t lastButtons = 0;
+    bool haveLastTip = false;
+    Vec3 lastTip;
+    double horizonSum = 0.0;
+    double horizonTime = 0.0;
+    double lastTouchS = -1.0;
+    bool inContact = false;
+    double seriesForceN = 0.0;
+    double nextVisibilityS = 0.0;
+    double nextSeriesS = 0.0;
+    int perforationIndex = -1;
+    double tipPushS = 0.0;
+    std::size_t visibilityRound = 0;
+
+    mutable std::mutex frameMutex;
+    std::shared_ptr<const HapticFrame> hapticFrame;
+
+    Status build(Progress& progress);
+    void setupSurfaceData();
+    void setupTissue();
+    void calibrateLoad();
+    void pressureForces(double pressureKpa, std::vector<Vec3>& forces) const;
+    double cavityVolumeMl(const std::vector<Vec3>& pts) const;
+    void physics(const ScopePose& pose, double pressureKpa);
+    /// Whether `point` (on `face`, -1: none) is in the view, in focus, facing the lens and not hidden (a hit within
+    /// `slackMm` before it does not hide it).
+    bool visible(const Vec3& point, const Vec3& normal, std::int32_t face, double slackMm = 0.5) const;
+    bool visibleFrom(const ScopePose& pose, const Vec3& point, const Vec3& normal, std::int32_t face,
+                     double slackMm) const;
+    Vec3 ostiumPoint(const detail::Ostium& o) const;
+    bool insideRestHull(const Vec3& p) const;
+    /// Signed distance from `p` to the contact surface with the points `pts` (its tree `tree` refitted to them), mm:
+    /// positive on the side its faces look to (the cavity, outside the body), negative inside the tissue; `reachMm`
+    /// when no face is that close.
+    double clearanceMm(const std::vector<Vec3>& pts, const detail::TriangleBvh& tree, const Vec3& p,
+                       double reachMm) const;
+    /// The least clearance of the scope in `pose` beyond its radius (its tip, and its shaft where it can touch the
+    /// wall: beyond the canal), mm; negative where it would press into the wall.
+    double scopeClearanceMm(const std::vector<Vec3>& pts, const detail::TriangleBvh& tree, const ScopePose& pose) const;
+    void updateVisibility();
+    void mark();
+    void publishFrame();
+    Vec3 faceNormal(std::int32_t f) const;
+    Vec3 faceCentre(std::int32_t f) const;
+};
+
+} // namespace hs::sim
