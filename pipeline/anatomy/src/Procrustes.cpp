@@ -6,17 +6,6 @@
 
 namespace hs::anatomy::detail {
 
-namespace {
-
-Vec3 centroid(const std::vector<Vec3>& s) {
-    Vec3 c;
-    for (const auto& p : s)
-        c += p;
-    return c / static_cast<double>(s.size());
-}
-
-} // namespace
-
 void rigidAlign(std::vector<Vec3>& shape, const std::vector<Vec3>& target, bool rotation) {
     const Vec3 cs = centroid(shape), ct = centroid(target);
     if (!rotation) {

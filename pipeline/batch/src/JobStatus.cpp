@@ -210,15 +210,6 @@ Result<std::optional<StatusRecord>> readStatus(const std::string& batchFolder, c
     return std::optional<StatusRecord>(std::move(*record));
 }
 
-std::string utcNow() {
-    const std::time_t now = std::time(nullptr);
-    std::tm utc{};
-    gmtime_r(&now, &utc);
-    char text[32];
-    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
-    return text;
-}
-
 std::string hostName() {
     char name[256] = {};
     if (gethostname(name, sizeof name - 1) != 0)

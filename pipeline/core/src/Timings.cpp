@@ -1,6 +1,17 @@
 #include "hs/core/Timings.h"
 
+#include <ctime>
+
 namespace hs {
+
+std::string utcNow() {
+    const std::time_t now = std::time(nullptr);
+    std::tm utc{};
+    gmtime_r(&now, &utc);
+    char text[32];
+    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+    return text;
+}
 
 double StageTimings::totalSeconds() const {
     double total = 0.0;

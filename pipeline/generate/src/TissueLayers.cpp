@@ -16,12 +16,6 @@ namespace {
 
 using FaceKey = std::array<std::int32_t, 3>;
 
-FaceKey sortedFace(std::int32_t a, std::int32_t b, std::int32_t c) {
-    FaceKey k{a, b, c};
-    std::sort(k.begin(), k.end());
-    return k;
-}
-
 Vec3 tetCentroid(const TetMesh& m, std::size_t t) {
     Vec3 c{0, 0, 0};
     for (auto p : m.tets[t])

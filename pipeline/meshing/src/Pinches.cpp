@@ -11,12 +11,6 @@ namespace {
 using Face = std::array<std::int32_t, 3>;
 using Edge = std::pair<std::int32_t, std::int32_t>;
 
-Face sortedFace(std::int32_t a, std::int32_t b, std::int32_t c) {
-    Face f{a, b, c};
-    std::sort(f.begin(), f.end());
-    return f;
-}
-
 /// Faces of the kept tets with the tets on their sides, sorted by face: bucketed by their smallest vertex with a
 /// counting sort (linear), then sorted within each bucket (a few dozen faces).
 struct FaceTable {

@@ -259,13 +259,6 @@ double diameter(const std::vector<Vec3>& points) {
     return std::sqrt(best);
 }
 
-Vec3 centroid(const std::vector<Vec3>& points) {
-    Vec3 c;
-    for (const Vec3& p : points)
-        c += p;
-    return points.empty() ? c : c / static_cast<double>(points.size());
-}
-
 Vec3 volumeCentroid(const SurfaceMesh& mesh) {
     Vec3 c;
     double v = 0.0;

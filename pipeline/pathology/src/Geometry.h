@@ -49,7 +49,7 @@ bool rayTriangle(const Vec3& origin, const Vec3& dir, const Vec3& a, const Vec3&
 /// Largest distance between two points of the set (exact for up to 3000 points, else on a regular subsample).
 double diameter(const std::vector<Vec3>& points);
 
-Vec3 centroid(const std::vector<Vec3>& points);
+using hs::centroid; // hs/core/Vec3.h
 /// Volume centroid of a closed surface.
 Vec3 volumeCentroid(const SurfaceMesh& mesh);
 

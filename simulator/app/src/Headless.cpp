@@ -9,15 +9,6 @@
 
 namespace hs::simapp {
 
-std::string utcNow() {
-    const std::time_t now = std::time(nullptr);
-    std::tm utc{};
-    gmtime_r(&now, &utc);
-    char text[32];
-    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
-    return text;
-}
-
 Result<ScriptedRun> runScripted(const SimOptions& options, const std::string& startedUtc) {
     auto script = sim::readScript(options.device.scriptPath);
     if (!script)

@@ -6,6 +6,7 @@
 
 #include "hs/core/Error.h"
 #include "hs/core/Result.h"
+#include "hs/core/Timings.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -75,8 +76,8 @@ std::string statusPath(const std::string& batchFolder, const std::string& job);
 /// The job's record; std::nullopt when it has none yet.
 [[nodiscard]] Result<std::optional<StatusRecord>> readStatus(const std::string& batchFolder, const std::string& job);
 
-/// The current time as "YYYY-MM-DDTHH:MM:SSZ".
-std::string utcNow();
+/// Now in UTC (hs::utcNow, ISO 8601 to the second).
+using hs::utcNow;
 /// This machine's host name ("" when unknown).
 std::string hostName();
 

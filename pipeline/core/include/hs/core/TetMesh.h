@@ -7,12 +7,25 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <utility>
 #include <vector>
 
 namespace hs {
 
 /// Four point indices; positive orientation: dot(p1 - p0, cross(p2 - p0, p3 - p0)) > 0.
 using Tet = std::array<std::int32_t, 4>;
+
+/// A face's points in increasing order: the key that finds the same face from both its tets.
+inline std::array<std::int32_t, 3> sortedFace(std::int32_t a, std::int32_t b, std::int32_t c) {
+    std::array<std::int32_t, 3> f{a, b, c};
+    if (f[0] > f[1])
+        std::swap(f[0], f[1]);
+    if (f[1] > f[2])
+        std::swap(f[1], f[2]);
+    if (f[0] > f[1])
+        std::swap(f[0], f[1]);
+    return f;
+}
 
 struct TetMesh {
     std::vector<Vec3> points; ///< mm

@@ -9,6 +9,9 @@
 
 namespace hs {
 
+/// Now, in UTC, as ISO 8601 to the second ("2026-12-03T08:20:00Z"): the one clock text of batch records and trials.
+std::string utcNow();
+
 struct StepTiming {
     std::string name;                                         ///< "voxelize", "relax", ...
     double seconds = 0.0;                                     ///< wall-clock time, s

@@ -2,6 +2,7 @@
 /// A small 3-D vector of doubles (millimetres wherever it is a position).
 
 #include <cmath>
+#include <vector>
 
 namespace hs {
 
@@ -98,5 +99,13 @@ struct Bounds {
     Vec3 center() const { return (min + max) * 0.5; }
     double diagonal() const { return norm(size()); }
 };
+
+/// The mean of `points` (the zero vector for none): the one home of this helper.
+inline Vec3 centroid(const std::vector<Vec3>& points) {
+    Vec3 c;
+    for (const Vec3& p : points)
+        c += p;
+    return points.empty() ? c : c / static_cast<double>(points.size());
+}
 
 } // namespace hs

@@ -4,6 +4,7 @@
 /// with --record, the trial file.
 
 #include "hs/core/Result.h"
+#include "hs/core/Timings.h"
 #include "hs/sim/Metrics.h"
 #include "hs/sim/Trial.h"
 #include "hs/simapp/SimOptions.h"
@@ -12,8 +13,8 @@
 
 namespace hs::simapp {
 
-/// ISO 8601 UTC time of now ("2026-05-04T10:11:12Z").
-std::string utcNow();
+/// Now in UTC (hs::utcNow).
+using hs::utcNow;
 
 /// The trial a scripted run feeds: the world's header with the device text, stamped with `startedUtc`.
 struct ScriptedRun {
