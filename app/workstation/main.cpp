@@ -7,6 +7,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QFileInfo>
 #include <QTextStream>
 #include <QTimer>
 
@@ -51,8 +52,10 @@ int main(int argc, char** argv) {
         QCoreApplication::translate("main", "Scenario authoring workstation for hysteroscopy training"));
     parser.addHelpOption();
     parser.addVersionOption();
-    parser.addPositionalArgument(QCoreApplication::translate("main", "file"),
-                                 QCoreApplication::translate("main", "A surface or tetrahedral mesh to open."));
+    parser.addPositionalArgument(
+        QCoreApplication::translate("main", "file"),
+        QCoreApplication::translate("main", "A case file (.json) to author, a scene package (a folder) to review, or a "
+                                            "surface or tetrahedral mesh to open."));
     const QCommandLineOption languageOption(
         QStringLiteral("lang"),
         QCoreApplication::translate("main", "User-interface language (de, fr, it, en); default: HS_LANG, else the "
@@ -81,8 +84,11 @@ int main(int argc, char** argv) {
                          [&window, image] { screenshotAndQuit(window, image, true); });
         QObject::connect(&window, &hs::workstation::MainWindow::loadFailed, &window,
                          [&window, image] { screenshotAndQuit(window, image, false); });
-        if (file.isEmpty())
-            screenshotAndQuit(window, image, true);
+        QObject::connect(&window, &hs::workstation::MainWindow::reviewOpened, &window,
+                         [&window, image] { screenshotAndQuit(window, image, true); });
+        // A case opens at once: the picture once the window has drawn it.
+        if (file.isEmpty() || QFileInfo(file).suffix().compare(QStringLiteral("json"), Qt::CaseInsensitive) == 0)
+            QTimer::singleShot(500, &window, [&window, image] { screenshotAndQuit(window, image, true); });
     }
     if (parser.isSet(clipOption))
         QObject::connect(&window, &hs::workstation::MainWindow::fileLoaded, &window, [&window] {
@@ -90,7 +96,7 @@ int main(int argc, char** argv) {
                 clip->setChecked(true);
         });
     if (!file.isEmpty())
-        window.openFile(file);
+        window.openArgument(file);
     if (!parser.isSet(screenshotOption)) // after a crash, the case being edited is offered back
         QTimer::singleShot(0, &window, [&window] { window.offerRecovery(); });
     return QApplication::exec();

@@ -58,6 +58,7 @@ private slots:
     void aboutGoesThroughMessageBox();
     void closingSavesWindowGeometry();
     void caseTitleShowsFileAndUnsavedMark();
+    void theCommandLinesCaseFileOpensAsACase();
     void undoAndRedoActionsFollowTheDocument();
     void closingWithUnsavedChangesAsks();
     void savingAnInvalidCaseShowsTheFieldAndKeepsTheFile();
@@ -298,6 +299,20 @@ void TestMainWindow::closingSavesWindowGeometry() {
     QVERIFY(!QSettings().value("window/geometry").toByteArray().isEmpty());
     m_window = std::make_unique<MainWindow>();
     QCOMPARE(m_window->size(), QSize(700, 500));
+}
+
+void TestMainWindow::theCommandLinesCaseFileOpensAsACase() {
+    // `hysteroscene case.json` opens the case (it used to be read as a mesh); a mesh still opens as a mesh.
+    const QString path = fixture("argument.json");
+    m_window->document().edit("Seed", [](hs::scene::CaseSpec& c) { c.seed = 5; });
+    FileDialog::setNextFileName(path);
+    find<QAction>("actionSaveCaseAs")->trigger();
+    QVERIFY(QFileInfo::exists(path));
+    m_window = std::make_unique<MainWindow>();
+    m_window->openArgument(path);
+    QCOMPARE(m_window->document().filePath(), QFileInfo(path).absoluteFilePath());
+    QCOMPARE(m_window->document().spec().seed, std::uint64_t{5});
+    QVERIFY(!m_window->isLoading()); // nothing went to the mesh reader
 }
 
 void TestMainWindow::caseTitleShowsFileAndUnsavedMark() {

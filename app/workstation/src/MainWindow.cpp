@@ -725,6 +725,16 @@ void MainWindow::onOpen() {
     openFile(path);
 }
 
+void MainWindow::openArgument(const QString& path) {
+    const QFileInfo info(path);
+    if (info.isDir())
+        reviewPackage(path);
+    else if (info.suffix().compare(QStringLiteral("json"), Qt::CaseInsensitive) == 0)
+        openCase(path);
+    else
+        openFile(path);
+}
+
 void MainWindow::openFile(const QString& path) {
     const QString absolutePath = QFileInfo(path).absoluteFilePath();
     statusBar()->showMessage(tr("Opening %1...").arg(QDir::toNativeSeparators(absolutePath)));
