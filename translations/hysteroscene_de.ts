@@ -2045,8 +2045,8 @@
         <translation>Datei</translation>
     </message>
     <message>
-        <source>A surface or tetrahedral mesh to open.</source>
-        <translation>Eine zu öffnende Oberfläche oder ein Tetraedernetz.</translation>
+        <source>A case file (.json) to author, a scene package (a folder) to review, or a surface or tetrahedral mesh to open.</source>
+        <translation>Eine Falldatei (.json) zum Bearbeiten, ein Szenenpaket (ein Ordner) zur Begutachtung oder eine Oberfläche bzw. ein Tetraedernetz zum Öffnen.</translation>
     </message>
     <message>
         <source>User-interface language (de, fr, it, en); default: HS_LANG, else the system locale.</source>

@@ -2045,8 +2045,8 @@
         <translation>fichier</translation>
     </message>
     <message>
-        <source>A surface or tetrahedral mesh to open.</source>
-        <translation>Une surface ou un maillage tétraédrique à ouvrir.</translation>
+        <source>A case file (.json) to author, a scene package (a folder) to review, or a surface or tetrahedral mesh to open.</source>
+        <translation>Un fichier de cas (.json) à éditer, un paquet de scène (un dossier) à examiner, ou une surface ou un maillage tétraédrique à ouvrir.</translation>
     </message>
     <message>
         <source>User-interface language (de, fr, it, en); default: HS_LANG, else the system locale.</source>

@@ -2045,8 +2045,8 @@
         <translation>file</translation>
     </message>
     <message>
-        <source>A surface or tetrahedral mesh to open.</source>
-        <translation>Una superficie o una mesh tetraedrica da aprire.</translation>
+        <source>A case file (.json) to author, a scene package (a folder) to review, or a surface or tetrahedral mesh to open.</source>
+        <translation>Un file di caso (.json) da modificare, un pacchetto di scena (una cartella) da esaminare, o una superficie o una mesh tetraedrica da aprire.</translation>
     </message>
     <message>
         <source>User-interface language (de, fr, it, en); default: HS_LANG, else the system locale.</source>
