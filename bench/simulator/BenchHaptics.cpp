@@ -2,7 +2,7 @@
 //
 // The physics is a parameter (Physics below). With --package DIR it is the simulator's World on that scene package:
 // it pops ticksPerStep() device samples, steps the world and publishes world.hapticFrame(), as hysteroscene-sim
-// does. Without, a stand-in publishes a ~5000-triangle sphere every 5 ms after burning ~4 ms of CPU.
+// does. Without, a stand-in publishes a frame of 48 contacts every 5 ms after burning ~4 ms of CPU.
 //
 //   bench_haptics [--seconds 10] [--package DIR [--throttle-hz 100]]
 // --throttle-hz: the physics held to that rate; the table gains the lag between the device and the world.
@@ -41,54 +41,10 @@ sim::ScopeFrame pivotFrame() {
     return f;
 }
 
-/// A cavity-like sphere (radius 25 mm, centre 45 mm beyond the pivot), triangles facing inwards: 2 * 50 * 49 = 4900.
-struct Sphere {
-    std::shared_ptr<const std::vector<Triangle>> triangles;
-    std::vector<Vec3> unit; ///< directions from the centre
-};
-
-Sphere makeSphere(int rings = 50, int segments = 50) {
-    Sphere s;
-    auto triangles = std::make_shared<std::vector<Triangle>>();
-    s.unit.push_back({0.0, 0.0, -1.0});
-    for (int r = 1; r < rings; ++r) {
-        const double theta = kPi * r / rings;
-        for (int k = 0; k < segments; ++k) {
-            const double phi = 2.0 * kPi * k / segments;
-            s.unit.push_back({std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), -std::cos(theta)});
-        }
-    }
-    s.unit.push_back({0.0, 0.0, 1.0});
-    const auto at = [&](int ring, int k) {
-        return static_cast<std::int32_t>(1 + (ring - 1) * segments + k % segments);
-    };
-    const auto top = static_cast<std::int32_t>(s.unit.size() - 1);
-    // Wound clockwise seen from outside: the normals point into the sphere, the free side.
-    for (int k = 0; k < segments; ++k) {
-        triangles->push_back({0, at(1, k), at(1, k + 1)});
-        for (int r = 1; r + 1 < rings; ++r) {
-            triangles->push_back({at(r, k), at(r + 1, k), at(r, k + 1)});
-            triangles->push_back({at(r + 1, k), at(r + 1, k + 1), at(r, k + 1)});
-        }
-        triangles->push_back({at(rings - 1, k), top, at(rings - 1, k + 1)});
-    }
-    // Every normal must point at the centre: a wrongly wound face would let the proxy through.
-    for (const Triangle& t : *triangles) {
-        const Vec3 a = s.unit[static_cast<std::size_t>(t[0])], b = s.unit[static_cast<std::size_t>(t[1])],
-                   c = s.unit[static_cast<std::size_t>(t[2])];
-        if (dot(cross(b - a, c - a), (a + b + c) * (-1.0 / 3.0)) <= 0.0) {
-            std::fprintf(stderr, "bench_haptics: sphere triangle wound outwards\n");
-            std::exit(3);
-        }
-    }
-    s.triangles = std::move(triangles);
-    return s;
-}
-
-/// The stand-in physics: every 5 ms, ~4 ms of CPU, then a new frame (the sphere breathing by +-0.5 mm).
+/// The stand-in physics: every 5 ms, ~4 ms of CPU, then a new frame of 48 contacts (the most the World hands over)
+/// with a full compliance matrix, the wall breathing by +-0.5 mm in front of the scope.
 std::uint64_t fakePhysics(HapticsLoop& loop, const std::atomic<bool>& stop) {
-    const Sphere sphere = makeSphere();
-    const Vec3 centre{0.0, 0.0, 45.0};
+    constexpr std::size_t kContacts = 48;
     std::uint64_t step = 0;
     std::int64_t next = monotonicNs();
     volatile double sink = 0.0;
@@ -106,11 +62,21 @@ std::uint64_t fakePhysics(HapticsLoop& loop, const std::atomic<bool>& stop) {
         frame->step = step;
         frame->timeS = static_cast<double>(step) * 0.005;
         frame->pivot = pivotFrame();
-        frame->triangles = sphere.triangles;
-        const double radius = 25.0 + 0.5 * std::sin(frame->timeS * 2.0 * kPi);
-        frame->pointsMm.reserve(sphere.unit.size());
-        for (const Vec3& u : sphere.unit)
-            frame->pointsMm.push_back(centre + u * radius);
+        frame->scopeDofs = {0.045, 0.0, 0.0};
+        const double breathing = 0.5e-3 * std::sin(frame->timeS * 2.0 * kPi);
+        for (std::size_t i = 0; i < kContacts; ++i) {
+            sim::HapticContact c;
+            const double angle = 2.0 * kPi * static_cast<double>(i) / kContacts;
+            c.gapM = breathing + 0.2e-3 * static_cast<double>(i % 4);
+            c.scopeGradient = {-1.0, -0.04 * std::cos(angle), -0.04 * std::sin(angle)};
+            c.normal = {0.0, 0.0, -1.0};
+            c.tip = i < 8;
+            frame->contacts.push_back(c);
+        }
+        frame->compliance.assign(kContacts * kContacts, 0.0);
+        for (std::size_t i = 0; i < kContacts; ++i)
+            for (std::size_t j = 0; j < kContacts; ++j)
+                frame->compliance[i * kContacts + j] = (i == j ? 3e-3 : 1e-3 / (1.0 + std::abs(double(i) - double(j))));
         loop.publish(std::move(frame));
         ++step;
         next += 5000000;

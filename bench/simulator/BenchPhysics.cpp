@@ -6,6 +6,7 @@
 // tip's place), to find which move of the script is at fault.
 // PACKAGE: a scene package with a simulation mesh (hysteroscene-cli generate resources/cases/default.json -o DIR).
 
+#include "hs/core/TriangleGeometry.h"
 #include "hs/meshing/QualityReport.h"
 #include "hs/sim/World.h"
 
@@ -55,6 +56,48 @@ int main(int argc, char** argv) {
     const double loadS = std::chrono::duration<double>(std::chrono::steady_clock::now() - loadStart).count();
     hs::sim::World& w = **world;
     const hs::meshing::QualityReport q = hs::meshing::measureQuality(w.simulationMesh());
+    // The canal: the clearance from its axis (external to internal os) to the contact surface and to the visual
+    // surface, against the scope's radius.
+    const auto canalClearance = [&w](const hs::SurfaceMesh& surface, hs::Vec3 direction = {}) {
+        std::pair<double, double> narrowest{1e300, 0.0}; // mm, and where (mm above the external os)
+        const hs::Vec3 from = w.landmarks().externalOsMm, to = w.landmarks().internalOsMm;
+        const double length = hs::distance(from, to);
+        if (hs::norm2(direction) == 0.0)
+            direction = hs::normalized(to - from);
+        for (double d = 0.0; d <= length; d += 0.5) {
+            const hs::Vec3 p = from + direction * d;
+            double nearest = 1e300;
+            for (const hs::Triangle& t : surface.triangles)
+                nearest =
+                    std::min(nearest, hs::closestPointOnTriangle(p, surface.points[static_cast<std::size_t>(t[0])],
+                                                                 surface.points[static_cast<std::size_t>(t[1])],
+                                                                 surface.points[static_cast<std::size_t>(t[2])])
+                                          .distance2);
+            if (std::sqrt(nearest) < narrowest.first)
+                narrowest = {std::sqrt(nearest), d};
+        }
+        return narrowest;
+    };
+    const auto canalSim = canalClearance(w.contactSurface());
+    const auto canalVisual = canalClearance(w.scene().surface.mesh);
+    // The clearest straight line through the canal from the external os (pitch and yaw about the pivot, 1 degree
+    // steps within 20 degrees): the way a rigid scope can pass.
+    double clearest = 0.0, clearestPitch = 0.0, clearestYaw = 0.0;
+    {
+        const hs::Vec3 axis = w.frame().axis, anterior = w.frame().anterior, left = w.frame().left;
+        constexpr double kDeg = 3.14159265358979323846 / 180.0;
+        for (double pitch = -20.0; pitch <= 20.0; pitch += 1.0)
+            for (double yaw = -20.0; yaw <= 20.0; yaw += 1.0) {
+                const hs::Vec3 d =
+                    hs::normalized(axis + anterior * std::tan(pitch * kDeg) + left * std::tan(yaw * kDeg));
+                const double c = canalClearance(w.contactSurface(), d).first;
+                if (c > clearest) {
+                    clearest = c;
+                    clearestPitch = pitch;
+                    clearestYaw = yaw;
+                }
+            }
+    }
 
     // The exploration script, repeated to fill `seconds` of simulated time.
     const hs::sim::Script script = hs::sim::explorationScript(w, 60.0);
@@ -84,6 +127,14 @@ int main(int argc, char** argv) {
             return 4;
         }
         stepMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+        if (trace && w.state().contact.forceN > 2.0 && w.state().step % 10 == 0) {
+            const hs::sim::WorldState& st = w.state();
+            const double along = hs::dot(st.scope.tipMm - w.landmarks().internalOsMm, w.frame().axis);
+            std::printf("trace: %.2f s: contact %.2f N at %.1f %.1f %.1f mm, tip %.1f mm beyond the internal os, "
+                        "device insertion %.1f mm, scope %.1f mm\n",
+                        st.timeS, st.contact.forceN, st.contact.pointMm.x, st.contact.pointMm.y, st.contact.pointMm.z,
+                        along, st.sample.insertionMm, hs::dot(st.scope.tipMm - w.frame().pivotMm, w.frame().axis));
+        }
         if (trace && w.metrics().perforations.size() > perforationsSeen) {
             const hs::sim::Perforation& p = w.metrics().perforations.back();
             std::printf("trace: perforation at %.2f s (script %.2f s), %s, at %.1f %.1f %.1f mm\n", p.timeS,
@@ -92,12 +143,13 @@ int main(int argc, char** argv) {
         }
         if (s % 20 == 0 || s + 1 == steps) {
             const hs::sim::World::Health h = w.health();
-            if (trace && h.invertedTets > 0) {
+            if (trace && (h.invertedTets > 0 || h.elasticEnergyJ > 0.5)) {
                 const hs::sim::WorldState& st = w.state();
-                std::printf("trace: %.2f s (script %.2f s): %zu inverted, min volume ratio %.3f, force %.2f N, tip "
-                            "%.1f %.1f %.1f mm\n",
-                            st.timeS, std::fmod(st.timeS, 60.0), h.invertedTets, h.minVolumeRatio, st.contact.forceN,
-                            st.scope.tipMm.x, st.scope.tipMm.y, st.scope.tipMm.z);
+                std::printf(
+                    "trace: %.2f s (script %.2f s): %zu inverted, min volume ratio %.3f, elastic energy %.3f J, "
+                    "force %.2f N, tip %.1f %.1f %.1f mm\n",
+                    st.timeS, std::fmod(st.timeS, 60.0), h.invertedTets, h.minVolumeRatio, h.elasticEnergyJ,
+                    st.contact.forceN, st.scope.tipMm.x, st.scope.tipMm.y, st.scope.tipMm.z);
             }
             maxInverted = std::max(maxInverted, h.invertedTets);
             minRatio = std::min(minRatio, h.minVolumeRatio);
@@ -115,6 +167,14 @@ int main(int argc, char** argv) {
                 w.contactSurface().faceCount());
     std::printf("| quality | mean radius ratio %.3f, min %.3f; dihedral %.1f-%.1f deg; %zu slivers |\n",
                 q.meanRadiusRatio, q.minRadiusRatio, q.minDihedralDeg, q.maxDihedralDeg, q.sliverCount);
+    std::printf(
+        "| canal | its axis %.2f mm from the simulation mesh's wall at the narrowest (%.1f mm above the external os), "
+        "%.2f mm from the visual surface (%.1f mm); the scope's radius %.2f mm |\n",
+        canalSim.first, canalSim.second, canalVisual.first, canalVisual.second, 0.5 * options.scope.diameterMm);
+    std::printf(
+        "| canal's clearest straight line | %.0f deg anterior, %.0f deg left of its axis: the wall %.2f mm from it at "
+        "the narrowest |\n",
+        clearestPitch, clearestYaw, clearest);
     std::printf("| load (read, build, calibrate) | %.2f s |\n", loadS);
     std::printf("| physics step (%d iterations, dt %.0f ms) | mean %.2f ms, p50 %.2f ms, p99 %.2f ms, max %.2f ms |\n",
                 options.solverIterations, options.stepS * 1e3, mean, percentile(stepMs, 0.5), percentile(stepMs, 0.99),
@@ -122,6 +182,15 @@ int main(int argc, char** argv) {
     std::printf("| physics rate | %.0f Hz mean, %.0f Hz at p99 (real time needs %.0f Hz) |\n", 1e3 / mean,
                 1e3 / percentile(stepMs, 0.99), 1.0 / options.stepS);
     std::printf("| trial | %.0f s simulated in %.1f s |\n", seconds, total / 1e3);
+    const hs::sim::World::StepTimings& t = w.stepTimings();
+    const double perStep = t.steps > 0 ? 1.0 / static_cast<double>(t.steps) : 0.0;
+    std::printf(
+        "| step breakdown (mean) | tissue forces %.2f ms, tissue solves %.2f ms, contact problem %.2f ms, "
+        "contact search %.2f ms, visibility %.2f ms, the rest %.2f ms |\n",
+        t.tissueForcesMs * perStep, t.tissueSolvesMs * perStep, t.contactSolveMs * perStep, t.contactSearchMs * perStep,
+        t.visibilityMs * perStep,
+        (t.totalMs - t.tissueForcesMs - t.tissueSolvesMs - t.contactSolveMs - t.contactSearchMs - t.visibilityMs) *
+            perStep);
     std::printf("| stability | inverted tets max %zu, min volume ratio %.3f, elastic energy max %.4f J, "
                 "point speed max %.0f mm/s |\n",
                 maxInverted, minRatio, maxEnergy, maxSpeed);

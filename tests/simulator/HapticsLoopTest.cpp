@@ -173,7 +173,7 @@ TEST(HapticsLoop, APhysicsThatFellBehindTakesTheNewestSamples) {
 TEST(HapticsLoop, WatchdogZeroesTheForceWhenFramesStop) {
     ManualDevice device("keyboard", {5.0, 300.0});
     sim::DeviceSample pressed;
-    pressed.insertionMm = 45.0; // 6.45 mm beyond touching: about 1.9 N
+    pressed.insertionMm = 47.0; // 8.45 mm beyond touching, the coupling in series with a 0.3 N/mm wall: 1.95 N
     device.setSample(pressed);
     ASSERT_TRUE(device.open().ok());
     HapticsLoopOptions options;
@@ -215,7 +215,7 @@ TEST(HapticsLoop, WatchdogZeroesTheForceWhenFramesStop) {
 TEST(HapticsLoop, ADeviceThatFallsSilentTripsTheWatchdogAndRecovers) {
     sim::Script script;
     sim::KeyFrame k;
-    k.sample.insertionMm = 45.0;
+    k.sample.insertionMm = 47.0; // 1.95 N, as above
     script.keyframes.push_back(k);
     k.timeS = 2.0;
     script.keyframes.push_back(k);

@@ -14,21 +14,16 @@ sim::ScopeFrame testPivot() {
 std::shared_ptr<const sim::HapticFrame> wallFrame(double wallZ, double stiffnessNPerMm) {
     auto frame = std::make_shared<sim::HapticFrame>();
     frame->pivot = testPivot();
-    frame->contactStiffnessNPerMm = stiffnessNPerMm;
-    constexpr int kCells = 10;
-    constexpr double kSize = 10.0;
-    const auto index = [](int i, int j) { return static_cast<std::int32_t>(i * (kCells + 1) + j); };
-    for (int i = 0; i <= kCells; ++i)
-        for (int j = 0; j <= kCells; ++j)
-            frame->pointsMm.push_back({-50.0 + kSize * i, -50.0 + kSize * j, wallZ});
-    auto triangles = std::make_shared<std::vector<Triangle>>();
-    for (int i = 0; i < kCells; ++i)
-        for (int j = 0; j < kCells; ++j) {
-            // Wound so that the normal is -z: towards the pivot, the free side.
-            triangles->push_back({index(i, j), index(i, j + 1), index(i + 1, j)});
-            triangles->push_back({index(i + 1, j), index(i, j + 1), index(i + 1, j + 1)});
-        }
-    frame->triangles = std::move(triangles);
+    const double radiusMm = 0.5 * frame->scope.diameterMm;
+    frame->scopeDofs = {(wallZ - radiusMm) * 1e-3, 0.0, 0.0};
+    sim::HapticContact c;
+    c.gapM = 0.0;
+    c.scopeGradient = {-1.0, 0.0, 0.0}; // deeper: less gap
+    c.forceN = 0.0;
+    c.normal = {0.0, 0.0, -1.0};
+    c.tip = true;
+    frame->contacts.push_back(c);
+    frame->compliance = {1e-3 / stiffnessNPerMm}; // m/N
     return frame;
 }
 

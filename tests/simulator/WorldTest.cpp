@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 
@@ -45,6 +46,15 @@ void run(World& world, const Script& script, double seconds, std::vector<DeviceS
         if (samples)
             samples->insert(samples->end(), step.begin(), step.end());
         tick += per;
+        if (std::getenv("HS_WORLD_TRACE") && world.state().step % 20 == 0)
+            std::printf("trace %.2f s: force %.2f N at %.1f %.1f %.1f, tip depth %.1f mm, device insertion %.1f, "
+                        "pressure %.2f kPa, tip %.1f %.1f %.1f dir %.2f %.2f %.2f\n",
+                        world.state().timeS, world.state().contact.forceN, world.state().contact.pointMm.x,
+                        world.state().contact.pointMm.y, world.state().contact.pointMm.z,
+                        dot(world.state().scope.tipMm - world.frame().pivotMm, world.frame().axis),
+                        world.state().sample.insertionMm, world.state().fluid.pressureKpa, world.state().scope.tipMm.x,
+                        world.state().scope.tipMm.y, world.state().scope.tipMm.z, world.state().scope.shaft.x,
+                        world.state().scope.shaft.y, world.state().scope.shaft.z);
         if (worst && world.state().step % 10 == 0) {
             const World::Health h = world.health();
             worst->invertedTets = std::max(worst->invertedTets, h.invertedTets);
@@ -88,30 +98,37 @@ TEST(World, LoadsThePackagesSimulationMeshHeldAtTheCervix) {
     EXPECT_EQ(world->state().fluid.redOut, 1.0); // no distension: the walls close on the lens
 }
 
-TEST(World, TheCavityOpensWithPressureAlongTheHydrometraCurve) {
+TEST(World, TheCavityOpensWithPressureAlongTheModelsStaticCurve) {
     // The pump at 100 mmHg; the valves hold about 40, then 60, then 100 mmHg (inflow gin (pump - p) = outflow gout p).
+    // The pressure comes from the cavity's volume in the deformed tissue each step, and loads its faces with no gain:
+    // once the fluid has settled the cavity is opened as far as a static solve of the same tissue opens it.
     WorldOptions options;
     options.fluid.pumpPressureKpa = 100.0 * 0.133322;
     options.fluid.meanArterialPressureKpa = 20.0;
     auto world = loadWorld(options);
     ASSERT_TRUE(world);
     const auto& h = world->scene().hydrometra;
-    const double compliance = h.cavityVolumeMl / h.pressureKpa;
     const std::pair<double, double> valves[] = {{0.52, 1.0}, {1.0, 0.85}, {1.0, 0.0}};
     for (const auto& [inflow, outflow] : valves) {
         DeviceSample s;
         s.insertionMm = -5.0;
         s.inflow = inflow;
         s.outflow = outflow;
-        run(*world, holding(s, 2.0), 2.0);
+        run(*world, holding(s, 4.0), 4.0);
         const double p = world->state().fluid.pressureKpa;
         const double opened = world->state().cavityOpeningMl;
-        const double expected = compliance * p;
-        EXPECT_NEAR(opened, expected, 0.2 * expected) << "pressure " << p << " kPa";
+        const auto still = world->staticCavityOpeningMl(p);
+        ASSERT_TRUE(still) << still.error().detail;
+        std::printf("%.0f mmHg: opened %.2f mL, the static solve %.2f mL, Bajka's fit (linear in pressure) %.2f mL\n",
+                    p / 0.133322, opened, *still, h.cavityVolumeMl / h.pressureKpa * p);
+        EXPECT_NEAR(opened, *still, 0.1 * *still) << "pressure " << p << " kPa";
         EXPECT_LT(world->state().fluid.redOut, 1.0);
         EXPECT_EQ(world->health().invertedTets, 0u);
     }
-    EXPECT_NEAR(world->state().fluid.pressureKpa, options.fluid.pumpPressureKpa, 0.5);
+    // With the outflow closed the cavity fills towards the pump's pressure (still filling after 4 s: the tissue opens
+    // 8 mL at 100 mmHg through the inflow's resistance), never beyond it.
+    EXPECT_GT(world->state().fluid.pressureKpa, 0.9 * options.fluid.pumpPressureKpa);
+    EXPECT_LT(world->state().fluid.pressureKpa, options.fluid.pumpPressureKpa);
     // Nothing left the cavity but through the outflow and a little intravasation: the deficit is what it holds.
     EXPECT_GT(world->metrics().deficitMl, 0.0);
 }

@@ -274,6 +274,9 @@ void CorotationalFem::internalForces(const std::vector<Vec3>& x, const std::vect
     const bool nodal = m_settings.nodalPressure;
     const std::size_t tets = m_tets.size();
     const int threads = std::max(1, m_settings.threads);
+    if (!m_team || m_team->size() != threads)
+        m_team = std::make_unique<WorkerTeam>(threads);
+    const int pieces = 4 * threads; // taken as they come: a helper late to a pass leaves its share to the other
     m_tetR.resize(tets);
     m_tetDilatation.assign(tets, 0.0);
     m_tetRate.assign(tets, 0.0);
@@ -281,7 +284,7 @@ void CorotationalFem::internalForces(const std::vector<Vec3>& x, const std::vect
     m_tetStrainRate.resize(tets);
     m_tetForces.resize(tets);
     // Pass 1 (tets): each tet's rotation, its corotated strain and strain rate.
-    parallelChunks(tets, evenChunk(tets, threads), threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+    m_team->run(tets, evenChunk(tets, pieces), [&](std::size_t, std::size_t begin, std::size_t end) {
         for (std::size_t t = begin; t < end; ++t) {
             if (m_removed[t])
                 continue;
@@ -306,7 +309,7 @@ void CorotationalFem::internalForces(const std::vector<Vec3>& x, const std::vect
     }
     m_pointR.assign(n, Mat3{1, 0, 0, 0, 1, 0, 0, 0, 1});
     m_pointQuat.resize(n, {1.0, 0.0, 0.0, 0.0});
-    parallelChunks(n, evenChunk(n, threads), threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+    m_team->run(n, evenChunk(n, pieces), [&](std::size_t, std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
             Mat3 sum{};
             bool any = false;
@@ -328,7 +331,7 @@ void CorotationalFem::internalForces(const std::vector<Vec3>& x, const std::vect
         }
     });
     // Pass 3 (tets): stresses and each corner's force.
-    parallelChunks(tets, evenChunk(tets, threads), threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+    m_team->run(tets, evenChunk(tets, pieces), [&](std::size_t, std::size_t begin, std::size_t end) {
         for (std::size_t t = begin; t < end; ++t) {
             if (m_removed[t])
                 continue;
@@ -381,7 +384,7 @@ void CorotationalFem::internalForces(const std::vector<Vec3>& x, const std::vect
         }
     });
     // Pass 4 (points): each point's force, its tets' corners in tet order.
-    parallelChunks(n, evenChunk(n, threads), threads, [&](std::size_t, std::size_t begin, std::size_t end) {
+    m_team->run(n, evenChunk(n, pieces), [&](std::size_t, std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
             for (std::size_t k = m_incidenceStart[i]; k < m_incidenceStart[i + 1]; ++k) {
                 const std::size_t t = m_incidence[k].first;
@@ -947,6 +950,18 @@ double CorotationalFem::stiffening(std::size_t tet, const std::array<double, 9>&
 
 double CorotationalFem::elasticEnergyJ() const {
     // mu |dev e|^2 per tet plus kappa / 2 theta^2, per tet or per point (nodal pressure).
+    // The stiffening's energy 2 mu c^2 (cosh x - 1), x = |dev e| / c, up to the x* where its secant factor sinh x / x
+    // reaches maxStiffening; beyond, the stress grows linearly with that factor, and so does the energy's rate.
+    const double cap = m_settings.maxStiffening;
+    double capX = 20.0;
+    if (cap > 1.0 && std::sinh(20.0) / 20.0 > cap) {
+        double lo = 1e-6, hi = 20.0;
+        for (int i = 0; i < 100; ++i) {
+            const double mid = 0.5 * (lo + hi);
+            (std::sinh(mid) / mid < cap ? lo : hi) = mid;
+        }
+        capX = lo;
+    }
     double energy = 0.0;
     std::vector<double> pointTheta(m_x.size(), 0.0);
     for (std::size_t t = 0; t < m_tets.size(); ++t) {
@@ -958,8 +973,11 @@ double CorotationalFem::elasticEnergyJ() const {
         const double theta = s[0] + s[4] + s[8] - 3.0;
         const double dev2 = deviatoricNorm2(s);
         const double c = m_materials[t].stiffeningStrain;
-        const double x = c > 0.0 ? std::min(std::sqrt(dev2) / c, 20.0) : 0.0;
-        energy += (c > 0.0 ? 2.0 * m_mu[t] * c * c * (std::cosh(x) - 1.0) : m_mu[t] * dev2) * m_volume[t];
+        const double x = c > 0.0 ? std::sqrt(dev2) / c : 0.0;
+        const double stiffening =
+            x <= capX ? 2.0 * m_mu[t] * c * c * (std::cosh(x) - 1.0)
+                      : 2.0 * m_mu[t] * c * c * (std::cosh(capX) - 1.0) + m_mu[t] * cap * c * c * (x * x - capX * capX);
+        energy += (c > 0.0 ? stiffening : m_mu[t] * dev2) * m_volume[t];
         const double tetShare = m_settings.nodalPressure ? m_settings.tetPressureShare : 1.0;
         if (m_settings.nodalPressure)
             for (std::size_t k = 0; k < 4; ++k)

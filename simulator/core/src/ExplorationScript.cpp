@@ -10,6 +10,10 @@ using namespace detail;
 
 namespace {
 
+/// The entry is looked for within this angle of the canal's axis, in steps of kEntryStepDeg.
+constexpr double kEntrySearchDeg = 15.0;
+constexpr double kEntryStepDeg = 1.0;
+
 /// The device sample that puts the tip at `tip` and turns the optic so it looks as nearly as possible at `target`.
 DeviceSample aimAt(const World& world, const Vec3& tip, const Vec3& target) {
     DeviceSample best = sampleAiming(world.frame(), tip);
@@ -75,10 +79,33 @@ Script explorationScript(const World& world, double durationS) {
         s.outflow = 0.3;
         plan.emplace_back(t, s);
     };
+    // In through the canal along the straight line from the external os that keeps farthest from its walls (the
+    // canal curves a little, and the os and the internal os lie off its middle): the line of least resistance a
+    // hysteroscopist looks for.
+    const double canalMm = distance(lm.externalOsMm, lm.internalOsMm);
     DeviceSample outside;
     outside.insertionMm = -5.0;
+    double bestCanal = -1e300;
+    for (double pitch = -kEntrySearchDeg; pitch <= kEntrySearchDeg + 1e-9; pitch += kEntryStepDeg)
+        for (double yaw = -kEntrySearchDeg; yaw <= kEntrySearchDeg + 1e-9; yaw += kEntryStepDeg) {
+            DeviceSample s;
+            s.pitchDeg = pitch;
+            s.yawDeg = yaw;
+            s.insertionMm = canalMm + 2.0;
+            const ScopePose pose = scopePose(w.frame, scope, s);
+            double least = 1e300;
+            for (double back = 0.0; back <= canalMm + 2.0; back += 1.0)
+                least = std::min(
+                    least, w.clearanceMm(w.openPointsMm, open, pose.tipMm - pose.shaft * back, kClearanceReachMm));
+            const double score = least - 1e-3 * std::hypot(pitch, yaw); // the axis wins a tie
+            if (score > bestCanal + 1e-12) {
+                bestCanal = score;
+                outside.pitchDeg = pitch;
+                outside.yawDeg = yaw;
+            }
+        }
     DeviceSample inOs = outside;
-    inOs.insertionMm = distance(lm.externalOsMm, lm.internalOsMm) + 2.0;
+    inOs.insertionMm = canalMm + 2.0;
     const Vec3 inOsTip = scopePose(w.frame, scope, inOs).tipMm;
     add(0.0, outside);
     add(2.0, outside);

@@ -1,8 +1,12 @@
 #pragma once
-// The distension fluid as a lumped model (docs/simulator.md, "Distension"): the cavity a compliance taken from the
-// scene's hydrometra curve, an inflow from the pump through the inflow valve, an outflow through the outflow valve to
-// the atmosphere, and intravasation that rises steeply once the intrauterine pressure passes the mean arterial
-// pressure (Vulgaropulos et al., Am J Obstet Gynecol 1992;167:386-91). Pressures kPa, volumes mL, times s.
+// The distension fluid, two-way coupled to the tissue (docs/simulator.md, "Distension"). The fluid in the cavity is a
+// volume: the pump's inflow through the inflow valve adds to it, the outflow through the outflow valve to the
+// atmosphere and intravasation (rising steeply once the intrauterine pressure passes the mean arterial pressure;
+// Vulgaropulos et al., Am J Obstet Gynecol 1992;167:386-91) take from it. The pressure is what makes the cavity in the
+// deformed tissue hold that volume: each step it is solved, implicitly in the flows, from the cavity's volume as the
+// tissue left it and the tissue's own compliance over one step (dV/dp of the solver's matrix), and then loads the
+// cavity's faces. No gain is fitted: the cavity opens as far as the tissue model lets it. Pressures kPa, volumes mL,
+// times s.
 
 #include "hs/sim/Trial.h"
 #include "hs/sim/World.h"
@@ -21,17 +25,19 @@ inline constexpr double kWallsClosePressureKpa = 3.3;
 
 class FluidModel {
 public:
-    /// `complianceMlPerKpa`: the cavity's volume change per kPa (the hydrometra curve's slope).
-    void reset(const FluidSettings& settings, double complianceMlPerKpa);
-    /// One step of `dt` s with the valves' openings (0..1) and the scope's contact force (N, stirs debris).
-    void step(double dt, double inflowValve, double outflowValve, double contactForceN);
-    const FluidState& state() const { return state_; }
-    double complianceMlPerKpa() const { return compliance_; }
+    void reset(const FluidSettings& settings);
+    /// The pressure for the coming step of `dt` s (kPa) with the valves' openings (0..1): the cavity holds
+    /// `cavityMl` beyond its rest volume as the tissue lies now, under the pressure of the last step, and gives
+    /// `complianceMlPerKpa` more per kPa over one step. Updates the fluid's volume and totals with the flows at that
+    /// pressure; `contactForceN` (the scope on the wall) stirs debris.
+    double step(double dt, double inflowValve, double outflowValve, double cavityMl, double complianceMlPerKpa,
+                double contactForceN);
+    const FluidState& state() const { return m_state; }
 
 private:
-    FluidSettings settings_;
-    double compliance_ = 0.1;
-    FluidState state_;
+    FluidSettings m_settings;
+    FluidState m_state;
+    double m_fluidMl = 0.0; ///< the fluid in the cavity beyond the cavity's rest volume
 };
 
 } // namespace hs::sim::detail

@@ -163,6 +163,7 @@ void writeMetrics(JsonWriter& w, const TrialMetrics& m) {
         w.close(']');
         w.field("depthMm", p.depthMm);
         w.field("region", p.region);
+        w.field("falsePassage", p.falsePassage);
         w.close('}');
     }
     w.close(']');
@@ -249,7 +250,8 @@ std::string sectionsHtml(const TrialReport& r) {
     if (!m.perforations.empty()) {
         std::vector<std::vector<std::string>> rows;
         for (const Perforation& p : m.perforations)
-            rows.push_back({seconds(p.timeS), p.region, fixedText(p.depthMm, 1) + " mm",
+            rows.push_back({seconds(p.timeS), p.falsePassage ? p.region + " (false passage)" : p.region,
+                            fixedText(p.depthMm, 1) + " mm",
                             fixedText(p.locationMm.x, 1) + ", " + fixedText(p.locationMm.y, 1) + ", " +
                                 fixedText(p.locationMm.z, 1)});
         h += table({"time", "region", "depth", "where (mm)"}, rows);

@@ -4,6 +4,7 @@
 #include "hs/scene/Sha256.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -40,18 +41,12 @@ Status World::Impl::build(Progress& progress) {
     simRest = scene.simulation->tets;
     HS_TRY(progress.check("world"));
     setupSurfaceData();
-    setupTissue();
-    tissue.pointsMm(pointsMm);
+    HS_TRY(setupTissue());
+    pointsMm = simRest.points;
     bvh.build(*triangles, pointsMm);
-    double compliance = 0.0;
-    if (scene.hydrometra.pressureKpa > 0.0 && scene.hydrometra.cavityVolumeMl > 0.0)
-        compliance = scene.hydrometra.cavityVolumeMl / scene.hydrometra.pressureKpa;
-    else
-        compliance = scene::hydrometraVolumeAtFitPressureMl(std::max(scene.hydrometra.uterineVolumeMl, 1.0)) /
-                     scene::kHydrometraFitPressureKpa;
-    fluid.reset(options.fluid, compliance);
+    fluid.reset(options.fluid);
     progress.report("world", 0.3);
-    calibrateLoad();
+    HS_TRY(measureCavity());
     HS_TRY(progress.check("world"));
     state.scope = scopePose(frame, options.scope, DeviceSample{});
     state.fluid = fluid.state();
@@ -111,6 +106,7 @@ Status World::step(const DeviceSample* samples, std::size_t count) {
             return fail(ErrorCode::InvalidInput,
                         "world step: sample at tick " + std::to_string(samples[i].tick) + " is out of range");
     }
+    const auto started = std::chrono::steady_clock::now();
     const double dt = w.options.stepS;
     bool markPressed = false;
     // Per tick: the tip's path and the buttons.
@@ -132,10 +128,13 @@ Status World::step(const DeviceSample* samples, std::size_t count) {
     const DeviceSample& last = samples[count - 1];
     w.samplesConsumed += count;
     w.state.sample = last;
-    w.state.scope = scopePose(w.frame, w.options.scope, last);
-    w.fluid.step(dt, last.inflow, last.outflow, w.state.contact.forceN);
+    // The fluid's pressure for this step from the cavity as the tissue lies (two-way coupling), then the tissue and
+    // the scope under it; state.scope is then the physics' scope, held off the wall by the tissue.
+    const double cavityMl = w.cavityVolumeMl(w.pointsMm) - w.restCavityMl;
+    const double pressureKpa =
+        w.fluid.step(dt, last.inflow, last.outflow, cavityMl, w.cavityComplianceMlPerKpa, w.state.contact.forceN);
     w.state.fluid = w.fluid.state();
-    w.physics(w.state.scope, w.state.fluid.pressureKpa);
+    w.physics(last, pressureKpa);
     w.state.step += 1;
     w.state.timeS = static_cast<double>(w.state.step) * dt;
     // The lens against the tissue closes the view too.
@@ -165,19 +164,28 @@ Status World::step(const DeviceSample* samples, std::size_t count) {
     m.deficitMl = f.deficitMl;
     m.deficitWarning = m.deficitWarning || f.deficitWarning;
     m.deficitLimitReached = m.deficitLimitReached || f.deficitLimit;
+    const auto seeing = std::chrono::steady_clock::now();
     if (w.state.timeS + 1e-9 >= w.nextVisibilityS) {
         w.updateVisibility();
         w.nextVisibilityS += kVisibilityPeriodS;
     }
     if (markPressed)
         w.mark();
+    const auto seen = std::chrono::steady_clock::now();
+    w.timings.visibilityMs += std::chrono::duration<double, std::milli>(seen - seeing).count();
     if (w.state.timeS + 1e-9 >= w.nextSeriesS) {
         w.series.push_back({w.state.timeS, w.seriesForceN, f.pressureKpa, f.deficitMl});
         w.seriesForceN = 0.0;
         w.nextSeriesS += kSeriesPeriodS;
     }
     w.publishFrame();
+    w.timings.steps += 1;
+    w.timings.totalMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
     return {};
+}
+
+const World::StepTimings& World::stepTimings() const {
+    return impl_->timings;
 }
 
 const WorldOptions& World::options() const {
@@ -249,7 +257,7 @@ const TrialMetrics& World::metrics() const {
 }
 
 std::string_view physicsEngine() {
-    return "xpbd-fixed-corotated/1";
+    return "corotational-fem/1";
 }
 
 Status checkReplay(const TrialHeader& trial, const WorldOptions& options) {

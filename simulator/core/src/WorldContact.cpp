@@ -1,115 +1,268 @@
-// The scope against the tissue: contacts along the shaft, the tissue's force on the scope, perforation, and the frame
-// the haptics loop renders (docs/simulator.md, "Collision and contact", "Perforation", "Haptics").
+// The scope in the physics: a body held to the device's pose by a virtual coupling (Colgate, Stanley & Brown, "Issues
+// in the haptic display of tool use", IROS 1995; iMSTK's PbdObjectController), stopped by the tissue through contact
+// constraints that the tissue solver resolves with its own compliance. The force the device gets is the coupling's,
+// which is the tissue's reaction as the solver computed it. Contacts along the whole shaft: the cervical canal is an
+// obstacle (docs/simulator.md, "Scope and contact").
 #include "WorldImpl.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <tuple>
 
 namespace hs::sim {
 
 using namespace detail;
 
-void World::Impl::physics(const ScopePose& pose, double pressureKpa) {
-    std::vector<Vec3> forces;
-    pressureForces(pressureKpa, forces);
-    // Contact candidates: spheres of the scope's radius along the shaft, against the surface near each.
-    const double radius = 0.5 * options.scope.diameterMm;
-    const double insertion = dot(pose.tipMm - frame.pivotMm, pose.shaft);
-    std::vector<detail::ContactPair> contacts;
-    std::vector<std::int32_t> near;
+namespace {
+
+/// A candidate contact of one of the shaft's spheres with a face of the contact surface.
+struct Candidate {
+    double gapMm = 0.0;
+    std::int32_t face = -1;
+    std::int32_t sphere = 0; ///< 0: the tip
+    mechanics::FemConstraint row;
+    std::array<double, 3> scopeGradient{};
+    Vec3 normal;
+    Vec3 centreMm; ///< the sphere's centre at the target pose
+};
+
+/// The coupling's stiffness per scope dof (N/m, N m/rad, N m/rad).
+std::array<double, 3> couplingStiffness() {
+    return {kCouplingInsertionNPerMm * 1e3, kCouplingAngularNmmPerRad * 1e-3, kCouplingAngularNmmPerRad * 1e-3};
+}
+
+/// The sample with the scope dofs `q` (SI) in place of the sample's.
+DeviceSample withDofs(DeviceSample s, const std::array<double, 3>& q) {
+    s.insertionMm = q[0] / kMm;
+    s.pitchDeg = q[1] / kDeg;
+    s.yawDeg = q[2] / kDeg;
+    return s;
+}
+
+} // namespace
+
+DeviceSample World::Impl::physicsSample(const DeviceSample& device) const {
+    return scopePlaced ? withDofs(device, scopeDofs) : device;
+}
+
+void World::Impl::physics(const DeviceSample& device, double pressureKpa) {
+    const auto searching = std::chrono::steady_clock::now();
+    const ScopeConfig& config = options.scope;
+    const double radius = 0.5 * config.diameterMm;
+    const std::array<double, 3> wanted = scopeDofsOf(device);
+    if (!scopePlaced) {
+        scopeDofs = wanted;
+        scopePlaced = true;
+    }
+    // The coupling pulls the physics' scope towards the device's pose (the target): the contacts are linearized there,
+    // so a device pushed far into a wall stretches the coupling as far and the contact carries its whole force.
+    const DeviceSample from = withDofs(device, scopeDofs);
+    const ScopePose poseFrom = scopePose(frame, config, from);
+    const std::array<double, 3> target = wanted;
+    // How a point of the shaft `back` mm behind the tip moves with each dof (mm per SI unit), by differences.
+    constexpr double kEpsilon = 1e-6;
+    std::array<ScopePose, 3> nudged;
+    for (std::size_t d = 0; d < 3; ++d) {
+        std::array<double, 3> q = scopeDofs;
+        q[d] += kEpsilon;
+        nudged[d] = scopePose(frame, config, withDofs(device, q));
+    }
+    // Candidates: spheres of the scope's radius along the shaft, from the tip to behind the pivot, against the faces
+    // near each, found where the physics' scope is and linearized towards the target.
     const Bounds box = bounds(contactSurface);
     const Perforation* perforation =
         perforationIndex >= 0 ? &metrics.perforations[static_cast<std::size_t>(perforationIndex)] : nullptr;
-    for (double back = 0.0; back <= insertion + kShaftCheckBehindPivotMm; back += radius) {
-        const Vec3 c = pose.tipMm - pose.shaft * back;
-        if (c.x < box.min.x - radius || c.y < box.min.y - radius || c.z < box.min.z - radius ||
-            c.x > box.max.x + radius || c.y > box.max.y + radius || c.z > box.max.z + radius)
+    const double insertion = dot(poseFrom.tipMm - frame.pivotMm, poseFrom.shaft);
+    std::vector<Candidate> candidates;
+    std::vector<std::int32_t> near;
+    std::int32_t sphere = 0;
+    for (double back = 0.0; back <= insertion + kShaftCheckBehindPivotMm; back += radius, ++sphere) {
+        const Vec3 c = poseFrom.tipMm - poseFrom.shaft * back;
+        const double reach = radius + kContactMarginMm;
+        if (c.x < box.min.x - reach || c.y < box.min.y - reach || c.z < box.min.z - reach || c.x > box.max.x + reach ||
+            c.y > box.max.y + reach || c.z > box.max.z + reach)
             continue;
         // Through a perforation the scope meets no wall beyond the hole.
-        if (perforation && dot(c - perforation->locationMm, pose.shaft) > -2.0 * radius)
+        if (perforation && dot(c - perforation->locationMm, poseFrom.shaft) > -2.0 * radius)
             continue;
         // The cervical canal closes round the sheath (it is dilated to it): the shaft meets the wall only beyond the
-        // internal os, the tip everywhere (docs/simulator.md, "Collision and contact").
+        // internal os, the tip everywhere. (The canal as an obstacle to the shaft needs a canal lining that dilates
+        // in the solver; docs/simulator.md, "What is not modelled yet".)
         if (back > 0.0 && dot(c - landmarks.internalOsMm, frame.axis) < kCanalContactFreeMm)
             continue;
+        std::array<Vec3, 3> dc;
+        for (std::size_t d = 0; d < 3; ++d)
+            dc[d] = (nudged[d].tipMm - nudged[d].shaft * back - c) / kEpsilon;
+        Vec3 centre = c;
+        for (std::size_t d = 0; d < 3; ++d)
+            centre += dc[d] * (target[d] - scopeDofs[d]);
         near.clear();
-        bvh.near(c, radius + kContactMarginMm, near);
+        bvh.near(c, reach, near);
         std::sort(near.begin(), near.end());
         for (const std::int32_t f : near) {
-            detail::ContactPair pair;
-            pair.triangle = f;
-            pair.centre = c * kMm;
-            pair.radius = radius * kMm;
-            pair.tip = back == 0.0;
-            contacts.push_back(pair);
+            const Triangle& tri = (*triangles)[static_cast<std::size_t>(f)];
+            // The held portio is where the device pivots: its canal is the one the sheath was passed through.
+            if (faceHeld[static_cast<std::size_t>(f)])
+                continue;
+            const ClosestPoint cp = closestPointOnTriangle(c, pointsMm[static_cast<std::size_t>(tri[0])],
+                                                           pointsMm[static_cast<std::size_t>(tri[1])],
+                                                           pointsMm[static_cast<std::size_t>(tri[2])]);
+            const Vec3 faceN = faceNormal(f);
+            const double along = dot(c - cp.point, faceN);
+            if (along < -radius || norm2(faceN) == 0.0)
+                continue; // behind this face by more than the radius: the tissue beyond is another face's
+            const double d = std::sqrt(cp.distance2);
+            const Vec3 n = along > 0.0 && d > 1e-9 ? (c - cp.point) / d : faceN;
+            const double gap = (along > 0.0 ? d : along) - radius;
+            if (gap > kContactMarginMm)
+                continue;
+            Candidate k;
+            k.gapMm = gap;
+            k.face = f;
+            k.sphere = sphere;
+            k.normal = n;
+            k.centreMm = centre;
+            for (std::size_t j = 0; j < 3; ++j)
+                k.scopeGradient[j] = dot(n, dc[j]) * kMm;
+            k.row =
+                mechanics::contactRow({tri[0], tri[1], tri[2]}, {cp.wa, cp.wb, cp.wc}, n, (centre - n * radius) * kMm);
+            candidates.push_back(std::move(k));
         }
     }
-    tissue.step(options.stepS, options.solverIterations, forces, contacts, *triangles);
-    tissue.pointsMm(pointsMm);
+    // The nearest, in a fixed order (replays are bit for bit).
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+        return std::tie(a.gapMm, a.sphere, a.face) < std::tie(b.gapMm, b.sphere, b.face);
+    });
+    if (candidates.size() > kMaxContacts)
+        candidates.resize(kMaxContacts);
+    std::vector<mechanics::FemConstraint> rows;
+    rows.reserve(candidates.size());
+    for (const Candidate& k : candidates)
+        rows.push_back(k.row);
+    // The coupling gives way as G K^-1 G^T between the contacts.
+    const std::array<double, 3> stiffness = couplingStiffness();
+    const std::size_t count = rows.size();
+    mechanics::ObstacleCompliance coupling;
+    coupling.matrix.assign(count * count, 0.0);
+    for (std::size_t i = 0; i < count; ++i)
+        for (std::size_t j = 0; j < count; ++j)
+            for (std::size_t d = 0; d < 3; ++d)
+                coupling.matrix[i * count + j] +=
+                    candidates[i].scopeGradient[d] * candidates[j].scopeGradient[d] / stiffness[d];
+
+    std::vector<Vec3> forces;
+    pressureForces(pointsMm, pressureKpa, forces);
+    timings.contactSearchMs +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - searching).count();
+    tissue.step(forces, rows, coupling);
+    timings.tissueForcesMs += tissue.lastTimings().forcesMs;
+    timings.tissueSolvesMs += tissue.lastTimings().solveMs;
+    timings.contactSolveMs += tissue.lastTimings().contactsMs;
+    for (std::size_t i = 0; i < pointsMm.size(); ++i)
+        pointsMm[i] = tissue.positionsM()[i] / kMm;
     bvh.refit(pointsMm);
 
-    // The tissue's force on the scope: the contacts' multipliers over dt^2, along their normals.
-    const double dt2 = options.stepS * options.stepS;
+    // The physics' scope where the contacts hold it: target + K^-1 G^T lambda, its tip moving at most kContactMarginMm
+    // a step: a teleporting script or device cannot carry it through a wall between two contact searches (the
+    // coupling then pulls the device back).
+    const bool aligned = rows.size() == count;
+    std::array<double, 3> held = target;
+    if (aligned)
+        for (std::size_t i = 0; i < count; ++i)
+            for (std::size_t d = 0; d < 3; ++d)
+                held[d] += candidates[i].scopeGradient[d] * rows[i].force / stiffness[d];
+    const double move = distance(scopePose(frame, config, withDofs(device, held)).tipMm, poseFrom.tipMm);
+    const std::array<double, 3> before = scopeDofs;
+    for (std::size_t d = 0; d < 3; ++d)
+        scopeDofs[d] =
+            move > kContactMarginMm ? before[d] + (held[d] - before[d]) * (kContactMarginMm / move) : held[d];
+    state.scope = scopePose(frame, config, withDofs(device, scopeDofs));
+
+    // The local model for the haptics loop: each contact's gap at the end of the step, its gradients, its force.
+    hapticContacts.clear();
+    hapticCompliance.clear();
+    if (aligned) {
+        for (std::size_t i = 0; i < count; ++i) {
+            HapticContact h;
+            double gap = rows[i].offset;
+            for (std::size_t a = 0; a < rows[i].points.size(); ++a)
+                gap += dot(rows[i].gradient[a], tissue.positionsM()[static_cast<std::size_t>(rows[i].points[a])]);
+            for (std::size_t d = 0; d < 3; ++d)
+                gap += candidates[i].scopeGradient[d] * (scopeDofs[d] - target[d]);
+            h.gapM = gap;
+            h.scopeGradient = candidates[i].scopeGradient;
+            h.forceN = rows[i].force;
+            h.normal = candidates[i].normal;
+            h.tip = candidates[i].sphere == 0;
+            hapticContacts.push_back(h);
+        }
+        if (tissue.lastContactCompliance().size() == count * count)
+            hapticCompliance = tissue.lastContactCompliance();
+        else
+            hapticContacts.clear();
+    }
+    std::vector<char> rowTip(count);
+    std::vector<std::int32_t> rowFace(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        rowTip[i] = candidates[i].sphere == 0 ? 1 : 0;
+        rowFace[i] = candidates[i].face;
+    }
+    recordContact(rows, rowTip, rowFace, state.scope);
+}
+
+void World::Impl::recordContact(const std::vector<mechanics::FemConstraint>& rows, const std::vector<char>& rowTip,
+                                const std::vector<std::int32_t>& rowFace, const ScopePose& pose) {
+    const double radius = 0.5 * options.scope.diameterMm;
     Vec3 total{0.0, 0.0, 0.0}, tip{0.0, 0.0, 0.0};
-    double deepest = 0.0;
+    double strongest = 0.0;
     Vec3 where = pose.tipMm;
     bool cavityContact = false;
-    for (const auto& pair : contacts) {
-        if (pair.lambda <= 0.0)
+    std::int32_t tipFace = -1;
+    double tipStrongest = 0.0;
+    const std::size_t count = std::min(rows.size(), rowTip.size());
+    for (std::size_t i = 0; i < count; ++i) {
+        if (rows[i].force <= 0.0)
             continue;
-        const Vec3 f = pair.normal * (pair.lambda / dt2);
-        total = total + f;
-        if (pair.tip)
-            tip = tip + f;
-        if (pair.lambda > deepest) {
-            deepest = pair.lambda;
-            where = pair.centre / kMm;
+        // The tissue's force on the scope: lambda along the contact normal (rows' gradients are -w n).
+        Vec3 normal{};
+        for (const Vec3& g : rows[i].gradient)
+            normal -= g;
+        const Vec3 f = normalized(normal) * rows[i].force;
+        total += f;
+        const auto face = static_cast<std::size_t>(rowFace[i]);
+        if (rowTip[i]) {
+            tip += f;
+            if (rows[i].force > tipStrongest) {
+                tipStrongest = rows[i].force;
+                tipFace = rowFace[i];
+            }
         }
-        cavityContact = cavityContact || faceInCavity[static_cast<std::size_t>(pair.triangle)];
+        if (rows[i].force > strongest) {
+            strongest = rows[i].force;
+            where = faceCentre(rowFace[i]);
+        }
+        cavityContact = cavityContact || faceInCavity[face];
     }
     ContactState& contact = state.contact;
     contact.forceN = norm(total);
     contact.touching = contact.forceN > 1e-4;
     contact.pointMm = where;
-    // Perforation: the wall gives way under the tip.
+    // Perforation: the wall gives way under a sustained push of the tip ...
     tipPushS = norm(tip) > kPerforationForceN ? tipPushS + options.stepS : 0.0;
-    // ... or the tip is through the wall's surface (a face of the cavity lies in front of it, over the tip's centre,
-    // by more than the scope's radius): the wall tore around it.
-    bool through = false;
-    Vec3 throughAt = pose.tipMm;
-    for (const auto& pair : contacts) {
-        if (!pair.tip || !faceInCavity[static_cast<std::size_t>(pair.triangle)])
-            continue;
-        const Triangle& tri = (*triangles)[static_cast<std::size_t>(pair.triangle)];
-        const ClosestPoint closest = closestPointOnTriangle(pose.tipMm, pointsMm[static_cast<std::size_t>(tri[0])],
-                                                            pointsMm[static_cast<std::size_t>(tri[1])],
-                                                            pointsMm[static_cast<std::size_t>(tri[2])]);
-        const Vec3 q = closest.point;
-        const bool over = closest.wa > 0.0 && closest.wb > 0.0 && closest.wc > 0.0;
-        if (over && dot(pose.tipMm - q, faceNormal(pair.triangle)) < -radius) {
-            through = true;
-            throughAt = q;
-        }
-    }
-    // ... or the tip is beyond the uterus as it lies at rest (outside its serosa, past the internal os): it has been
-    // pushed further than the wall is thick.
-    if (!through && dot(pose.tipMm - landmarks.internalOsMm, frame.axis) > 0.0 && !insideRestHull(pose.tipMm))
-        through = true;
-    if (perforationIndex < 0 && (tipPushS >= kPerforationHoldS || through)) {
+    // ... or the tip is beyond the uterus as it lies at rest (outside its serosa, past the internal os).
+    const bool outside = dot(pose.tipMm - landmarks.internalOsMm, frame.axis) > 0.0 && !insideRestHull(pose.tipMm);
+    if (perforationIndex < 0 && (tipPushS >= kPerforationHoldS || outside)) {
         Perforation p;
         p.timeS = state.timeS;
-        p.locationMm = through ? throughAt : pose.tipMm;
+        p.locationMm = tipFace >= 0 ? faceCentre(tipFace) : pose.tipMm;
         p.depthMm = 0.0;
-        std::int32_t region = -1;
-        double best = 1e300;
-        for (const auto& pair : contacts)
-            if (pair.tip && pair.lambda > 0.0 && pair.lambda < best * 1e300) {
-                region = faceRegion[static_cast<std::size_t>(pair.triangle)];
-                best = pair.lambda;
-            }
+        const std::int32_t region = tipFace >= 0 ? faceRegion[static_cast<std::size_t>(tipFace)] : -1;
         for (const auto& r : scene.regions)
             if (r.id == region)
                 p.region = r.name;
+        // Through the canal's wall, before the internal os: a false passage.
+        p.falsePassage = dot(p.locationMm - landmarks.internalOsMm, frame.axis) < 0.0;
         metrics.perforations.push_back(p);
         perforationIndex = static_cast<int>(metrics.perforations.size()) - 1;
     }
@@ -142,9 +295,10 @@ void World::Impl::publishFrame() {
     f->timeS = state.timeS;
     f->pivot = frame;
     f->scope = options.scope;
-    f->triangles = triangles;
-    f->pointsMm = pointsMm;
-    f->contactStiffnessNPerMm = contactStiffnessNPerMm;
+    f->scopeDofs = scopeDofs;
+    f->couplingStiffness = couplingStiffness();
+    f->contacts = hapticContacts;
+    f->compliance = hapticCompliance;
     f->perforated = state.contact.perforated;
     std::lock_guard<std::mutex> lock(frameMutex);
     hapticFrame = std::move(f);

@@ -1,15 +1,16 @@
 #pragma once
 // The World's state, shared by its parts, one file each: World.cpp (loading, the step, what others read),
-// WorldSurface.cpp (the contact surface's faces, zones, ostia and pathologies), WorldTissue.cpp (the tissue, its
-// supports, the cavity's volume and the fluid's load), WorldContact.cpp (the scope's contacts, perforation, the haptics
-// frame), WorldVisibility.cpp (what the optic sees, marking, clearance) and ExplorationScript.cpp.
+// WorldSurface.cpp (the contact surface's faces, zones, ostia and pathologies), WorldTissue.cpp (the tissue solver, its
+// supports and the cavity's volume and load), WorldContact.cpp (the scope's virtual coupling and contacts, perforation,
+// the haptics frame), WorldVisibility.cpp (what the optic sees, marking) and ExplorationScript.cpp.
 
 #include "Bvh.h"
 #include "Fluid.h"
-#include "Tissue.h"
 #include "hs/core/TetEmbedding.h"
+#include "hs/mechanics/CorotationalFem.h"
 #include "hs/sim/World.h"
 
+#include <array>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -41,6 +42,18 @@ constexpr double kLigamentStiffnessNPerM = 3000.0;
 constexpr double kCanalContactFreeMm = 2.0;
 /// The shaft is checked for contact from its tip back to this far behind the pivot, mm.
 constexpr double kShaftCheckBehindPivotMm = 10.0;
+/// Contact candidates are gathered this far beyond the scope's radius, mm; the physics' scope moves at most this far
+/// in a step (300 mm/s, beyond a hand's speed), so no wall is passed between two steps.
+constexpr double kContactMarginMm = 1.5;
+/// The solver's matrix is factored again with the tissue's stiffening every this many steps (1 s).
+constexpr std::uint64_t kRefactorSteps = 200;
+/// At most this many contact rows per step (the nearest), so a scope lying along the canal costs a bounded time.
+constexpr std::size_t kMaxContacts = 48;
+/// The virtual coupling between the device and the physics' scope (Colgate, Stanley & Brown 1995): stiffer than the
+/// tissue under the tip (0.1-0.5 N/mm), so the device feels the tissue, and within what a 1 kHz device renders stably.
+/// N/mm along the shaft; N mm per radian about the pivot (1 N/mm at the tip 60 mm beyond the pivot).
+constexpr double kCouplingInsertionNPerMm = 1.0;
+constexpr double kCouplingAngularNmmPerRad = 3600.0;
 /// The exploration script: the tip's speed inside the cavity, mm/s of its plan (scaled to the duration asked for),
 /// the clearance from the walls it looks for, mm, and how far beside the cavity's axis it looks for it, mm.
 constexpr double kScriptSpeedMmPerS = 10.0;
@@ -50,8 +63,6 @@ constexpr double kMiddleStepMm = 1.0;
 /// The clearance of a point is looked for this far, mm: more than half the wall's thickness, so a point inside the
 /// wall finds the wall's surface and its side.
 constexpr double kClearanceReachMm = 12.0;
-/// Contact candidates are gathered this far beyond the scope's radius, mm (covers one step's motion).
-constexpr double kContactMarginMm = 1.5;
 /// Visibility is updated every kVisibilityPeriodS for a tenth of the faces (all of them every 50 ms), and the
 /// series sampled every kSeriesPeriodS.
 constexpr double kVisibilityPeriodS = 0.005;
@@ -63,10 +74,14 @@ constexpr double kContactGapS = 0.05;
 constexpr double kPathologyReachMm = 3.0;
 /// The fundus zone: cavity faces this close to the fundus point, mm.
 constexpr double kFundusZoneMm = 10.0;
-/// The pressure at which the load is calibrated against the hydrometra curve, kPa (60 mmHg).
-constexpr double kCalibrationPressureKpa = 8.0;
-constexpr double kCalibrationSeconds = 0.4; ///< s of settling per round (the opening settles in about 0.2 s)
-constexpr int kCalibrationRounds = 4;
+/// The pressure at which the exploration script plans its path in the opened cavity, kPa (60 mmHg).
+constexpr double kPlanningPressureKpa = 8.0;
+/// Ostium faces spread wider than this across the cavity are two ostia, mm (the intercornual distance is 41-47 mm;
+/// docs/references.md [FundusMRI]).
+constexpr double kOstiumSeparationMm = 15.0;
+/// The coarse simulation mesh rounds the cornual recess where an ostium opens: the ostium's centre may lie this far
+/// behind the contact surface and still be seen, mm.
+constexpr double kOstiumOcclusionSlackMm = 2.5;
 
 struct Zone {
     std::string name;
@@ -80,12 +95,6 @@ struct Ostium {
     Vec3 normal;     ///< into the cavity, at rest
     int target = -1; ///< index in metrics.targets
 };
-/// Ostium faces spread wider than this across the cavity are two ostia, mm (the intercornual distance is 41-47 mm;
-/// docs/references.md [FundusMRI]).
-constexpr double kOstiumSeparationMm = 15.0;
-/// The coarse simulation mesh rounds the cornual recess where an ostium opens: the ostium's centre may lie this far
-/// behind the contact surface and still be seen, mm.
-constexpr double kOstiumOcclusionSlackMm = 2.5;
 
 Vec3 triangleNormal(const std::vector<Vec3>& pts, const Triangle& t);
 Vec3 triangleCentre(const std::vector<Vec3>& pts, const Triangle& t);
@@ -106,20 +115,28 @@ struct World::Impl {
     std::vector<double> faceArea;   ///< mm^2 at rest
     std::vector<std::int32_t> faceRegion;
     std::vector<int> facePathology; ///< index into scene.clinical.pathologies, -1 none
+    std::vector<char> faceHeld;     ///< a point of the face is held (the portio: the canal the sheath pivots in)
     std::vector<SurfaceSample> faceUnrolled;
     std::vector<detail::Zone> zones;
     std::vector<detail::Ostium> ostia;
     Vec3 cavityAxis, cavityAnterior, cavityLeft;
     double cavityArea = 0.0;
 
-    detail::TissueModel tissue;
+    // The tissue (WorldTissue.cpp).
+    mechanics::CorotationalFem tissue;
     detail::TriangleBvh bvh;
     detail::FluidModel fluid;
-    double pressureGain = 1.0;
     double restCavityMl = 0.0;
-    /// The points as the calibration left them: the cavity opened at the calibration pressure (scripts plan with it).
+    /// The cavity's volume change per kPa over one step of the solver, mL/kPa (the fluid's coupling).
+    double cavityComplianceMlPerKpa = 0.0;
+    /// The points with the cavity opened at the planning pressure by a static solve (scripts plan with them).
     std::vector<Vec3> openPointsMm;
-    double contactStiffnessNPerMm = 0.1;
+
+    // The scope (WorldContact.cpp): the physics' scope's dofs (insertion m, pitch rad, yaw rad), coupled to the device.
+    std::array<double, 3> scopeDofs{};
+    bool scopePlaced = false;
+    std::vector<HapticContact> hapticContacts;
+    std::vector<double> hapticCompliance;
 
     std::vector<Vec3> pointsMm;
     WorldState state;
@@ -140,17 +157,26 @@ struct World::Impl {
     int perforationIndex = -1;
     double tipPushS = 0.0;
     std::size_t visibilityRound = 0;
+    World::StepTimings timings;
 
     mutable std::mutex frameMutex;
     std::shared_ptr<const HapticFrame> hapticFrame;
 
     Status build(Progress& progress);
     void setupSurfaceData();
-    void setupTissue();
-    void calibrateLoad();
-    void pressureForces(double pressureKpa, std::vector<Vec3>& forces) const;
+    [[nodiscard]] Status setupTissue();
+    /// The fluid's pressure `pressureKpa` on the cavity's faces as they lie in `pts` (mm), N per point.
+    void pressureForces(const std::vector<Vec3>& pts, double pressureKpa, std::vector<Vec3>& forces) const;
     double cavityVolumeMl(const std::vector<Vec3>& pts) const;
-    void physics(const ScopePose& pose, double pressureKpa);
+    /// The cavity's one-step compliance (mL/kPa) from the solver's matrix, and the cavity opened at the planning
+    /// pressure by a static solve of the same model.
+    [[nodiscard]] Status measureCavity();
+    /// The points with the cavity opened at `pressureKpa` by a static solve of the tissue model (from rest).
+    [[nodiscard]] Status staticOpen(double pressureKpa, std::vector<Vec3>& pts) const;
+    /// One physics step: the scope coupled to `device`, the pressure on the cavity.
+    void physics(const DeviceSample& device, double pressureKpa);
+    void recordContact(const std::vector<mechanics::FemConstraint>& rows, const std::vector<char>& rowTip,
+                       const std::vector<std::int32_t>& rowFace, const ScopePose& pose);
     /// Whether `point` (on `face`, -1: none) is in the view, in focus, facing the lens and not hidden (a hit within
     /// `slackMm` before it does not hide it).
     bool visible(const Vec3& point, const Vec3& normal, std::int32_t face, double slackMm = 0.5) const;
@@ -163,14 +189,16 @@ struct World::Impl {
     /// when no face is that close.
     double clearanceMm(const std::vector<Vec3>& pts, const detail::TriangleBvh& tree, const Vec3& p,
                        double reachMm) const;
-    /// The least clearance of the scope in `pose` beyond its radius (its tip, and its shaft where it can touch the
-    /// wall: beyond the canal), mm; negative where it would press into the wall.
+    /// The least clearance of the scope in `pose` beyond its radius (its tip, and its shaft beyond the canal), mm;
+    /// negative where it would press into the wall.
     double scopeClearanceMm(const std::vector<Vec3>& pts, const detail::TriangleBvh& tree, const ScopePose& pose) const;
     void updateVisibility();
     void mark();
     void publishFrame();
     Vec3 faceNormal(std::int32_t f) const;
     Vec3 faceCentre(std::int32_t f) const;
+    /// The device sample with the physics' scope's dofs in place of the device's.
+    DeviceSample physicsSample(const DeviceSample& device) const;
 };
 
 } // namespace hs::sim

@@ -1,4 +1,4 @@
-// The contact surface's faces: which face the cavity, the exploration's zones, the ostia, the pathologies.
+// The contact surface's faces: which face the cavity, the zones of the exploration, the ostia, the pathologies.
 #include "WorldImpl.h"
 
 #include <algorithm>

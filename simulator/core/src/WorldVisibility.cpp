@@ -1,5 +1,5 @@
-// What the optic sees (the exploration's surface, the ostia, the pathologies), marking, and the scope's clearance from
-// the walls (the exploration script plans with it).
+// What the optic sees (the exploration's surface, the ostia, the pathologies), marking, and the clearance of the
+// scope from the walls (the exploration script plans with it).
 #include "WorldImpl.h"
 
 #include <algorithm>

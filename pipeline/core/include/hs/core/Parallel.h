@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
+#include <memory>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 namespace hs {
@@ -58,5 +60,49 @@ void parallelChunks(std::size_t n, std::size_t chunk, int threads, Fn&& fn) {
     for (auto& th : pool)
         th.join();
 }
+
+} // namespace hs
+
+namespace hs {
+
+/// Threads kept for a loop run many times a second (a physics step's passes): parallelChunks starts and joins its
+/// threads on every call, which costs tens of microseconds a pass. The team's helpers wait between runs (briefly
+/// spinning, then blocked), and the calling thread takes chunks too. The chunks are the caller's, so the result is
+/// the same bits with any team size. One run at a time; not for use from several threads at once.
+class WorkerTeam {
+public:
+    /// A team of `threads` (the caller included; 1: no helper, every run is serial).
+    explicit WorkerTeam(int threads);
+    ~WorkerTeam();
+    WorkerTeam(const WorkerTeam&) = delete;
+    WorkerTeam& operator=(const WorkerTeam&) = delete;
+
+    int size() const { return static_cast<int>(m_helpers.size()) + 1; }
+
+    /// Calls fn(chunkIndex, begin, end) for every chunk of [0, n); returns when all are done. Exceptions must not
+    /// escape `fn`.
+    template <class Fn>
+    void run(std::size_t n, std::size_t chunk, Fn&& fn) {
+        const std::size_t chunks = chunkCount(n, chunk);
+        if (m_helpers.empty() || chunks <= 1) {
+            for (std::size_t c = 0; c < chunks; ++c)
+                fn(c, c * chunk, std::min(n, (c + 1) * chunk));
+            return;
+        }
+        using F = std::remove_reference_t<Fn>;
+        dispatch(n, chunk, const_cast<void*>(static_cast<const void*>(&fn)),
+                 [](void* f, std::size_t c, std::size_t b, std::size_t e) { (*static_cast<F*>(f))(c, b, e); });
+    }
+
+private:
+    using Call = void (*)(void*, std::size_t, std::size_t, std::size_t);
+    void dispatch(std::size_t n, std::size_t chunk, void* fn, Call call);
+    void helper();
+    void work();
+
+    struct Shared;
+    std::unique_ptr<Shared> m_shared;
+    std::vector<std::thread> m_helpers;
+};
 
 } // namespace hs

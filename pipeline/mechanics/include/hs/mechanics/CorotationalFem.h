@@ -13,6 +13,7 @@
 //
 // SI units inside (m, kg, s, Pa, N). Deterministic: the same inputs give the same state, bit for bit.
 
+#include "hs/core/Parallel.h"
 #include "hs/core/Result.h"
 #include "hs/core/TetMesh.h"
 #include "hs/core/Vec3.h"
@@ -211,6 +212,7 @@ private:
 
     struct Factor;
     std::unique_ptr<Factor> m_factor;
+    std::unique_ptr<WorkerTeam> m_team; ///< the force evaluation's threads (settings.threads, kept between steps)
     FemSettings m_settings;
     std::vector<Vec3> m_rest, m_x, m_v, m_target, m_xStart, m_force, m_reaction;
     std::vector<std::array<bool, 3>> m_fixed;

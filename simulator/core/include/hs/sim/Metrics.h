@@ -30,6 +30,7 @@ struct Perforation {
     Vec3 locationMm;      ///< where the tip went through the wall (scene frame)
     double depthMm = 0.0; ///< mm, the deepest the tip went beyond the wall's surface
     std::string region;   ///< the region the tip went through ("myometrium", "myoma-1", ...)
+    bool falsePassage = false; ///< through the cervical canal's wall (before the internal os), not the corpus'
 };
 
 struct PathologyFinding {

@@ -34,7 +34,7 @@ struct WorldOptions {
     Exercise exercise = Exercise::Exploration;
     std::uint64_t seed = 1;
     double stepS = 0.005;     ///< s, the fixed physics step (200 Hz); 0.001-0.02, a whole number of device ticks
-    int solverIterations = 2; ///< XPBD substeps per step, one solver sweep each (small steps), 1-50
+    int solverIterations = 1; ///< the tissue solver's iterations per step, 1-50 (docs/simulator.md: the study)
 };
 /// InvalidInput naming the field and its range.
 [[nodiscard]] Status checkWorldOptions(const WorldOptions& options);
@@ -137,6 +137,23 @@ public:
         std::size_t invertedTets = 0;
     };
     Health health() const;
+
+    /// The cavity's opening (mL over rest) at `pressureKpa` (0-40) by a static solve of the same tissue model the
+    /// steps run (from rest, no scope): the steady state the simulation's distension must reach. Takes about a second.
+    [[nodiscard]] Result<double> staticCavityOpeningMl(double pressureKpa) const;
+
+    /// Where the physics steps' wall-clock time went since load, ms summed over steps (the benchmark's breakdown; never
+    /// read by the physics, so it does not touch replays).
+    struct StepTimings {
+        std::uint64_t steps = 0;
+        double totalMs = 0.0;
+        double tissueForcesMs = 0.0;  ///< the solver's corotated forces
+        double tissueSolvesMs = 0.0;  ///< the solver's factor solves
+        double contactSolveMs = 0.0;  ///< the contacts' compliance and complementarity problem
+        double contactSearchMs = 0.0; ///< the scope's contact candidates
+        double visibilityMs = 0.0;    ///< what the optic sees, marking
+    };
+    const StepTimings& stepTimings() const;
 
 private:
     friend Script explorationScript(const World& world, double durationS);

@@ -1,10 +1,11 @@
 #pragma once
-/// The haptics loop's local force model: a god-object (proxy) for the scope's tip against the newest HapticFrame
-/// (Zilles & Salisbury 1995, "A constraint-based god-object method for haptic display"; Ruspini et al. 1997 for the
-/// sphere-shaped proxy). The proxy is a sphere of the scope's radius that follows the device's tip but never passes
-/// through the surface: it moves towards the tip until it meets the surface offset by the radius, then slides along
-/// it. The force is a spring from the tip to the proxy (the frame's contact stiffness) with a little damping along
-/// the contact normal, plus a pivot spring against pitch and yaw. No wall force once the frame says perforated.
+/// The haptics loop's local force model: the last physics step's contact problem re-solved at 1 kHz with the
+/// device's new pose (sim::solveHapticContacts on the newest HapticFrame), as SOFA's LCPForceFeedback does (Saupin,
+/// Duriez & Cotin 2008). The device gets the virtual coupling's force (Colgate, Stanley & Brown 1995): the tissue's
+/// reaction with the solver's own compliance, so force is continuous between physics steps and at rest equals the
+/// force the solver computed. A little damping along the generalized velocity while in contact keeps the loop passive
+/// (Colgate & Schenkel, "Passivity of a class of sampled-data systems", 1997). No wall force once the frame says
+/// perforated; a malformed frame gives no force.
 ///
 /// Not thread-safe: one model per haptics loop. No allocation per tick once warmed up.
 
@@ -13,23 +14,22 @@
 #include "hs/sim/Device.h"
 #include "hs/sim/HapticFrame.h"
 
-#include <cstdint>
+#include <array>
+#include <cstddef>
 #include <vector>
 
 namespace hs::haptics {
 
 struct ContactParams {
-    double dampingNsPerMm = 0.001; ///< N*s/mm along the contact normal (1 N at 1 m/s into the wall)
-    double velocityFilter = 0.2;   ///< 0..1, weight of the newest tip velocity in its low-pass estimate
-    double searchMarginMm = 2.0;   ///< mm, triangles this far beyond the proxy's path are candidates
-    int maxConstraints = 3;        ///< surface planes the proxy slides along at once (3: a corner)
+    double dampingNsPerMm = 0.001; ///< N*s/mm along the shaft while in contact (and N*mm*s/rad per mm^2 of lever)
+    double velocityFilter = 0.2;   ///< 0..1, weight of the newest dof velocity in its low-pass estimate
 };
 
 struct ContactState {
     bool touching = false;
-    double depthMm = 0.0; ///< mm, tip to proxy
-    Vec3 proxyMm;
-    std::size_t candidates = 0; ///< triangles examined closely this tick
+    std::size_t contacts = 0;      ///< the frame's contacts
+    std::size_t pressing = 0;      ///< of them, those with a force this tick
+    double largestForceN = 0.0;    ///< the largest contact force this tick
 };
 
 class ContactModel {
@@ -38,27 +38,17 @@ public:
     /// The force for `sample` against `frame`; `dtS` the time since the previous update (for the velocity).
     /// The command is enabled with every value finite (not yet clamped to a device).
     ForceCommand update(const sim::HapticFrame& frame, const sim::DeviceSample& sample, double dtS);
-    /// Forgets the proxy (the next update starts it at the tip).
+    /// Forgets the velocity estimate.
     void reset();
     const ContactState& state() const { return m_state; }
 
 private:
-    struct Plane {
-        Vec3 normal;
-        double offset = 0.0; ///< the proxy's centre stays where dot(normal, x) >= offset
-    };
-    void gatherCandidates(const sim::HapticFrame& frame, const Vec3& from, const Vec3& to, double radius);
-    Vec3 pushOut(const sim::HapticFrame& frame, Vec3 p, double radius) const;
-    Vec3 slide(const sim::HapticFrame& frame, Vec3 p, const Vec3& goal, double radius);
-
     ContactParams m_params;
     ContactState m_state;
-    bool m_hasProxy = false;
-    Vec3 m_proxy;
-    Vec3 m_previousTip;
-    Vec3 m_velocity; ///< mm/s, filtered
-    std::vector<std::int32_t> m_candidates;
-    std::vector<Plane> m_planes;
+    bool m_hasPrevious = false;
+    std::array<double, 3> m_previous{};
+    std::array<double, 3> m_velocity{};
+    std::vector<double> m_forces;
 };
 
 } // namespace hs::haptics
