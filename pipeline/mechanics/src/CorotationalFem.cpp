@@ -595,9 +595,17 @@ void CorotationalFem::solveContacts(std::vector<FemConstraint>& rows, const Obst
             w[i] += std::isfinite(obstacle.matrix[i]) ? obstacle.matrix[i] : 0.0;
     for (std::size_t i = 0; i < k; ++i)
         w[i * k + i] += std::max(0.0, rows[i].selfCompliance);
-    // Projected Gauss-Seidel on gap + W lambda >= 0, lambda >= 0, complementary (Duriez et al. 2006).
     lambda.assign(k, 0.0);
-    for (int sweep = 0; sweep < m_settings.contactSweeps; ++sweep) {
+    solveComplementarity(w, gap, m_settings.maxConstraintForce, m_settings.contactSweeps, lambda);
+    m_timings.contactsMs += msSince(started);
+}
+
+void solveComplementarity(const std::vector<double>& w, const std::vector<double>& gap, double maxForce, int sweeps,
+                          std::vector<double>& lambda) {
+    const std::size_t k = gap.size();
+    if (w.size() != k * k || lambda.size() != k)
+        return;
+    for (int sweep = 0; sweep < sweeps; ++sweep) {
         double change = 0.0, largest = 0.0;
         for (std::size_t i = 0; i < k; ++i) {
             if (!(w[i * k + i] > 0.0))
@@ -605,7 +613,7 @@ void CorotationalFem::solveContacts(std::vector<FemConstraint>& rows, const Obst
             double g = gap[i];
             for (std::size_t j = 0; j < k; ++j)
                 g += w[i * k + j] * lambda[j];
-            const double next = std::clamp(lambda[i] - g / w[i * k + i], 0.0, m_settings.maxConstraintForce);
+            const double next = std::clamp(lambda[i] - g / w[i * k + i], 0.0, maxForce);
             change = std::max(change, std::abs(next - lambda[i]) * std::sqrt(w[i * k + i]));
             largest = std::max(largest, std::abs(next) * std::sqrt(w[i * k + i]));
             lambda[i] = next;
@@ -613,7 +621,6 @@ void CorotationalFem::solveContacts(std::vector<FemConstraint>& rows, const Obst
         if (change <= 1e-10 * largest)
             break;
     }
-    m_timings.contactsMs += msSince(started);
 }
 
 void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector<FemConstraint>& contacts,

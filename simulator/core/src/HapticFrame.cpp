@@ -1,10 +1,17 @@
 // The haptics' local contact model (HapticFrame.h).
 #include "hs/sim/HapticFrame.h"
 
+#include "hs/mechanics/CorotationalFem.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace hs::sim {
+
+namespace {
+/// Sweeps of the 1 kHz re-solve: it starts from the last step's forces, a few contacts, within a millisecond.
+constexpr int kHapticSweeps = 40;
+} // namespace
 
 bool solveHapticContacts(const HapticFrame& frame, const std::array<double, 3>& device, std::vector<double>& forcesN,
                          std::array<double, 3>& generalizedForce) {
@@ -40,22 +47,7 @@ bool solveHapticContacts(const HapticFrame& frame, const std::array<double, 3>& 
     for (const double v : w)
         if (!std::isfinite(v))
             return false;
-    for (int sweep = 0; sweep < 40; ++sweep) {
-        double change = 0.0, largest = 0.0;
-        for (std::size_t i = 0; i < k; ++i) {
-            if (!(w[i * k + i] > 0.0))
-                continue;
-            double g = free[i];
-            for (std::size_t j = 0; j < k; ++j)
-                g += w[i * k + j] * forcesN[j];
-            const double next = std::max(0.0, forcesN[i] - g / w[i * k + i]);
-            change = std::max(change, std::abs(next - forcesN[i]));
-            largest = std::max(largest, next);
-            forcesN[i] = next;
-        }
-        if (change <= 1e-9 * largest)
-            break;
-    }
+    mechanics::solveComplementarity(w, free, 1e300, kHapticSweeps, forcesN);
     for (std::size_t i = 0; i < k; ++i)
         for (std::size_t d = 0; d < 3; ++d)
             generalizedForce[d] += frame.contacts[i].scopeGradient[d] * forcesN[i];

@@ -94,6 +94,12 @@ struct FemConstraint {
     double force = 0.0; ///< out: lambda after the step
 };
 
+/// The complementarity problem of k contact rows: gap + W lambda >= 0, 0 <= lambda <= maxForce, complementary,
+/// by projected Gauss-Seidel (Duriez et al. 2006) from the `lambda` given, at most `sweeps` sweeps (W k x k,
+/// row-major; rows with no positive diagonal are left as they are). Allocates nothing (the haptics loop calls it).
+void solveComplementarity(const std::vector<double>& w, const std::vector<double>& gap, double maxForce, int sweeps,
+                          std::vector<double>& lambda);
+
 /// A point of the tissue (sum of weights[k] x[points[k]]) kept behind the plane through `planePointM` with the unit
 /// `normal` pointing away from the tissue: C = dot(normal, planePoint - point), the gap, in m; lambda in N.
 FemConstraint contactRow(const std::array<std::int32_t, 3>& points, const std::array<double, 3>& weights,
