@@ -13,6 +13,15 @@ namespace {
 /// The entry is looked for within this angle of the canal's axis, in steps of kEntryStepDeg.
 constexpr double kEntrySearchDeg = 15.0;
 constexpr double kEntryStepDeg = 1.0;
+/// A press: the tip stands this far off the face before it (mm), moves in at this speed (mm/s), and a face of the
+/// wall keeps this far from every pathology's faces (mm).
+constexpr double kPressStandOffMm = 3.0;
+constexpr double kPressSpeedMmPerS = 2.0;
+constexpr double kPressPathologyClearanceMm = 10.0;
+/// ... the scope, its tip standing off, keeps this far from every wall (mm), so only the tip presses, and the face
+/// is met at most this obliquely (degrees between the shaft and its normal).
+constexpr double kPressClearanceMm = 1.0;
+constexpr double kPressMostObliqueDeg = 60.0;
 
 /// The device sample that puts the tip at `tip` and turns the optic so it looks as nearly as possible at `target`.
 DeviceSample aimAt(const World& world, const Vec3& tip, const Vec3& target) {
@@ -31,6 +40,55 @@ DeviceSample aimAt(const World& world, const Vec3& tip, const Vec3& target) {
         }
     }
     return best;
+}
+
+} // namespace
+
+// The canal curves a little and the internal os lies off its middle: the clearest straight line is the line of least
+// resistance a hysteroscopist looks for.
+DeviceSample World::Impl::canalEntry(const TriangleBvh& open) const {
+    const World::Impl& w = *this;
+    const double canalMm = distance(w.landmarks.externalOsMm, w.landmarks.internalOsMm);
+    DeviceSample outside;
+    outside.insertionMm = -5.0;
+    double best = -1e300;
+    for (double pitch = -kEntrySearchDeg; pitch <= kEntrySearchDeg + 1e-9; pitch += kEntryStepDeg)
+        for (double yaw = -kEntrySearchDeg; yaw <= kEntrySearchDeg + 1e-9; yaw += kEntryStepDeg) {
+            DeviceSample s;
+            s.pitchDeg = pitch;
+            s.yawDeg = yaw;
+            s.insertionMm = canalMm + 2.0;
+            const ScopePose pose = scopePose(w.frame, w.options.scope, s);
+            double least = 1e300;
+            for (double back = 0.0; back <= canalMm + 2.0; back += 1.0)
+                least = std::min(
+                    least, w.clearanceMm(w.openPointsMm, open, pose.tipMm - pose.shaft * back, kClearanceReachMm));
+            const double score = least - 1e-3 * std::hypot(pitch, yaw); // the axis wins a tie
+            if (score > best + 1e-12) {
+                best = score;
+                outside.pitchDeg = pitch;
+                outside.yawDeg = yaw;
+            }
+        }
+    return outside;
+}
+
+namespace {
+
+/// Key frames on a plan's clock, scaled to `durationS` (0: as planned), times strictly increasing.
+Script toScript(const std::vector<std::pair<double, DeviceSample>>& plan, double durationS) {
+    const double end = plan.empty() ? 0.0 : plan.back().first;
+    const double scale = durationS > 0.0 && end > 0.0 ? durationS / end : 1.0;
+    Script script;
+    for (const auto& [time, sample] : plan) {
+        KeyFrame k;
+        k.timeS = time * scale;
+        k.sample = clamped(sample);
+        if (!script.keyframes.empty() && k.timeS <= script.keyframes.back().timeS)
+            k.timeS = script.keyframes.back().timeS + 0.001;
+        script.keyframes.push_back(k);
+    }
+    return script;
 }
 
 } // namespace
@@ -79,31 +137,8 @@ Script explorationScript(const World& world, double durationS) {
         s.outflow = 0.3;
         plan.emplace_back(t, s);
     };
-    // In through the canal along the straight line from the external os that keeps farthest from its walls (the
-    // canal curves a little, and the os and the internal os lie off its middle): the line of least resistance a
-    // hysteroscopist looks for.
     const double canalMm = distance(lm.externalOsMm, lm.internalOsMm);
-    DeviceSample outside;
-    outside.insertionMm = -5.0;
-    double bestCanal = -1e300;
-    for (double pitch = -kEntrySearchDeg; pitch <= kEntrySearchDeg + 1e-9; pitch += kEntryStepDeg)
-        for (double yaw = -kEntrySearchDeg; yaw <= kEntrySearchDeg + 1e-9; yaw += kEntryStepDeg) {
-            DeviceSample s;
-            s.pitchDeg = pitch;
-            s.yawDeg = yaw;
-            s.insertionMm = canalMm + 2.0;
-            const ScopePose pose = scopePose(w.frame, scope, s);
-            double least = 1e300;
-            for (double back = 0.0; back <= canalMm + 2.0; back += 1.0)
-                least = std::min(
-                    least, w.clearanceMm(w.openPointsMm, open, pose.tipMm - pose.shaft * back, kClearanceReachMm));
-            const double score = least - 1e-3 * std::hypot(pitch, yaw); // the axis wins a tie
-            if (score > bestCanal + 1e-12) {
-                bestCanal = score;
-                outside.pitchDeg = pitch;
-                outside.yawDeg = yaw;
-            }
-        }
+    DeviceSample outside = w.canalEntry(open);
     DeviceSample inOs = outside;
     inOs.insertionMm = canalMm + 2.0;
     const Vec3 inOsTip = scopePose(w.frame, scope, inOs).tipMm;
@@ -207,17 +242,105 @@ Script explorationScript(const World& world, double durationS) {
     go(sampleAiming(w.frame, middle[1]), 0.5);
     add(std::max(0.3, distance(tipNow, inOsTip) / kScriptSpeedMmPerS), inOs);
     add(3.0, outside);
-    const double scale = durationS > 0.0 ? durationS / t : 1.0;
-    Script script;
-    for (const auto& [time, sample] : plan) {
-        KeyFrame k;
-        k.timeS = time * scale;
-        k.sample = clamped(sample);
-        if (!script.keyframes.empty() && k.timeS <= script.keyframes.back().timeS)
-            k.timeS = script.keyframes.back().timeS + 0.001;
-        script.keyframes.push_back(k);
+    return toScript(plan, durationS);
+}
+
+Result<PressPlan> pressScript(const World& world, int pathology, double depthMm, double holdS) {
+    const World::Impl& w = *world.impl_;
+    if (pathology < -1 || pathology >= static_cast<int>(w.metrics.pathologies.size()))
+        return fail(ErrorCode::InvalidInput, "press: pathology " + std::to_string(pathology) + " is not one of the " +
+                                                 std::to_string(w.metrics.pathologies.size()) + " of the scene");
+    if (!std::isfinite(depthMm) || depthMm < 0.0 || depthMm > 10.0 || !std::isfinite(holdS) || holdS < 0.0 ||
+        holdS > 60.0)
+        return fail(ErrorCode::InvalidInput, "press: the depth must be 0-10 mm and the hold 0-60 s");
+    const ScopeConfig& scope = w.options.scope;
+    const double radius = 0.5 * scope.diameterMm;
+    detail::TriangleBvh open;
+    open.build(*w.triangles, w.openPointsMm);
+    // The face met most nearly head-on by a shaft from the pivot, with the whole scope clear of the walls when its tip
+    // stands kPressStandOffMm off it; the wall's faces keep kPressPathologyClearanceMm from every pathology's.
+    std::vector<Vec3> pathologyCentres;
+    for (std::size_t f = 0; f < w.facePathology.size(); ++f)
+        if (w.facePathology[f] >= 0)
+            pathologyCentres.push_back(triangleCentre(w.openPointsMm, (*w.triangles)[f]));
+    // A pathology's own faces (its region's, not the wall's round it that lie near it).
+    std::int32_t ownRegion = -1;
+    if (pathology >= 0)
+        for (const auto& r : w.scene.regions)
+            if (r.pathologyId == w.metrics.pathologies[static_cast<std::size_t>(pathology)].id)
+                ownRegion = r.id;
+    double best = std::cos(kPressMostObliqueDeg * kDeg);
+    std::int32_t chosen = -1;
+    for (std::size_t f = 0; f < w.triangles->size(); ++f) {
+        if (!w.faceInCavity[f] || w.facePathology[f] != pathology)
+            continue;
+        if (pathology >= 0 && w.faceRegion[f] != ownRegion)
+            continue;
+        const Triangle& t = (*w.triangles)[f];
+        const Vec3 c = triangleCentre(w.openPointsMm, t);
+        if (pathology < 0) {
+            bool apart = true;
+            for (const Vec3& p : pathologyCentres)
+                apart = apart && distance(p, c) >= kPressPathologyClearanceMm;
+            if (!apart)
+                continue;
+        }
+        const Vec3 n = normalized(triangleNormal(w.openPointsMm, t));
+        const Vec3 d = normalized(c - w.frame.pivotMm);
+        const double alignment = -dot(d, n);
+        if (alignment <= best)
+            continue;
+        const ScopePose pose = scopePose(w.frame, scope, sampleAiming(w.frame, c - d * (radius + kPressStandOffMm)));
+        if (w.scopeClearanceMm(w.openPointsMm, open, pose) < kPressClearanceMm)
+            continue;
+        best = alignment;
+        chosen = static_cast<std::int32_t>(f);
     }
-    return script;
+    if (chosen < 0)
+        return fail(ErrorCode::InvalidInput,
+                    std::string("press: no face of ") +
+                        (pathology < 0 ? "the cavity's wall"
+                                       : "pathology " + w.metrics.pathologies[static_cast<std::size_t>(pathology)].id) +
+                        " can be reached head-on with the scope clear of the walls");
+    PressPlan plan;
+    const Triangle& t = (*w.triangles)[static_cast<std::size_t>(chosen)];
+    plan.surfaceMm = triangleCentre(w.openPointsMm, t);
+    plan.normal = normalized(triangleNormal(w.openPointsMm, t));
+    plan.alignment = best;
+    const std::int32_t region = w.faceRegion[static_cast<std::size_t>(chosen)];
+    for (const auto& r : w.scene.regions)
+        if (r.id == region)
+            plan.region = r.name;
+    for (const auto& m : w.scene.materials)
+        if (m.regionId == region)
+            plan.youngsModulusKpa = m.material.youngsModulusKpa;
+    const Vec3 d = normalized(plan.surfaceMm - w.frame.pivotMm);
+    std::vector<std::pair<double, DeviceSample>> keys;
+    double time = 0.0;
+    const auto add = [&keys, &time](double afterS, DeviceSample s) {
+        time += afterS;
+        s.inflow = 1.0;
+        s.outflow = 0.3;
+        keys.emplace_back(time, s);
+    };
+    const double canalMm = distance(w.landmarks.externalOsMm, w.landmarks.internalOsMm);
+    const DeviceSample outside = w.canalEntry(open);
+    DeviceSample inOs = outside;
+    inOs.insertionMm = canalMm + 2.0;
+    const DeviceSample standOff = sampleAiming(w.frame, plan.surfaceMm - d * (radius + kPressStandOffMm));
+    const DeviceSample pressed = sampleAiming(w.frame, plan.surfaceMm - d * (radius - depthMm));
+    add(0.0, outside);
+    add(2.0, outside);
+    add(4.0, inOs);
+    add(std::max(0.5, distance(scopePose(w.frame, scope, inOs).tipMm, scopePose(w.frame, scope, standOff).tipMm) /
+                          kScriptSpeedMmPerS),
+        standOff);
+    add(1.0, standOff);
+    add(std::max(0.5, (kPressStandOffMm + depthMm) / kPressSpeedMmPerS), pressed);
+    plan.holdFromS = time;
+    add(holdS, pressed);
+    plan.script = toScript(keys, 0.0);
+    return plan;
 }
 
 } // namespace hs::sim

@@ -246,6 +246,7 @@ void World::Impl::recordContact(const std::vector<mechanics::FemConstraint>& row
     }
     ContactState& contact = state.contact;
     contact.forceN = norm(total);
+    contact.tipForceN = norm(tip);
     contact.touching = contact.forceN > 1e-4;
     contact.pointMm = where;
     // Perforation: the wall gives way under a sustained push of the tip ...

@@ -197,6 +197,9 @@ struct World::Impl {
     void publishFrame();
     Vec3 faceNormal(std::int32_t f) const;
     Vec3 faceCentre(std::int32_t f) const;
+    /// The device outside the external os (insertion -5 mm), aimed along the straight line from the external os that
+    /// keeps farthest from the canal's walls in the cavity opened by the fluid (`open`: the tree of openPointsMm).
+    DeviceSample canalEntry(const detail::TriangleBvh& open) const;
     /// The device sample with the physics' scope's dofs in place of the device's.
     DeviceSample physicsSample(const DeviceSample& device) const;
 };

@@ -58,7 +58,8 @@ struct FluidState {
 struct ContactState {
     bool touching = false;   ///< the scope touches the tissue this step
     double forceN = 0.0;     ///< N, the tissue's force on the scope
-    Vec3 pointMm;            ///< where (the deepest contact)
+    double tipForceN = 0.0;  ///< N, of it the force on the tip
+    Vec3 pointMm;            ///< where (the strongest contact)
     bool perforated = false; ///< the tip is beyond the wall
 };
 
@@ -157,6 +158,7 @@ public:
 
 private:
     friend Script explorationScript(const World& world, double durationS);
+    friend Result<struct PressPlan> pressScript(const World& world, int pathology, double depthMm, double holdS);
     World();
     struct Impl;
     std::unique_ptr<Impl> impl_;
@@ -180,5 +182,23 @@ std::string_view physicsEngine();
 /// A scripted exploration of `world`'s scene: in through the canal with the inflow open, then the fundus, each ostium
 /// and each wall in turn, and out (tests, demonstrations, the benchmark). `durationS` stretches it.
 Script explorationScript(const World& world, double durationS = 60.0);
+
+/// A scripted press (the check that the device feels the tissue): in through the canal with the inflow open, the tip
+/// brought head-on to a face of the cavity as the fluid opens it (60 mmHg), then the device pushed `depthMm` beyond
+/// that surface and held there.
+struct PressPlan {
+    Script script;
+    Vec3 surfaceMm;         ///< the face's centre in the opened cavity
+    Vec3 normal;            ///< its normal, into the cavity
+    double alignment = 0.0; ///< cos of the angle between the shaft and the face's normal (1: head-on)
+    std::string region;     ///< the region the face bounds
+    double youngsModulusKpa = 0.0;
+    double holdFromS = 0.0; ///< the device is at depth from here to the script's end
+};
+/// `pathology`: an index into metrics().pathologies (a face of that pathology), or -1 (a face of the cavity's wall
+/// away from every pathology; a pathology's own faces). InvalidInput when no such face can be reached within 60
+/// degrees of head-on with the scope 1 mm clear of the walls.
+[[nodiscard]] Result<PressPlan> pressScript(const World& world, int pathology, double depthMm = 3.0,
+                                            double holdS = 2.0);
 
 } // namespace hs::sim
