@@ -1,8 +1,11 @@
 #include "hs/generate/Generate.h"
 
 #include "hs/anatomy/ShapeModel.h"
+#include "hs/core/Units.h"
 #include "hs/generate/Simulation.h"
+#include "hs/mechanics/UterusModel.h"
 #include "hs/meshing/BaselineMeshers.h"
+#include "hs/scene/Hydrometra.h"
 #include "hs/texture/Bake.h"
 
 #include <algorithm>
@@ -112,6 +115,18 @@ Status runScene(Generated& g, const GenerateParams& params, Progress& progress) 
     if (!sim)
         return sim.failure();
     s->simulation = std::move(sim).value();
+    HS_TRY(progress.check("scene"));
+    // The hydrometra curve of the scene's own tissue model (the simulator's distension reaches it).
+    mechanics::UterusModel model;
+    HS_TRY(mechanics::buildUterusModel(*s, mechanics::FemSettings{}, model));
+    std::vector<double> pressures;
+    for (const double mmHg : scene::kHydrometraCurveMmHg)
+        pressures.push_back(mmHg * units::kKpaPerMmHg);
+    auto curve = mechanics::hydrometraCurve(model, pressures);
+    if (!curve)
+        return fail(curve.error().code, "hydrometra curve: " + curve.error().detail);
+    for (std::size_t i = 0; i < pressures.size(); ++i)
+        s->hydrometra.modelCurve.push_back({pressures[i], (*curve)[i]});
     HS_TRY(scene::checkScene(*s));
     g.scene = std::move(s).value();
     return {};

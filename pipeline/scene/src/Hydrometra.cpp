@@ -31,4 +31,20 @@ Result<Hydrometra> computeHydrometra(double uterineVolumeMl, double pressureKpa)
     return h;
 }
 
+double modelOpeningMl(const Hydrometra& hydrometra, double pressureKpa) {
+    const auto& c = hydrometra.modelCurve;
+    if (c.empty())
+        return 0.0;
+    if (c.size() == 1)
+        return c.front().pressureKpa > 0.0 ? c.front().cavityOpeningMl * pressureKpa / c.front().pressureKpa : 0.0;
+    std::size_t i = 1;
+    while (i + 1 < c.size() && c[i].pressureKpa < pressureKpa)
+        ++i;
+    const HydrometraPoint& a = c[i - 1];
+    const HydrometraPoint& b = c[i];
+    const double span = b.pressureKpa - a.pressureKpa;
+    return span > 0.0 ? a.cavityOpeningMl + (b.cavityOpeningMl - a.cavityOpeningMl) * (pressureKpa - a.pressureKpa) / span
+                      : a.cavityOpeningMl;
+}
+
 } // namespace hs::scene

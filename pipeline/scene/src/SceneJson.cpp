@@ -5,6 +5,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
+#include <string>
+
 namespace hs::scene::detail {
 
 namespace {
@@ -261,6 +264,14 @@ std::string sceneJson(const Scene& scene) {
                               {"extrapolated", scene.hydrometra.extrapolated},
                               {"source", "Bajka et al., Surg Endosc 2009: y = 0.00037 x^2 + 0.036 x at 20 kPa, "
                                          "linear in pressure below"}};
+    if (!scene.hydrometra.modelCurve.empty()) {
+        ordered curve = ordered::array();
+        for (const auto& p : scene.hydrometra.modelCurve)
+            curve.push_back(ordered{{"pressureKpa", p.pressureKpa}, {"cavityOpeningMl", p.cavityOpeningMl}});
+        j["hydrometra"]["modelCurve"] = curve;
+        j["hydrometra"]["modelSource"] = "static solve of the scene's tissue model (corotational FEM on the simulation "
+                                         "mesh), the cavity's opening over rest";
+    }
     const auto& o = scene.clinical.organ;
     ordered pathologies = ordered::array();
     for (const auto& p : scene.clinical.pathologies)
@@ -338,6 +349,23 @@ Status parseSceneJson(std::string_view text, const std::string& name, Scene& sce
         scene.hydrometra.uterineVolumeMl = r.number(*h, "uterineVolumeMl", "/hydrometra");
         scene.hydrometra.cavityVolumeMl = r.number(*h, "cavityVolumeMl", "/hydrometra");
         scene.hydrometra.extrapolated = r.boolean(*h, "extrapolated", "/hydrometra");
+        if (h->is_object() && h->contains("modelCurve"))
+            if (const json* curve = r.array(*h, "modelCurve", "/hydrometra")) {
+                double last = -1.0;
+                for (std::size_t i = 0; i < curve->size() && r.error.empty(); ++i) {
+                    const std::string path = "/hydrometra/modelCurve/" + std::to_string(i);
+                    HydrometraPoint p;
+                    p.pressureKpa = r.number((*curve)[i], "pressureKpa", path);
+                    p.cavityOpeningMl = r.number((*curve)[i], "cavityOpeningMl", path);
+                    if (r.error.empty() && (!std::isfinite(p.pressureKpa) || p.pressureKpa <= last ||
+                                            p.pressureKpa > 40.0 || !std::isfinite(p.cavityOpeningMl) ||
+                                            std::abs(p.cavityOpeningMl) > 1000.0))
+                        r.error = name + ": " + path +
+                                  " must have pressureKpa ascending in 0-40 and cavityOpeningMl in -1000..1000";
+                    last = p.pressureKpa;
+                    scene.hydrometra.modelCurve.push_back(p);
+                }
+            }
     }
     readClinical(r, j, scene);
     if (const json* tools = r.member(j, "toolVersions", "")) {

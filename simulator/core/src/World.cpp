@@ -40,8 +40,8 @@ Status World::Impl::build(Progress& progress) {
     frame = *f;
     simRest = scene.simulation->tets;
     HS_TRY(progress.check("world"));
-    setupSurfaceData();
     HS_TRY(setupTissue());
+    setupSurfaceData();
     pointsMm = simRest.points;
     bvh.build(*triangles, pointsMm);
     fluid.reset(options.fluid);
@@ -130,7 +130,7 @@ Status World::step(const DeviceSample* samples, std::size_t count) {
     w.state.sample = last;
     // The fluid's pressure for this step from the cavity as the tissue lies (two-way coupling), then the tissue and
     // the scope under it; state.scope is then the physics' scope, held off the wall by the tissue.
-    const double cavityMl = w.cavityVolumeMl(w.pointsMm) - w.restCavityMl;
+    const double cavityMl = w.uterus.cavityVolumeMl(w.pointsMm) - w.uterus.restCavityMl;
     const double pressureKpa =
         w.fluid.step(dt, last.inflow, last.outflow, cavityMl, w.cavityComplianceMlPerKpa, w.state.contact.forceN);
     w.state.fluid = w.fluid.state();
@@ -143,7 +143,7 @@ Status World::step(const DeviceSample* samples, std::size_t count) {
     if (hit >= 0 && !w.state.contact.perforated)
         w.state.fluid.redOut = std::max(w.state.fluid.redOut, 1.0 - t);
     w.state.inCavity = dot(w.state.scope.tipMm - w.landmarks.internalOsMm, w.frame.axis) > 0.0;
-    w.state.cavityOpeningMl = w.cavityVolumeMl(w.pointsMm) - w.restCavityMl;
+    w.state.cavityOpeningMl = w.uterus.cavityVolumeMl(w.pointsMm) - w.uterus.restCavityMl;
     w.state.horizonErrorDeg = horizonErrorDeg(w.frame, w.state.scope);
     TrialMetrics& m = w.metrics;
     m.timeS = w.state.timeS;

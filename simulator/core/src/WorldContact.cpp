@@ -152,7 +152,7 @@ void World::Impl::physics(const DeviceSample& device, double pressureKpa) {
                     candidates[i].scopeGradient[d] * candidates[j].scopeGradient[d] / stiffness[d];
 
     std::vector<Vec3> forces;
-    pressureForces(pointsMm, pressureKpa, forces);
+    uterus.pressureForces(pointsMm, pressureKpa, forces);
     timings.contactSearchMs +=
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - searching).count();
     tissue.step(forces, rows, coupling);

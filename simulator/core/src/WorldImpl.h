@@ -8,6 +8,7 @@
 #include "Fluid.h"
 #include "hs/core/TetEmbedding.h"
 #include "hs/mechanics/CorotationalFem.h"
+#include "hs/mechanics/UterusModel.h"
 #include "hs/sim/World.h"
 
 #include <array>
@@ -29,14 +30,6 @@ constexpr double kMm = 1e-3;
 constexpr double kPerforationForceN = 5.0;
 /// ... held this long, s: the wall gives way under a sustained push, not a tap.
 constexpr double kPerforationHoldS = 0.3;
-/// Total stiffness of what holds the corpus besides the cervix (broad and round ligaments, the organs around it),
-/// N/m, spread over the serosa's free points by area (docs/simulator.md, "Boundary").
-constexpr double kSurroundStiffnessNPerM = 1000.0;
-/// The portio: the support's points this close to the external os along the canal are fixed, mm (about the vaginal
-/// part of a 25-30 mm cervix; docs/references.md [CervixParity]).
-constexpr double kHeldPortioMm = 12.0;
-/// Total stiffness of the cardinal and uterosacral ligaments on the supravaginal cervix, N/m, spread over its points.
-constexpr double kLigamentStiffnessNPerM = 3000.0;
 /// The shaft's spheres up to this far beyond the internal os (along the canal) do not collide: the canal wraps the
 /// sheath, mm.
 constexpr double kCanalContactFreeMm = 2.0;
@@ -45,8 +38,6 @@ constexpr double kShaftCheckBehindPivotMm = 10.0;
 /// Contact candidates are gathered this far beyond the scope's radius, mm; the physics' scope moves at most this far
 /// in a step (300 mm/s, beyond a hand's speed), so no wall is passed between two steps.
 constexpr double kContactMarginMm = 1.5;
-/// The solver's matrix is factored again with the tissue's stiffening every this many steps (1 s).
-constexpr std::uint64_t kRefactorSteps = 200;
 /// At most this many contact rows per step (the nearest), so a scope lying along the canal costs a bounded time.
 constexpr std::size_t kMaxContacts = 48;
 /// The virtual coupling between the device and the physics' scope (Colgate, Stanley & Brown 1995): stiffer than the
@@ -122,11 +113,11 @@ struct World::Impl {
     Vec3 cavityAxis, cavityAnterior, cavityLeft;
     double cavityArea = 0.0;
 
-    // The tissue (WorldTissue.cpp).
-    mechanics::CorotationalFem tissue;
+    // The tissue (WorldTissue.cpp): the scene's uterus model (shared with generate's hydrometra curve), its solver.
+    mechanics::UterusModel uterus;
+    mechanics::CorotationalFem& tissue = uterus.fem;
     detail::TriangleBvh bvh;
     detail::FluidModel fluid;
-    double restCavityMl = 0.0;
     /// The cavity's volume change per kPa over one step of the solver, mL/kPa (the fluid's coupling).
     double cavityComplianceMlPerKpa = 0.0;
     /// The points with the cavity opened at the planning pressure by a static solve (scripts plan with them).
@@ -165,14 +156,9 @@ struct World::Impl {
     Status build(Progress& progress);
     void setupSurfaceData();
     [[nodiscard]] Status setupTissue();
-    /// The fluid's pressure `pressureKpa` on the cavity's faces as they lie in `pts` (mm), N per point.
-    void pressureForces(const std::vector<Vec3>& pts, double pressureKpa, std::vector<Vec3>& forces) const;
-    double cavityVolumeMl(const std::vector<Vec3>& pts) const;
     /// The cavity's one-step compliance (mL/kPa) from the solver's matrix, and the cavity opened at the planning
     /// pressure by a static solve of the same model.
     [[nodiscard]] Status measureCavity();
-    /// The points with the cavity opened at `pressureKpa` by a static solve of the tissue model (from rest).
-    [[nodiscard]] Status staticOpen(double pressureKpa, std::vector<Vec3>& pts) const;
     /// One physics step: the scope coupled to `device`, the pressure on the cavity.
     void physics(const DeviceSample& device, double pressureKpa);
     void recordContact(const std::vector<mechanics::FemConstraint>& rows, const std::vector<char>& rowTip,

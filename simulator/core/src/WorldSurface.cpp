@@ -33,23 +33,16 @@ Vec3 World::Impl::faceCentre(std::int32_t f) const {
 }
 
 void World::Impl::setupSurfaceData() {
-    // The contact surface: the simulation mesh's boundary, in the mesh's own point indices.
-    const SurfaceMesh boundary = extractBoundary(simRest);
-    const auto& source = boundary.vertexLabels.at("sourcePoint");
-    auto tris = std::make_shared<std::vector<Triangle>>();
-    tris->reserve(boundary.faceCount());
-    for (const Triangle& t : boundary.triangles)
-        tris->push_back({source[static_cast<std::size_t>(t[0])], source[static_cast<std::size_t>(t[1])],
-                         source[static_cast<std::size_t>(t[2])]});
+    // The contact surface: the simulation mesh's boundary, in the mesh's own point indices (the tissue model's).
+    auto tris = std::make_shared<std::vector<Triangle>>(uterus.boundary);
     triangles = tris;
     contactSurface.points = simRest.points;
     contactSurface.triangles = *tris;
-    const auto& cavityPoints = simRest.pointLabels.at(scene::kCavityPointLabel);
     const std::size_t faces = tris->size();
-    faceCavity.assign(faces, 0);
+    faceCavity = uterus.faceCavity;
     faceInCavity.assign(faces, 0);
     faceArea.assign(faces, 0.0);
-    faceRegion = boundary.faceLabels.at("region");
+    faceRegion = uterus.region;
     facePathology.assign(faces, -1);
     faceUnrolled.assign(faces, {});
     cavityAxis = normalized(landmarks.fundusMm - landmarks.internalOsMm);
@@ -63,10 +56,7 @@ void World::Impl::setupSurfaceData() {
     std::vector<std::int32_t> cavitySide(faces, 0);
     for (std::size_t f = 0; f < faces; ++f) {
         const Triangle& t = (*tris)[f];
-        bool cavity = true;
-        for (const std::int32_t v : t)
-            cavity = cavity && cavityPoints[static_cast<std::size_t>(v)] == 1;
-        faceCavity[f] = cavity ? 1 : 0;
+        const bool cavity = faceCavity[f] != 0;
         const Vec3 n = triangleNormal(simRest.points, t);
         faceArea[f] = 0.5 * norm(n);
         const Vec3 c = triangleCentre(simRest.points, t);

@@ -122,6 +122,10 @@ TEST_F(ScenePackage, ReadsBackTheSceneItWasWrittenFrom) {
     EXPECT_EQ(read->labels[0].indices, original.labels[0].indices);
     EXPECT_EQ(read->caseSpec, original.caseSpec);
     EXPECT_EQ(read->hydrometra.cavityVolumeMl, original.hydrometra.cavityVolumeMl);
+    ASSERT_EQ(read->hydrometra.modelCurve.size(), 3u);
+    EXPECT_EQ(read->hydrometra.modelCurve[2].pressureKpa, 10.0);
+    EXPECT_EQ(read->hydrometra.modelCurve[2].cavityOpeningMl, 4.125);
+    EXPECT_EQ(modelOpeningMl(read->hydrometra, 7.5), 2.875); // between its points, linearly
     ASSERT_EQ(read->clinical.pathologies.size(), 1u);
     EXPECT_EQ(read->clinical.pathologies[0].lasmar->total(), 6);
     EXPECT_EQ(read->clinical.pathologies[0].figo->toString(), "2");

@@ -96,6 +96,7 @@ scene::Scene syntheticScene(const SyntheticSceneOptions& options) {
     myomaDescriptor.location = "posterior";
     s.clinical.pathologies = {myomaDescriptor};
     s.hydrometra = scene::computeHydrometra(s.clinical.organ.uterineVolumeMl, 8.0).value();
+    s.hydrometra.modelCurve = {{2.5, 0.75}, {5.0, 1.625}, {10.0, 4.125}};
     s.quality.vertexCount = s.tets.vertexCount();
     s.quality.tetCount = s.tets.tetCount();
     s.quality.minDihedralDeg = 35.26;

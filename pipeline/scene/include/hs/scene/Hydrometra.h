@@ -8,6 +8,8 @@
 
 #include "hs/core/Result.h"
 
+#include <vector>
+
 namespace hs::scene {
 
 /// The pressure at which the fit was measured, kPa.
@@ -16,12 +18,28 @@ constexpr double kHydrometraFitPressureKpa = 20.0;
 constexpr double kHydrometraMinMeasuredMl = 0.6;
 constexpr double kHydrometraMaxMeasuredMl = 11.4;
 
+/// A point of the scene's own tissue model's curve: the cavity's opening over rest at a pressure.
+struct HydrometraPoint {
+    double pressureKpa = 0.0;     ///< kPa
+    double cavityOpeningMl = 0.0; ///< mL over the cavity's rest volume
+};
+
+/// The pressures of the model's curve, mmHg: 20-100, the range of the cited distension pressures.
+inline constexpr double kHydrometraCurveMmHg[] = {20.0, 40.0, 60.0, 80.0, 100.0};
+
 struct Hydrometra {
     double pressureKpa = 0.0;     ///< kPa, distension pressure (the case's scene.hydrometraPressureKpa)
     double uterineVolumeMl = 0.0; ///< mL, the fit's input
     double cavityVolumeMl = 0.0;  ///< mL, distended cavity volume at pressureKpa
     bool extrapolated = false;    ///< the 20 kPa value lies outside the measured 0.6-11.4 mL
+    /// The scene's tissue model's curve (generate: a static solve of hs::mechanics::UterusModel at
+    /// kHydrometraCurveMmHg), what the simulator's distension reaches; empty in packages written before it.
+    std::vector<HydrometraPoint> modelCurve;
 };
+
+/// The model's curve at `pressureKpa`, linear between its points (and beyond its ends along the nearest segment);
+/// 0 for an empty curve.
+double modelOpeningMl(const Hydrometra& hydrometra, double pressureKpa);
 
 /// Cavity volume at 20 kPa from the quadratic fit, mL.
 double hydrometraVolumeAtFitPressureMl(double uterineVolumeMl);

@@ -1,0 +1,64 @@
+#pragma once
+/// The tissue model of a scene's uterus, one definition for `generate` (the hydrometra curve it writes into the
+/// package) and the simulator (whose steps run it): the simulation mesh with its materials and the exponential
+/// stiffening, held at the cervix (the portio fixed, the supravaginal cervix on the ligaments' springs) and by the
+/// surrounding structures (soft springs on the serosa), the cavity's faces, its volume and the fluid's load on them
+/// (docs/simulator.md, "Tissue", "Boundary", "Distension").
+///
+/// Lengths mm, pressures kPa, volumes mL, forces N; the solver itself works in metres.
+
+#include "hs/core/Result.h"
+#include "hs/core/SurfaceMesh.h"
+#include "hs/core/Vec3.h"
+#include "hs/mechanics/CorotationalFem.h"
+#include "hs/scene/Scene.h"
+
+#include <vector>
+
+namespace hs::mechanics {
+
+/// myometrium's exponential stiffening, C = 0.05-0.14 (Pearsall & Roberts 1978), its geometric middle 0.085, for
+/// |dev e| times sqrt(3/2) (FemMaterial::stiffeningStrain). No such data for the endometrium, the myoma or the
+/// polyp: they get the myometrium's.
+inline constexpr double kUterusStiffeningStrain = 0.085 * 1.2247;
+/// The portio: the support's points this close to the external os along the canal are fixed, mm (about the vaginal
+/// part of a 25-30 mm cervix; docs/references.md [CervixParity]).
+inline constexpr double kHeldPortioMm = 12.0;
+/// Total stiffness of what holds the corpus besides the cervix (broad and round ligaments, the organs around it),
+/// N/m, spread over the serosa's free points by area (docs/simulator.md, "Boundary").
+inline constexpr double kSurroundStiffnessNPerM = 1000.0;
+/// Total stiffness of the cardinal and uterosacral ligaments on the supravaginal cervix, N/m, spread over its points.
+inline constexpr double kLigamentStiffnessNPerM = 3000.0;
+
+struct UterusModel {
+    CorotationalFem fem;
+    std::vector<Vec3> restMm;         ///< the simulation mesh's points at rest
+    std::vector<Triangle> boundary;   ///< the simulation mesh's boundary faces, in its point indices
+    std::vector<std::int32_t> region; ///< per boundary face, the scene region of its tet
+    std::vector<char> faceCavity;     ///< a face of the cavity and the canal (the fluid presses on it)
+    std::vector<char> pointHeld;      ///< per point: fixed (the portio)
+    Vec3 externalOsMm, internalOsMm;
+    double restCavityMl = 0.0;
+
+    /// The cavity's volume with the points at `pts` (mm): between its faces and the external os (the canal's open
+    /// end), mL.
+    double cavityVolumeMl(const std::vector<Vec3>& pts) const;
+    /// The fluid's pressure `pressureKpa` on the cavity's faces as they lie in `pts` (mm), N per point.
+    void pressureForces(const std::vector<Vec3>& pts, double pressureKpa, std::vector<Vec3>& forces) const;
+};
+
+/// Builds the model of `scene` (its simulation mesh, materials and scope landmarks) with the solver's `settings`.
+/// InvalidInput for a scene without a simulation mesh or landmarks.
+[[nodiscard]] Status buildUterusModel(const scene::Scene& scene, const FemSettings& settings, UterusModel& out);
+
+/// The cavity opened at `pressureKpa` (0-40) by a static solve of the model from rest (1 s steps, the pressure raised
+/// over 20 of them and following the faces as they open, until the cavity's volume settles): the points, mm.
+/// InvalidInput out of range or when the tissue finds no equilibrium.
+[[nodiscard]] Status staticOpen(const UterusModel& model, double pressureKpa, std::vector<Vec3>& pts);
+
+/// The model's hydrometra curve: the cavity's opening (mL over rest) at each of `pressuresKpa` (ascending, 0-40), one
+/// static solve raised from each pressure to the next.
+[[nodiscard]] Result<std::vector<double>> hydrometraCurve(const UterusModel& model,
+                                                          const std::vector<double>& pressuresKpa);
+
+} // namespace hs::mechanics
