@@ -1,7 +1,9 @@
 // The simulator's physics on a scene package: the simulation mesh's size and quality, the step's cost (the bar:
 // >= 100 Hz on 2 cores) and a long scripted trial's stability (no inverted tets, bounded energy). A table, not a test.
 //
-//   bench_physics PACKAGE [--seconds 60] [--iterations 6] [--trace]
+//   bench_physics PACKAGE [--seconds 60] [--iterations 6] [--trace] [--rough SEED]
+// --rough SEED: the rough trial (roughScript: random presses into the walls and the pathologies at a hand's speeds)
+// instead of the exploration, repeated every 60 s.
 // --trace: a line for every perforation and for every second in which a tet is inverted (the script's time and the
 // tip's place), to find which move of the script is at fault.
 // PACKAGE: a scene package with a simulation mesh (hysteroscene-cli generate resources/cases/default.json -o DIR).
@@ -32,18 +34,21 @@ double percentile(std::vector<double> v, double q) {
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        std::fprintf(stderr, "usage: bench_physics PACKAGE [--seconds S] [--iterations N]\n");
+        std::fprintf(stderr, "usage: bench_physics PACKAGE [--seconds S] [--iterations N] [--trace] [--rough SEED]\n");
         return 2;
     }
     const std::string package = argv[1];
     double seconds = 60.0;
     hs::sim::WorldOptions options;
     bool trace = false;
+    unsigned long long rough = 0; // the rough trial's seed; 0: the exploration
     for (int i = 2; i < argc; ++i) {
         if (std::strcmp(argv[i], "--trace") == 0)
             trace = true;
         else if (std::strcmp(argv[i], "--seconds") == 0 && i + 1 < argc)
             seconds = std::atof(argv[++i]);
+        else if (std::strcmp(argv[i], "--rough") == 0 && i + 1 < argc)
+            rough = std::strtoull(argv[++i], nullptr, 10);
         else if (std::strcmp(argv[i], "--iterations") == 0 && i + 1 < argc)
             options.solverIterations = std::atoi(argv[++i]);
     }
@@ -100,7 +105,8 @@ int main(int argc, char** argv) {
     }
 
     // The exploration script, repeated to fill `seconds` of simulated time.
-    const hs::sim::Script script = hs::sim::explorationScript(w, 60.0);
+    const hs::sim::Script script =
+        rough > 0 ? hs::sim::roughScript(w, 60.0, rough) : hs::sim::explorationScript(w, 60.0);
     const std::size_t per = w.ticksPerStep();
     if (trace)
         for (const hs::sim::KeyFrame& k : script.keyframes) {

@@ -220,6 +220,48 @@ TEST(World, APressIntoTheWallGivesTheDeviceTheSolversReaction) {
     EXPECT_FALSE(pressScript(*world, -1, 3.0, -1.0));
 }
 
+TEST(World, ARoughTrialLeavesNoInvertedTetAndBoundedEnergy) {
+    // Random presses into the walls and the myoma at a hand's speeds, 20 s (bench_physics --rough runs 10 minutes):
+    // nothing becomes NaN, the elastic energy stays bounded, and no tet is left inverted at the end.
+    auto world = loadWorld();
+    ASSERT_TRUE(world);
+    const Script script = roughScript(*world, 20.0, 7);
+    EXPECT_GT(script.keyframes.size(), 20u);
+    Worst worst;
+    double energy = 0.0;
+    const std::size_t per = world->ticksPerStep();
+    std::vector<DeviceSample> step(per);
+    for (std::uint64_t tick = 0; tick + per <= script.tickCount(); tick += per) {
+        for (std::size_t i = 0; i < per; ++i) {
+            step[i] = script.sampleAt(tick + i);
+            step[i].tick = tick + i;
+        }
+        ASSERT_TRUE(world->step(step.data(), per).ok());
+        if (world->state().step % 10 == 0) {
+            const World::Health h = world->health();
+            worst.invertedTets = std::max(worst.invertedTets, h.invertedTets);
+            worst.minVolumeRatio = std::min(worst.minVolumeRatio, h.minVolumeRatio);
+            energy = std::max(energy, h.elasticEnergyJ);
+            ASSERT_TRUE(std::isfinite(h.elasticEnergyJ) && std::isfinite(h.maxSpeedMmPerS))
+                << "at " << world->state().timeS << " s: energy " << h.elasticEnergyJ << " J, speed "
+                << h.maxSpeedMmPerS << " mm/s, " << h.invertedTets << " inverted, ratio " << h.minVolumeRatio
+                << ", tip " << world->state().scope.tipMm.x << " " << world->state().scope.tipMm.y << " "
+                << world->state().scope.tipMm.z << ", force " << world->state().contact.forceN;
+            ASSERT_TRUE(std::isfinite(world->state().contact.forceN));
+        }
+    }
+    const TrialMetrics& m = world->metrics();
+    std::printf("rough: %d wall contacts, peak %.2f N, %zu perforations; at worst %zu tets inverted (ratio %.3f), "
+                "energy %.4f J\n",
+                m.wallContacts, m.peakForceN, m.perforations.size(), worst.invertedTets, worst.minVolumeRatio, energy);
+    EXPECT_GT(m.wallContacts, 5);
+    EXPECT_LT(energy, 1.0);
+    EXPECT_EQ(world->health().invertedTets, 0u);
+    // The same seed, the same script; another seed, another.
+    EXPECT_EQ(scriptJson(roughScript(*world, 20.0, 7)), scriptJson(script));
+    EXPECT_NE(scriptJson(roughScript(*world, 20.0, 8)), scriptJson(script));
+}
+
 TEST(World, PushingThroughTheFundusIsAPerforation) {
     auto world = loadWorld();
     ASSERT_TRUE(world);

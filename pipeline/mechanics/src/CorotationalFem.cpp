@@ -749,7 +749,9 @@ void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector
         for (const std::int32_t p : m_forcedPoints)
             if (next[static_cast<std::size_t>(p)] == Vec3{})
                 change.emplace_back(p, m_constraintForce[static_cast<std::size_t>(p)] * -1.0);
-        if (surface) {
+        if (change.empty()) {
+            // The contacts' forces did not change: nothing to correct.
+        } else if (surface) {
             surfaceResponse(change, response);
             for (std::size_t k = 0; k < m_compliantCount; ++k)
                 x[static_cast<std::size_t>(m_compliantList[k])] += response[k];

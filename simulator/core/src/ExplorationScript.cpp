@@ -1,6 +1,8 @@
 // The built-in exploration: in through the canal, the walls, the fundus, each ostium and each pathology, and out.
 #include "WorldImpl.h"
 
+#include "hs/core/Rng.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -22,6 +24,12 @@ constexpr double kPressPathologyClearanceMm = 10.0;
 /// is met at most this obliquely (degrees between the shaft and its normal).
 constexpr double kPressClearanceMm = 1.0;
 constexpr double kPressMostObliqueDeg = 60.0;
+/// A rough trial: the tip's speeds (mm/s; a hand moves a hysteroscope at up to about 50), how far beyond a face it
+/// presses at most (mm), and where on the cavity's axis its moves start at the least (mm beyond the internal os).
+constexpr double kRoughSlowMmPerS = 10.0;
+constexpr double kRoughFastMmPerS = 50.0;
+constexpr double kRoughDeepestMm = 3.0;
+constexpr double kRoughAxisStartMm = 3.0;
 
 /// The device sample that puts the tip at `tip` and turns the optic so it looks as nearly as possible at `target`.
 DeviceSample aimAt(const World& world, const Vec3& tip, const Vec3& target) {
@@ -74,6 +82,18 @@ DeviceSample World::Impl::canalEntry(const TriangleBvh& open) const {
 }
 
 namespace {
+
+/// A script's plan: samples on its own clock, each after the last, with the inflow open and the outflow a little.
+struct Plan {
+    std::vector<std::pair<double, DeviceSample>> keys;
+    double time = 0.0;
+    void add(double afterS, DeviceSample s) {
+        time += afterS;
+        s.inflow = 1.0;
+        s.outflow = 0.3;
+        keys.emplace_back(time, s);
+    }
+};
 
 /// Key frames on a plan's clock, scaled to `durationS` (0: as planned), times strictly increasing.
 Script toScript(const std::vector<std::pair<double, DeviceSample>>& plan, double durationS) {
@@ -129,14 +149,8 @@ Script explorationScript(const World& world, double durationS) {
         return middle[static_cast<std::size_t>(std::clamp(std::lround(fraction * 10.0), 1L, 9L))];
     };
 
-    std::vector<std::pair<double, DeviceSample>> plan; // (time on the plan, sample), scaled to durationS at the end
-    double t = 0.0;
-    const auto add = [&plan, &t](double afterS, DeviceSample s) {
-        t += afterS;
-        s.inflow = 1.0;
-        s.outflow = 0.3;
-        plan.emplace_back(t, s);
-    };
+    Plan plan; // scaled to durationS at the end
+    const auto add = [&plan](double afterS, const DeviceSample& s) { plan.add(afterS, s); };
     const double canalMm = distance(lm.externalOsMm, lm.internalOsMm);
     DeviceSample outside = w.canalEntry(open);
     DeviceSample inOs = outside;
@@ -242,7 +256,7 @@ Script explorationScript(const World& world, double durationS) {
     go(sampleAiming(w.frame, middle[1]), 0.5);
     add(std::max(0.3, distance(tipNow, inOsTip) / kScriptSpeedMmPerS), inOs);
     add(3.0, outside);
-    return toScript(plan, durationS);
+    return toScript(plan.keys, durationS);
 }
 
 Result<PressPlan> pressScript(const World& world, int pathology, double depthMm, double holdS) {
@@ -315,14 +329,8 @@ Result<PressPlan> pressScript(const World& world, int pathology, double depthMm,
         if (m.regionId == region)
             plan.youngsModulusKpa = m.material.youngsModulusKpa;
     const Vec3 d = normalized(plan.surfaceMm - w.frame.pivotMm);
-    std::vector<std::pair<double, DeviceSample>> keys;
-    double time = 0.0;
-    const auto add = [&keys, &time](double afterS, DeviceSample s) {
-        time += afterS;
-        s.inflow = 1.0;
-        s.outflow = 0.3;
-        keys.emplace_back(time, s);
-    };
+    Plan keys;
+    const auto add = [&keys](double afterS, const DeviceSample& s) { keys.add(afterS, s); };
     const double canalMm = distance(w.landmarks.externalOsMm, w.landmarks.internalOsMm);
     const DeviceSample outside = w.canalEntry(open);
     DeviceSample inOs = outside;
@@ -337,10 +345,60 @@ Result<PressPlan> pressScript(const World& world, int pathology, double depthMm,
         standOff);
     add(1.0, standOff);
     add(std::max(0.5, (kPressStandOffMm + depthMm) / kPressSpeedMmPerS), pressed);
-    plan.holdFromS = time;
+    plan.holdFromS = keys.time;
     add(holdS, pressed);
-    plan.script = toScript(keys, 0.0);
+    plan.script = toScript(keys.keys, 0.0);
     return plan;
+}
+
+Script roughScript(const World& world, double durationS, std::uint64_t seed) {
+    const World::Impl& w = *world.impl_;
+    const scene::ScopeLandmarks& lm = w.landmarks;
+    const ScopeConfig& scope = w.options.scope;
+    detail::TriangleBvh open;
+    open.build(*w.triangles, w.openPointsMm);
+    std::vector<std::int32_t> wall, pathology;
+    for (std::size_t f = 0; f < w.triangles->size(); ++f)
+        if (w.faceInCavity[f])
+            (w.facePathology[f] >= 0 ? pathology : wall).push_back(static_cast<std::int32_t>(f));
+    Rng rng(seed);
+    Plan plan;
+    const double canalMm = distance(lm.externalOsMm, lm.internalOsMm);
+    const DeviceSample outside = w.canalEntry(open);
+    DeviceSample inOs = outside;
+    inOs.insertionMm = canalMm + 2.0;
+    plan.add(0.0, outside);
+    plan.add(1.0, outside);
+    plan.add(3.0, inOs);
+    Vec3 tip = scopePose(w.frame, scope, inOs).tipMm;
+    const auto axisAt = [&](const Vec3& p) {
+        return lm.internalOsMm + w.cavityAxis * std::max(kRoughAxisStartMm, dot(p - lm.internalOsMm, w.cavityAxis));
+    };
+    double roll = 0.0;
+    const auto moveTo = [&](const Vec3& to, double speed) {
+        plan.add(std::max(0.05, distance(tip, to) / speed), sampleAiming(w.frame, to, roll));
+        tip = to;
+    };
+    const double exitS = 4.0;
+    while (!wall.empty() && plan.time < durationS - exitS) {
+        const auto& from = !pathology.empty() && rng.below(3) == 0 ? pathology : wall;
+        const std::int32_t f = from[static_cast<std::size_t>(rng.below(from.size()))];
+        const Triangle& t = (*w.triangles)[static_cast<std::size_t>(f)];
+        const Vec3 c = triangleCentre(w.openPointsMm, t);
+        const Vec3 n = normalized(triangleNormal(w.openPointsMm, t));
+        const double speed = rng.uniform(kRoughSlowMmPerS, kRoughFastMmPerS);
+        roll = rng.uniform(-180.0, 180.0);
+        moveTo(axisAt(tip), speed);
+        moveTo(axisAt(c), speed);
+        moveTo(c + n * (0.5 * scope.diameterMm + 1.0), speed);
+        moveTo(c - n * rng.uniform(0.0, kRoughDeepestMm), speed);
+        plan.add(rng.uniform(0.2, 1.0), sampleAiming(w.frame, tip, roll));
+    }
+    roll = 0.0;
+    moveTo(axisAt(tip), kRoughSlowMmPerS);
+    plan.add(std::max(0.3, distance(tip, scopePose(w.frame, scope, inOs).tipMm) / kRoughSlowMmPerS), inOs);
+    plan.add(2.0, outside);
+    return toScript(plan.keys, 0.0);
 }
 
 } // namespace hs::sim

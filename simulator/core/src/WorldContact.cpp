@@ -112,6 +112,10 @@ void World::Impl::physics(const DeviceSample& device, double pressureKpa) {
             const double along = dot(c - cp.point, faceN);
             if (along < -radius || norm2(faceN) == 0.0)
                 continue; // behind this face by more than the radius: the tissue beyond is another face's
+            // Behind the face's plane but beside the face (its closest point on an edge or a corner): the plane there
+            // is not this face's wall; the face whose interior lies over the centre, or in front of it, answers.
+            if (along <= 0.0 && std::min({cp.wa, cp.wb, cp.wc}) < 1e-9)
+                continue;
             const double d = std::sqrt(cp.distance2);
             const Vec3 n = along > 0.0 && d > 1e-9 ? (c - cp.point) / d : faceN;
             const double gap = (along > 0.0 ? d : along) - radius;

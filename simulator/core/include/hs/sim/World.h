@@ -159,6 +159,7 @@ public:
 private:
     friend Script explorationScript(const World& world, double durationS);
     friend Result<struct PressPlan> pressScript(const World& world, int pathology, double depthMm, double holdS);
+    friend Script roughScript(const World& world, double durationS, std::uint64_t seed);
     World();
     struct Impl;
     std::unique_ptr<Impl> impl_;
@@ -182,6 +183,12 @@ std::string_view physicsEngine();
 /// A scripted exploration of `world`'s scene: in through the canal with the inflow open, then the fundus, each ostium
 /// and each wall in turn, and out (tests, demonstrations, the benchmark). `durationS` stretches it.
 Script explorationScript(const World& world, double durationS = 60.0);
+
+/// A rough trial (the solver's stress test): in through the canal, then `durationS` of presses at random into the
+/// cavity's walls and its pathologies (a third of them a pathology's face), each from the cavity's axis to the face and
+/// up to 3 mm beyond it at 10-50 mm/s (a hand's speeds), held 0.2-1 s, the optic rolled at random; out at the end.
+/// The same seed gives the same script.
+Script roughScript(const World& world, double durationS = 60.0, std::uint64_t seed = 1);
 
 /// A scripted press (the check that the device feels the tissue): in through the canal with the inflow open, the tip
 /// brought head-on to a face of the cavity as the fluid opens it (60 mmHg), then the device pushed `depthMm` beyond
