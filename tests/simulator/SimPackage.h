@@ -19,12 +19,17 @@ class SimPackage {
 public:
     /// The package's folder (generated on first use; a test fails if generation fails).
     static const std::string& folder() {
-        static SimPackage package;
+        static SimPackage package(false);
+        return package.m_folder;
+    }
+    /// The same with the myoma at the fundus, FIGO 1 (mostly in the cavity): the scope meets it head-on.
+    static const std::string& fundalMyomaFolder() {
+        static SimPackage package(true);
         return package.m_folder;
     }
 
 private:
-    SimPackage() : m_dir(std::make_unique<TempDir>("hs-sim-package")) {
+    explicit SimPackage(bool fundalMyoma) : m_dir(std::make_unique<TempDir>("hs-sim-package")) {
         auto spec = scene::loadCase(HS_DEFAULT_CASE_FILE);
         if (!spec) {
             ADD_FAILURE() << spec.error().detail;
@@ -34,6 +39,10 @@ private:
         for (auto& p : spec->pathologies)
             if (p.kind == clinical::PathologyKind::Polyp)
                 p.placement = clinical::ClinicalPlacement{clinical::UterineLocation::Posterior};
+            else if (fundalMyoma && p.kind == clinical::PathologyKind::Myoma) {
+                p.placement = clinical::ClinicalPlacement{clinical::UterineLocation::Fundal};
+                p.figo = clinical::FigoType{1, -1};
+            }
         spec->texture.sizePx = 256;
         generate::GenerateParams params;
         params.caseFile = HS_DEFAULT_CASE_FILE;

@@ -20,7 +20,12 @@ Result<scene::SimulationMesh> simulationMesh(const scene::CaseSpec& spec, const 
     auto meshed = meshing::meshWith(meshMethodFor(spec), merged.body, params, progress);
     if (!meshed)
         return fail(meshed.error().code, "simulation mesh: " + meshed.error().detail);
-    auto tissue = tissueStage(spec, merged, *meshed, tissueLayerParamsFor(spec));
+    // The scene's mesh covers a pathology on the cavity with endometrium one tet deep (about a millimetre there); one
+    // tet of this coarse mesh is about 4 mm deep, and a scope pressing a myoma would feel that lining and not the
+    // myoma. The simulation mesh leaves pathologies uncovered: their cover is the visual surface's.
+    TissueLayerParams layers = tissueLayerParamsFor(spec);
+    layers.coverPathologies = false;
+    auto tissue = tissueStage(spec, merged, *meshed, layers);
     if (!tissue)
         return fail(tissue.error().code, "simulation mesh: " + tissue.error().detail);
 
