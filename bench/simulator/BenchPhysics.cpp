@@ -1,11 +1,12 @@
 // The simulator's physics on a scene package: the simulation mesh's size and quality, the step's cost (the bar:
-// >= 100 Hz on 2 cores) and a long scripted trial's stability (no inverted tets, bounded energy). A table, not a test.
+// >= 200 Hz on 2 cores) and a long scripted trial's stability (no inverted tets, bounded energy). A table, not a test.
 //
 //   bench_physics PACKAGE [--seconds 60] [--iterations 6] [--trace] [--rough SEED]
 // --rough SEED: the rough trial (roughScript: random presses into the walls and the pathologies at a hand's speeds)
 // instead of the exploration, repeated every 60 s.
-// --trace: a line for every perforation and for every second in which a tet is inverted (the script's time and the
-// tip's place), to find which move of the script is at fault.
+// --trace: the script's keyframes, a line for every perforation, every 0.1 s with an inverted tet (the script's time,
+// the tip's place, and each inverted tet with its region and its distance from the tip) or an elastic energy above
+// 0.5 J, and every 50 ms with a contact above 2 N: to find which move of the script is at fault.
 // PACKAGE: a scene package with a simulation mesh (hysteroscene-cli generate resources/cases/default.json -o DIR).
 
 #include "hs/core/TriangleGeometry.h"
@@ -156,6 +157,26 @@ int main(int argc, char** argv) {
                     "force %.2f N, tip %.1f %.1f %.1f mm\n",
                     st.timeS, std::fmod(st.timeS, 60.0), h.invertedTets, h.minVolumeRatio, h.elasticEnergyJ,
                     st.contact.forceN, st.scope.tipMm.x, st.scope.tipMm.y, st.scope.tipMm.z);
+            }
+            if (trace && h.invertedTets > 0) {
+                // Where: the inverted tets' centres, their region and their distance from the tip.
+                const hs::TetMesh& mesh = w.simulationMesh();
+                const std::vector<hs::Vec3>& x = w.simulationPointsMm();
+                for (std::size_t t = 0; t < mesh.tetCount(); ++t) {
+                    const auto& tet = mesh.tets[t];
+                    const hs::Vec3 a = x[static_cast<std::size_t>(tet[0])], b = x[static_cast<std::size_t>(tet[1])],
+                                   c = x[static_cast<std::size_t>(tet[2])], d = x[static_cast<std::size_t>(tet[3])];
+                    const hs::Vec3 ra = mesh.points[static_cast<std::size_t>(tet[0])];
+                    const double now = hs::dot(b - a, hs::cross(c - a, d - a));
+                    const double rest = hs::dot(mesh.points[static_cast<std::size_t>(tet[1])] - ra,
+                                                hs::cross(mesh.points[static_cast<std::size_t>(tet[2])] - ra,
+                                                          mesh.points[static_cast<std::size_t>(tet[3])] - ra));
+                    if (now / rest <= 0.0)
+                        std::printf("trace:   tet %zu region %d ratio %.2f at %.1f %.1f %.1f, %.1f mm from the tip\n",
+                                    t, mesh.regionOf(t), now / rest, (a.x + b.x + c.x + d.x) / 4,
+                                    (a.y + b.y + c.y + d.y) / 4, (a.z + b.z + c.z + d.z) / 4,
+                                    hs::distance((a + b + c + d) / 4.0, w.state().scope.tipMm));
+                }
             }
             maxInverted = std::max(maxInverted, h.invertedTets);
             minRatio = std::min(minRatio, h.minVolumeRatio);
