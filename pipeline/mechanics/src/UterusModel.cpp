@@ -70,8 +70,8 @@ Status buildUterusModel(const scene::Scene& scene, const FemSettings& settings, 
         cavityIds == mesh.pointLabels.end() || materialIds->second.size() != mesh.tetCount() ||
         supportIds->second.size() != mesh.tetCount() || cavityIds->second.size() != mesh.vertexCount())
         return fail(ErrorCode::InvalidInput, std::string("uterus model: the simulation mesh lacks its '") +
-                                                 scene::kMaterialLabel + "', '" + scene::kSupportTetLabel +
-                                                 "' or '" + scene::kCavityPointLabel + "' arrays");
+                                                 scene::kMaterialLabel + "', '" + scene::kSupportTetLabel + "' or '" +
+                                                 scene::kCavityPointLabel + "' arrays");
     auto landmarks = scene::findScopeLandmarks(scene);
     if (!landmarks)
         return fail(landmarks.error().code, "uterus model: scope landmarks: " + landmarks.error().detail);

@@ -43,8 +43,9 @@ double modelOpeningMl(const Hydrometra& hydrometra, double pressureKpa) {
     const HydrometraPoint& a = c[i - 1];
     const HydrometraPoint& b = c[i];
     const double span = b.pressureKpa - a.pressureKpa;
-    return span > 0.0 ? a.cavityOpeningMl + (b.cavityOpeningMl - a.cavityOpeningMl) * (pressureKpa - a.pressureKpa) / span
-                      : a.cavityOpeningMl;
+    return span > 0.0
+               ? a.cavityOpeningMl + (b.cavityOpeningMl - a.cavityOpeningMl) * (pressureKpa - a.pressureKpa) / span
+               : a.cavityOpeningMl;
 }
 
 } // namespace hs::scene

@@ -357,9 +357,9 @@ Status parseSceneJson(std::string_view text, const std::string& name, Scene& sce
                     HydrometraPoint p;
                     p.pressureKpa = r.number((*curve)[i], "pressureKpa", path);
                     p.cavityOpeningMl = r.number((*curve)[i], "cavityOpeningMl", path);
-                    if (r.error.empty() && (!std::isfinite(p.pressureKpa) || p.pressureKpa <= last ||
-                                            p.pressureKpa > 40.0 || !std::isfinite(p.cavityOpeningMl) ||
-                                            std::abs(p.cavityOpeningMl) > 1000.0))
+                    if (r.error.empty() &&
+                        (!std::isfinite(p.pressureKpa) || p.pressureKpa <= last || p.pressureKpa > 40.0 ||
+                         !std::isfinite(p.cavityOpeningMl) || std::abs(p.cavityOpeningMl) > 1000.0))
                         r.error = name + ": " + path +
                                   " must have pressureKpa ascending in 0-40 and cavityOpeningMl in -1000..1000";
                     last = p.pressureKpa;

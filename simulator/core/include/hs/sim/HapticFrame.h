@@ -20,11 +20,11 @@ namespace hs::sim {
 
 /// A contact of the scope with the tissue as the step left it.
 struct HapticContact {
-    double gapM = 0.0;                      ///< m, at the end of the step (0 where the scope presses the wall)
-    std::array<double, 3> scopeGradient{};  ///< the gap's change per scope dof: m/m, m/rad, m/rad
-    double forceN = 0.0;                    ///< N, the tissue's force on the scope along `normal`
-    Vec3 normal;                            ///< unit, from the tissue to the scope
-    bool tip = false;                       ///< at the scope's tip (else on its shaft)
+    double gapM = 0.0;                     ///< m, at the end of the step (0 where the scope presses the wall)
+    std::array<double, 3> scopeGradient{}; ///< the gap's change per scope dof: m/m, m/rad, m/rad
+    double forceN = 0.0;                   ///< N, the tissue's force on the scope along `normal`
+    Vec3 normal;                           ///< unit, from the tissue to the scope
+    bool tip = false;                      ///< at the scope's tip (else on its shaft)
 };
 
 struct HapticFrame {

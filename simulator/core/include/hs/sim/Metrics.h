@@ -27,9 +27,9 @@ inline constexpr double kZoneSeenPercent = 50.0;
 
 struct Perforation {
     double timeS = 0.0;
-    Vec3 locationMm;      ///< where the tip went through the wall (scene frame)
-    double depthMm = 0.0; ///< mm, the deepest the tip went beyond the wall's surface
-    std::string region;   ///< the region the tip went through ("myometrium", "myoma-1", ...)
+    Vec3 locationMm;           ///< where the tip went through the wall (scene frame)
+    double depthMm = 0.0;      ///< mm, the deepest the tip went beyond the wall's surface
+    std::string region;        ///< the region the tip went through ("myometrium", "myoma-1", ...)
     bool falsePassage = false; ///< through the cervical canal's wall (before the internal os), not the corpus'
 };
 

@@ -27,9 +27,9 @@ struct ContactParams {
 
 struct ContactState {
     bool touching = false;
-    std::size_t contacts = 0;      ///< the frame's contacts
-    std::size_t pressing = 0;      ///< of them, those with a force this tick
-    double largestForceN = 0.0;    ///< the largest contact force this tick
+    std::size_t contacts = 0;   ///< the frame's contacts
+    std::size_t pressing = 0;   ///< of them, those with a force this tick
+    double largestForceN = 0.0; ///< the largest contact force this tick
 };
 
 class ContactModel {
