@@ -12,4 +12,6 @@ if [ ! -d "$validator_dir/node_modules/gltf-validator" ]; then
     npm install --no-audit --no-fund --silent --prefix "$validator_dir" gltf-validator@2.0.0-dev.3.10 ||
         echo "test: gltf-validator could not be installed; the glTF check will be skipped"
 fi
-xvfb-run -a -s "-screen 0 1280x1024x24" ctest --preset ci -j 2
+# -noreset: without it the X server resets each time its last client closes, and a test opening its next window
+# in that moment gets no connection (VTK aborts with "bad X server connection").
+xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" ctest --preset ci -j 2
