@@ -1,7 +1,10 @@
 // The simulator's physics on a scene package: the simulation mesh's size and quality, the step's cost (the bar:
 // >= 200 Hz on 2 cores) and a long scripted trial's stability (no inverted tets, bounded energy). A table, not a test.
 //
-//   bench_physics PACKAGE [--seconds 60] [--iterations 6] [--trace] [--rough SEED]
+//   bench_physics PACKAGE [--seconds 60] [--iterations 6] [--trace] [--rough SEED] [--canal]
+// --canal: instead of a trial, the entries through the cervical canal (entryScript: along its clearest line, and 15 and
+// 30 degrees off it), each on a fresh world: the peak and held force, how far the physics' scope stayed off the
+// device, how far the fundus and the internal os moved, perforations (false passages), the worst inverted-tet count.
 // --rough SEED: the rough trial (roughScript: random presses into the walls and the pathologies at a hand's speeds)
 // instead of the exploration, repeated every 60 s.
 // --trace: the script's keyframes, a line for every perforation, every 0.1 s with an inverted tet (the script's time,
@@ -35,7 +38,8 @@ double percentile(std::vector<double> v, double q) {
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        std::fprintf(stderr, "usage: bench_physics PACKAGE [--seconds S] [--iterations N] [--trace] [--rough SEED]\n");
+        std::fprintf(
+            stderr, "usage: bench_physics PACKAGE [--seconds S] [--iterations N] [--trace] [--rough SEED] [--canal]\n");
         return 2;
     }
     const std::string package = argv[1];
@@ -43,9 +47,12 @@ int main(int argc, char** argv) {
     hs::sim::WorldOptions options;
     bool trace = false;
     unsigned long long rough = 0; // the rough trial's seed; 0: the exploration
+    bool canal = false;
     for (int i = 2; i < argc; ++i) {
         if (std::strcmp(argv[i], "--trace") == 0)
             trace = true;
+        else if (std::strcmp(argv[i], "--canal") == 0)
+            canal = true;
         else if (std::strcmp(argv[i], "--seconds") == 0 && i + 1 < argc)
             seconds = std::atof(argv[++i]);
         else if (std::strcmp(argv[i], "--rough") == 0 && i + 1 < argc)
@@ -103,6 +110,90 @@ int main(int argc, char** argv) {
                     clearestYaw = yaw;
                 }
             }
+    }
+
+    if (canal) {
+        const std::size_t tpb = w.ticksPerStep();
+        {
+            // The clearance along the axial entry's line, every mm from the external os: the contact surface, the held
+            // faces, the visual surface.
+            const hs::sim::Script entry = hs::sim::entryScript(w, 0.0, 0.0);
+            const hs::sim::ScopePose pose = hs::sim::scopePose(w.frame(), options.scope, entry.keyframes.back().sample);
+            const auto nearestOn = [](const hs::SurfaceMesh& m, const hs::Vec3& p) {
+                double d2 = 1e300;
+                for (const hs::Triangle& t : m.triangles)
+                    d2 = std::min(d2, hs::closestPointOnTriangle(p, m.points[static_cast<std::size_t>(t[0])],
+                                                                 m.points[static_cast<std::size_t>(t[1])],
+                                                                 m.points[static_cast<std::size_t>(t[2])])
+                                          .distance2);
+                return std::sqrt(d2);
+            };
+            std::printf("| along the entry line mm | wall mm (contact surface) | wall mm (visual surface) |\n");
+            for (double d = 0.0; d <= hs::distance(w.frame().pivotMm, pose.tipMm); d += 2.0) {
+                const hs::Vec3 p = w.frame().pivotMm + pose.shaft * d;
+                std::printf("| %.0f | %.2f | %.2f |\n", d, nearestOn(w.contactSurface(), p),
+                            nearestOn(w.scene().surface.mesh, p));
+            }
+        }
+        // The canal as an obstacle: entries along the canal's clearest line and off it, each on a fresh world.
+        std::printf("| entry | peak force N | held force N | scope tip off the device's mm | fundus moved mm | "
+                    "internal os moved mm | "
+                    "perforations | inverted tets max | energy max J |\n|---|---|---|---|---|---|---|---|---|\n");
+        for (const auto& [off, toward] : std::vector<std::pair<double, double>>{
+                 {0.0, 0.0}, {15.0, 0.0}, {30.0, 0.0}, {30.0, 90.0}, {30.0, 180.0}, {30.0, 270.0}}) {
+            auto fresh = hs::sim::World::load(package, options);
+            if (!fresh)
+                return 3;
+            hs::sim::World& e = **fresh;
+            const hs::sim::Script entry = hs::sim::entryScript(e, off, toward);
+            const hs::Vec3 fundus = e.landmarks().fundusMm;
+            std::size_t nearest = 0;
+            for (std::size_t i = 0; i < e.simulationPointsMm().size(); ++i)
+                if (hs::distance(e.simulationPointsMm()[i], fundus) <
+                    hs::distance(e.simulationPointsMm()[nearest], fundus))
+                    nearest = i;
+            const hs::Vec3 fundusBefore = e.simulationPointsMm()[nearest];
+            std::size_t os = 0;
+            for (std::size_t i = 0; i < e.simulationPointsMm().size(); ++i)
+                if (hs::distance(e.simulationPointsMm()[i], e.landmarks().internalOsMm) <
+                    hs::distance(e.simulationPointsMm()[os], e.landmarks().internalOsMm))
+                    os = i;
+            const hs::Vec3 osBefore = e.simulationPointsMm()[os];
+            double osMoved = 0.0;
+            double peak = 0.0, held = 0.0, offTip = 0.0, moved = 0.0, energy = 0.0;
+            std::size_t inverted = 0;
+            const std::uint64_t ticks = entry.tickCount();
+            std::vector<hs::sim::DeviceSample> batch(tpb);
+            for (std::uint64_t s = 0; s * tpb < ticks; ++s) {
+                for (std::size_t i = 0; i < tpb; ++i) {
+                    batch[i] = entry.sampleAt(s * tpb + i);
+                    batch[i].tick = s * tpb + i;
+                }
+                if (!e.step(batch.data(), tpb).ok())
+                    return 4;
+                const hs::sim::WorldState& st = e.state();
+                peak = std::max(peak, st.contact.forceN);
+                held = st.contact.forceN;
+                offTip =
+                    hs::distance(st.scope.tipMm, hs::sim::scopePose(e.frame(), options.scope, batch[tpb - 1]).tipMm);
+                moved = std::max(moved, hs::distance(e.simulationPointsMm()[nearest], fundusBefore));
+                osMoved = std::max(osMoved, hs::distance(e.simulationPointsMm()[os], osBefore));
+                const hs::sim::World::Health h = e.health();
+                inverted = std::max(inverted, h.invertedTets);
+                energy = std::max(energy, h.elasticEnergyJ);
+                if (trace && s % 10 == 0)
+                    std::printf("trace: %.2f s: device insertion %.1f mm, scope tip %.1f mm from the pivot, %.1f mm "
+                                "off the device's; force %.2f N (tip %.2f N), %zu inverted, energy %.4f J\n",
+                                st.timeS, batch[tpb - 1].insertionMm, hs::distance(st.scope.tipMm, e.frame().pivotMm),
+                                offTip, st.contact.forceN, st.contact.tipForceN, h.invertedTets, h.elasticEnergyJ);
+            }
+            std::printf(
+                "| %.0f deg off, towards %.0f deg | %.3f | %.3f | %.1f | %.2f | %.2f | %zu%s | %zu | %.4f |\n", off,
+                toward, peak, held, offTip, moved, osMoved, e.metrics().perforations.size(),
+                !e.metrics().perforations.empty() && e.metrics().perforations[0].falsePassage ? " (false passage)" : "",
+                inverted, energy);
+        }
+        return 0;
     }
 
     // The exploration script, repeated to fill `seconds` of simulated time.
@@ -218,8 +309,8 @@ int main(int argc, char** argv) {
         t.visibilityMs * perStep,
         (t.totalMs - t.tissueForcesMs - t.tissueSolvesMs - t.contactSolveMs - t.contactSearchMs - t.visibilityMs) *
             perStep);
-    std::printf("| stability | inverted tets max %zu, min volume ratio %.3f, elastic energy max %.4f J, "
-                "point speed max %.0f mm/s |\n",
+    std::printf("| stability | inverted tets max %zu, min volume ratio %.3f, elastic energy max %.4f J, point speed "
+                "max %.0f mm/s |\n",
                 maxInverted, minRatio, maxEnergy, maxSpeed);
     std::printf("| trial metrics | surface %.1f %%, contacts %d, peak force %.2f N, perforations %zu |\n",
                 m.cavitySurfaceVisualizedPercent, m.wallContacts, m.peakForceN, m.perforations.size());

@@ -26,6 +26,8 @@ constexpr double kPressClearanceMm = 1.0;
 constexpr double kPressMostObliqueDeg = 60.0;
 /// A rough trial: the tip's speeds (mm/s; a hand moves a hysteroscope at up to about 50), how far beyond a face it
 /// presses at most (mm), and where on the cavity's axis its moves start at the least (mm beyond the internal os).
+/// The entry script pushes the scope in at this speed, mm/s.
+constexpr double kEntrySpeedMmPerS = 5.0;
 constexpr double kRoughSlowMmPerS = 10.0;
 constexpr double kRoughFastMmPerS = 50.0;
 constexpr double kRoughDeepestMm = 3.0;
@@ -349,6 +351,30 @@ Result<PressPlan> pressScript(const World& world, int pathology, double depthMm,
     add(holdS, pressed);
     plan.script = toScript(keys.keys, 0.0);
     return plan;
+}
+
+Script entryScript(const World& world, double offAxisDeg, double towardDeg) {
+    const World::Impl& w = *world.impl_;
+    detail::TriangleBvh open;
+    open.build(*w.triangles, w.openPointsMm);
+    DeviceSample outside = w.canalEntry(open);
+    const ScopePose clearest = scopePose(w.frame, w.options.scope, outside);
+    const double off = std::clamp(offAxisDeg, 0.0, 45.0) * kDeg, toward = towardDeg * kDeg;
+    const Vec3 side = w.frame.anterior * std::cos(toward) + w.frame.left * std::sin(toward);
+    const Vec3 shaft =
+        normalized(clearest.shaft * std::cos(off) + perpendicularTo(clearest.shaft, side) * std::sin(off));
+    const double canalMm = distance(w.landmarks.externalOsMm, w.landmarks.internalOsMm);
+    const double inMm = canalMm + 5.0;
+    outside = sampleAiming(w.frame, w.frame.pivotMm + shaft * 10.0);
+    outside.insertionMm = -5.0;
+    DeviceSample in = outside;
+    in.insertionMm = inMm / std::max(0.2, dot(shaft, w.frame.axis)); // its tip 5 mm beyond the internal os's plane
+    Plan plan;
+    plan.add(0.0, outside);
+    plan.add(1.0, outside);
+    plan.add((in.insertionMm - outside.insertionMm) / kEntrySpeedMmPerS, in);
+    plan.add(1.0, in);
+    return toScript(plan.keys, 0.0);
 }
 
 Script roughScript(const World& world, double durationS, std::uint64_t seed) {

@@ -258,6 +258,25 @@ void World::Impl::recordContact(const std::vector<mechanics::FemConstraint>& row
     // ... or the tip is beyond the uterus as it lies at rest (outside its serosa, past the internal os).
     const bool outside = dot(pose.tipMm - landmarks.internalOsMm, frame.axis) > 0.0 && !insideRestHull(pose.tipMm);
     if (perforationIndex < 0 && (tipPushS >= kPerforationHoldS || outside)) {
+        if (tipFace < 0) {
+            // Through the wall with no contact left at the tip (the wall gave way at the contact's largest force): the
+            // wall's face nearest the tip.
+            std::vector<std::int32_t> near;
+            bvh.near(pose.tipMm, kClearanceReachMm, near);
+            std::sort(near.begin(), near.end());
+            double best = 1e300;
+            for (const std::int32_t f : near) {
+                const Triangle& tri = (*triangles)[static_cast<std::size_t>(f)];
+                const double d2 = closestPointOnTriangle(pose.tipMm, pointsMm[static_cast<std::size_t>(tri[0])],
+                                                         pointsMm[static_cast<std::size_t>(tri[1])],
+                                                         pointsMm[static_cast<std::size_t>(tri[2])])
+                                      .distance2;
+                if (d2 < best) {
+                    best = d2;
+                    tipFace = f;
+                }
+            }
+        }
         Perforation p;
         p.timeS = state.timeS;
         p.locationMm = tipFace >= 0 ? faceCentre(tipFace) : pose.tipMm;

@@ -136,6 +136,10 @@ public:
         double minVolumeRatio = 1.0;
         double maxSpeedMmPerS = 0.0;
         std::size_t invertedTets = 0;
+        /// Steps whose tissue motion was shortened, and refused, because it inverted a tet (the tissue moves as far as
+        /// no tet inverts; docs/simulator.md, "Tissue"): since load.
+        std::size_t shortenedSteps = 0;
+        std::size_t refusedSteps = 0;
     };
     Health health() const;
 
@@ -160,6 +164,7 @@ private:
     friend Script explorationScript(const World& world, double durationS);
     friend Result<struct PressPlan> pressScript(const World& world, int pathology, double depthMm, double holdS);
     friend Script roughScript(const World& world, double durationS, std::uint64_t seed);
+    friend Script entryScript(const World& world, double offAxisDeg, double towardDeg);
     World();
     struct Impl;
     std::unique_ptr<Impl> impl_;
@@ -189,6 +194,12 @@ Script explorationScript(const World& world, double durationS = 60.0);
 /// up to 3 mm beyond it at 10-50 mm/s (a hand's speeds), held 0.2-1 s, the optic rolled at random; out at the end.
 /// The same seed gives the same script.
 Script roughScript(const World& world, double durationS = 60.0, std::uint64_t seed = 1);
+
+/// A scripted entry through the cervical canal (the check that the canal is an obstacle): the device outside the
+/// external os, aimed along the canal's clearest straight line turned `offAxisDeg` (0-45) towards `towardDeg` about the
+/// canal's axis (0 anterior, 90 the patient's left), pushed in at 5 mm/s until its tip would stand 5 mm beyond the
+/// internal os, held there 1 s, with the inflow open.
+Script entryScript(const World& world, double offAxisDeg = 0.0, double towardDeg = 0.0);
 
 /// A scripted press (the check that the device feels the tissue): in through the canal with the inflow open, the tip
 /// brought head-on to a face of the cavity as the fluid opens it (60 mmHg), then the device pushed `depthMm` beyond
