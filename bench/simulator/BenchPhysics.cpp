@@ -293,6 +293,14 @@ int main(int argc, char** argv) {
         "| canal's clearest straight line | %.0f deg anterior, %.0f deg left of its axis: the wall %.2f mm from it at "
         "the narrowest |\n",
         clearestPitch, clearestYaw, clearest);
+    {
+        // The canal's angle to the cavity's axis (internal os to fundus), + anterior: the flexion the scope must turn.
+        const hs::Vec3 cavity = hs::normalized(w.landmarks().fundusMm - w.landmarks().internalOsMm);
+        const double angle = std::atan2(hs::norm(hs::cross(w.frame().axis, cavity)), hs::dot(w.frame().axis, cavity)) *
+                             180.0 / 3.14159265358979323846;
+        std::printf("| canal to cavity | %.1f deg %s |\n", angle,
+                    hs::dot(cavity, w.frame().anterior) >= 0.0 ? "anterior (anteflexed)" : "posterior (retroflexed)");
+    }
     std::printf("| load (read, build, calibrate) | %.2f s |\n", loadS);
     std::printf("| physics step (%d iterations, dt %.0f ms) | mean %.2f ms, p50 %.2f ms, p99 %.2f ms, max %.2f ms |\n",
                 options.solverIterations, options.stepS * 1e3, mean, percentile(stepMs, 0.5), percentile(stepMs, 0.99),
