@@ -7,14 +7,27 @@
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 namespace hs::mechanics {
 
+/// The iteration's matrix factored as L D L^T in a two-part nested-dissection order (George 1973): the points cut by
+/// a plane into two halves that share no entry of the matrix, each half in its own fill-reducing (AMD) order, and the
+/// separator (the first half's points next to the second's) last. L's columns of one half then touch only that half's
+/// rows and the separator's, so the two halves' triangular solves run on two threads; the separator's rows gather each
+/// half's updates in its own buffer, summed in a fixed order, so the result is the same bits on one thread or two.
 struct CorotationalFem::Factor {
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> ldlt;
+    std::vector<int> oldToNew; ///< per dof, its place in the factor's order
+    std::array<std::size_t, 2>
+        partEnd{}; ///< the halves are [0, partEnd[0]) and [partEnd[0], partEnd[1]); the separator follows
+    std::vector<int> colStart, row; ///< L's strictly lower part, by column
+    std::vector<double> value, diag;
+    mutable std::vector<double> work, buffer[2];
 };
 
 namespace {
@@ -241,7 +254,131 @@ void CorotationalFem::assembleAndFactor() {
     h3.setFromTriplets(triplets.begin(), triplets.end());
     if (!m_factor)
         m_factor = std::make_unique<Factor>();
-    m_factor->ldlt.compute(h3);
+    Factor& f = *m_factor;
+    // The points' neighbours in the matrix.
+    std::vector<std::vector<std::int32_t>> neighbours(n);
+    for (Eigen::Index c = 0; c < h3.outerSize(); ++c)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(h3, c); it; ++it) {
+            const auto a = static_cast<std::size_t>(it.row()) / 3, b = static_cast<std::size_t>(c) / 3;
+            if (a != b)
+                neighbours[a].push_back(static_cast<std::int32_t>(b));
+        }
+    // The two halves: the points by their rest place along the longest side of the mesh's box, cut where the halves'
+    // factors hold about as many entries (bisected on the cut's place); the separator: the first half's points next
+    // to the second's.
+    Vec3 lo = n > 0 ? m_rest[0] : Vec3{}, hi = lo;
+    for (const Vec3& p : m_rest)
+        for (int d = 0; d < 3; ++d) {
+            lo[d] = std::min(lo[d], p[d]);
+            hi[d] = std::max(hi[d], p[d]);
+        }
+    int axis = 0;
+    for (int d = 1; d < 3; ++d)
+        if (hi[d] - lo[d] > hi[axis] - lo[axis])
+            axis = d;
+    std::vector<std::int32_t> byPlace(n);
+    for (std::size_t i = 0; i < n; ++i)
+        byPlace[i] = static_cast<std::int32_t>(i);
+    std::sort(byPlace.begin(), byPlace.end(), [this, axis](std::int32_t a, std::int32_t b) {
+        const double pa = m_rest[static_cast<std::size_t>(a)][axis], pb = m_rest[static_cast<std::size_t>(b)][axis];
+        return pa < pb || (pa == pb && a < b);
+    });
+    const auto cutAt = [&](std::size_t first) {
+        std::vector<int> part(n, 1); // 0, 1: the halves; 2: the separator
+        for (std::size_t k = 0; k < first; ++k)
+            part[static_cast<std::size_t>(byPlace[k])] = 0;
+        for (std::size_t i = 0; i < n; ++i)
+            if (part[i] == 0)
+                for (const std::int32_t j : neighbours[i])
+                    if (part[static_cast<std::size_t>(j)] == 1) {
+                        part[i] = 2;
+                        break;
+                    }
+        return part;
+    };
+    // A part's dofs in its own AMD order (Eigen's ordering gives the old index at each new place), and its factor's
+    // entries when `fill` is asked for.
+    const auto partOrder = [&](const std::vector<int>& part, int which, std::size_t* fill) {
+        std::vector<int> dofs;
+        for (std::size_t i = 0; i < n; ++i)
+            if (part[i] == which)
+                for (int d = 0; d < 3; ++d)
+                    dofs.push_back(static_cast<int>(3 * i) + d);
+        std::vector<int> local(3 * n, -1);
+        for (std::size_t k = 0; k < dofs.size(); ++k)
+            local[static_cast<std::size_t>(dofs[k])] = static_cast<int>(k);
+        std::vector<Eigen::Triplet<double>> sub;
+        for (const int dof : dofs)
+            for (Eigen::SparseMatrix<double>::InnerIterator it(h3, dof); it; ++it)
+                if (local[static_cast<std::size_t>(it.row())] >= 0)
+                    sub.emplace_back(local[static_cast<std::size_t>(it.row())], local[static_cast<std::size_t>(dof)],
+                                     it.value());
+        Eigen::SparseMatrix<double> block(static_cast<Eigen::Index>(dofs.size()),
+                                          static_cast<Eigen::Index>(dofs.size()));
+        block.setFromTriplets(sub.begin(), sub.end());
+        std::vector<int> order;
+        if (dofs.empty())
+            return order;
+        Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> amd;
+        Eigen::AMDOrdering<int>()(block, amd);
+        for (std::size_t k = 0; k < dofs.size(); ++k)
+            order.push_back(dofs[static_cast<std::size_t>(amd.indices()[static_cast<Eigen::Index>(k)])]);
+        if (fill) {
+            Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> trial(block);
+            *fill = static_cast<std::size_t>(trial.matrixL().nestedExpression().nonZeros());
+        }
+        return order;
+    };
+    if (m_partition.size() != n) {
+        std::size_t low = 3 * n / 10, high = 7 * n / 10;
+        for (int step = 0; step < 8 && low + 1 < high; ++step) {
+            const std::size_t mid = (low + high) / 2;
+            const std::vector<int> part = cutAt(mid);
+            std::size_t fillA = 0, fillB = 0;
+            partOrder(part, 0, &fillA);
+            partOrder(part, 1, &fillB);
+            (fillA < fillB ? low : high) = mid;
+        }
+        m_partition = cutAt((low + high) / 2);
+    }
+    std::vector<int> newToOld;
+    newToOld.reserve(3 * n);
+    for (int which = 0; which < 3; ++which) {
+        const std::vector<int> order = partOrder(m_partition, which, nullptr);
+        newToOld.insert(newToOld.end(), order.begin(), order.end());
+        if (which < 2)
+            f.partEnd[static_cast<std::size_t>(which)] = newToOld.size();
+    }
+    f.oldToNew.assign(3 * n, 0);
+    for (std::size_t k = 0; k < newToOld.size(); ++k)
+        f.oldToNew[static_cast<std::size_t>(newToOld[k])] = static_cast<int>(k);
+    std::vector<Eigen::Triplet<double>> permuted;
+    permuted.reserve(static_cast<std::size_t>(h3.nonZeros()));
+    for (Eigen::Index c = 0; c < h3.outerSize(); ++c)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(h3, c); it; ++it)
+            permuted.emplace_back(f.oldToNew[static_cast<std::size_t>(it.row())],
+                                  f.oldToNew[static_cast<std::size_t>(c)], it.value());
+    Eigen::SparseMatrix<double> ordered(h3.rows(), h3.cols());
+    ordered.setFromTriplets(permuted.begin(), permuted.end());
+    f.ldlt.compute(ordered);
+    // L's strictly lower part and D, for the two-part solve.
+    const auto& l = f.ldlt.matrixL().nestedExpression();
+    f.colStart.assign(3 * n + 1, 0);
+    f.row.clear();
+    f.value.clear();
+    for (Eigen::Index c = 0; c < l.outerSize(); ++c) {
+        for (std::remove_reference_t<decltype(l)>::InnerIterator it(l, c); it; ++it)
+            if (it.row() > c) {
+                f.row.push_back(static_cast<int>(it.row()));
+                f.value.push_back(it.value());
+            }
+        f.colStart[static_cast<std::size_t>(c) + 1] = static_cast<int>(f.row.size());
+    }
+    const Eigen::VectorXd d = f.ldlt.vectorD();
+    f.diag.assign(d.data(), d.data() + d.size());
+    f.work.assign(3 * n, 0.0);
+    if (!m_team || m_team->size() != std::max(1, m_settings.threads))
+        m_team = std::make_unique<WorkerTeam>(std::max(1, m_settings.threads));
 }
 
 void CorotationalFem::setTarget(std::size_t point, const Vec3& positionM) {
@@ -400,9 +537,50 @@ void CorotationalFem::solveInPlace(std::vector<double>& b) const {
     for (std::size_t dof = 0; dof < b.size(); ++dof)
         if (m_fixed[dof / 3][dof % 3])
             b[dof] = 0.0;
-    Eigen::Map<Eigen::VectorXd> map(b.data(), static_cast<Eigen::Index>(b.size()));
-    const Eigen::VectorXd x = m_factor->ldlt.solve(map);
-    map = x;
+    const Factor& f = *m_factor;
+    const std::size_t dofs = f.oldToNew.size();
+    std::vector<double>& y = f.work;
+    for (std::size_t i = 0; i < dofs; ++i)
+        y[static_cast<std::size_t>(f.oldToNew[i])] = b[i];
+    const std::size_t sep = f.partEnd[1];
+    const std::array<std::size_t, 3> begin{0, f.partEnd[0], f.partEnd[1]};
+    const std::array<std::size_t, 3> end{f.partEnd[0], f.partEnd[1], dofs};
+    // L y = b: the halves side by side, the separator's rows gathered per half.
+    m_team->run(2, 1, [&](std::size_t half, std::size_t, std::size_t) {
+        std::vector<double>& buffer = f.buffer[half];
+        buffer.assign(dofs - sep, 0.0);
+        for (std::size_t j = begin[half]; j < end[half]; ++j) {
+            const double yj = y[j];
+            for (int k = f.colStart[j]; k < f.colStart[j + 1]; ++k) {
+                const auto r = static_cast<std::size_t>(f.row[static_cast<std::size_t>(k)]);
+                if (r < sep)
+                    y[r] -= f.value[static_cast<std::size_t>(k)] * yj;
+                else
+                    buffer[r - sep] += f.value[static_cast<std::size_t>(k)] * yj;
+            }
+        }
+    });
+    for (std::size_t r = sep; r < dofs; ++r)
+        y[r] = (y[r] - f.buffer[0][r - sep]) - f.buffer[1][r - sep];
+    for (std::size_t j = sep; j < dofs; ++j)
+        for (int k = f.colStart[j]; k < f.colStart[j + 1]; ++k)
+            y[static_cast<std::size_t>(f.row[static_cast<std::size_t>(k)])] -=
+                f.value[static_cast<std::size_t>(k)] * y[j];
+    // D, then L^T x = y: the separator first, then the halves side by side.
+    for (std::size_t j = 0; j < dofs; ++j)
+        y[j] /= f.diag[j];
+    for (std::size_t j = dofs; j-- > sep;)
+        for (int k = f.colStart[j]; k < f.colStart[j + 1]; ++k)
+            y[j] -=
+                f.value[static_cast<std::size_t>(k)] * y[static_cast<std::size_t>(f.row[static_cast<std::size_t>(k)])];
+    m_team->run(2, 1, [&](std::size_t half, std::size_t, std::size_t) {
+        for (std::size_t j = end[half]; j-- > begin[half];)
+            for (int k = f.colStart[j]; k < f.colStart[j + 1]; ++k)
+                y[j] -= f.value[static_cast<std::size_t>(k)] *
+                        y[static_cast<std::size_t>(f.row[static_cast<std::size_t>(k)])];
+    });
+    for (std::size_t i = 0; i < dofs; ++i)
+        b[i] = y[static_cast<std::size_t>(f.oldToNew[i])];
     m_timings.solveMs += msSince(started);
 }
 
@@ -914,7 +1092,7 @@ double CorotationalFem::loadCompliance(const std::vector<Vec3>& forces) const {
 }
 
 std::size_t CorotationalFem::factorNonZeros() const {
-    return m_factor ? static_cast<std::size_t>(m_factor->ldlt.matrixL().nestedExpression().nonZeros()) : 0;
+    return m_factor ? m_factor->row.size() + m_factor->diag.size() : 0;
 }
 
 Vec3 CorotationalFem::reactionN(std::size_t point) const {

@@ -218,6 +218,7 @@ private:
 
     struct Factor;
     std::unique_ptr<Factor> m_factor;
+    std::vector<int> m_partition; ///< per point, the factor's half (0, 1) or the separator (2); kept while tets go
     std::unique_ptr<WorkerTeam> m_team; ///< the force evaluation's threads (settings.threads, kept between steps)
     FemSettings m_settings;
     std::vector<Vec3> m_rest, m_x, m_v, m_target, m_xStart, m_force, m_reaction;
