@@ -95,6 +95,7 @@ Status CorotationalFem::build(const std::vector<Vec3>& pointsM, const std::vecto
     if (materials.size() != tets.size() || fixedDof.size() != n)
         return fail(ErrorCode::InvalidInput, "tissue solver: one material per tet and one fixed flag per point");
     m_settings = settings;
+    m_partition.clear(); // a new mesh: the factor's halves are cut anew
     m_rest = pointsM;
     m_x = pointsM;
     m_target = pointsM;
