@@ -12,9 +12,17 @@
 // --still draws one picture of the surface at rest in clear saline: the 30 degree optic's tip FRACTION of the way
 // from the internal os to the fundus, aimed about the pivot, rolled by ROLL_DEG (the docs' picture), with the detail
 // the view picks for the GL renderer, or the full or the light one.
+//   bench_render SCENE_DIR --exploration [--sizes WxH] [--fps F] [--png PREFIX]
+// --exploration plays the built-in exploration (sim::explorationScript, 60 s) on the world and draws it F times a
+// second of the trial (default 15) twice, side by side: through the camera head (automatic exposure, white balance,
+// tone curve, inverse-square lamp: EndoscopicLook's defaults) and as the view drew before it (a fixed exposure, the
+// older lamp falloff); a table of the mean luminance, clipped and highlight shares inside the optic's circle per
+// phase of the exploration and over all of it. --png writes PREFIX-camera-N.png and PREFIX-before-N.png at a few
+// moments.
 #include "hs/scene/ScenePackage.h"
 #include "hs/scene/ScopePassage.h"
 #include "hs/sim/Scope.h"
+#include "hs/sim/World.h"
 #include "hs/simrender/EndoscopicView.h"
 #include "hs/simrender/Hud.h"
 
@@ -24,6 +32,7 @@
 #include <vtkRenderer.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -173,6 +182,150 @@ int still(const hs::scene::Scene& scene, const hs::scene::ScopeLandmarks& landma
     return 0;
 }
 
+/// The luminance statistics of one look over an exploration.
+struct LookSummary {
+    std::vector<hs::simrender::CircleStats> frames;
+    std::vector<double> exposures;
+};
+
+void printSummary(const char* name, const LookSummary& s, std::size_t from, std::size_t to) {
+    std::vector<double> means;
+    double clippedMax = 0.0, clippedMean = 0.0, highlight = 0.0;
+    std::size_t inBand = 0;
+    for (std::size_t i = from; i < to && i < s.frames.size(); ++i) {
+        const auto& f = s.frames[i];
+        means.push_back(f.meanLuminance);
+        clippedMax = std::max(clippedMax, f.clippedFraction);
+        clippedMean += f.clippedFraction;
+        highlight += f.highlightFraction;
+        inBand += f.meanLuminance >= 0.35 && f.meanLuminance <= 0.65 ? 1 : 0;
+    }
+    if (means.empty())
+        return;
+    const double n = static_cast<double>(means.size());
+    double sum = 0.0;
+    for (double m : means)
+        sum += m;
+    std::sort(means.begin(), means.end());
+    const auto at = [&](double q) { return means[std::min(means.size() - 1, static_cast<std::size_t>(q * n))]; };
+    std::printf("%-8s %6zu %8.3f %7.3f %7.3f %7.3f %7.3f %9.1f %10.2f %10.2f %10.2f\n", name, means.size(), sum / n,
+                means.front(), at(0.05), at(0.95), means.back(), 100.0 * static_cast<double>(inBand) / n,
+                100.0 * clippedMean / n, 100.0 * clippedMax, 100.0 * highlight / n);
+}
+
+int exploration(const std::string& folder, Size size, double fps, const std::string& png) {
+    auto loaded = hs::sim::World::load(folder, hs::sim::WorldOptions{});
+    if (!loaded) {
+        std::fprintf(stderr, "bench_render: %s\n", loaded.error().message().c_str());
+        return 3;
+    }
+    hs::sim::World& world = **loaded;
+    const hs::sim::Script script = hs::sim::explorationScript(world);
+    struct Look {
+        const char* name;
+        vtkNew<vtkRenderWindow> window;
+        vtkNew<vtkRenderer> renderer;
+        std::unique_ptr<hs::simrender::EndoscopicView> view;
+        LookSummary summary;
+    };
+    Look looks[2];
+    looks[0].name = "camera";
+    looks[1].name = "before";
+    for (int k = 0; k < 2; ++k) {
+        Look& l = looks[k];
+        l.window->SetOffScreenRendering(1);
+        l.window->SetMultiSamples(0);
+        l.window->SetSize(size.width, size.height);
+        l.window->AddRenderer(l.renderer);
+        hs::simrender::EndoscopicLook look;
+        look.hud = false; // the circle's statistics of the picture alone
+        if (k == 1) {     // as the view drew before the camera head
+            look.autoExposure = false;
+            look.exposure = 1.0;
+            look.lampAttenuation = {1.0, 0.04, 0.002};
+            look.lampColour = {1.0, 1.0, 1.0};
+            look.toneKnee = 0.99;
+        }
+        l.view = std::make_unique<hs::simrender::EndoscopicView>(l.renderer, look);
+        l.view->measureFrames(true);
+        l.view->setSurface(world.scene().surface);
+    }
+    const std::size_t per = world.ticksPerStep();
+    const std::uint64_t ticks = script.tickCount();
+    const double stepS = world.options().stepS;
+    const std::uint64_t stepsPerFrame = std::max<std::uint64_t>(1, std::llround(1.0 / (fps * stepS)));
+    std::vector<hs::sim::DeviceSample> samples(per);
+    std::vector<hs::Vec3> visual;
+    std::vector<double> times;
+    int pictures = 0;
+    for (std::uint64_t tick = 0; tick + per <= ticks; tick += per) {
+        for (std::size_t i = 0; i < per; ++i) {
+            samples[i] = script.sampleAt(tick + i);
+            samples[i].tick = tick + i;
+        }
+        if (!world.step(samples.data(), per).ok()) {
+            std::fprintf(stderr, "bench_render: the exploration's step %llu failed\n",
+                         static_cast<unsigned long long>(world.state().step));
+            return 4;
+        }
+        if (world.state().step % stepsPerFrame != 0)
+            continue;
+        const hs::sim::WorldState& state = world.state();
+        times.push_back(state.timeS);
+        for (Look& l : looks) {
+            l.view->setOuterSurfaceVisible(state.sample.insertionMm < 0.0 || state.contact.perforated);
+            world.visualPoints(world.simulationPointsMm(), visual, l.view->sourcePointsInUse());
+            l.view->setPoints(visual);
+            l.view->setPose(hs::simrender::cameraPose(state.scope, world.options().scope));
+            l.view->setFluid(state.fluid.turbidity, state.fluid.redOut);
+            l.view->setTime(state.timeS);
+            l.window->Render();
+            l.summary.frames.push_back(l.view->lastFrameStats());
+            l.summary.exposures.push_back(l.view->exposure());
+        }
+        if (!png.empty() && times.size() % static_cast<std::size_t>(std::max(1.0, 10.0 * fps)) == 0 && pictures < 6) {
+            ++pictures;
+            for (Look& l : looks) {
+                vtkNew<vtkWindowToImageFilter> grab;
+                grab->SetInput(l.window);
+                grab->ReadFrontBufferOff();
+                vtkNew<vtkPNGWriter> writer;
+                const std::string file = png + "-" + l.name + "-" + std::to_string(pictures) + ".png";
+                writer->SetFileName(file.c_str());
+                writer->SetInputConnection(grab->GetOutputPort());
+                writer->Write();
+            }
+        }
+    }
+    const auto gains = looks[0].view->whiteBalanceGains();
+    std::printf("exploration of %s: %zu frames at %.0f per trial second, %dx%d, %s detail (GL renderer %s); white "
+                "balance %.3f %.3f %.3f\n",
+                folder.c_str(), times.size(), fps, size.width, size.height,
+                looks[0].view->lightDetail() ? "light" : "full", looks[0].view->glRenderer().c_str(), gains[0],
+                gains[1], gains[2]);
+    std::printf("inside the optic's circle: luminance (Rec. 709 luma, 0..1) per frame; %% of frames in 0.35-0.65; "
+                "clipped (a channel at 255) and highlight (near white) %% of the circle\n");
+    const double end = times.empty() ? 0.0 : times.back();
+    const std::pair<const char*, std::pair<double, double>> phases[] = {
+        {"whole", {0.0, 1e300}}, {"first 8 s", {0.0, 8.0}}, {"8 s on", {8.0, 1e300}}, {"last 6 s", {end - 6.0, 1e300}}};
+    for (const auto& [phase, range] : phases) {
+        std::size_t from = 0, to = 0;
+        while (from < times.size() && times[from] < range.first)
+            ++from;
+        to = from;
+        while (to < times.size() && times[to] < range.second)
+            ++to;
+        std::printf("%s (%zu frames)\n%-8s %6s %8s %7s %7s %7s %7s %9s %10s %10s %10s\n", phase, to - from, "look",
+                    "frames", "mean", "min", "p5", "p95", "max", "% in band", "clip mean", "clip max", "highlight");
+        for (const Look& l : looks)
+            printSummary(l.name, l.summary, from, to);
+    }
+    const auto [lo, hi] = std::minmax_element(looks[0].summary.exposures.begin(), looks[0].summary.exposures.end());
+    if (lo != looks[0].summary.exposures.end())
+        std::printf("camera exposure %.3f .. %.3f\n", *lo, *hi);
+    return 0;
+}
+
 std::vector<Size> parseSizes(const std::string& text) {
     std::vector<Size> sizes;
     std::stringstream list(text);
@@ -200,6 +353,8 @@ int main(int argc, char** argv) {
     std::vector<Size> sizes{{640, 480}, {960, 720}};
     std::string png;
     bool stillPicture = false;
+    bool explore = false;
+    double fps = 15.0;
     hs::simrender::ViewDetail detail = hs::simrender::ViewDetail::Automatic;
     double pose[2] = {0, 0};
     for (int i = 2; i < argc; ++i) {
@@ -216,6 +371,10 @@ int main(int argc, char** argv) {
             sizes = parseSizes(argv[++i]);
         else if (a == "--png" && i + 1 < argc)
             png = argv[++i];
+        else if (a == "--exploration")
+            explore = true;
+        else if (a == "--fps" && i + 1 < argc)
+            fps = std::clamp(std::atof(argv[++i]), 1.0, 200.0);
         else if (a == "--full")
             detail = hs::simrender::ViewDetail::Full;
         else if (a == "--light")
@@ -226,6 +385,8 @@ int main(int argc, char** argv) {
                 p = std::atof(argv[++i]);
         }
     }
+    if (explore)
+        return exploration(argv[1], sizes.front(), fps, png);
     auto scene = hs::scene::readScenePackage(argv[1]);
     if (!scene) {
         std::fprintf(stderr, "bench_render: %s\n", scene.error().message().c_str());

@@ -289,6 +289,7 @@ void SimWindow::onRenderTick() {
         m_endoscope->setPoints(m_visualPoints);
         m_endoscope->setPose(simrender::cameraPose(state.scope, m_options.world.scope));
         m_endoscope->setFluid(state.fluid.turbidity, state.fluid.redOut);
+        m_endoscope->setTime(state.timeS); // the camera adapts on the trial's clock
         // The heads-up text is redrawn a few times a second (its glyphs cost a third of the GUI thread's time when
         // drawn every frame on a software GL renderer), at once when its warning line changes.
         const simrender::HudText hud = simrender::hudText(state, m_options.world.fluid, frame->progress);

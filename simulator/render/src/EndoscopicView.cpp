@@ -24,6 +24,7 @@
 #include <vtkPolyDataTangents.h>
 #include <vtkProperty.h>
 #include <vtkProperty2D.h>
+#include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkShaderProperty.h>
 #include <vtkSmartPointer.h>
@@ -34,6 +35,7 @@
 #include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace hs::simrender {
@@ -42,22 +44,29 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-/// Applied after VTK's own texturing (so after lighting and the albedo): the medium between lens and tissue
-/// scatters the lamp's light back (haze growing with depth, Beer-Lambert), and red-out covers everything.
+/// Applied after VTK's own texturing (so after lighting and the albedo): the medium between lens and tissue dims the
+/// tissue's light (Beer-Lambert) and scatters the lamp's light back; the lamp's light falls as 1 / (1 + (r / r0)^2)
+/// along the ray, so the scattered light sums to sigma r0 atan(depth / r0) (single scattering; near the lens most of
+/// it), at most sigma r0 pi / 2 however far the wall; red-out covers everything; then the
+/// camera head: its exposure and white balance, and its tone curve (linear to the knee, a soft shoulder above).
 constexpr const char* kFluidShader = R"(//VTK::TCoord::Impl
   {
     float hsNdcZ = gl_FragCoord.z * 2.0 - 1.0;
     float hsDepth = 2.0 * hsNear * hsFar / (hsFar + hsNear - hsNdcZ * (hsFar - hsNear));
-    float hsHaze = 1.0 - exp(-hsFogPerMm * hsDepth);
-    gl_FragData[0].rgb = mix(gl_FragData[0].rgb, hsFogColour, hsHaze);
+    float hsTransmitted = exp(-hsFogPerMm * hsDepth);
+    float hsScattered = 1.0 - exp(-hsFogPerMm * hsLampMm * atan(hsDepth / hsLampMm));
+    gl_FragData[0].rgb = gl_FragData[0].rgb * hsTransmitted + hsFogColour * hsScattered;
     gl_FragData[0].rgb = mix(gl_FragData[0].rgb, hsRedOutColour, hsRedOut);
+    vec3 hsSensor = gl_FragData[0].rgb * hsExposure * hsWhite;
+    vec3 hsOver = max(hsSensor - vec3(hsKnee), vec3(0.0));
+    gl_FragData[0].rgb = min(hsSensor, vec3(hsKnee)) + (1.0 - hsKnee) * (vec3(1.0) - exp(-hsOver / (1.0 - hsKnee)));
   }
 )";
 
-/// The optic's vignetting: opacity of the mask at fractions of the field's radius (cos^4-like falloff of a
-/// Hopkins rod lens towards its edge; black beyond it).
+/// The optic's vignetting: opacity of the mask at fractions of the field's radius (a rod-lens optic's relative
+/// illumination: even over most of the field, falling in its outer tenth; black beyond it).
 constexpr std::array<std::array<double, 2>, 7> kVignette{
-    {{0.0, 0.0}, {0.55, 0.0}, {0.75, 0.12}, {0.88, 0.3}, {0.95, 0.55}, {1.0, 1.0}, {4.0, 1.0}}};
+    {{0.0, 0.0}, {0.7, 0.0}, {0.85, 0.08}, {0.93, 0.22}, {0.97, 0.45}, {1.0, 1.0}, {4.0, 1.0}}};
 constexpr int kMaskSegments = 96;
 /// The occluder's distance from the lens, in near clipping distances: in front of any tissue that is drawn.
 constexpr double kOccluderDepth = 1.05;
@@ -194,6 +203,23 @@ struct EndoscopicView::Impl {
     double fieldOfViewDeg = 90.0;
     double occluderFieldOfViewDeg = -1.0; ///< degrees; the field the occluder was built for
     double turbidity = 0.0, redOut = 0.0;
+    AutoExposure autoExposure;
+    std::array<double, 3> white{1.0, 1.0, 1.0};
+    CircleStats stats;
+    bool measure = false;
+    double hostTimeS = -1.0;  ///< s, the host's clock (setTime); < 0: the wall clock
+    double lastFrameS = -1.0; ///< s, when the last frame was measured
+    vtkSmartPointer<vtkUnsignedCharArray> readBack;
+    vtkSmartPointer<vtkCallbackCommand> endObserver;
+    unsigned long endTag = 0;
+    void measureFrame();
+    /// mm, r0 of the lamp's falloff 1 / (1 + (r / r0)^2) (from its quadratic attenuation; 1 mm without one).
+    double lampSourceMm() const {
+        return look.lampAttenuation[2] > 0.0
+                   ? std::sqrt(std::max(look.lampAttenuation[0], 1e-6) / look.lampAttenuation[2])
+                   : 1.0;
+    }
+    void updateBackground();
 
     bool wantsLight() const;
     void probeRenderer();
@@ -219,7 +245,12 @@ EndoscopicView::EndoscopicView(vtkRenderer* renderer, const EndoscopicLook& look
     d.lamp->SetConeAngle(89.0);
     d.lamp->SetAttenuationValues(look.lampAttenuation[0], look.lampAttenuation[1], look.lampAttenuation[2]);
     d.lamp->SetIntensity(look.lampIntensity);
+    d.lamp->SetColor(look.lampColour[0], look.lampColour[1], look.lampColour[2]);
     renderer->AddLight(d.lamp);
+    // The "white" button: a white target under the lamp shows the lamp's colour; the gains make it grey.
+    for (std::size_t c = 0; c < 3; ++c)
+        d.white[c] = look.lampColour[c] > 0.0 ? look.lampColour[1] / look.lampColour[c] : 1.0;
+    d.autoExposure = AutoExposure(look.exposureSettings, look.exposure);
 
     // Drawn before the tissue, so the tissue's fragments behind the mask's black ring fail the depth test early.
     d.occluderGeometry = vtkSmartPointer<vtkPolyData>::New();
@@ -278,13 +309,20 @@ EndoscopicView::EndoscopicView(vtkRenderer* renderer, const EndoscopicLook& look
         impl->fitOverlays();
     });
     d.startTag = renderer->AddObserver(vtkCommand::StartEvent, d.startObserver);
-    renderer->SetBackground(look.fogColour[0], look.fogColour[1], look.fogColour[2]);
+    // The camera head meters the frame just drawn (before the window shows it).
+    d.endObserver = vtkSmartPointer<vtkCallbackCommand>::New();
+    d.endObserver->SetClientData(&d);
+    d.endObserver->SetCallback(
+        [](vtkObject*, unsigned long, void* client, void*) { static_cast<Impl*>(client)->measureFrame(); });
+    d.endTag = renderer->AddObserver(vtkCommand::EndEvent, d.endObserver);
+    d.updateBackground();
     d.updateUniforms();
 }
 
 EndoscopicView::~EndoscopicView() {
     Impl& d = *m_impl;
     d.renderer->RemoveObserver(d.startTag);
+    d.renderer->RemoveObserver(d.endTag);
     d.renderer->RemoveActor(d.actor);
     d.renderer->RemoveActor(d.occluder);
     d.renderer->RemoveActor2D(d.mask);
@@ -596,14 +634,22 @@ void EndoscopicView::setFluid(double turbidity, double redOut) {
     d.turbidity = std::isfinite(turbidity) ? std::clamp(turbidity, 0.0, 1.0) : 1.0;
     d.redOut = std::isfinite(redOut) ? std::clamp(redOut, 0.0, 1.0) : 1.0;
     d.updateUniforms();
-    // Where no surface is drawn the medium itself is seen.
+    d.updateBackground();
+}
+
+void EndoscopicView::Impl::updateBackground() {
+    // Where no surface is drawn the medium itself is seen, through the same camera.
     double background[3];
+    const double e = autoExposure.exposure();
     for (int k = 0; k < 3; ++k) {
         const auto c = static_cast<std::size_t>(k);
-        background[k] = d.look.fogColour[c] * (0.4 + 0.6 * d.turbidity);
-        background[k] += (d.look.redOutColour[c] - background[k]) * d.redOut;
+        // The light the medium scatters back along a ray that meets no wall (the shader's at infinite depth).
+        const double sigma = look.clearFogPerMm + turbidity * look.turbidFogPerMm;
+        background[k] = look.fogColour[c] * (1.0 - std::exp(-sigma * lampSourceMm() * 0.5 * kPi));
+        background[k] += (look.redOutColour[c] - background[k]) * redOut;
+        background[k] = std::min(1.0, background[k] * e * white[c]);
     }
-    d.renderer->SetBackground(background);
+    renderer->SetBackground(background);
 }
 
 void EndoscopicView::Impl::updateUniforms() {
@@ -618,6 +664,65 @@ void EndoscopicView::Impl::updateUniforms() {
     u->SetUniform3f("hsFogColour", fog);
     u->SetUniform3f("hsRedOutColour", red);
     u->SetUniformf("hsRedOut", static_cast<float>(redOut));
+    u->SetUniformf("hsLampMm", static_cast<float>(lampSourceMm()));
+    u->SetUniformf("hsExposure", static_cast<float>(autoExposure.exposure()));
+    const float gains[3] = {static_cast<float>(white[0]), static_cast<float>(white[1]), static_cast<float>(white[2])};
+    u->SetUniform3f("hsWhite", gains);
+    u->SetUniformf("hsKnee", static_cast<float>(std::clamp(look.toneKnee, 0.05, 0.99)));
+}
+
+void EndoscopicView::Impl::measureFrame() {
+    if (!look.autoExposure && !measure)
+        return;
+    vtkRenderWindow* window = renderer->GetRenderWindow();
+    const int* size = renderer->GetSize();
+    const int* origin = renderer->GetOrigin();
+    if (!window || size[0] <= 0 || size[1] <= 0)
+        return;
+    // The optic's circle (fitOverlays) within its bounding square: what the camera head meters.
+    const int side = std::min(size[0], size[1]);
+    const int x0 = origin[0] + (size[0] - side) / 2, y0 = origin[1] + (size[1] - side) / 2;
+    if (!readBack)
+        readBack = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    if (window->GetRGBACharPixelData(x0, y0, x0 + side - 1, y0 + side - 1, 0, readBack) == VTK_ERROR)
+        return;
+    const double radius = 0.5 * side;
+    stats = circleStats(readBack->GetPointer(0), side, side, 4, radius, radius, radius, side > 400 ? 2 : 1);
+    if (!look.autoExposure)
+        return;
+    const double now = hostTimeS >= 0.0
+                           ? hostTimeS
+                           : std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+    const double elapsed = lastFrameS < 0.0 ? 0.0 : std::max(0.0, now - lastFrameS);
+    lastFrameS = now;
+    autoExposure.update(stats, elapsed);
+    updateUniforms();
+    updateBackground();
+}
+
+void EndoscopicView::setTime(double seconds) {
+    if (std::isfinite(seconds) && seconds >= 0.0)
+        m_impl->hostTimeS = seconds;
+}
+
+double EndoscopicView::exposure() const {
+    return m_impl->autoExposure.exposure();
+}
+
+bool EndoscopicView::exposureSettled() const {
+    return !m_impl->look.autoExposure || m_impl->autoExposure.settled();
+}
+
+std::array<double, 3> EndoscopicView::whiteBalanceGains() const {
+    return m_impl->white;
+}
+
+const CircleStats& EndoscopicView::lastFrameStats() const {
+    return m_impl->stats;
+}
+
+void EndoscopicView::measureFrames(bool on) {
+    m_impl->measure = on;
 }
 
 void EndoscopicView::setHud(const HudText& text) {

@@ -10,6 +10,7 @@
 #include <QLabel>
 #include <QLocale>
 #include <QSlider>
+#include <QTimer>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -22,6 +23,9 @@ namespace {
 constexpr int kInsertionStepsPerMm = 2;
 constexpr double kInsertionMinMm = -5.0;
 constexpr double kInsertionMaxMm = 70.0;
+/// A still picture is drawn again every this many ms, at most kSettleFrames times, while the camera's exposure settles.
+constexpr int kSettleIntervalMs = 40;
+constexpr int kSettleFrames = 40;
 
 } // namespace
 
@@ -36,6 +40,11 @@ HysteroscopicPreview::HysteroscopicPreview(QWidget* parent) : QWidget(parent) {
     simrender::EndoscopicLook look;
     look.hud = false;
     m_endoscope = std::make_unique<simrender::EndoscopicView>(m_view->renderer(), look);
+    m_clock.start();
+    m_settleTimer = new QTimer(this);
+    m_settleTimer->setSingleShot(true);
+    m_settleTimer->setInterval(kSettleIntervalMs);
+    connect(m_settleTimer, &QTimer::timeout, this, &HysteroscopicPreview::settleExposure);
     layout->addWidget(m_view, 1);
 
     m_controls = new QWidget(this);
@@ -78,14 +87,14 @@ void HysteroscopicPreview::setScene(std::shared_ptr<const scene::Scene> scene) {
     if (!m_scene) {
         m_endoscope->clear();
         m_statusLabel->setText(tr("Texture the case to see the cavity."));
-        m_view->requestRender();
+        render();
         return;
     }
     m_endoscope->setSurface(m_scene->surface);
     auto landmarks = scene::findScopeLandmarks(*m_scene);
     if (!landmarks) {
         m_statusLabel->setText(tr("This scene has no cervical canal or ostium labels: the scope cannot be placed."));
-        m_view->requestRender();
+        render();
         return;
     }
     m_landmarks = *landmarks;
@@ -126,7 +135,7 @@ void HysteroscopicPreview::updateCamera() {
     m_statusLabel->setText(tr("Tip %1 mm beyond the external os, %2 optic, roll %3°")
                                .arg(locale.toString(insertion(), 'f', 1), m_opticCombo->currentText())
                                .arg(m_rollSlider->value()));
-    m_view->requestRender();
+    render();
 }
 
 bool HysteroscopicPreview::lookAtRegion(std::int32_t regionId, double distanceMm) {
@@ -139,12 +148,36 @@ bool HysteroscopicPreview::lookAtRegion(std::int32_t regionId, double distanceMm
     m_statusLabel->setText(tr("Looking at region %1 from %2 mm inside the cavity")
                                .arg(regionId)
                                .arg(QLocale().toString(distanceMm, 'f', 0)));
-    m_view->requestRender();
+    render();
     return true;
 }
 
+void HysteroscopicPreview::render() {
+    m_endoscope->setTime(1e-3 * double(m_clock.elapsed()) + m_grabbedS);
+    m_view->requestRender();
+    m_settleFrames = 0;
+    m_settleTimer->start();
+}
+
+void HysteroscopicPreview::settleExposure() {
+    if (m_endoscope->exposureSettled() || ++m_settleFrames > kSettleFrames)
+        return;
+    m_endoscope->setTime(1e-3 * double(m_clock.elapsed()) + m_grabbedS);
+    m_view->requestRender();
+    m_settleTimer->start();
+}
+
 QImage HysteroscopicPreview::grabImage() {
-    return m_view->grabImage();
+    // Each grab draws a frame; the camera is given a tenth of a second between them, as if the picture were held.
+    QImage image;
+    for (int k = 0; k < kSettleFrames; ++k) {
+        m_endoscope->setTime(1e-3 * double(m_clock.elapsed()) + m_grabbedS);
+        image = m_view->grabImage();
+        if (m_endoscope->exposureSettled() && k > 0)
+            break;
+        m_grabbedS += 0.1;
+    }
+    return image;
 }
 
 } // namespace hs::widgets

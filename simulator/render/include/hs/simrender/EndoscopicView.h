@@ -14,6 +14,7 @@
 #include "hs/scene/Scene.h"
 #include "hs/scene/ScopeView.h"
 #include "hs/sim/Scope.h"
+#include "hs/simrender/Exposure.h"
 
 #include <array>
 #include <memory>
@@ -50,8 +51,20 @@ struct EndoscopicLook {
     double nearClipMm = 0.3;  ///< mm; the lens sees tissue this close
     double farClipMm = 300.0; ///< mm; beyond any cavity
     double lampIntensity = 1.4;
-    /// Constant, linear (per mm) and quadratic (per mm^2) attenuation of the lamp: half the light at about 14 mm.
-    std::array<double, 3> lampAttenuation{1.0, 0.04, 0.002};
+    /// Constant, linear (per mm) and quadratic (per mm^2) attenuation of the lamp: the light guide's end is a small
+    /// source beside the lens, so the irradiance falls as the inverse square of the distance beyond a few mm:
+    /// 1 / (1 + (d / 2 mm)^2).
+    std::array<double, 3> lampAttenuation{1.0, 0.0, 0.25};
+    /// The lamp's colour (linear RGB): a xenon arc source, about 6000 K. The camera's white balance, set once at the
+    /// start as a "white" button on a white target under this lamp does, divides it out (whiteBalanceGains).
+    std::array<double, 3> lampColour{1.0, 0.93, 0.87};
+    /// The camera head's automatic exposure (driven by the picture inside the optic's circle); off: `exposure` fixed.
+    bool autoExposure = true;
+    AutoExposureSettings exposureSettings;
+    double exposure = 16.0; ///< the automatic exposure's start (the tissue at about a centimetre)
+    /// The camera's tone curve: linear up to this share of full scale, then a shoulder that approaches full scale
+    /// without reaching it (a camera head's knee), so a highlight saturates softly.
+    double toneKnee = 0.8;
     bool materialMaps = true; ///< PBR shading with the normal and roughness maps; false: albedo only (Phong)
     ViewDetail detail = ViewDetail::Automatic;
     /// Share of the triangles the light detail leaves out (decimateForView); 0: none.
@@ -101,6 +114,22 @@ public:
     /// Turbidity 0 (clear) .. 1 (opaque); red-out 0 .. 1 (FluidState).
     void setFluid(double turbidity, double redOut);
     void setHud(const HudText& text);
+    /// The host's clock (s; the trial's time in the simulator) that the camera's exposure adapts by; without it the
+    /// view reads the wall clock at each render.
+    void setTime(double seconds);
+
+    /// The exposure the next frame is shot with (a factor on the light reaching the sensor).
+    double exposure() const;
+    /// Whether the automatic exposure has settled on what the last frame showed (always with a fixed exposure): a
+    /// host that draws only on demand (a still preview) draws again until it has.
+    bool exposureSettled() const;
+    /// The white balance's gains per channel (1 on green).
+    std::array<double, 3> whiteBalanceGains() const;
+    /// The last rendered frame inside the optic's circle (measured when the automatic exposure is on, or after
+    /// measureFrames(true)).
+    const CircleStats& lastFrameStats() const;
+    /// Measures every frame's circle even when the exposure is fixed (the benchmark's baseline).
+    void measureFrames(bool on);
 
     const EndoscopicLook& look() const;
     /// The GL renderer's name (glGetString(GL_RENDERER)); empty before the first render.

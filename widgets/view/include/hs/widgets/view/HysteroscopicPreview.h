@@ -9,6 +9,7 @@
 #include "hs/scene/Scene.h"
 #include "hs/scene/ScopePassage.h"
 
+#include <QElapsedTimer>
 #include <QImage>
 #include <QWidget>
 
@@ -19,6 +20,7 @@ class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QSlider;
+class QTimer;
 
 namespace hs::simrender {
 class EndoscopicView;
@@ -52,6 +54,7 @@ public:
     /// Hides the insertion, optic and roll controls (a side-by-side comparison drives them all at once).
     void setControlsVisible(bool visible);
     VtkView* view() const { return m_view; }
+    /// The picture once the camera's exposure has settled on it (up to a second of the camera's time).
     QImage grabImage();
 
     /// The scope's field of view, degrees (office hysteroscopes see 70-110).
@@ -59,6 +62,9 @@ public:
 
 private:
     void updateCamera();
+    /// Draws the view again while the camera's exposure settles on a still picture.
+    void render();
+    void settleExposure();
 
     VtkView* m_view = nullptr;
     std::unique_ptr<simrender::EndoscopicView> m_endoscope;
@@ -69,6 +75,10 @@ private:
     QSlider* m_rollSlider = nullptr;
     QLabel* m_statusLabel = nullptr;
     QWidget* m_controls = nullptr;
+    QTimer* m_settleTimer = nullptr;
+    QElapsedTimer m_clock;   ///< the camera's clock
+    double m_grabbedS = 0.0; ///< s of camera time grabImage() added while settling
+    int m_settleFrames = 0;
 };
 
 } // namespace hs::widgets

@@ -1,0 +1,73 @@
+// The camera head's automatic exposure: the circle's statistics and the exposure loop.
+#include "hs/simrender/Exposure.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hs::simrender {
+
+CircleStats circleStats(const std::uint8_t* pixels, int width, int height, int channels, double centreX, double centreY,
+                        double radiusPx, int stride) {
+    CircleStats s;
+    if (!pixels || width <= 0 || height <= 0 || channels < 3 || !(radiusPx > 0.0))
+        return s;
+    stride = std::max(1, stride);
+    const double r2 = radiusPx * radiusPx;
+    double luma = 0.0;
+    std::size_t clipped = 0, highlight = 0;
+    constexpr int kHighlight = 235; // 0.92 of 255
+    for (int y = 0; y < height; y += stride) {
+        const double dy = y + 0.5 - centreY;
+        if (dy * dy > r2)
+            continue;
+        const std::uint8_t* row =
+            pixels + static_cast<std::size_t>(y) * static_cast<std::size_t>(width) * static_cast<std::size_t>(channels);
+        for (int x = 0; x < width; x += stride) {
+            const double dx = x + 0.5 - centreX;
+            if (dx * dx + dy * dy > r2)
+                continue;
+            const std::uint8_t* p = row + static_cast<std::size_t>(x) * static_cast<std::size_t>(channels);
+            luma += 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+            if (p[0] == 255 || p[1] == 255 || p[2] == 255)
+                ++clipped;
+            if (p[0] >= kHighlight && p[1] >= kHighlight && p[2] >= kHighlight)
+                ++highlight;
+            ++s.pixels;
+        }
+    }
+    if (s.pixels == 0)
+        return s;
+    const double n = static_cast<double>(s.pixels);
+    s.meanLuminance = luma / (255.0 * n);
+    s.clippedFraction = static_cast<double>(clipped) / n;
+    s.highlightFraction = static_cast<double>(highlight) / n;
+    return s;
+}
+
+AutoExposure::AutoExposure(const AutoExposureSettings& settings, double exposure)
+    : m_settings(settings), m_exposure(std::clamp(exposure, settings.minExposure, settings.maxExposure)) {}
+
+double AutoExposure::update(const CircleStats& stats, double elapsedS) {
+    if (stats.pixels == 0 || !std::isfinite(elapsedS) || elapsedS < 0.0 || !std::isfinite(stats.meanLuminance))
+        return m_exposure;
+    // In stops: the correction is the error in stops, a share 1 - exp(-dt / tau) of it each frame. (Where the
+    // displayed values rise more slowly than the exposure, as under a display gamma or the tone curve's shoulder,
+    // the loop reaches its target in more frames, never past it.)
+    const double mean = std::max(stats.meanLuminance, 1.0 / 255.0);
+    double errorStops = std::log2(m_settings.targetLuminance / mean);
+    // Peak limiting: more of the circle at full scale than the limit stops down four times as fast, by a stop for
+    // every doubling of the clipped share over the limit (at least half a stop), whatever the mean says.
+    double tau = std::max(1e-3, m_settings.timeConstantS);
+    if (stats.clippedFraction > m_settings.clippedLimit) {
+        errorStops = std::min(errorStops, -std::max(0.5, std::log2(stats.clippedFraction / m_settings.clippedLimit)));
+        tau *= 0.25;
+    }
+    const double share = m_first ? 1.0 : 1.0 - std::exp(-elapsedS / tau);
+    m_first = false;
+    const double before = m_exposure;
+    m_exposure = std::clamp(m_exposure * std::exp2(errorStops * share), m_settings.minExposure, m_settings.maxExposure);
+    m_settled = std::abs(std::log2(m_exposure / before)) < 0.05;
+    return m_exposure;
+}
+
+} // namespace hs::simrender
