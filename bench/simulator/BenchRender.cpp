@@ -12,13 +12,13 @@
 // --still draws one picture of the surface at rest in clear saline: the 30 degree optic's tip FRACTION of the way
 // from the internal os to the fundus, aimed about the pivot, rolled by ROLL_DEG (the docs' picture), with the detail
 // the view picks for the GL renderer, or the full or the light one.
-//   bench_render SCENE_DIR --exploration [--sizes WxH] [--fps F] [--png PREFIX]
+//   bench_render SCENE_DIR --exploration [--sizes WxH] [--fps F] [--png PREFIX] [--trace]
 // --exploration plays the built-in exploration (sim::explorationScript, 60 s) on the world and draws it F times a
 // second of the trial (default 15) twice, side by side: through the camera head (automatic exposure, white balance,
 // tone curve, inverse-square lamp: EndoscopicLook's defaults) and as the view drew before it (a fixed exposure, the
 // older lamp falloff); a table of the mean luminance, clipped and highlight shares inside the optic's circle per
 // phase of the exploration and over all of it. --png writes PREFIX-camera-N.png and PREFIX-before-N.png at a few
-// moments.
+// moments; --trace prints every frame's figures.
 #include "hs/scene/ScenePackage.h"
 #include "hs/scene/ScopePassage.h"
 #include "hs/sim/Scope.h"
@@ -213,7 +213,7 @@ void printSummary(const char* name, const LookSummary& s, std::size_t from, std:
                 100.0 * clippedMean / n, 100.0 * clippedMax, 100.0 * highlight / n);
 }
 
-int exploration(const std::string& folder, Size size, double fps, const std::string& png) {
+int exploration(const std::string& folder, Size size, double fps, const std::string& png, bool trace) {
     auto loaded = hs::sim::World::load(folder, hs::sim::WorldOptions{});
     if (!loaded) {
         std::fprintf(stderr, "bench_render: %s\n", loaded.error().message().c_str());
@@ -283,6 +283,14 @@ int exploration(const std::string& folder, Size size, double fps, const std::str
             l.summary.frames.push_back(l.view->lastFrameStats());
             l.summary.exposures.push_back(l.view->exposure());
         }
+        if (trace)
+            std::printf(
+                "trace %6.2f s: camera luma %.3f clipped %5.2f %% exposure %7.2f | before luma %.3f | tip %5.1f "
+                "mm in, turbidity %.2f, red-out %.2f\n",
+                state.timeS, looks[0].summary.frames.back().meanLuminance,
+                100.0 * looks[0].summary.frames.back().clippedFraction, looks[0].summary.exposures.back(),
+                looks[1].summary.frames.back().meanLuminance, state.sample.insertionMm, state.fluid.turbidity,
+                state.fluid.redOut);
         if (!png.empty() && times.size() % static_cast<std::size_t>(std::max(1.0, 10.0 * fps)) == 0 && pictures < 6) {
             ++pictures;
             for (Look& l : looks) {
@@ -354,6 +362,7 @@ int main(int argc, char** argv) {
     std::string png;
     bool stillPicture = false;
     bool explore = false;
+    bool trace = false;
     double fps = 15.0;
     hs::simrender::ViewDetail detail = hs::simrender::ViewDetail::Automatic;
     double pose[2] = {0, 0};
@@ -371,6 +380,8 @@ int main(int argc, char** argv) {
             sizes = parseSizes(argv[++i]);
         else if (a == "--png" && i + 1 < argc)
             png = argv[++i];
+        else if (a == "--trace")
+            trace = true;
         else if (a == "--exploration")
             explore = true;
         else if (a == "--fps" && i + 1 < argc)
@@ -386,7 +397,7 @@ int main(int argc, char** argv) {
         }
     }
     if (explore)
-        return exploration(argv[1], sizes.front(), fps, png);
+        return exploration(argv[1], sizes.front(), fps, png, trace);
     auto scene = hs::scene::readScenePackage(argv[1]);
     if (!scene) {
         std::fprintf(stderr, "bench_render: %s\n", scene.error().message().c_str());

@@ -47,14 +47,15 @@ TEST(Exposure, TheCircleStatisticsCountOnlyThePixelsInsideIt) {
 }
 
 /// A camera looking at a wall that gives `wall` per channel at exposure 1: the displayed value of each channel is
-/// the exposure times it through the view's tone curve (linear to the knee 0.8, a shoulder above it:
+/// the exposure times it through the view's tone curve (linear to the knee 0.7, a shoulder above it:
 /// EndoscopicLook::toneKnee); returns the statistics of a uniform circle of it.
 CircleStats shoot(double exposure, std::array<double, 3> wall) {
-    constexpr double knee = 0.8;
+    constexpr double knee = 0.7;
     std::array<std::uint8_t, 3> c{};
     for (std::size_t k = 0; k < 3; ++k) {
         const double x = exposure * wall[k];
-        const double shown = x < knee ? x : knee + (1.0 - knee) * (1.0 - std::exp(-(x - knee) / (1.0 - knee)));
+        const double over = std::max(0.0, x - knee) / (1.0 - knee);
+        const double shown = std::min(x, knee) + (1.0 - knee) * over / (1.0 + over);
         c[k] = static_cast<std::uint8_t>(std::lround(255.0 * shown));
     }
     const auto image = disc(64, c);
@@ -100,8 +101,13 @@ TEST(Exposure, MoreClippedThanTheLimitStopsDownWhateverTheMean) {
     ASSERT_GT(s.clippedFraction, 0.1);
     ASSERT_LT(s.meanLuminance, 0.45);
     AutoExposure camera({}, 4.0);
-    camera.update(s, 0.0); // the first frame moves the whole way
-    EXPECT_LT(camera.exposure(), 4.0);
+    CircleStats grey;
+    grey.pixels = 100;
+    grey.meanLuminance = AutoExposureSettings{}.targetLuminance;
+    camera.update(grey, 0.0); // the first frame moves the whole way by its mean: here nowhere
+    EXPECT_DOUBLE_EQ(camera.exposure(), 4.0);
+    camera.update(s, 1.0 / 30.0);
+    EXPECT_LT(camera.exposure(), 4.0 / std::exp2(0.5 * 0.4)); // at least half a stop, at four times the pace
     // Bad frames change nothing: no pixels, a time that is not a time.
     const double e = camera.exposure();
     EXPECT_EQ(camera.update(CircleStats{}, 0.1), e);

@@ -48,7 +48,8 @@ constexpr double kPi = 3.14159265358979323846;
 /// tissue's light (Beer-Lambert) and scatters the lamp's light back; the lamp's light falls as 1 / (1 + (r / r0)^2)
 /// along the ray, so the scattered light sums to sigma r0 atan(depth / r0) (single scattering; near the lens most of
 /// it), at most sigma r0 pi / 2 however far the wall; red-out covers everything; then the
-/// camera head: its exposure and white balance, and its tone curve (linear to the knee, a soft shoulder above).
+/// camera head: its exposure and white balance, and its tone curve (linear to the knee, above it a shoulder
+/// x / (1 + x) in units of the headroom, Reinhard et al. 2002, that nears full scale without reaching it).
 constexpr const char* kFluidShader = R"(//VTK::TCoord::Impl
   {
     float hsNdcZ = gl_FragCoord.z * 2.0 - 1.0;
@@ -58,8 +59,8 @@ constexpr const char* kFluidShader = R"(//VTK::TCoord::Impl
     gl_FragData[0].rgb = gl_FragData[0].rgb * hsTransmitted + hsFogColour * hsScattered;
     gl_FragData[0].rgb = mix(gl_FragData[0].rgb, hsRedOutColour, hsRedOut);
     vec3 hsSensor = gl_FragData[0].rgb * hsExposure * hsWhite;
-    vec3 hsOver = max(hsSensor - vec3(hsKnee), vec3(0.0));
-    gl_FragData[0].rgb = min(hsSensor, vec3(hsKnee)) + (1.0 - hsKnee) * (vec3(1.0) - exp(-hsOver / (1.0 - hsKnee)));
+    vec3 hsOver = max(hsSensor - vec3(hsKnee), vec3(0.0)) / (1.0 - hsKnee);
+    gl_FragData[0].rgb = min(hsSensor, vec3(hsKnee)) + (1.0 - hsKnee) * hsOver / (vec3(1.0) + hsOver);
   }
 )";
 

@@ -15,6 +15,7 @@ CircleStats circleStats(const std::uint8_t* pixels, int width, int height, int c
     const double r2 = radiusPx * radiusPx;
     double luma = 0.0;
     std::size_t clipped = 0, highlight = 0;
+    constexpr int kClipped = 250;   // 0.98 of 255: at full scale, or so near it that the texture is gone
     constexpr int kHighlight = 235; // 0.92 of 255
     for (int y = 0; y < height; y += stride) {
         const double dy = y + 0.5 - centreY;
@@ -28,7 +29,7 @@ CircleStats circleStats(const std::uint8_t* pixels, int width, int height, int c
                 continue;
             const std::uint8_t* p = row + static_cast<std::size_t>(x) * static_cast<std::size_t>(channels);
             luma += 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
-            if (p[0] == 255 || p[1] == 255 || p[2] == 255)
+            if (p[0] >= kClipped || p[1] >= kClipped || p[2] >= kClipped)
                 ++clipped;
             if (p[0] >= kHighlight && p[1] >= kHighlight && p[2] >= kHighlight)
                 ++highlight;
@@ -56,9 +57,10 @@ double AutoExposure::update(const CircleStats& stats, double elapsedS) {
     const double mean = std::max(stats.meanLuminance, 1.0 / 255.0);
     double errorStops = std::log2(m_settings.targetLuminance / mean);
     // Peak limiting: more of the circle at full scale than the limit stops down four times as fast, by a stop for
-    // every doubling of the clipped share over the limit (at least half a stop), whatever the mean says.
+    // every doubling of the clipped share over the limit (at least half a stop), whatever the mean says. (Not on the
+    // first frame, which moves the whole way by its mean: one glaring frame at switch-on would throw it far off.)
     double tau = std::max(1e-3, m_settings.timeConstantS);
-    if (stats.clippedFraction > m_settings.clippedLimit) {
+    if (!m_first && stats.clippedFraction > m_settings.clippedLimit) {
         errorStops = std::min(errorStops, -std::max(0.5, std::log2(stats.clippedFraction / m_settings.clippedLimit)));
         tau *= 0.25;
     }

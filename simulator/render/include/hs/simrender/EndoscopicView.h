@@ -63,8 +63,9 @@ struct EndoscopicLook {
     AutoExposureSettings exposureSettings;
     double exposure = 16.0; ///< the automatic exposure's start (the tissue at about a centimetre)
     /// The camera's tone curve: linear up to this share of full scale, then a shoulder that approaches full scale
-    /// without reaching it (a camera head's knee), so a highlight saturates softly.
-    double toneKnee = 0.8;
+    /// without reaching it (a camera head's knee; x / (1 + x) in units of the headroom above the knee, Reinhard et al.
+    /// 2002): a wall five times brighter than the knee still shows at 98 % of full scale, with its texture.
+    double toneKnee = 0.7;
     bool materialMaps = true; ///< PBR shading with the normal and roughness maps; false: albedo only (Phong)
     ViewDetail detail = ViewDetail::Automatic;
     /// Share of the triangles the light detail leaves out (decimateForView); 0: none.

@@ -13,7 +13,7 @@ namespace hs::simrender {
 struct CircleStats {
     std::size_t pixels = 0;         ///< inside the circle
     double meanLuminance = 0.0;     ///< 0..1, Rec. 709 luma of the displayed (gamma-encoded) values
-    double clippedFraction = 0.0;   ///< share of the pixels with a channel at full scale (255)
+    double clippedFraction = 0.0;   ///< share of the pixels with a channel at 98 % of full scale or more (250)
     double highlightFraction = 0.0; ///< share of the pixels near white (every channel >= 0.92 of full scale)
 };
 
@@ -25,7 +25,7 @@ CircleStats circleStats(const std::uint8_t* pixels, int width, int height, int c
 
 struct AutoExposureSettings {
     double targetLuminance = 0.45; ///< 0..1, the mean luma the camera keeps in the circle (about mid-grey)
-    double timeConstantS = 0.25;   ///< s, how fast the exposure follows (a camera head adapts in a few hundred ms)
+    double timeConstantS = 0.15;   ///< s, how fast the exposure follows (a camera head adapts in a few hundred ms)
     /// The range the camera head covers (shutter and gain together: 1/60 to 1/10,000 s is about 170x, and gain some
     /// 8x more), as factors on the lamp's light.
     double minExposure = 1.0 / 16.0;
