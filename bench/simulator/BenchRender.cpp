@@ -11,7 +11,7 @@
 //   bench_render SCENE_DIR --still FRACTION ROLL_DEG --png OUT.png [--sizes WxH] [--full | --light]
 // --still draws one picture of the surface at rest in clear saline: the 30 degree optic's tip FRACTION of the way
 // from the internal os to the fundus, aimed about the pivot, rolled by ROLL_DEG (the docs' picture), with the detail
-// the view picks for the GL renderer, or the full or the light one.
+// the view picks for the GL renderer, or the full or the light one, once the camera's exposure has settled on it.
 //   bench_render SCENE_DIR --exploration [--sizes WxH] [--fps F] [--png PREFIX] [--trace]
 // --exploration plays the built-in exploration (sim::explorationScript, 60 s) on the world and draws it F times a
 // second of the trial (default 15) twice, side by side: through the camera head (automatic exposure, white balance,
@@ -169,7 +169,13 @@ int still(const hs::scene::Scene& scene, const hs::scene::ScopeLandmarks& landma
     state.fluid.pressureKpa = 10.0;
     view.setPose(hs::simrender::cameraPose(state.scope, config));
     view.setHud(hs::simrender::hudText(state, {}, {}));
-    window->Render();
+    // The camera's exposure settles on the still picture (a tenth of a second of its time between frames).
+    for (int k = 0; k < 40; ++k) {
+        view.setTime(0.1 * k);
+        window->Render();
+        if (k > 0 && view.exposureSettled())
+            break;
+    }
     vtkNew<vtkWindowToImageFilter> grab;
     grab->SetInput(window);
     grab->ReadFrontBufferOff();

@@ -47,11 +47,12 @@ protected:
         m_window->Render();
     }
 
-    /// The red channel at pixel (x, y) of the last picture.
-    int red(int x, int y) {
+    /// The red channel at pixel (x, y) of the last picture (y from the bottom).
+    int red(int x, int y) { return channel(x, y, 0); }
+    int channel(int x, int y, int c) {
         vtkNew<vtkUnsignedCharArray> pixels;
         m_window->GetRGBACharPixelData(x, y, x, y, 0, pixels);
-        return pixels->GetValue(0);
+        return pixels->GetValue(c);
     }
 
     vtkNew<vtkRenderWindow> m_window;
@@ -174,6 +175,32 @@ TEST_F(EndoscopicViewTest, BothDetailsShowTheLitWallInsideTheOpticsCircle) {
         EXPECT_GT(red(80, 60), 30) << "the wall in the middle";
         EXPECT_EQ(red(1, 1), 0) << "outside the circle";
         EXPECT_EQ(red(158, 118), 0) << "outside the circle";
+    }
+}
+
+TEST_F(EndoscopicViewTest, DrawsTheMapsWithTheScenesUvOriginAtTheTopLeft) {
+    // A wall 10 mm ahead, its upper half mapped to the image's upper half (red), its lower half to the lower (blue):
+    // the scene's UVs have their origin at the image's top left (scene::VisualSurface). Drawn flipped, each half would
+    // show the other's colour (the pale patches of a flipped atlas were the gutters between its charts).
+    scene::VisualSurface surface;
+    surface.mesh.points = {{10, -20, 20}, {10, 20, 20}, {10, 20, -20}, {10, -20, -20}};
+    surface.mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+    surface.uvs = {{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.0f, 1.0f}};
+    surface.albedo = ImageU8::create(8, 8, 3).value();
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            surface.albedo.at(x, y, 0) = y < 4 ? 230 : 20;
+            surface.albedo.at(x, y, 2) = y < 4 ? 20 : 230;
+        }
+    for (ViewDetail detail : {ViewDetail::Full, ViewDetail::Light}) {
+        EndoscopicLook look;
+        look.detail = detail;
+        look.hud = false;
+        EndoscopicView view(m_renderer, look);
+        view.setSurface(surface);
+        draw(view); // looking along +x, +z up
+        EXPECT_GT(channel(80, 85, 0), channel(80, 85, 2) + 20) << "the upper half is red";
+        EXPECT_GT(channel(80, 35, 2), channel(80, 35, 0) + 20) << "the lower half is blue";
     }
 }
 

@@ -95,7 +95,10 @@ Status runTexture(Generated& g, const GenerateParams& params, Progress& progress
         embedPoints(g.tissue->tets, textured.mesh.points, params.threads.value_or(g.spec.meshing.threads));
     a.surface.normals = std::move(textured.normals);
     a.surface.mesh = std::move(textured.mesh);
+    // The scene's UVs have their origin at the maps' top left (as glTF's), the atlas's at their bottom left.
     a.surface.uvs = std::move(textured.uv);
+    for (auto& uv : a.surface.uvs)
+        uv[1] = 1.0f - uv[1];
     a.surface.albedo = std::move(baked->albedo);
     a.surface.normal = std::move(baked->normal);
     a.surface.roughness = std::move(baked->roughness);

@@ -118,9 +118,13 @@ Result<std::vector<PendingFile>> planFiles(const Scene& scene, const PackageWrit
     bytesFile(std::string(detail::kReportFile), detail::reportJson(scene));
     files.push_back({std::string(detail::kTetsFile),
                      [&scene](const fs::path& p) { return io::writeTetMesh(scene.tets, p.string()); }});
-    files.push_back({std::string(detail::kSurfaceVtpFile), [&scene](const fs::path& p) {
+    // VTK's texture coordinates have their origin at the image's bottom left (as OBJ's), the scene's at its top left.
+    std::vector<std::array<float, 2>> vtkUvs = scene.surface.uvs;
+    for (auto& uv : vtkUvs)
+        uv[1] = 1.0f - uv[1];
+    files.push_back({std::string(detail::kSurfaceVtpFile), [&scene, &vtkUvs](const fs::path& p) {
                          io::WriteOptions vtp;
-                         vtp.textureCoordinates = scene.surface.uvs.empty() ? nullptr : &scene.surface.uvs;
+                         vtp.textureCoordinates = vtkUvs.empty() ? nullptr : &vtkUvs;
                          vtp.normals = scene.surface.normals.empty() ? nullptr : &scene.surface.normals;
                          if (scene.surface.embedding.empty() && !scene.simulation)
                              return io::writeSurface(scene.surface.mesh, p.string(), vtp);

@@ -33,7 +33,7 @@ const generate::Generated& defaultScene() {
 
 /// Bilinear albedo at (u, v) (v up, as the UVs are stored).
 std::array<double, 3> albedoAt(const ImageU8& img, double u, double v) {
-    const double fx = u * img.width() - 0.5, fy = (1.0 - v) * img.height() - 0.5;
+    const double fx = u * img.width() - 0.5, fy = v * img.height() - 0.5; // the scene's UVs: origin at the top left
     const int x0 = std::clamp(static_cast<int>(std::floor(fx)), 0, img.width() - 1);
     const int y0 = std::clamp(static_cast<int>(std::floor(fy)), 0, img.height() - 1);
     const int x1 = std::min(x0 + 1, img.width() - 1), y1 = std::min(y0 + 1, img.height() - 1);

@@ -106,8 +106,11 @@ Status writeBakeOutputs(const SurfaceMesh& surface, const BakeResult& result, co
 /// through each UV vertex's source vertex). Face label "chart" added.
 struct TexturedSurface {
     SurfaceMesh mesh;
-    std::vector<std::array<float, 2>> uv; ///< per point
-    std::vector<Vec3> normals;            ///< per point, of the unsplit surface, so shading stays smooth across seams
+    /// Per point, the atlas's (u, v) with v upwards: the texel row of v is (1 - v) * size from the maps' top row (the
+    /// OBJ and VTK convention, as surface.obj and surface.vtp store it). A scene::VisualSurface's UVs have their
+    /// origin at the top left: its v is 1 - this v.
+    std::vector<std::array<float, 2>> uv;
+    std::vector<Vec3> normals; ///< per point, of the unsplit surface, so shading stays smooth across seams
 };
 TexturedSurface makeTexturedSurface(const SurfaceMesh& surface, const Atlas& atlas);
 
