@@ -3,9 +3,10 @@
 /// (the simulator's window, the workstation's preview, an offscreen benchmark). It draws the package's visual
 /// surface with its maps (albedo; normal and roughness maps through VTK's PBR shading), its points replaced every
 /// frame as the tissue deforms, from a camera at the scope's tip lit only by the lamp at the tip (a positional light
-/// whose intensity falls off with distance); the distension fluid as haze that thickens with turbidity and depth;
-/// red-out as the picture turning red; the optic's circular field with its vignetting as a 2-D mask over the image;
-/// and a heads-up text (docs/simulator.md, "Endoscopic view").
+/// whose light falls as the inverse square of the distance); the distension fluid as haze that thickens with
+/// turbidity and depth; red-out as the picture turning red; the camera head (automatic exposure metered in the
+/// optic's circle, white balance, a tone curve with a soft shoulder: Exposure.h); the optic's circular field with its
+/// vignetting as a 2-D mask over the image; and a heads-up text (docs/simulator.md, "Endoscopic view").
 ///
 /// No Qt: the host calls the setters on its render thread, then renders. VTK types stay out of the interface except
 /// the renderer the view draws into.

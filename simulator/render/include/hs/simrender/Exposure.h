@@ -32,6 +32,8 @@ struct AutoExposureSettings {
     double maxExposure = 1024.0;
     /// Above this clipped share the camera stops down further, whatever the mean says.
     double clippedLimit = 0.02;
+    /// ... and above this near-white share (a wall so close that it shows white and loses its texture).
+    double nearWhiteLimit = 0.05;
 };
 
 class AutoExposure {
