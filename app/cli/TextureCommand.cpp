@@ -42,6 +42,7 @@ struct BakeOptions {
     std::vector<std::int32_t> polyp;
     std::string exemplarEndometrium, exemplarMyoma, exemplarPolyp;
     bool noVessels = false;
+    std::string endometrium = "proliferative";
     CommonOptions common;
 };
 
@@ -144,6 +145,9 @@ int runBake(const BakeOptions& o) {
     params.seed = o.seed;
     params.threads = o.threads;
     params.vessels = !o.noVessels;
+    for (const texture::EndometrialState state : texture::kEndometrialStates)
+        if (texture::endometrialStateName(state) == o.endometrium)
+            params.endometrium = state;
     params.labels.appearanceLabel = o.label;
     params.labels.myomaValues = o.myoma;
     params.labels.polypValues = o.polyp;
@@ -244,6 +248,20 @@ int runExemplars(const ExemplarOptions& o) {
             return reportError("texture exemplars", written.error());
         std::cout << "wrote " << path << '\n';
     }
+    // The endometrium's other states (proliferative is endometrium.png).
+    for (const texture::EndometrialState state : texture::kEndometrialStates) {
+        if (state == texture::EndometrialState::Proliferative)
+            continue;
+        auto image = texture::makeExemplar(texture::Appearance::Endometrium, o.size, o.seed, state);
+        if (!image.ok())
+            return reportError("texture exemplars", image.error());
+        const std::string path =
+            (std::filesystem::path(o.outDir) / ("endometrium-" + texture::endometrialStateName(state) + ".png"))
+                .string();
+        if (auto written = texture::writeImage(*image, path); !written.ok())
+            return reportError("texture exemplars", written.error());
+        std::cout << "wrote " << path << '\n';
+    }
     return kExitOk;
 }
 
@@ -281,6 +299,9 @@ void addTextureCommand(CLI::App& app, int& exitCode) {
     b->add_option("--exemplar-myoma", bake->exemplarMyoma, "exemplar image for myomas");
     b->add_option("--exemplar-polyp", bake->exemplarPolyp, "exemplar image for polyps");
     b->add_flag("--no-vessels", bake->noVessels, "do not grow vessels");
+    b->add_option("--endometrium", bake->endometrium, "the endometrium's look: the cycle phase or atrophic")
+        ->check(CLI::IsMember({"proliferative", "secretory", "menstrual", "atrophic"}))
+        ->capture_default_str();
     b->add_flag("--json", bake->common.json, "print JSON for scripts");
     b->add_flag("-v,--verbose", bake->common.verbose, "per-step timings");
     b->callback([bake, &exitCode] { exitCode = runBake(*bake); });
@@ -294,8 +315,8 @@ void addTextureCommand(CLI::App& app, int& exitCode) {
     q->callback([quality, &exitCode] { exitCode = runQuality(*quality); });
 
     auto exemplars = std::make_shared<ExemplarOptions>();
-    auto* e =
-        texture->add_subcommand("exemplars", "Write the procedural default exemplars (endometrium, myoma, polyp)");
+    auto* e = texture->add_subcommand("exemplars", "Write the procedural default exemplars (endometrium, myoma, polyp; "
+                                                   "the endometrium's secretory, menstrual and atrophic looks)");
     e->add_option("-o,--output", exemplars->outDir, "output folder")->required();
     e->add_option("--size", exemplars->size, "side in pixels (32..4096)")->capture_default_str();
     e->add_option("--seed", exemplars->seed, "random seed")->capture_default_str();

@@ -103,6 +103,20 @@ meshing::MeshParams meshParamsFor(const scene::CaseSpec& spec, std::optional<int
     return p;
 }
 
+texture::EndometrialState endometrialState(const clinical::PatientParams& patient) {
+    if (patient.menopausal)
+        return texture::EndometrialState::Atrophic;
+    switch (patient.cyclePhase.value_or(clinical::CyclePhase::Proliferative)) {
+    case clinical::CyclePhase::Menstrual:
+        return texture::EndometrialState::Menstrual;
+    case clinical::CyclePhase::Secretory:
+        return texture::EndometrialState::Secretory;
+    case clinical::CyclePhase::Proliferative:
+        break;
+    }
+    return texture::EndometrialState::Proliferative;
+}
+
 texture::BakeParams bakeParamsFor(const scene::CaseSpec& spec, std::optional<int> threads) {
     texture::BakeParams p;
     p.size = spec.texture.sizePx;
@@ -115,6 +129,7 @@ texture::BakeParams bakeParamsFor(const scene::CaseSpec& spec, std::optional<int
         spec.texture.exemplars.endometrium.value_or("");
     p.exemplarFiles[static_cast<std::size_t>(texture::Appearance::Myoma)] = spec.texture.exemplars.myoma.value_or("");
     p.exemplarFiles[static_cast<std::size_t>(texture::Appearance::Polyp)] = spec.texture.exemplars.polyp.value_or("");
+    p.endometrium = endometrialState(spec.patient);
     p.vessels = spec.texture.vesselDensity > 0.0;
     for (auto& c : p.vesselParams.perClass)
         c.attractorsPerMm2 *= spec.texture.vesselDensity;

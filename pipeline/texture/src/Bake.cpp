@@ -34,7 +34,8 @@ Status checkParams(const BakeParams& p) {
 Result<ImageU8> exemplarFor(const BakeParams& params, Appearance cls) {
     const std::string& file = params.exemplarFiles[static_cast<std::size_t>(cls)];
     if (file.empty())
-        return makeExemplar(cls, 256, Rng::deriveSeed(params.seed, 100 + static_cast<std::uint64_t>(cls)));
+        return makeExemplar(cls, 256, Rng::deriveSeed(params.seed, 100 + static_cast<std::uint64_t>(cls)),
+                            params.endometrium);
     auto image = readExemplarFile(file);
     if (!image.ok())
         return fail(image.error().code, appearanceName(cls) + " exemplar: " + image.error().detail);
@@ -116,6 +117,8 @@ Result<BakeResult> bakeAppearance(const SurfaceMesh& surface, const BakeParams& 
         ScopedStepTimer timer(result.timings, "vessels");
         VesselParams vp = params.vesselParams;
         vp.seed = Rng::deriveSeed(params.seed, 300);
+        vp.perClass[static_cast<std::size_t>(Appearance::Endometrium)].attractorsPerMm2 *=
+            endometrialSurface(params.endometrium).vesselDensity;
         Progress::Sub sub = progress.sub(0.4, 0.6);
         auto vessels = growVessels(surface, result.faceAppearance, vp, sub);
         if (!vessels.ok())

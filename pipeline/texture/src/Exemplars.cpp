@@ -144,27 +144,69 @@ void drawVessel(Canvas& canvas, Rng& rng, double radius, const Rgb& colour, doub
     }
 }
 
-ImageU8 endometrium(int size, Rng& rng) {
+/// The endometrium's palette and marks per state.
+struct EndometriumLook {
+    Rgb deep, pink, pale; ///< the mucosa's darker and lighter tones, and the gland openings'
+    double lowAmplitude;  ///< the large blotches' contrast
+    double glandsPer;     ///< one gland opening per this many pixels (at any size)
+    double glandScale;    ///< the openings' size, relative to the proliferative's (0.7-1.5 px at 256)
+    double shedding;      ///< 0..1: share of dark haemorrhagic patches (menstrual)
+    int petechiae;        ///< small dark red dots per 256 x 256
+};
+
+EndometriumLook endometriumLook(EndometrialState state) {
+    switch (state) {
+    case EndometrialState::Secretory: // pale pink, yellowish; larger, open glands
+        return {{0.80, 0.40, 0.34}, {0.93, 0.62, 0.52}, {0.97, 0.84, 0.70}, 0.35, 110.0, 1.5, 0.0, 0};
+    case EndometrialState::Menstrual: // reddish to dark red, shedding and bleeding
+        return {{0.42, 0.07, 0.08}, {0.72, 0.22, 0.22}, {0.80, 0.45, 0.42}, 0.45, 260.0, 0.9, 0.45, 0};
+    case EndometrialState::Atrophic: // thin, pale, smooth; petechiae; few glands
+        return {{0.82, 0.52, 0.50}, {0.94, 0.76, 0.70}, {0.97, 0.88, 0.82}, 0.25, 900.0, 0.7, 0.0, 40};
+    case EndometrialState::Proliferative:
+        break;
+    }
+    return {{0.62, 0.18, 0.20}, {0.86, 0.42, 0.42}, {0.93, 0.66, 0.62}, 0.45, 150.0, 1.0, 0.0, 0};
+}
+
+ImageU8 endometrium(int size, Rng& rng, EndometrialState state) {
     Canvas canvas(size);
+    const EndometriumLook look = endometriumLook(state);
     const Fbm low(4, 3, rng), grain(size / 8, 2, rng), blotch(size / 24, 2, rng);
-    const Rgb deep{0.62, 0.18, 0.20}, pink{0.86, 0.42, 0.42}, pale{0.93, 0.66, 0.62};
+    const Rgb deep = look.deep, pink = look.pink, pale = look.pale;
     for (int y = 0; y < size; ++y)
         for (int x = 0; x < size; ++x) {
             const double u = (x + 0.5) / size, v = (y + 0.5) / size;
-            const double t = std::clamp(0.5 + 0.45 * low(u, v) + 0.2 * blotch(u, v), 0.0, 1.0);
+            const double t = std::clamp(0.5 + look.lowAmplitude * low(u, v) + 0.2 * blotch(u, v), 0.0, 1.0);
             Rgb c = mix(deep, pink, t);
             const double g = 0.06 * grain(u, v);
             c = {c.r + g, c.g + 0.7 * g, c.b + 0.7 * g};
             canvas.at(x, y) = c;
         }
-    // Glandular openings: small pale dots with a darker rim, about one per 12x12 pixels at 256.
-    const int glands = size * size / 150;
+    // Glandular openings: small pale dots with a darker rim (proliferative: about one per 12x12 pixels at 256).
+    const int glands = static_cast<int>(size * size / look.glandsPer);
     for (int i = 0; i < glands; ++i) {
         const double x = rng.uniform(0, size), y = rng.uniform(0, size);
-        const double r = rng.uniform(0.7, 1.5) * size / 256.0;
+        const double r = rng.uniform(0.7, 1.5) * look.glandScale * size / 256.0;
         canvas.disc(x, y, r * 1.9, deep, 0.35);
         canvas.disc(x, y, r, pale, rng.uniform(0.55, 0.9));
     }
+    if (look.shedding > 0.0) {
+        // Shedding: dark red patches where the functional layer comes away and bleeds, beside preserved mucosa.
+        const Fbm patches(6, 3, rng);
+        const Rgb blood{0.30, 0.03, 0.04};
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                const double u = (x + 0.5) / size, v = (y + 0.5) / size;
+                const double shed = std::clamp((patches(u, v) + 0.25 - look.shedding * 0.5) * -4.0, 0.0, 1.0);
+                canvas.at(x, y) = mix(canvas.at(x, y), blood, 0.8 * shed);
+            }
+    }
+    // Petechiae: pinpoint haemorrhages under a thin, atrophic mucosa.
+    const Rgb petechia{0.62, 0.08, 0.10};
+    const int petechiae = look.petechiae * size * size / (256 * 256);
+    for (int i = 0; i < petechiae; ++i)
+        canvas.disc(rng.uniform(0, size), rng.uniform(0, size), rng.uniform(1.2, 2.6) * size / 256.0, petechia,
+                    rng.uniform(0.6, 0.95));
     canvas.blur3();
     return canvas.toImage();
 }
@@ -224,13 +266,41 @@ std::string appearanceName(Appearance appearance) {
     return "unknown";
 }
 
-Result<ImageU8> makeExemplar(Appearance appearance, int size, std::uint64_t seed) {
+std::string endometrialStateName(EndometrialState state) {
+    switch (state) {
+    case EndometrialState::Proliferative:
+        return "proliferative";
+    case EndometrialState::Secretory:
+        return "secretory";
+    case EndometrialState::Menstrual:
+        return "menstrual";
+    case EndometrialState::Atrophic:
+        return "atrophic";
+    }
+    return "unknown";
+}
+
+EndometrialSurface endometrialSurface(EndometrialState state) {
+    switch (state) {
+    case EndometrialState::Secretory: // the surface vessels disappear under the stromal oedema; the surface is wavy
+        return {0.35, 1.8};
+    case EndometrialState::Menstrual: // indentations where the layer sheds
+        return {1.0, 1.5};
+    case EndometrialState::Atrophic: // thin and smooth, the vessels show through it
+        return {1.5, 0.5};
+    case EndometrialState::Proliferative:
+        break;
+    }
+    return {1.0, 1.0};
+}
+
+Result<ImageU8> makeExemplar(Appearance appearance, int size, std::uint64_t seed, EndometrialState state) {
     if (size < 32 || size > 4096)
         return fail(ErrorCode::LimitExceeded, "exemplar size " + std::to_string(size) + " outside 32..4096 pixels");
     Rng rng = Rng(seed).derive(static_cast<std::uint64_t>(appearance) + 1);
     switch (appearance) {
     case Appearance::Endometrium:
-        return endometrium(size, rng);
+        return endometrium(size, rng, state);
     case Appearance::Myoma:
         return myoma(size, rng);
     case Appearance::Polyp:

@@ -116,6 +116,9 @@ Shading shade(const SurfaceMesh& mesh, const TexelMap& map, const std::vector<Ve
     out.height.assign(static_cast<std::size_t>(n) * n, 0.0f);
     out.covered.assign(static_cast<std::size_t>(n) * n, 0);
     const double cellHalf = vessels.query;
+    std::array<float, kAppearanceCount> relief{1.0f, 1.0f, 1.0f};
+    relief[static_cast<std::size_t>(Appearance::Endometrium)] =
+        static_cast<float>(endometrialSurface(params.endometrium).relief);
     parallelChunks(static_cast<std::size_t>(n), evenChunk(static_cast<std::size_t>(n), threads), threads,
                    [&](std::size_t, std::size_t y0Chunk, std::size_t y1Chunk) {
                        const int y0 = static_cast<int>(y0Chunk), y1 = static_cast<int>(y1Chunk);
@@ -149,7 +152,7 @@ Shading shade(const SurfaceMesh& mesh, const TexelMap& map, const std::vector<Ve
                                    for (int k = 0; k < 3; ++k)
                                        rgb[k] += w[c] * s[k];
                                    rough += w[c] * (kLooks[c].roughness + 0.25f * (tiles[c].meanLum - lum));
-                                   bump += w[c] * kLooks[c].bump * (lum - tiles[c].meanLum);
+                                   bump += w[c] * kLooks[c].bump * relief[c] * (lum - tiles[c].meanLum);
                                }
                                const VesselSample v = sampleVessels(vessels, p, texelMm, cellHalf);
                                if (v.cover > 0.0f) {

@@ -1,6 +1,7 @@
 #include "hs/generate/TissueLayers.h"
 
 #include "hs/clinical/Tissue.h"
+#include "hs/generate/CaseStages.h"
 
 #include <gtest/gtest.h>
 
@@ -133,4 +134,21 @@ TEST(TissueLayers, WithoutTheCervixTheCanalSideStaysMyometrium) {
     const auto layers = tissueLayers(slab.tets, 0, slab.boundary, params);
     EXPECT_EQ(layers.cervixTets, 0u);
     EXPECT_GT(layers.endometriumTets, 0u);
+}
+
+TEST(EndometrialState, TheTextureFollowsThePatientsCycleOrMenopause) {
+    // The bake gets the endometrium's state from the case's patient (docs/texture.md, "The endometrium through the
+    // cycle"): atrophic after the menopause, else the cycle phase, proliferative when unset.
+    hs::clinical::PatientParams patient;
+    patient.cyclePhase = hs::clinical::CyclePhase::Secretory;
+    EXPECT_EQ(hs::generate::endometrialState(patient), hs::texture::EndometrialState::Secretory);
+    patient.cyclePhase = hs::clinical::CyclePhase::Menstrual;
+    EXPECT_EQ(hs::generate::endometrialState(patient), hs::texture::EndometrialState::Menstrual);
+    patient.cyclePhase.reset();
+    EXPECT_EQ(hs::generate::endometrialState(patient), hs::texture::EndometrialState::Proliferative);
+    patient.menopausal = true;
+    EXPECT_EQ(hs::generate::endometrialState(patient), hs::texture::EndometrialState::Atrophic);
+    hs::scene::CaseSpec spec;
+    spec.patient = patient;
+    EXPECT_EQ(hs::generate::bakeParamsFor(spec).endometrium, hs::texture::EndometrialState::Atrophic);
 }

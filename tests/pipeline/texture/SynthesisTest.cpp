@@ -7,6 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -128,3 +131,61 @@ TEST(TextureExemplars, AreDeterministicAndLookDifferentPerTissue) {
     EXPECT_GT(meanOf(myoma, 1), meanOf(e1, 1) + 30);
     EXPECT_FALSE(makeExemplar(Appearance::Myoma, 8, 1).ok());
 }
+
+namespace hs::texture {
+namespace {
+
+/// Mean luma, the green-to-red ratio, the saturation and the share of deep red pixels of an exemplar.
+struct Look {
+    double luma = 0.0, greenPerRed = 0.0, saturation = 0.0, darkRed = 0.0;
+};
+Look lookOf(const ImageU8& img) {
+    Look l;
+    double r = 0.0, g = 0.0;
+    const double n = double(img.width()) * img.height();
+    for (int y = 0; y < img.height(); ++y)
+        for (int x = 0; x < img.width(); ++x) {
+            const double R = img.at(x, y, 0), G = img.at(x, y, 1), B = img.at(x, y, 2);
+            l.luma += (0.2126 * R + 0.7152 * G + 0.0722 * B) / 255.0 / n;
+            l.saturation += (R - std::min(G, B)) / std::max(1.0, R) / n;
+            l.darkRed += G < 0.55 * R ? 1.0 / n : 0.0; // red well beyond the mucosa's own (petechiae on pale)
+            r += R;
+            g += G;
+        }
+    l.greenPerRed = g / r;
+    return l;
+}
+
+TEST(TextureExemplars, TheEndometriumFollowsTheCycleAndTheMenopause) {
+    // As hysteroscopy describes it (docs/texture.md): proliferative pink-red; secretory paler and yellowish pink;
+    // menstrual dark red; atrophic pale and less saturated, with petechiae.
+    std::array<Look, 4> look;
+    for (const EndometrialState s : kEndometrialStates)
+        look[static_cast<std::size_t>(s)] = lookOf(makeExemplar(Appearance::Endometrium, 256, 3, s).value());
+    const Look& pro = look[0];
+    const Look& sec = look[1];
+    const Look& men = look[2];
+    const Look& atr = look[3];
+    for (std::size_t k = 0; k < look.size(); ++k)
+        std::printf("%-13s luma %.3f  G/R %.3f  saturation %.3f  dark red %.4f\n",
+                    endometrialStateName(kEndometrialStates[k]).c_str(), look[k].luma, look[k].greenPerRed,
+                    look[k].saturation, look[k].darkRed);
+    EXPECT_LT(men.luma, pro.luma - 0.05);
+    EXPECT_GT(sec.luma, pro.luma + 0.05);
+    EXPECT_GT(sec.greenPerRed, pro.greenPerRed + 0.1); // yellower
+    EXPECT_GT(atr.luma, pro.luma + 0.1);               // paler
+    EXPECT_LT(atr.saturation, pro.saturation - 0.1);
+    EXPECT_GT(atr.darkRed, 0.002); // petechiae on the pale mucosa
+    // The default look is the proliferative one, as before; the other tissues do not depend on the state.
+    EXPECT_EQ(makeExemplar(Appearance::Endometrium, 64, 3).value().data(),
+              makeExemplar(Appearance::Endometrium, 64, 3, EndometrialState::Proliferative).value().data());
+    EXPECT_EQ(makeExemplar(Appearance::Myoma, 64, 3).value().data(),
+              makeExemplar(Appearance::Myoma, 64, 3, EndometrialState::Atrophic).value().data());
+    // Vessels: hidden by the secretory oedema, showing through the atrophic mucosa.
+    EXPECT_LT(endometrialSurface(EndometrialState::Secretory).vesselDensity, 0.5);
+    EXPECT_GT(endometrialSurface(EndometrialState::Atrophic).vesselDensity, 1.0);
+    EXPECT_EQ(endometrialStateName(EndometrialState::Atrophic), "atrophic");
+}
+
+} // namespace
+} // namespace hs::texture

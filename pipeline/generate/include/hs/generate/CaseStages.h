@@ -58,5 +58,8 @@ TissueLayerParams tissueLayerParamsFor(const scene::CaseSpec& spec);
 inline constexpr const char* kAppearanceLabel = "appearance";
 /// The texture stage's parameters; `threads` replaces the case's thread count (never changes the maps).
 texture::BakeParams bakeParamsFor(const scene::CaseSpec& spec, std::optional<int> threads = std::nullopt);
+/// The endometrium's look for the patient: atrophic after the menopause, else her cycle phase's (proliferative when
+/// unset).
+texture::EndometrialState endometrialState(const clinical::PatientParams& patient);
 
 } // namespace hs::generate

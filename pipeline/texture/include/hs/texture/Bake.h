@@ -51,6 +51,9 @@ struct BakeParams {
     int baseTextureSize = 512; ///< side of each synthesized, tileable base texture (64..4096)
     double tileMm = 20.0;      ///< mm of surface covered by one base-texture tile
     std::array<std::string, kAppearanceCount> exemplarFiles; ///< per class; empty: the procedural default
+    /// The endometrium's state (the patient's cycle phase or menopause): its procedural exemplar, the density of its
+    /// surface vessels and the height of its relief (endometrialSurface). A user's exemplar replaces only the first.
+    EndometrialState endometrium = EndometrialState::Proliferative;
     AppearanceLabels labels;
     double blendMm = 2.5; ///< approximate width of the blend between classes, mm
     bool vessels = true;

@@ -26,8 +26,31 @@ inline constexpr int kAppearanceCount = 3;
 /// "endometrium", "myoma", "polyp".
 std::string appearanceName(Appearance appearance);
 
+/// The endometrium's look on the day of the hysteroscopy, after published hysteroscopic descriptions
+/// (docs/texture.md, "The endometrium through the cycle"):
+enum class EndometrialState : std::int32_t {
+    Proliferative = 0, ///< pink-red, thin and smooth, small uniform gland openings, fine vessels
+    Secretory = 1,     ///< paler, yellowish pink, thicker and wavy (oedema), larger open glands, vessels hidden
+    Menstrual = 2,     ///< dark red, patches shedding and bleeding beside preserved ones
+    Atrophic = 3,      ///< postmenopausal: thin, pale, smooth, vessels showing through, petechiae, few glands
+};
+inline constexpr std::array<EndometrialState, 4> kEndometrialStates{
+    EndometrialState::Proliferative, EndometrialState::Secretory, EndometrialState::Menstrual,
+    EndometrialState::Atrophic};
+/// "proliferative", "secretory", "menstrual", "atrophic".
+std::string endometrialStateName(EndometrialState state);
+/// How the state changes what the bake draws over the base texture besides the exemplar: the density of the
+/// surface vessels it grows and the height of the mucosa's relief, as factors on BakeParams' own.
+struct EndometrialSurface {
+    double vesselDensity = 1.0;
+    double relief = 1.0;
+};
+EndometrialSurface endometrialSurface(EndometrialState state);
+
 /// A procedural exemplar of `size` x `size` RGB pixels (32..4096), the same for the same seed. Without vessels on
-/// endometrium and polyp (vessels are grown on the surface); the myoma exemplar carries faint fibre streaks.
-Result<ImageU8> makeExemplar(Appearance appearance, int size = 256, std::uint64_t seed = 1);
+/// endometrium and polyp (vessels are grown on the surface); the myoma exemplar carries faint fibre streaks. The
+/// endometrium's follows `state` (the others do not depend on it); Proliferative is the look of earlier versions.
+Result<ImageU8> makeExemplar(Appearance appearance, int size = 256, std::uint64_t seed = 1,
+                             EndometrialState state = EndometrialState::Proliferative);
 
 } // namespace hs::texture
