@@ -67,7 +67,8 @@ constexpr const char* kShortScript = R"({"format": "hysteroscene-script", "versi
 TEST(SimCommandLine, RefusesBadArgumentsWithUsageErrors) {
     for (const char* arguments : {"--optic 45 scene", "--diameter 3 scene", "--exercise surgery scene",
                                   "--frobnicate scene", "scene --headless", "scene --device joystick",
-                                  "scene --device hid:xyz:1", "scene --replay t.trial --device scripted:s.json"}) {
+                                  "scene --device hid:xyz:1", "scene --replay t.trial --device scripted:s.json",
+                                  "scene --demo --device hid", "scene --demo --replay t.trial"}) {
         const auto run = sim(arguments);
         EXPECT_EQ(run.exitCode, 2) << arguments << "\n" << run.out;
     }
@@ -151,6 +152,22 @@ TEST_F(SimHeadless, ScriptedRunAndItsReplayReportTheSameBytes) {
     EXPECT_NE(a.find("\"opticDeg\":12"), std::string::npos) << a.substr(0, 1000);
     EXPECT_NE(a.find("\"samples\":1505"), std::string::npos) << a.substr(0, 1000);
     EXPECT_TRUE(fs::exists(tmp.file("a.html")));
+}
+
+TEST_F(SimHeadless, TheDemoPlaysTheBuiltInExplorationAndRecordsItsTrial) {
+    // `--demo` (also `--device demo`): the exploration the world plans on its own scene (sim::explorationScript), so
+    // a supervisor can watch it and a check can run it; its trial replays to the same report.
+    hs::test::TempDir tmp;
+    const auto demo = sim(shellQuote(s_package) + " --exercise exploration --demo --headless --record " +
+                          shellQuote(tmp.file("t.trial")) + " --report " + shellQuote(tmp.file("a.json")));
+    ASSERT_EQ(demo.exitCode, 0) << demo.out;
+    const std::string a = readText(tmp.file("a.json"));
+    EXPECT_NE(a.find("\"device\":\"demo\""), std::string::npos) << a.substr(0, 1000);
+    EXPECT_NE(a.find("\"perforations\":[]"), std::string::npos) << a.substr(0, 3000);
+    const auto replayed = sim(shellQuote(s_package) + " --headless --replay " + shellQuote(tmp.file("t.trial")) +
+                              " --report " + shellQuote(tmp.file("b.json")));
+    ASSERT_EQ(replayed.exitCode, 0) << replayed.out;
+    EXPECT_EQ(a, readText(tmp.file("b.json")));
 }
 
 TEST_F(SimHeadless, RefusesATrialOfAnotherScene) {

@@ -10,12 +10,15 @@
 namespace hs::simapp {
 
 Result<ScriptedRun> runScripted(const SimOptions& options, const std::string& startedUtc) {
-    auto script = sim::readScript(options.device.scriptPath);
+    const bool demo = options.device.kind == DeviceSpec::Kind::Demo;
+    auto script = demo ? Result<sim::Script>(sim::Script{}) : sim::readScript(options.device.scriptPath);
     if (!script)
         return script.failure();
     auto world = sim::World::load(options.scene, options.world);
     if (!world)
         return world.failure();
+    if (demo)
+        *script = sim::explorationScript(**world); // the world's own exploration, planned on its scene
     ScriptedRun run;
     run.trial.header = (*world)->trialHeader();
     run.trial.header.device = options.device.text();

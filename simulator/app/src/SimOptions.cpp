@@ -40,8 +40,9 @@ std::string hex4(std::uint16_t v) {
 
 /// Combinations CLI11 cannot express; empty when fine.
 std::string combinationProblem(const SimOptions& o) {
-    if (o.headless && o.replayPath.empty() && o.device.kind != DeviceSpec::Kind::Scripted)
-        return "--headless needs --replay TRIAL or --device scripted:FILE";
+    if (o.headless && o.replayPath.empty() && o.device.kind != DeviceSpec::Kind::Scripted &&
+        o.device.kind != DeviceSpec::Kind::Demo)
+        return "--headless needs --replay TRIAL, --device scripted:FILE or --demo";
     if (!o.replayPath.empty() && o.device.kind != DeviceSpec::Kind::Keyboard)
         return "--replay plays the trial's own samples: it takes no --device";
     if (o.headless && o.scene.empty())
@@ -61,6 +62,8 @@ std::string DeviceSpec::text() const {
         return vendorId == 0 && productId == 0 ? "hid" : "hid:" + hex4(vendorId) + ":" + hex4(productId);
     case Kind::Scripted:
         return "scripted:" + scriptPath;
+    case Kind::Demo:
+        return "demo";
     }
     return "keyboard";
 }
@@ -83,13 +86,17 @@ Result<DeviceSpec> parseDeviceSpec(const std::string& text) {
                         "--device: \"" + text + "\" is not hid:VID:PID with hexadecimal ids (e.g. hid:046d:c62b)");
         return spec;
     }
+    if (text == "demo") {
+        spec.kind = DeviceSpec::Kind::Demo;
+        return spec;
+    }
     if (text.rfind("scripted:", 0) == 0 && text.size() > 9) {
         spec.kind = DeviceSpec::Kind::Scripted;
         spec.scriptPath = text.substr(9);
         return spec;
     }
     return fail(ErrorCode::InvalidInput,
-                "--device: \"" + text + "\" is not one of keyboard, hid, hid:VID:PID, scripted:FILE");
+                "--device: \"" + text + "\" is not one of keyboard, hid, hid:VID:PID, scripted:FILE, demo");
 }
 
 ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
@@ -120,7 +127,11 @@ ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
         app.add_option("--map-mmhg", mapMmHg, "the patient's mean arterial pressure, mmHg (50-150)")
             ->default_str(std::to_string(std::lround(mapMmHg)));
     app.add_option("--seed", o.world.seed, "the world's seed")->capture_default_str();
-    app.add_option("--device", device, "keyboard, hid, hid:VID:PID or scripted:FILE")->capture_default_str();
+    app.add_option("--device", device, "keyboard, hid, hid:VID:PID, scripted:FILE or demo")->capture_default_str();
+    bool demo = false;
+    app.add_flag("--demo", demo,
+                 "play the built-in exploration of the scene (the same as --device demo): a supervisor watches it, a "
+                 "check runs it headless");
     app.add_option("--record", o.recordPath, "write the trial (every device sample) to this file");
     app.add_option("--replay", o.replayPath, "play a recorded trial back");
     app.add_flag("--headless", o.headless, "no window: step as fast as possible (with --replay or a scripted device)");
@@ -144,7 +155,12 @@ ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
         parsed.message = err.str() + out.str();
         return parsed;
     }
-    auto spec = parseDeviceSpec(device);
+    if (demo && device != "keyboard" && device != "demo") {
+        parsed.exitCode = cli::kExitUsage;
+        parsed.message = "--demo plays the built-in exploration: it takes no --device " + device + "\n";
+        return parsed;
+    }
+    auto spec = parseDeviceSpec(demo ? std::string("demo") : device);
     if (!spec) {
         parsed.exitCode = cli::kExitUsage;
         parsed.message = spec.error().detail + "\n";

@@ -208,6 +208,8 @@ void SimWindow::startSession(std::unique_ptr<sim::World> world) {
         }
         m_replay = std::move(*trial);
         m_source = std::make_unique<TrialSource>(m_replay);
+    } else if (m_options.device.kind == DeviceSpec::Kind::Demo) {
+        m_source = std::make_unique<ScriptSource>(sim::explorationScript(*m_world));
     } else if (m_options.device.kind == DeviceSpec::Kind::Scripted) {
         auto script = sim::readScript(m_options.device.scriptPath);
         if (!script) {

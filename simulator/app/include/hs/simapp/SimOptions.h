@@ -18,15 +18,16 @@ namespace hs::simapp {
 
 /// Where the device samples come from.
 struct DeviceSpec {
-    enum class Kind { Keyboard, Hid, Scripted };
+    /// Demo: the world's own exploration (sim::explorationScript), played as a script.
+    enum class Kind { Keyboard, Hid, Scripted, Demo };
     Kind kind = Kind::Keyboard;
     std::uint16_t vendorId = 0;  ///< hid: 0 = the first hysteroscope found
     std::uint16_t productId = 0; ///< hid
     std::string scriptPath;      ///< scripted
-    /// "keyboard", "hid", "hid:046d:c62b", "scripted:FILE": as the trial's header records it.
+    /// "keyboard", "hid", "hid:046d:c62b", "scripted:FILE", "demo": as the trial's header records it.
     std::string text() const;
 };
-/// Parses "keyboard", "hid", "hid:VID:PID" (hexadecimal) or "scripted:FILE"; InvalidInput naming the value.
+/// Parses "keyboard", "hid", "hid:VID:PID" (hexadecimal), "scripted:FILE" or "demo"; InvalidInput naming the value.
 [[nodiscard]] Result<DeviceSpec> parseDeviceSpec(const std::string& text);
 
 struct SimOptions {
@@ -35,7 +36,7 @@ struct SimOptions {
     DeviceSpec device;       ///< --device
     std::string recordPath;  ///< --record: the trial file to write
     std::string replayPath;  ///< --replay: the trial to play back
-    bool headless = false;   ///< --headless: no window (needs --replay or a scripted device)
+    bool headless = false;   ///< --headless: no window (needs --replay, a scripted device or --demo)
     std::string reportPath;  ///< --report: the report's JSON
     std::string htmlPath;    ///< --html: the report's page
     std::string language;    ///< --lang (also --language): the window's language; empty: HS_LANG, else the system's
