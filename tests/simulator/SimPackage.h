@@ -19,17 +19,24 @@ class SimPackage {
 public:
     /// The package's folder (generated on first use; a test fails if generation fails).
     static const std::string& folder() {
-        static SimPackage package(false);
+        static SimPackage package(Variant::PosteriorPolyp);
         return package.m_folder;
     }
     /// The same with the myoma at the fundus, FIGO 1 (mostly in the cavity): the scope meets it head-on.
     static const std::string& fundalMyomaFolder() {
-        static SimPackage package(true);
+        static SimPackage package(Variant::FundalMyoma);
+        return package.m_folder;
+    }
+    /// The default case's pathologies where it places them: the polyp in the right cornu over that ostium.
+    static const std::string& asPlacedFolder() {
+        static SimPackage package(Variant::AsPlaced);
         return package.m_folder;
     }
 
 private:
-    explicit SimPackage(bool fundalMyoma) : m_dir(std::make_unique<TempDir>("hs-sim-package")) {
+    enum class Variant { PosteriorPolyp, FundalMyoma, AsPlaced };
+    explicit SimPackage(Variant variant) : m_dir(std::make_unique<TempDir>("hs-sim-package")) {
+        const bool fundalMyoma = variant == Variant::FundalMyoma;
         auto spec = scene::loadCase(HS_DEFAULT_CASE_FILE);
         if (!spec) {
             ADD_FAILURE() << spec.error().detail;
@@ -37,7 +44,9 @@ private:
         }
         spec->meshing.targetVertices = 8000;
         for (auto& p : spec->pathologies)
-            if (p.kind == clinical::PathologyKind::Polyp)
+            if (variant == Variant::AsPlaced)
+                continue;
+            else if (p.kind == clinical::PathologyKind::Polyp)
                 p.placement = clinical::ClinicalPlacement{clinical::UterineLocation::Posterior};
             else if (fundalMyoma && p.kind == clinical::PathologyKind::Myoma) {
                 p.placement = clinical::ClinicalPlacement{clinical::UterineLocation::Fundal};

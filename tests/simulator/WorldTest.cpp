@@ -151,6 +151,22 @@ TEST(World, TheCavityOpensWithPressureAlongThePackagesCurve) {
     EXPECT_GT(world->metrics().deficitMl, 0.0);
 }
 
+TEST(World, NamesALoneOstiumByThePatientsSide) {
+    // The default case's polyp covers the right cornu's ostium, so the scene has one, in the left cornu (the patient's
+    // left: -x). The fundus landmark is then that cornu and the cavity's axis points at it: the side comes from the
+    // canal's frame. (Named by the cavity's axis, it was "ostium-right".)
+    auto loaded = World::load(test::SimPackage::asPlacedFolder(), WorldOptions{});
+    ASSERT_TRUE(loaded) << loaded.error().detail;
+    const World& world = **loaded;
+    EXPECT_EQ(world.landmarks().ostiaFound, 1);
+    std::vector<std::string> ostia;
+    for (const auto& t : world.metrics().targets)
+        if (t.name.rfind("ostium", 0) == 0)
+            ostia.push_back(t.name);
+    EXPECT_EQ(ostia, std::vector<std::string>{"ostium-left"});
+    EXPECT_LT(world.frame().left.x, 0.0); // the scene's frame is RAS-like
+}
+
 TEST(World, AScriptedExplorationSeesBothOstiaWithoutPerforation) {
     auto world = loadWorld();
     ASSERT_TRUE(world);

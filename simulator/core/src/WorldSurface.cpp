@@ -131,7 +131,9 @@ void World::Impl::setupSurfaceData() {
                 continue;
             const Vec3 centre = sums[k] / counts[k];
             Ostium o;
-            o.name = dot(centre - landmarks.internalOsMm, cavityLeft) >= 0.0 ? "ostium-left" : "ostium-right";
+            // The patient's side as the canal's frame has it: with one ostium found the fundus landmark is that
+            // ostium's cornu, so the cavity's axis points at it and cannot tell its side.
+            o.name = dot(centre - landmarks.internalOsMm, frame.left) >= 0.0 ? "ostium-left" : "ostium-right";
             o.at = embedPoints(simRest, {centre}).front();
             o.normal = normalized(normals[k]);
             if (o.at.tet >= 0)
