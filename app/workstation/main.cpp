@@ -2,7 +2,7 @@
 #include "hs/translations/Translations.h"
 #include "hs/widgets/view/VtkView.h"
 #include "hs/workstation/MainWindow.h"
-#include "hs/workstation/MessageBox.h"
+#include "hs/widgets/common/MessageBox.h"
 
 #include <QAction>
 #include <QApplication>
@@ -28,7 +28,7 @@ QString requestedLanguage(const QStringList& arguments) {
 void screenshotAndQuit(hs::workstation::MainWindow& window, const QString& path, bool loaded) {
     QTimer::singleShot(300, &window, [&window, path, loaded] {
         const bool saved = window.saveScreenshot(path);
-        for (const auto& message : hs::workstation::MessageBox::takeRecorded())
+        for (const auto& message : hs::widgets::MessageBox::takeRecorded())
             QTextStream(stderr) << message.text << '\n' << message.details << '\n';
         QCoreApplication::exit(saved && loaded ? 0 : 1);
     });
@@ -79,7 +79,7 @@ int main(int argc, char** argv) {
     const QString file = parser.positionalArguments().value(0);
     if (parser.isSet(screenshotOption)) {
         const QString image = parser.value(screenshotOption);
-        hs::workstation::MessageBox::setRecording(true); // nobody is there to close a message box
+        hs::widgets::MessageBox::setRecording(true); // nobody is there to close a message box
         QObject::connect(&window, &hs::workstation::MainWindow::fileLoaded, &window,
                          [&window, image] { screenshotAndQuit(window, image, true); });
         QObject::connect(&window, &hs::workstation::MainWindow::loadFailed, &window,

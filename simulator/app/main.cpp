@@ -6,7 +6,7 @@
 #include "hs/translations/Translations.h"
 #include "hs/widgets/view/VtkView.h"
 
-#include "CliCommon.h"
+#include "hs/core/ExitCode.h"
 
 #include <QApplication>
 #include <QSurfaceFormat>

@@ -4,6 +4,8 @@
 // bar; a clinician's review written beside the package. Needs a display (xvfb-run -a).
 #include "hs/scene/Review.h"
 #include "hs/scene/ScenePackage.h"
+#include "hs/widgets/common/FileDialog.h"
+#include "hs/widgets/common/MessageBox.h"
 #include "hs/widgets/jobs/GenerationSession.h"
 #include "hs/widgets/panels/PathologyPanel.h"
 #include "hs/widgets/view/HysteroscopicPreview.h"
@@ -11,9 +13,7 @@
 #include "hs/widgets/view/SurfaceHandles.h"
 #include "hs/widgets/view/VariantsView.h"
 #include "hs/widgets/view/VtkView.h"
-#include "hs/workstation/FileDialog.h"
 #include "hs/workstation/MainWindow.h"
-#include "hs/workstation/MessageBox.h"
 
 #include <QAction>
 #include <QApplication>
@@ -43,9 +43,9 @@
 
 #include <variant>
 
-using hs::workstation::FileDialog;
+using hs::widgets::FileDialog;
+using hs::widgets::MessageBox;
 using hs::workstation::MainWindow;
-using hs::workstation::MessageBox;
 
 namespace {
 

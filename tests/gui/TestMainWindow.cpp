@@ -2,11 +2,11 @@
 // Needs a display (xvfb-run -a).
 #include "GuiTestMeshes.h"
 #include "hs/io/MeshIO.h"
+#include "hs/widgets/common/FileDialog.h"
+#include "hs/widgets/common/MessageBox.h"
 #include "hs/widgets/view/MeshDisplay.h"
 #include "hs/widgets/view/VtkView.h"
-#include "hs/workstation/FileDialog.h"
 #include "hs/workstation/MainWindow.h"
-#include "hs/workstation/MessageBox.h"
 
 #include <QAction>
 #include <QApplication>
@@ -22,9 +22,9 @@
 
 #include <memory>
 
-using hs::workstation::FileDialog;
+using hs::widgets::FileDialog;
+using hs::widgets::MessageBox;
 using hs::workstation::MainWindow;
-using hs::workstation::MessageBox;
 
 namespace {
 

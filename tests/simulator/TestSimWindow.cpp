@@ -8,8 +8,8 @@
 #include "hs/simapp/SimOptions.h"
 #include "hs/simapp/SimWindow.h"
 #include "hs/translations/Translations.h"
+#include "hs/widgets/common/MessageBox.h"
 #include "hs/widgets/view/VtkView.h"
-#include "hs/workstation/MessageBox.h"
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -46,7 +46,7 @@ void TestSimWindow::initTestCase() {
     QElapsedTimer clock;
     clock.start();
     QVERIFY(m_dir.isValid());
-    hs::workstation::MessageBox::setRecording(true);
+    hs::widgets::MessageBox::setRecording(true);
     // HS_SIM_PACKAGE: a package to use instead (the docs' picture is taken in the default scene).
     m_package = qEnvironmentVariable("HS_SIM_PACKAGE");
     if (!m_package.isEmpty())

@@ -2,6 +2,8 @@
 
 #include "hs/scene/Review.h"
 #include "hs/scene/ScenePackage.h"
+#include "hs/widgets/common/FileDialog.h"
+#include "hs/widgets/common/MessageBox.h"
 #include "hs/widgets/jobs/JobStatusWidget.h"
 #include "hs/widgets/panels/ExportPanel.h"
 #include "hs/widgets/panels/MaterialsPanel.h"
@@ -14,8 +16,6 @@
 #include "hs/widgets/view/MeshDisplay.h"
 #include "hs/widgets/view/SurfaceHandles.h"
 #include "hs/widgets/view/VariantsView.h"
-#include "hs/workstation/FileDialog.h"
-#include "hs/workstation/MessageBox.h"
 
 #include <QAction>
 #include <QCloseEvent>
@@ -44,6 +44,10 @@
 #include <variant>
 
 namespace hs::workstation {
+
+using widgets::FileDialog;
+using widgets::MessageBox;
+
 namespace {
 
 const char* const kGeometryKey = "window/geometry";

@@ -1,7 +1,7 @@
 // The headless simulator: a script or a recorded trial through the world, as fast as it steps.
 #include "hs/simapp/Headless.h"
 
-#include "CliCommon.h"
+#include "hs/core/ExitCode.h"
 #include "hs/simapp/PhysicsLoop.h"
 
 #include <ctime>
@@ -54,7 +54,7 @@ namespace {
 
 int failWith(const Error& error) {
     std::cerr << "hysteroscene-sim: " << error.message() << '\n';
-    return cli::exitCodeFor(error);
+    return exitCodeFor(error);
 }
 
 } // namespace
@@ -79,13 +79,13 @@ int runHeadless(const SimOptions& options) {
             return failWith(written.error());
     if (options.reportPath.empty()) {
         std::cout << sim::reportJson(report);
-        return cli::kExitOk;
+        return kExitOk;
     }
     if (auto written = sim::writeReport(report, options.reportPath, options.htmlPath); !written)
         return failWith(written.error());
     std::cout << "report      " << options.reportPath << (options.htmlPath.empty() ? "" : ", " + options.htmlPath)
               << "\n";
-    return cli::kExitOk;
+    return kExitOk;
 }
 
 } // namespace hs::simapp

@@ -2,7 +2,7 @@
 // (checkScopeConfig, checkFluidSettings) name the field of a value out of range.
 #include "hs/simapp/SimOptions.h"
 
-#include "CliCommon.h"
+#include "hs/core/ExitCode.h"
 #include "hs/core/Units.h"
 
 #include <CLI/CLI.hpp>
@@ -151,18 +151,18 @@ ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
         return parsed;
     } catch (const CLI::ParseError& e) {
         app.exit(e, out, err);
-        parsed.exitCode = cli::kExitUsage;
+        parsed.exitCode = kExitUsage;
         parsed.message = err.str() + out.str();
         return parsed;
     }
     if (demo && device != "keyboard" && device != "demo") {
-        parsed.exitCode = cli::kExitUsage;
+        parsed.exitCode = kExitUsage;
         parsed.message = "--demo plays the built-in exploration: it takes no --device " + device + "\n";
         return parsed;
     }
     auto spec = parseDeviceSpec(demo ? std::string("demo") : device);
     if (!spec) {
-        parsed.exitCode = cli::kExitUsage;
+        parsed.exitCode = kExitUsage;
         parsed.message = spec.error().detail + "\n";
         return parsed;
     }
@@ -175,7 +175,7 @@ ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
     if (mapOption->count() > 0)
         o.world.fluid.meanArterialPressureKpa = units::kpaFromMmHg(mapMmHg);
     if (const std::string problem = combinationProblem(o); !problem.empty()) {
-        parsed.exitCode = cli::kExitUsage;
+        parsed.exitCode = kExitUsage;
         parsed.message = problem + "\nRun with --help for more information.\n";
         return parsed;
     }

@@ -6,9 +6,9 @@
 
 #include "hs/simapp/Headless.h"
 #include "hs/simrender/Hud.h"
+#include "hs/widgets/common/FileDialog.h"
+#include "hs/widgets/common/MessageBox.h"
 #include "hs/widgets/view/VtkView.h"
-#include "hs/workstation/FileDialog.h"
-#include "hs/workstation/MessageBox.h"
 
 #include <QActionGroup>
 #include <QCloseEvent>
@@ -31,8 +31,8 @@ namespace hs::simapp {
 
 namespace {
 
-using workstation::FileDialog;
-using workstation::MessageBox;
+using widgets::FileDialog;
+using widgets::MessageBox;
 
 /// Degrees of pivot per pixel of mouse drag, and mm of insertion per wheel step (120 units).
 constexpr double kDragDegPerPixel = 0.15;

@@ -4,7 +4,7 @@
 ///                    [--pump-mmhg P] [--map-mmhg M] [--seed N] [--device keyboard|hid[:VID:PID]|scripted:FILE]
 ///                    [--record TRIAL] [--replay TRIAL] [--headless] [--report OUT.json] [--html OUT.html]
 ///                    [--lang de|fr|it|en]
-/// Exit codes are the command-line tool's (hs::cli::ExitCode): 0 ok, 2 usage, 3 invalid input, 4 failed (docs/cli.md).
+/// Exit codes are the project's (hs/core/ExitCode.h): 0 ok, 2 usage, 3 invalid input, 4 failed (docs/cli.md).
 
 #include "hs/core/Result.h"
 #include "hs/sim/World.h"

@@ -5,7 +5,7 @@
 
 class QWidget;
 
-namespace hs::workstation {
+namespace hs::widgets {
 
 class FileDialog {
 public:
@@ -23,4 +23,4 @@ public:
     static void setNextFileName(const QString& fileName);
 };
 
-} // namespace hs::workstation
+} // namespace hs::widgets

@@ -1,10 +1,10 @@
-#include "hs/workstation/FileDialog.h"
+#include "hs/widgets/common/FileDialog.h"
 
 #include <QFileDialog>
 
 #include <optional>
 
-namespace hs::workstation {
+namespace hs::widgets {
 namespace {
 
 std::optional<QString>& nextFileName() {
@@ -47,4 +47,4 @@ void FileDialog::setNextFileName(const QString& fileName) {
     nextFileName() = fileName;
 }
 
-} // namespace hs::workstation
+} // namespace hs::widgets

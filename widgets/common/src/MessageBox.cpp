@@ -1,11 +1,11 @@
-#include "hs/workstation/MessageBox.h"
+#include "hs/widgets/common/MessageBox.h"
 
 #include <QMessageBox>
 
 #include <optional>
 #include <utility>
 
-namespace hs::workstation {
+namespace hs::widgets {
 namespace {
 
 struct Recorder {
@@ -101,4 +101,4 @@ void MessageBox::show(QWidget* parent, const Message& message) {
     box.exec();
 }
 
-} // namespace hs::workstation
+} // namespace hs::widgets

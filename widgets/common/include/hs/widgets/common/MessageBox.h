@@ -6,7 +6,7 @@
 
 class QWidget;
 
-namespace hs::workstation {
+namespace hs::widgets {
 
 class MessageBox {
 public:
@@ -41,4 +41,4 @@ private:
     static void show(QWidget* parent, const Message& message);
 };
 
-} // namespace hs::workstation
+} // namespace hs::widgets
