@@ -187,6 +187,10 @@
         <source>%L1 fps%4, physics %L2 steps/s, insertion %L3 mm</source>
         <translation>%L1 fps%4, Physik %L2 Schritte/s, Einführtiefe %L3 mm</translation>
     </message>
+    <message>
+        <source>The trial was recorded with other settings.</source>
+        <translation>Der Versuch wurde mit anderen Einstellungen aufgezeichnet.</translation>
+    </message>
 </context>
 <context>
     <name>hs::widgets</name>
@@ -2032,6 +2036,14 @@
     <message>
         <source>Variants - %1</source>
         <translation>Varianten - %1</translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Rückgängig: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Wiederholen: %1</translation>
     </message>
 </context>
 <context>

@@ -187,6 +187,10 @@
         <source>%L1 fps%4, physics %L2 steps/s, insertion %L3 mm</source>
         <translation>%L1 i/s%4, physique %L2 pas/s, insertion %L3 mm</translation>
     </message>
+    <message>
+        <source>The trial was recorded with other settings.</source>
+        <translation>L’essai a été enregistré avec d’autres réglages.</translation>
+    </message>
 </context>
 <context>
     <name>hs::widgets</name>
@@ -2032,6 +2036,14 @@
     <message>
         <source>Variants - %1</source>
         <translation>Variantes - %1</translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Annuler : %1</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Rétablir : %1</translation>
     </message>
 </context>
 <context>

@@ -187,6 +187,10 @@
         <source>%L1 fps%4, physics %L2 steps/s, insertion %L3 mm</source>
         <translation>%L1 fps%4, fisica %L2 passi/s, inserimento %L3 mm</translation>
     </message>
+    <message>
+        <source>The trial was recorded with other settings.</source>
+        <translation>La prova è stata registrata con altre impostazioni.</translation>
+    </message>
 </context>
 <context>
     <name>hs::widgets</name>
@@ -2032,6 +2036,14 @@
     <message>
         <source>Variants - %1</source>
         <translation>Varianti - %1</translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Annulla: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Ripeti: %1</translation>
     </message>
 </context>
 <context>

@@ -8,6 +8,7 @@
 #include "hs/widgets/common/MessageBox.h"
 #include "hs/widgets/jobs/GenerationSession.h"
 #include "hs/widgets/panels/PathologyPanel.h"
+#include "hs/widgets/panels/ReviewPanel.h"
 #include "hs/widgets/view/HysteroscopicPreview.h"
 #include "hs/widgets/view/MeshDisplay.h"
 #include "hs/widgets/view/SurfaceHandles.h"
@@ -25,8 +26,10 @@
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QFileInfo>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QMouseEvent>
 #include <QPushButton>
 #include <QSettings>
@@ -296,12 +299,34 @@ void TestAuthoringFlow::refusesAnOutOfRangeValueAndKeepsTheCase() {
 void TestAuthoringFlow::aClinicianReviewsTheExportedPackage() {
     if (m_exported.isEmpty())
         QSKIP("the authoring test did not export a package");
+    // An edit to undo in the case being authored when the review opens.
+    m_window->document().edit("seed", [](hs::scene::CaseSpec& spec) { spec.seed += 1; });
+    QVERIFY(find<QAction>("actionUndo")->isEnabled());
     QSignalSpy opened(m_window.get(), &MainWindow::reviewOpened);
     FileDialog::setNextFileName(m_exported);
     find<QAction>("actionReviewPackage")->trigger();
     QVERIFY(opened.wait(60000));
     QVERIFY(m_window->isReviewing());
     QVERIFY(!find<QPushButton>("meshButton")->isEnabled()); // the package is read-only
+    // A read-only session: no route replaces the reviewed package or changes the case behind it.
+    for (const char* name : {"actionUndo", "actionRedo", "actionNewCase", "actionOpenCase", "actionSaveCase",
+                             "actionSaveCaseAs", "actionOpen", "actionReviewPackage", "actionCompareVariants"})
+        QVERIFY2(!find<QAction>(name)->isEnabled(), name);
+    QVERIFY(!find<QMenu>("menuRecentCases")->isEnabled());
+    QVERIFY(!find<QMenu>("menuRecent")->isEnabled());
+    QVERIFY(find<QAction>("actionCloseReview")->isEnabled());
+    const std::string caseBefore = hs::scene::toJson(m_window->document().spec());
+    QVERIFY(m_window->document().undoStack()->canUndo()); // the authoring left edits to undo
+    QTest::keyClick(m_window.get(), Qt::Key_Z, Qt::ControlModifier);
+    QTest::keyClick(m_window.get(), Qt::Key_N, Qt::ControlModifier);
+    FileDialog::setNextFileName(m_exported);
+    QTest::keyClick(m_window.get(), Qt::Key_O, Qt::ControlModifier);
+    QTest::keyClick(m_window.get(), Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
+    QTest::qWait(200);
+    FileDialog::setNextFileName(QString()); // whatever a dialog would have been asked, none was
+    QCOMPARE(hs::scene::toJson(m_window->document().spec()), caseBefore);
+    QVERIFY(m_window->isReviewing());
+    QCOMPARE(find<hs::widgets::ReviewPanel>("reviewPanel")->packageFolder(), QFileInfo(m_exported).absoluteFilePath());
     QVERIFY(find<QPushButton>("visitButton0")->isEnabled());
     find<QPushButton>("visitButton0")->click();
     find<QSpinBox>("pathologyScore0")->setValue(5);
@@ -315,6 +340,9 @@ void TestAuthoringFlow::aClinicianReviewsTheExportedPackage() {
     find<QAction>("actionCloseReview")->trigger();
     QVERIFY(!m_window->isReviewing());
     QVERIFY(find<QPushButton>("meshButton")->isEnabled());
+    QVERIFY(find<QAction>("actionUndo")->isEnabled());
+    QVERIFY(find<QAction>("actionNewCase")->isEnabled());
+    QVERIFY(!find<QAction>("actionCloseReview")->isEnabled());
 }
 
 void TestAuthoringFlow::aBrokenPackageOpensWithAMessageAndChangesNothing() {

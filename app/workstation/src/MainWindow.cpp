@@ -118,7 +118,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_document.undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     connect(&m_document, &widgets::CaseDocument::filePathChanged, this, &MainWindow::updateTitle);
     connect(&m_document, &widgets::CaseDocument::changed, this, &MainWindow::updateTitle);
-    connect(&m_document, &widgets::CaseDocument::changed, this, [this] { m_currentFile.clear(); });
+    connect(&m_document, &widgets::CaseDocument::changed, this, [this] {
+        if (!isReviewing()) // the reviewed package stays in the views whatever happens to the case
+            m_currentFile.clear();
+    });
     m_autosaveTimer.setInterval(kAutosaveMs);
     connect(&m_autosaveTimer, &QTimer::timeout, this, &MainWindow::autosave);
     m_autosaveTimer.start();
@@ -187,12 +190,21 @@ void MainWindow::createActions() {
     m_saveCaseAsAction->setShortcut(QKeySequence::SaveAs);
     connect(m_saveCaseAsAction, &QAction::triggered, this, &MainWindow::onSaveCaseAs);
 
-    m_undoAction = m_document.undoStack()->createUndoAction(this, tr("&Undo"));
+    // Undo and redo of the case, enabled as the stack allows and never while a package is reviewed (the stack's own
+    // actions would enable themselves whenever it changes).
+    QUndoStack* stack = m_document.undoStack();
+    m_undoAction = new QAction(tr("&Undo"), this);
     m_undoAction->setObjectName("actionUndo");
     m_undoAction->setShortcut(QKeySequence::Undo);
-    m_redoAction = m_document.undoStack()->createRedoAction(this, tr("&Redo"));
+    connect(m_undoAction, &QAction::triggered, stack, &QUndoStack::undo);
+    m_redoAction = new QAction(tr("&Redo"), this);
     m_redoAction->setObjectName("actionRedo");
     m_redoAction->setShortcut(QKeySequence::Redo);
+    connect(m_redoAction, &QAction::triggered, stack, &QUndoStack::redo);
+    connect(stack, &QUndoStack::canUndoChanged, this, &MainWindow::updateAuthoringActions);
+    connect(stack, &QUndoStack::canRedoChanged, this, &MainWindow::updateAuthoringActions);
+    connect(stack, &QUndoStack::undoTextChanged, this, &MainWindow::updateAuthoringActions);
+    connect(stack, &QUndoStack::redoTextChanged, this, &MainWindow::updateAuthoringActions);
 
     m_openAction = new QAction(tr("&Open..."), this);
     m_openAction->setObjectName("actionOpen");
@@ -362,8 +374,8 @@ void MainWindow::createPanels() {
 }
 
 void MainWindow::onResultsChanged() {
-    // A mesh file the user opened stays in the view until the case is edited.
-    if (!m_currentFile.isEmpty())
+    // A mesh file the user opened stays in the view until the case is edited; a reviewed package until it is closed.
+    if (!m_currentFile.isEmpty() || isReviewing())
         return;
     const bool first = m_shownLayer == widgets::ResultLayer::None;
     showResults();
@@ -392,7 +404,26 @@ void MainWindow::showResults() {
 }
 
 bool MainWindow::isReviewing() const {
-    return m_reviewPanel->isOpen();
+    return m_reviewPanel && m_reviewPanel->isOpen();
+}
+
+void MainWindow::updateAuthoringActions() {
+    // Reviewing is a read-only session: nothing may replace the reviewed package or change the case behind it
+    // except closing the review.
+    if (!m_recentCasesMenu || !m_recentMenu)
+        return; // still being built
+    const bool authoring = !isReviewing();
+    for (QAction* action : {m_newCaseAction, m_openCaseAction, m_saveCaseAction, m_saveCaseAsAction, m_openAction,
+                            m_reviewAction, m_compareAction})
+        action->setEnabled(authoring);
+    m_recentCasesMenu->setEnabled(authoring && !m_recentCasesMenu->actions().isEmpty());
+    m_recentMenu->setEnabled(authoring);
+    QUndoStack* stack = m_document.undoStack();
+    m_undoAction->setEnabled(authoring && stack->canUndo());
+    m_redoAction->setEnabled(authoring && stack->canRedo());
+    m_undoAction->setText(stack->canUndo() ? tr("&Undo %1").arg(stack->undoText()) : tr("&Undo"));
+    m_redoAction->setText(stack->canRedo() ? tr("&Redo %1").arg(stack->redoText()) : tr("&Redo"));
+    m_closeReviewAction->setEnabled(!authoring);
 }
 
 void MainWindow::onReviewPackage() {
@@ -433,7 +464,7 @@ void MainWindow::reviewPackage(const QString& folder) {
             m_display->showTetMesh(opened.scene->tets);
             m_shownLayer = widgets::ResultLayer::None;
             m_currentFile = absolute;
-            m_closeReviewAction->setEnabled(true);
+            updateAuthoringActions();
             onResetCamera();
             updateStatus();
             emit reviewOpened(absolute);
@@ -509,7 +540,7 @@ void MainWindow::onCloseReview() {
     m_reviewPanel->close();
     for (QDockWidget* dock : m_authoringDocks)
         dock->setEnabled(true);
-    m_closeReviewAction->setEnabled(false);
+    updateAuthoringActions();
     m_currentFile.clear();
     showResults();
 }
@@ -642,7 +673,7 @@ void MainWindow::openCase(const QString& path) {
 void MainWindow::rebuildRecentCasesMenu() {
     const QStringList cases = widgets::recentFiles(QSettings(), widgets::kRecentCasesKey);
     fillRecentMenu(m_recentCasesMenu, cases, QStringLiteral("recentCase"), &MainWindow::onOpenRecentCase);
-    m_recentCasesMenu->setEnabled(!cases.isEmpty());
+    updateAuthoringActions();
 }
 
 bool MainWindow::onSaveCase() {
@@ -844,6 +875,7 @@ void MainWindow::rebuildRecentMenu() {
     m_recentMenu->addSeparator();
     m_recentMenu->addAction(m_clearRecentAction);
     m_clearRecentAction->setEnabled(!files.isEmpty());
+    updateAuthoringActions();
 }
 
 void MainWindow::onOpenRecent() {

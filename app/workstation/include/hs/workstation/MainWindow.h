@@ -149,6 +149,9 @@ private:
     bool maybeSave();
     /// The same for the ratings of a review in progress.
     bool maybeSaveReview();
+    /// Enables what authoring needs while no package is reviewed (undo and redo as the stack allows), and only
+    /// Close Review while one is.
+    void updateAuthoringActions();
     void showCaseError(const QString& title, const Error& error);
     /// Opens `path` as the case (after maybeSave) and lists it among the recent cases.
     void openCase(const QString& path);
