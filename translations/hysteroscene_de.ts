@@ -2045,6 +2045,34 @@
         <source>&amp;Redo %1</source>
         <translation>&amp;Wiederholen: %1</translation>
     </message>
+    <message>
+        <source>&amp;Stages</source>
+        <translation>&amp;Stufen</translation>
+    </message>
+    <message>
+        <source>&amp;Place on the Wall</source>
+        <translation>An der Wand &amp;platzieren</translation>
+    </message>
+    <message>
+        <source>&amp;Grow</source>
+        <translation>Wachsen &amp;lassen</translation>
+    </message>
+    <message>
+        <source>&amp;Mesh</source>
+        <translation>Ver&amp;netzen</translation>
+    </message>
+    <message>
+        <source>&amp;Texture</source>
+        <translation>&amp;Texturieren</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>&amp;Exportieren</translation>
+    </message>
+    <message>
+        <source>Cancel Placing</source>
+        <translation>Platzieren abbrechen</translation>
+    </message>
 </context>
 <context>
     <name>main</name>

@@ -2045,6 +2045,34 @@
         <source>&amp;Redo %1</source>
         <translation>&amp;Rétablir : %1</translation>
     </message>
+    <message>
+        <source>&amp;Stages</source>
+        <translation>É&amp;tapes</translation>
+    </message>
+    <message>
+        <source>&amp;Place on the Wall</source>
+        <translation>&amp;Placer sur la paroi</translation>
+    </message>
+    <message>
+        <source>&amp;Grow</source>
+        <translation>&amp;Faire croître</translation>
+    </message>
+    <message>
+        <source>&amp;Mesh</source>
+        <translation>&amp;Mailler</translation>
+    </message>
+    <message>
+        <source>&amp;Texture</source>
+        <translation>&amp;Texturer</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>&amp;Exporter</translation>
+    </message>
+    <message>
+        <source>Cancel Placing</source>
+        <translation>Annuler le placement</translation>
+    </message>
 </context>
 <context>
     <name>main</name>

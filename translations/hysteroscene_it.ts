@@ -2045,6 +2045,34 @@
         <source>&amp;Redo %1</source>
         <translation>&amp;Ripeti: %1</translation>
     </message>
+    <message>
+        <source>&amp;Stages</source>
+        <translation>&amp;Fasi</translation>
+    </message>
+    <message>
+        <source>&amp;Place on the Wall</source>
+        <translation>&amp;Posiziona sulla parete</translation>
+    </message>
+    <message>
+        <source>&amp;Grow</source>
+        <translation>&amp;Fai crescere</translation>
+    </message>
+    <message>
+        <source>&amp;Mesh</source>
+        <translation>&amp;Genera la mesh</translation>
+    </message>
+    <message>
+        <source>&amp;Texture</source>
+        <translation>&amp;Applica la texture</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>&amp;Esporta</translation>
+    </message>
+    <message>
+        <source>Cancel Placing</source>
+        <translation>Annulla il posizionamento</translation>
+    </message>
 </context>
 <context>
     <name>main</name>

@@ -65,6 +65,7 @@ private slots:
     void cleanup();
     void authorsTheDefaultCaseFromNewToAValidatedPackage();
     void cancelsARunningMeshJobFromTheStatusBar();
+    void placesFromAnyTabAndEscapeCancelsPlacing();
     void refusesAnOutOfRangeValueAndKeepsTheCase();
     void aClinicianReviewsTheExportedPackage();
     void aBrokenPackageOpensWithAMessageAndChangesNothing();
@@ -139,6 +140,13 @@ void drag(QWidget* view, const QPoint& from, const QPoint& to) {
     for (int i = 1; i <= 8; ++i)
         send(QEvent::MouseMove, from + (to - from) * i / 8, Qt::NoButton, Qt::LeftButton);
     send(QEvent::MouseButtonRelease, to, Qt::LeftButton, Qt::NoButton);
+}
+
+/// Shortcuts go to the active window: makes the window it (a display without a window manager activates nothing).
+void activate(QWidget* window) {
+    window->activateWindow();
+    QApplication::setActiveWindow(window);
+    QTRY_VERIFY(QApplication::activeWindow() == window);
 }
 
 void TestAuthoringFlow::shot(const QString& name, const QString& dock) {
@@ -275,8 +283,14 @@ void TestAuthoringFlow::cancelsARunningMeshJobFromTheStatusBar() {
     QString key;
     const QMetaObject::Connection watch =
         connect(&runner, &hs::widgets::JobRunner::progressChanged, this, [&](double, const QString& k) { key = k; });
-    find<QPushButton>("meshButton")->click();
-    QTRY_VERIFY_WITH_TIMEOUT(key.startsWith("meshing"), 120000);
+    // Started by its shortcut with its panel closed: the stages' shortcuts are window actions (a button's own
+    // shortcut fires only while the button shows).
+    find<QDockWidget>("meshDock")->hide();
+    QTRY_VERIFY(!find<QPushButton>("meshButton")->isVisible());
+    activate(m_window.get());
+    QTest::keyClick(m_window.get(), Qt::Key_M, Qt::ControlModifier);
+    QTRY_VERIFY_WITH_TIMEOUT(key.startsWith("meshing"), 60000);
+    QVERIFY(find<QPushButton>("meshButton")->isVisible()); // its dock shown and raised
     auto* cancel = find<QToolButton>("jobCancelButton");
     QVERIFY(cancel->isVisible());
     cancel->click();
@@ -286,6 +300,18 @@ void TestAuthoringFlow::cancelsARunningMeshJobFromTheStatusBar() {
     QTRY_VERIFY(!find<QToolButton>("jobCancelButton")->isVisible());
     QCOMPARE(MessageBox::takeRecorded().size(), 0); // a cancel is no error
     disconnect(watch);
+}
+
+void TestAuthoringFlow::placesFromAnyTabAndEscapeCancelsPlacing() {
+    auto* panel = find<hs::widgets::PathologyPanel>("pathologyPanel");
+    find<QDockWidget>("pathologyDock")->hide();
+    QTRY_VERIFY(!panel->isVisible());
+    activate(m_window.get());
+    QTest::keyClick(m_window.get(), Qt::Key_P, Qt::ControlModifier);
+    QTRY_VERIFY(panel->isPlacing());
+    QVERIFY(panel->isVisible()); // its dock shown and raised
+    QTest::keyClick(m_window.get(), Qt::Key_Escape);
+    QVERIFY(!panel->isPlacing());
 }
 
 void TestAuthoringFlow::refusesAnOutOfRangeValueAndKeepsTheCase() {
@@ -317,6 +343,7 @@ void TestAuthoringFlow::aClinicianReviewsTheExportedPackage() {
     QVERIFY(find<QAction>("actionCloseReview")->isEnabled());
     const std::string caseBefore = hs::scene::toJson(m_window->document().spec());
     QVERIFY(m_window->document().undoStack()->canUndo()); // the authoring left edits to undo
+    activate(m_window.get());
     QTest::keyClick(m_window.get(), Qt::Key_Z, Qt::ControlModifier);
     QTest::keyClick(m_window.get(), Qt::Key_N, Qt::ControlModifier);
     FileDialog::setNextFileName(m_exported);

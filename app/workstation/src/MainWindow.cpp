@@ -17,6 +17,7 @@
 #include "hs/widgets/view/SurfaceHandles.h"
 #include "hs/widgets/view/VariantsView.h"
 
+#include <QAbstractButton>
 #include <QAction>
 #include <QCloseEvent>
 #include <QCoreApplication>
@@ -165,6 +166,8 @@ MainWindow::~MainWindow() {
     m_loadWatcher.waitForFinished();
     m_session.runner().cancel();
     m_reviewJobs.cancel();
+    // The undo stack clears itself as the document goes, after the window's actions and their list.
+    m_document.undoStack()->disconnect(this);
 }
 
 void MainWindow::createActions() {
@@ -289,6 +292,10 @@ void MainWindow::createMenus() {
     m_panelsMenu = viewMenu->addMenu(tr("&Panels"));
     m_panelsMenu->setObjectName("menuPanels");
 
+    // The stages' buttons as window actions: their shortcuts work whichever tab is raised (filled in createPanels).
+    m_stagesMenu = menuBar()->addMenu(tr("&Stages"));
+    m_stagesMenu->setObjectName("menuStages");
+
     QMenu* helpMenu = menuBar()->addMenu(tr("&Help"));
     helpMenu->setObjectName("menuHelp");
     helpMenu->addAction(m_aboutAction);
@@ -371,6 +378,37 @@ void MainWindow::createPanels() {
         if (!folder.isEmpty())
             m_exportPanel->setFolder(folder);
     });
+    // Each stage's button as a window action: its dock raised, its button clicked when the panel allows it.
+    const auto stage = [this](const QString& text, const QKeySequence& keys, const char* name, QDockWidget* dock,
+                              const char* button) {
+        auto* action = new QAction(text, this);
+        action->setObjectName(QString::fromLatin1(name));
+        action->setShortcut(keys);
+        connect(action, &QAction::triggered, this, [dock, button] {
+            dock->show();
+            dock->raise();
+            if (auto* b = dock->findChild<QAbstractButton*>(QString::fromLatin1(button)); b && b->isEnabled())
+                b->click();
+        });
+        m_stagesMenu->addAction(action);
+        m_authoringActions.push_back(action);
+    };
+    stage(tr("&Place on the Wall"), QKeySequence(Qt::CTRL | Qt::Key_P), "actionPlace", pathologies, "placeButton");
+    stage(tr("&Grow"), QKeySequence(Qt::CTRL | Qt::Key_G), "actionGrow", pathologies, "growButton");
+    stage(tr("&Mesh"), QKeySequence(Qt::CTRL | Qt::Key_M), "actionMesh", mesh, "meshButton");
+    stage(tr("&Texture"), QKeySequence(Qt::CTRL | Qt::Key_T), "actionTexture", texture, "textureButton");
+    stage(tr("&Export"), QKeySequence(Qt::CTRL | Qt::Key_E), "actionExport", exportDock, "exportButton");
+    // Esc leaves placing (the place button toggled off), wherever the focus is in the window.
+    m_cancelPlacingAction = new QAction(tr("Cancel Placing"), this);
+    m_cancelPlacingAction->setObjectName("actionCancelPlacing");
+    m_cancelPlacingAction->setShortcut(QKeySequence(Qt::Key_Escape));
+    connect(m_cancelPlacingAction, &QAction::triggered, this, [this] {
+        if (auto* b = m_pathologyPanel->findChild<QAbstractButton*>(QStringLiteral("placeButton")); b && b->isChecked())
+            b->click();
+    });
+    m_stagesMenu->addSeparator();
+    m_stagesMenu->addAction(m_cancelPlacingAction);
+    updateAuthoringActions();
 }
 
 void MainWindow::onResultsChanged() {
@@ -415,6 +453,8 @@ void MainWindow::updateAuthoringActions() {
     const bool authoring = !isReviewing();
     for (QAction* action : {m_newCaseAction, m_openCaseAction, m_saveCaseAction, m_saveCaseAsAction, m_openAction,
                             m_reviewAction, m_compareAction})
+        action->setEnabled(authoring);
+    for (QAction* action : m_authoringActions)
         action->setEnabled(authoring);
     m_recentCasesMenu->setEnabled(authoring && !m_recentCasesMenu->actions().isEmpty());
     m_recentMenu->setEnabled(authoring);

@@ -52,7 +52,6 @@ ExportPanel::ExportPanel(CaseDocument& document, GenerationSession& session, QWi
 
     m_exportButton = new QPushButton(tr("&Export"), group);
     m_exportButton->setObjectName("exportButton");
-    m_exportButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
     m_exportButton->setToolTip(tr("Run what is not current, write the package and validate it (Ctrl+E)"));
     form->addRow(m_exportButton);
     layout->addWidget(group);

@@ -148,7 +148,6 @@ void MeshPanel::buildParameters() {
 
     m_meshButton = new QPushButton(tr("&Mesh"), group);
     m_meshButton->setObjectName("meshButton");
-    m_meshButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_M));
     m_meshButton->setToolTip(tr("Mesh the merged body and split the wall into its tissues (Ctrl+M)"));
     form->addRow(m_meshButton);
     m_messageLabel = new QLabel(group);

@@ -231,7 +231,6 @@ void PathologyPanel::buildEditor() {
     m_placeButton->setObjectName("placeButton");
     m_placeButton->setText(tr("Click on Wall"));
     m_placeButton->setCheckable(true);
-    m_placeButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_P));
     m_placeButton->setToolTip(tr("Then click on the organ's wall in the 3-D view to seat the pathology there "
                                  "(Ctrl+P; Esc cancels)"));
     auto* pointRow = new QHBoxLayout;
@@ -251,7 +250,6 @@ void PathologyPanel::buildResults() {
     m_growButton = new QPushButton(tr("&Grow"), group);
     m_growButton->setObjectName("growButton");
     m_growButton->setToolTip(tr("Grow every pathology in the organ (Ctrl+G)"));
-    m_growButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_G));
     m_mergeButton = new QPushButton(tr("M&erge"), group);
     m_mergeButton->setObjectName("mergeButton");
     m_mergeButton->setToolTip(tr("Merge the organ and the pathologies into one body with contact labels"));

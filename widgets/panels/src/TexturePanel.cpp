@@ -117,7 +117,6 @@ TexturePanel::TexturePanel(CaseDocument& document, GenerationSession& session, Q
     }
     m_textureButton = new QPushButton(tr("&Texture"), group);
     m_textureButton->setObjectName("textureButton");
-    m_textureButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_T));
     m_textureButton->setToolTip(tr("Synthesize and bake the maps on the final surface (Ctrl+T)"));
     form->addRow(m_textureButton);
     m_messageLabel = new QLabel(group);

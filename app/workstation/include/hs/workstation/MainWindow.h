@@ -194,6 +194,9 @@ private:
     QAction* m_compareAction = nullptr;
     widgets::VariantsView* m_variantsView = nullptr; ///< a window of its own, made on first use
     QMenu* m_panelsMenu = nullptr;
+    QMenu* m_stagesMenu = nullptr;
+    QAction* m_cancelPlacingAction = nullptr;
+    std::vector<QAction*> m_authoringActions; ///< the stages' actions: disabled while a package is reviewed
     QString m_recoveryFolder;
     QTimer m_autosaveTimer;
 
