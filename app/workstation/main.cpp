@@ -1,8 +1,8 @@
 // hysteroscene: the workstation. Opens the mesh given on the command line.
 #include "hs/translations/Translations.h"
+#include "hs/widgets/common/MessageBox.h"
 #include "hs/widgets/view/VtkView.h"
 #include "hs/workstation/MainWindow.h"
-#include "hs/widgets/common/MessageBox.h"
 
 #include <QAction>
 #include <QApplication>

@@ -57,11 +57,11 @@ double AutoExposure::update(const CircleStats& stats, double elapsedS) {
     const double mean = std::max(stats.meanLuminance, 1.0 / 255.0);
     double errorStops = std::log2(m_settings.targetLuminance / mean);
     // Peak limiting: more of the circle at full scale (or near white) than its limit stops down four times as fast,
-    // by a stop for every doubling of the share over the limit (at least half a stop), whatever the mean says. (Not on the
-    // first frame, which moves the whole way by its mean: one glaring frame at switch-on would throw it far off.)
+    // by a stop for every doubling of the share over the limit (at least half a stop), whatever the mean says. (Not on
+    // the first frame, which moves the whole way by its mean: one glaring frame at switch-on would throw it far off.)
     double tau = std::max(1e-3, m_settings.timeConstantS);
-    const double over = std::max(stats.clippedFraction / m_settings.clippedLimit,
-                                 stats.highlightFraction / m_settings.nearWhiteLimit);
+    const double over =
+        std::max(stats.clippedFraction / m_settings.clippedLimit, stats.highlightFraction / m_settings.nearWhiteLimit);
     if (!m_first && over > 1.0) {
         errorStops = std::min(errorStops, -std::max(0.5, std::log2(over)));
         tau *= 0.25;
