@@ -119,10 +119,11 @@ Result<std::vector<PendingFile>> planFiles(const Scene& scene, const PackageWrit
     files.push_back({std::string(detail::kTetsFile),
                      [&scene](const fs::path& p) { return io::writeTetMesh(scene.tets, p.string()); }});
     // VTK's texture coordinates have their origin at the image's bottom left (as OBJ's), the scene's at its top left.
+    // The writer runs after planFiles returns: it owns its copy.
     std::vector<std::array<float, 2>> vtkUvs = scene.surface.uvs;
     for (auto& uv : vtkUvs)
         uv[1] = 1.0f - uv[1];
-    files.push_back({std::string(detail::kSurfaceVtpFile), [&scene, &vtkUvs](const fs::path& p) {
+    files.push_back({std::string(detail::kSurfaceVtpFile), [&scene, vtkUvs = std::move(vtkUvs)](const fs::path& p) {
                          io::WriteOptions vtp;
                          vtp.textureCoordinates = vtkUvs.empty() ? nullptr : &vtkUvs;
                          vtp.normals = scene.surface.normals.empty() ? nullptr : &scene.surface.normals;

@@ -3,6 +3,7 @@
 #include "hs/scene/ScenePackage.h"
 #include "SyntheticScene.h"
 #include "TestSupport.h"
+#include "hs/io/MeshIO.h"
 #include "hs/scene/Sha256.h"
 
 #include <gtest/gtest.h>
@@ -102,6 +103,26 @@ TEST_F(ScenePackage, IsByteIdenticalWhenTheSameSceneIsWrittenAgain) {
         EXPECT_EQ(a->manifest.files[i].sha256, again->manifest.files[i].sha256) << a->manifest.files[i].path;
     }
     EXPECT_EQ(readText(m_dir.path() / "a" / "manifest.json"), readText(m_dir.path() / "b" / "manifest.json"));
+}
+
+TEST_F(ScenePackage, WritesTheVisualSurfacesUvsInEachFormatsConvention) {
+    // The scene's UVs have their origin at the maps' top left (glTF's convention, surface.glb); surface.vtp holds
+    // VTK's, origin at the bottom left: v there is 1 - the scene's.
+    const Scene original = test::syntheticScene();
+    io::PointArrays arrays;
+    const auto vtp = io::readSurfaceWithArrays((package() / "surface.vtp").string(), arrays);
+    ASSERT_TRUE(vtp.ok()) << vtp.error().message();
+    const auto uv = arrays.find("uv");
+    ASSERT_NE(uv, arrays.end());
+    ASSERT_EQ(uv->second.components, 2);
+    ASSERT_EQ(uv->second.values.size(), 2 * original.surface.uvs.size());
+    bool flipped = false;
+    for (std::size_t i = 0; i < original.surface.uvs.size(); ++i) {
+        EXPECT_FLOAT_EQ(static_cast<float>(uv->second.values[2 * i]), original.surface.uvs[i][0]) << i;
+        EXPECT_FLOAT_EQ(static_cast<float>(uv->second.values[2 * i + 1]), 1.0f - original.surface.uvs[i][1]) << i;
+        flipped = flipped || original.surface.uvs[i][1] != 0.5f;
+    }
+    EXPECT_TRUE(flipped); // the scene's UVs tell the conventions apart
 }
 
 TEST_F(ScenePackage, ReadsBackTheSceneItWasWrittenFrom) {
