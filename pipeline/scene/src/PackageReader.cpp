@@ -286,6 +286,9 @@ Status readMeshes(const fs::path& root, const PackageManifest& manifest, const P
     if (glb->points.size() != scene.surface.mesh.vertexCount() || glb->triangles != scene.surface.mesh.triangles)
         return fail(ErrorCode::InvalidInput, "surface.glb and surface.vtp describe different surfaces");
     scene.surface.uvs = std::move(glb->uvs);
+    if (manifest.schemaVersion < kFirstTopLeftUvSchemaVersion) // written with the bake's bottom-left origin
+        for (auto& uv : scene.surface.uvs)
+            uv[1] = 1.0f - uv[1];
     return {};
 }
 

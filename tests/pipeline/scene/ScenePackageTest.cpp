@@ -125,6 +125,20 @@ TEST_F(ScenePackage, WritesTheVisualSurfacesUvsInEachFormatsConvention) {
     EXPECT_TRUE(flipped); // the scene's UVs tell the conventions apart
 }
 
+// Packages of schema version 2 and before wrote the bake's texture coordinates, origin at the bottom left, where the
+// scene's have theirs at the top left: every viewer read the maps upside down. The reader turns them the right way up.
+TEST_F(ScenePackage, ReadsTheUvsOfAPackageWrittenBeforeVersion3TheRightWayUp) {
+    const Scene original = test::syntheticScene();
+    editManifest(package(), [](auto& j) { j["schemaVersion"] = 2; });
+    const auto read = readScenePackage(package().string());
+    ASSERT_TRUE(read.ok()) << read.error().message();
+    ASSERT_EQ(read->surface.uvs.size(), original.surface.uvs.size());
+    for (std::size_t i = 0; i < original.surface.uvs.size(); ++i) {
+        EXPECT_EQ(read->surface.uvs[i][0], original.surface.uvs[i][0]) << i;
+        EXPECT_EQ(read->surface.uvs[i][1], 1.0f - original.surface.uvs[i][1]) << i;
+    }
+}
+
 TEST_F(ScenePackage, ReadsBackTheSceneItWasWrittenFrom) {
     const Scene original = test::syntheticScene();
     const auto read = readScenePackage(package().string());

@@ -23,9 +23,13 @@ namespace hs::scene {
 /// Value of the manifest's "format" member.
 constexpr std::string_view kPackageFormat = "hysteroscene-scene";
 /// The package schema version this build writes. Version 2 added the simulation mesh (simulation.vtu and its binding
-/// of the visual surface); readers read versions kOldestPackageSchemaVersion..kPackageSchemaVersion and refuse others
-/// (Unsupported).
-constexpr int kPackageSchemaVersion = 2;
+/// of the visual surface). Version 3 wrote the visual surface's texture coordinates with their origin at the maps' top
+/// left, as surface.glb (glTF) and VisualSurface document; versions 1 and 2 wrote the bake's own convention there
+/// (origin at the bottom left), so every viewer read the maps upside down, and readers flip those (v -> 1 - v,
+/// kFirstTopLeftUvSchemaVersion). Readers read versions kOldestPackageSchemaVersion..kPackageSchemaVersion and refuse
+/// others (Unsupported).
+constexpr int kPackageSchemaVersion = 3;
+constexpr int kFirstTopLeftUvSchemaVersion = 3;
 constexpr int kOldestPackageSchemaVersion = 1;
 /// The manifest's file name inside the package; it is the only file the manifest does not list.
 constexpr std::string_view kManifestName = "manifest.json";
