@@ -69,7 +69,7 @@ inline constexpr double kMaxVisualFairingMm = 0.75;
 /// interstitial part of the tube (about 1 cm long in the wall, lumen about 1 mm) opens into the cavity (El-Mowafi &
 /// Diamond, "Fallopian tube", and Tubal microsurgery versus assisted reproduction, in Infertility and Assisted
 /// Reproduction, Cambridge University Press 2008). The tets keep the wall closed: the tube is not modelled.
-inline constexpr double kOstiumRadiusMm = 1.0;
+inline constexpr double kOstiumRadiusMm = 1.5;
 inline constexpr double kOstiumDepthMm = 2.0; ///< the funnel's depth, mm: as deep as the light shows the opening
 /// One tubal ostium of a labelled boundary: the area-weighted centre and outward (into the cavity) unit normal of
 /// one connected set of its ostium faces; in order of their first face.
