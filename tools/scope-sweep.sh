@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Generates the default case and the 20-case sweep (tools/sweep-cases.py) with a hysteroscene-cli and prints, per
-# scene, the scope passage that `validate` measures (docs/scene-format.md, "Scope passage"):
+# scene, the scope passage that `validate` measures (docs/scene-format.md, "Scope passage") and how much of each tubal
+# ostium is in sight from the cavity's middle (a dash: the ostium has no faces, a pathology covers it; hidden-by: what
+# hides an ostium less than a quarter in sight, the pathology's id or the wall):
 #     bash tools/scope-sweep.sh build/ci/bin/hysteroscene-cli /tmp/scope-sweep [SCOPE_DIAMETER_MM]
 # OUT/table.txt has the table; OUT/<case>.gen.log and OUT/<case>.validate.json the reports. A case that fails to
 # generate is listed with its exit code.
@@ -17,8 +19,8 @@ rm -rf "$out"
 mkdir -p "$out/cases"
 python3 "$here/tools/sweep-cases.py" "$out/cases"
 cp "$here/resources/cases/default.json" "$out/cases/default.json"
-printf '%-10s %8s %-12s %8s %6s %9s %-12s %6s %9s\n' case canal-mm part along-mm fits fundus-mm part fits \
-    straight-mm > "$out/table.txt"
+printf '%-10s %8s %-12s %8s %6s %9s %-12s %6s %9s %7s %7s %s\n' case canal-mm part along-mm fits fundus-mm part fits \
+    straight-mm left-% right-% hidden-by > "$out/table.txt"
 for c in "$out"/cases/*.json; do
     n=$(basename "$c" .json)
     "$cli" generate "$c" -o "$out/scenes/$n" --threads 2 > "$out/$n.gen.log" 2>&1
@@ -39,9 +41,11 @@ if not s.get("checked"):
     sys.exit()
 c, f, t = s["canal"], s["toFundus"], s["straightStretch"]
 yes = lambda b: "yes" if b else "no"
+sight = {o["side"]: f'{o["inSightPercent"]:.0f}' for o in s.get("ostia", [])}
+hidden = sorted({h for o in s.get("ostia", []) if o["inSightPercent"] < 25 for h in o["hiddenBy"][:1]})
 print(f"{name:<10} {c['narrowest']['widthMm']:8.2f} {c['narrowest']['part']:<12} {c['narrowest']['arcLengthMm']:8.1f} "
       f"{yes(c['passes']):>6} {f['narrowest']['widthMm']:9.2f} {f['narrowest']['part']:<12} {yes(f['passes']):>6} "
-      f"{t['widthMm']:9.2f}")
+      f"{t['widthMm']:9.2f} {sight.get('left', '-'):>7} {sight.get('right', '-'):>7} {','.join(hidden) or '-'}")
 PY
 done
 cat "$out/table.txt"

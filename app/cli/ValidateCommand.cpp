@@ -5,9 +5,11 @@
 #include "hs/scene/CaseSpec.h"
 #include "hs/scene/ScenePackage.h"
 #include "hs/scene/ScopePassage.h"
+#include "hs/scene/ScopeView.h"
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <iostream>
@@ -56,7 +58,56 @@ std::string where(const scene::PassagePoint& p) {
 struct ScopeCheck {
     Result<scene::ScopePassage> passage;
     std::vector<Warning> warnings;
+    std::vector<scene::OstiumSight> ostia; ///< each ostium found, and how much of it is in sight
+    Vec3 viewpointMm;                      ///< from where: scene::cavityViewpoint
 };
+
+/// Below this share of its area in sight from the cavity's middle, an ostium is reported hidden: a funnel seen
+/// obliquely shows its near wall and the opening while its lip hides the far wall (about half of it).
+constexpr double kOstiumInSight = 0.25;
+
+std::string percent(double fraction) {
+    std::ostringstream out;
+    out.precision(0);
+    out << std::fixed << 100.0 * fraction << " %";
+    return out.str();
+}
+
+/// "myoma-1 and the wall": what hides an ostium, the most first.
+std::string hiddenBy(const scene::OstiumSight& o) {
+    std::string text;
+    for (std::size_t i = 0; i < o.hiddenBy.size(); ++i)
+        text += (i == 0                       ? ""
+                 : i + 1 == o.hiddenBy.size() ? " and "
+                                              : ", ") +
+                (o.hiddenBy[i] == "wall" ? std::string("the wall") : o.hiddenBy[i]);
+    return text;
+}
+
+/// The tubal ostia as the scope sees them from the cavity's middle: a warning for each one missing (a pathology
+/// covers it) or mostly hidden.
+void checkOstia(const scene::Scene& sc, const scene::ScopePassage& passage, ScopeCheck& check) {
+    check.viewpointMm = scene::cavityViewpoint(sc, passage);
+    auto ostia = scene::ostiaInSight(sc, check.viewpointMm);
+    if (!ostia.ok()) {
+        check.warnings.push_back({"ostium-missing", ostia.error().detail});
+        return;
+    }
+    check.ostia = *ostia;
+    for (const char* side : {"left", "right"}) {
+        const auto it =
+            std::find_if(ostia->begin(), ostia->end(), [&](const scene::OstiumSight& o) { return o.side == side; });
+        if (it == ostia->end())
+            check.warnings.push_back({"ostium-missing", std::string("the ") + side +
+                                                            " tubal ostium has no faces on the visual surface "
+                                                            "(a pathology covers it)"});
+        else if (it->visibleFraction < kOstiumInSight)
+            check.warnings.push_back({"ostium-hidden", std::string("the ") + side + " tubal ostium at " +
+                                                           at(it->centreMm) + " is " + percent(it->visibleFraction) +
+                                                           " in sight from the cavity's middle " +
+                                                           at(check.viewpointMm) + ", hidden by " + hiddenBy(*it)});
+    }
+}
 
 ScopeCheck checkScope(const scene::Scene& sc, double diameterMm) {
     scene::ScopePassageParams params;
@@ -64,6 +115,8 @@ ScopeCheck checkScope(const scene::Scene& sc, double diameterMm) {
     auto landmarks = scene::findScopeLandmarks(sc);
     ScopeCheck check{landmarks.ok() ? scene::checkScopePassage(sc.tets, *landmarks, params)
                                     : Result<scene::ScopePassage>(landmarks.failure()),
+                     {},
+                     {},
                      {}};
     if (!check.passage.ok()) {
         check.warnings.push_back({"scope-passage-unchecked", check.passage.error().detail});
@@ -85,6 +138,7 @@ ScopeCheck checkScope(const scene::Scene& sc, double diameterMm) {
                                                                  at(landmarks->fundusMm)});
     for (const auto& w : p.warnings)
         check.warnings.push_back({"scope-passage-landmarks", w});
+    checkOstia(sc, p, check);
     return check;
 }
 
@@ -121,6 +175,14 @@ nlohmann::ordered_json scopeJson(const ScopeCheck& check, double diameterMm, dou
     j["landmarksMm"] = {{"externalOs", vec(p.landmarks.externalOsMm)},
                         {"internalOs", vec(p.landmarks.internalOsMm)},
                         {"fundus", vec(p.landmarks.fundusMm)}};
+    j["ostiaViewpointMm"] = vec(check.viewpointMm);
+    j["ostia"] = nlohmann::ordered_json::array();
+    for (const auto& o : check.ostia)
+        j["ostia"].push_back({{"side", o.side},
+                              {"faces", o.faces},
+                              {"inSightPercent", 100.0 * o.visibleFraction},
+                              {"hiddenBy", o.hiddenBy},
+                              {"centreMm", vec(o.centreMm)}});
     return j;
 }
 
@@ -137,6 +199,10 @@ void printScope(const ScopeCheck& check, double diameterMm, double straightLengt
                   << " free at the least, with the tip at " << where(p.narrowestStraight) << '\n'
                   << "scope       landmarks: external os " << at(p.landmarks.externalOsMm) << ", internal os "
                   << at(p.landmarks.internalOsMm) << ", fundus " << at(p.landmarks.fundusMm) << '\n';
+        for (const auto& o : check.ostia)
+            std::cout << "ostium      " << o.side << " at " << at(o.centreMm) << ": " << percent(o.visibleFraction)
+                      << " in sight from the cavity's middle " << at(check.viewpointMm) << " (" << o.faces << " faces)"
+                      << (o.hiddenBy.empty() ? "" : ", the rest hidden by " + hiddenBy(o)) << '\n';
     }
     for (const auto& w : check.warnings)
         std::cout << "warning     " << w.name << ": " << w.detail << '\n';

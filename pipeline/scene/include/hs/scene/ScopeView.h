@@ -13,6 +13,8 @@
 #include "hs/scene/ScopePassage.h"
 
 #include <cstdint>
+#include <string>
+#include <vector>
 
 namespace hs::scene {
 
@@ -36,5 +38,28 @@ struct ScopeView {
 /// fundus point), looking at that centre. InvalidInput when the region has no tets.
 [[nodiscard]] Result<ScopeView> viewOfRegion(const Scene& scene, const ScopeLandmarks& landmarks, std::int32_t regionId,
                                              double distanceMm);
+
+/// A tubal ostium as the scope sees it from a point in the cavity.
+struct OstiumSight {
+    std::string side;             ///< "left" or "right": the patient's side, -x or +x of the viewpoint
+    Vec3 centreMm;                ///< area-weighted centre of the ostium's faces
+    std::size_t faces = 0;        ///< its "ostium" faces on the visual surface
+    double visibleFraction = 0.0; ///< of its faces' area: those whose centre the sight line reaches before any face
+    /// What hides the rest, the most first: the id of a pathology (its "contact" faces are in the way) or "wall".
+    std::vector<std::string> hiddenBy;
+};
+
+/// Where the scope looks round the cavity from: the cavity's middle (halfway from the internal os to the fundus
+/// point) when it lies in no tet of `scene` and at least half the scope's diameter from its visual surface; else
+/// (a pathology on a stalk may hang in the middle of the cavity) the point of the passage's route inside the cavity,
+/// with room for the scope, nearest the middle; the middle when the route has none.
+[[nodiscard]] Vec3 cavityViewpoint(const Scene& scene, const ScopePassage& passage);
+
+/// The ostia of `scene` (its visual surface's "ostium" faces, split by side) and how much of each is in sight from
+/// `eyeMm`: a sight line to a face's centre is blocked when it crosses a face of the visual surface other than an
+/// ostium's more than 0.2 mm before it (a pathology in the way, or the lip of a deep recess; the funnel's own rim,
+/// seen obliquely, still shows the opening). Zero, one or two entries, left first: an ostium a pathology covers has
+/// no faces left. InvalidInput when the scene has no ostium label.
+[[nodiscard]] Result<std::vector<OstiumSight>> ostiaInSight(const Scene& scene, const Vec3& eyeMm);
 
 } // namespace hs::scene
