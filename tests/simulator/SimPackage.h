@@ -1,9 +1,11 @@
 #pragma once
 // A scene package for the simulator's tests: the default case with a lighter visual mesh and maps (the simulation
 // mesh is the same size as the default package's), generated once per test binary. The default case's polyp sits in
-// the right cornu and covers that ostium (the scene has one); here it sits on the posterior wall, so that an
-// exploration can see both ostia.
+// the right cornu, beside its ostium; here it sits on the posterior wall (where the simulator's figures were first
+// measured, when a cornual polyp still covered the ostium).
 
+#include "CaseOrgan.h"
+#include "OrganOstia.h"
 #include "TestSupport.h"
 #include "hs/generate/Generate.h"
 #include "hs/scene/ScenePackage.h"
@@ -11,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace hs::test {
@@ -27,14 +30,14 @@ public:
         static SimPackage package(Variant::FundalMyoma);
         return package.m_folder;
     }
-    /// The default case's pathologies where it places them: the polyp in the right cornu over that ostium.
-    static const std::string& asPlacedFolder() {
-        static SimPackage package(Variant::AsPlaced);
+    /// The default case with its polyp put on the right tubal ostium on purpose (by a point): the scene has one ostium.
+    static const std::string& polypOnTheRightOstiumFolder() {
+        static SimPackage package(Variant::PolypOnTheRightOstium);
         return package.m_folder;
     }
 
 private:
-    enum class Variant { PosteriorPolyp, FundalMyoma, AsPlaced };
+    enum class Variant { PosteriorPolyp, FundalMyoma, PolypOnTheRightOstium };
     explicit SimPackage(Variant variant) : m_dir(std::make_unique<TempDir>("hs-sim-package")) {
         const bool fundalMyoma = variant == Variant::FundalMyoma;
         auto spec = scene::loadCase(HS_DEFAULT_CASE_FILE);
@@ -43,8 +46,20 @@ private:
             return;
         }
         spec->meshing.targetVertices = 8000;
+        std::optional<Vec3> ostium;
+        if (variant == Variant::PolypOnTheRightOstium) {
+            auto organ = caseOrgan(*spec, HS_DEFAULT_CASE_FILE);
+            auto found = organ ? rightOstiumCentre(organ->mesh) : Result<Vec3>(organ.failure());
+            if (!found) {
+                ADD_FAILURE() << found.error().detail;
+                return;
+            }
+            ostium = *found;
+        }
         for (auto& p : spec->pathologies)
-            if (variant == Variant::AsPlaced)
+            if (ostium && p.kind == clinical::PathologyKind::Polyp)
+                p.placement = clinical::SurfacePlacement{*ostium, {0.0, 0.0, 1.0}};
+            else if (ostium)
                 continue;
             else if (p.kind == clinical::PathologyKind::Polyp)
                 p.placement = clinical::ClinicalPlacement{clinical::UterineLocation::Posterior};

@@ -152,10 +152,10 @@ TEST(World, TheCavityOpensWithPressureAlongThePackagesCurve) {
 }
 
 TEST(World, NamesALoneOstiumByThePatientsSide) {
-    // The default case's polyp covers the right cornu's ostium, so the scene has one, in the left cornu (the patient's
-    // left: -x). The fundus landmark is then that cornu and the cavity's axis points at it: the side comes from the
-    // canal's frame. (Named by the cavity's axis, it was "ostium-right".)
-    auto loaded = World::load(test::SimPackage::asPlacedFolder(), WorldOptions{});
+    // A polyp put on the right cornu's ostium (by a point, on purpose) covers it, so the scene has one, in the left
+    // cornu (the patient's left: -x). The fundus landmark is then that cornu and the cavity's axis points at it: the
+    // side comes from the canal's frame. (Named by the cavity's axis, it was "ostium-right".)
+    auto loaded = World::load(test::SimPackage::polypOnTheRightOstiumFolder(), WorldOptions{});
     ASSERT_TRUE(loaded) << loaded.error().detail;
     const World& world = **loaded;
     EXPECT_EQ(world.landmarks().ostiaFound, 1);

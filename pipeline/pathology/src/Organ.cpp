@@ -128,6 +128,8 @@ Result<OrganInfo> analyzeOrgan(const SurfaceMesh& organ) {
     };
     info.cornuRight = nR > 0 ? ostR / nR : cornuByRay(1.0);
     info.cornuLeft = nL > 0 ? ostL / nL : cornuByRay(-1.0);
+    info.ostiumRight = nR > 0;
+    info.ostiumLeft = nL > 0;
     info.cavityWidthMm = distance(info.cornuRight, info.cornuLeft);
 
     double minL = 1e300, maxL = -1e300, minA = 1e300, maxA = -1e300, top = 0.0;

@@ -29,7 +29,9 @@ struct OrganInfo {
     Vec3 lateral;                 ///< unit, towards the patient's right (+x of the organ frame), normal to axis
     Vec3 anterior;                ///< unit, axis x lateral
     Vec3 cavityCenter;
-    Vec3 cornuRight, cornuLeft;  ///< centres of the tubal ostia
+    Vec3 cornuRight, cornuLeft; ///< centres of the tubal ostia
+    /// Whether the organ labels each ostium (its faces); the cornu is then that ostium's centre, else a ray's hit.
+    bool ostiumRight = false, ostiumLeft = false;
     double cavityLengthMm = 0.0; ///< internal os to cavity fundus
     double cavityWidthMm = 0.0;  ///< between the ostia
     double corpusLengthMm = 0.0; ///< internal os to the fundal serosa along the axis

@@ -45,6 +45,7 @@ constexpr double kResiteSlide = 0.5;    ///< a pathology moved off another slide
 constexpr double kResiteTurnDeg = 45.0; ///< and stays on a wall facing within this angle of the nominal seat
 constexpr double kResiteMarginMm = 1.0; ///< planned room beyond the minimum gap (the grown shape is lobulated)
 constexpr int kResiteGrowths = 8;       ///< seats grown at most before the case is refused
+constexpr int kOstiumGrowths = 8;       ///< seats grown at most off an ostium before it stays, with a warning
 
 /// The pathologies placed before pathology i: those it keeps clear of when it is placed.
 std::vector<std::size_t> othersOf(std::size_t i) {
@@ -79,6 +80,32 @@ Result<SurfaceMesh> grow(const PathologyRequest& r, const ShapeSpec& spec, const
     }
     return fail(ErrorCode::Internal, "unknown growth model");
 }
+
+/// Room a planned shape needs among the pathologies placed before it: its centre keeps radius + gap (+ margin, the
+/// grown shape is lobulated) from every one of them, and so does its foot (a stalk's root or a dome's base) within its
+/// own reach.
+class Room {
+public:
+    Room(const std::vector<Planned>& plans, const std::vector<std::size_t>& others, double gapMm) : m_gapMm(gapMm) {
+        for (std::size_t j : others)
+            m_earlier.emplace_back(&plans[j].surface, bounds(plans[j].surface));
+    }
+    bool operator()(const ShapeSpec& spec) const {
+        const double need = spec.radius + m_gapMm + kResiteMarginMm;
+        const double footNeed = spec.stalkRadius + m_gapMm + kResiteMarginMm;
+        for (const auto& [mesh, box] : m_earlier) {
+            if (signedDistance(*mesh, box, spec.center, need + 1.0) < need)
+                return false;
+            if (signedDistance(*mesh, box, spec.base, footNeed + 1.0) < footNeed)
+                return false;
+        }
+        return true;
+    }
+
+private:
+    double m_gapMm;
+    std::vector<std::pair<const SurfaceMesh*, Bounds>> m_earlier;
+};
 
 /// Plans pathology i at `seat`, grows it (its own random stream, so a second seat grows it the same way), scales it
 /// to the requested size and fits its depth to the FIGO type.
@@ -138,22 +165,7 @@ Result<bool> resiteClearOf(std::vector<Planned>& plans, std::size_t i, const std
     const PathologyRequest& r = *plans[i].request;
     const Seat nominal = plans[i].seat;
     const Planned kept = plans[i];
-    std::vector<std::pair<const SurfaceMesh*, Bounds>> earlier;
-    for (std::size_t j : others)
-        earlier.emplace_back(&plans[j].surface, bounds(plans[j].surface));
-    // Room the planned shape needs: its centre keeps radius + gap (+ margin, the grown shape is lobulated) from
-    // every earlier pathology, and so does its foot (a stalk's root or a dome's base) within its own reach.
-    auto roomy = [&](const ShapeSpec& spec) {
-        const double need = spec.radius + params.minimumGapMm + kResiteMarginMm;
-        const double footNeed = spec.stalkRadius + params.minimumGapMm + kResiteMarginMm;
-        for (const auto& [mesh, box] : earlier) {
-            if (signedDistance(*mesh, box, spec.center, need + 1.0) < need)
-                return false;
-            if (signedDistance(*mesh, box, spec.base, footNeed + 1.0) < footNeed)
-                return false;
-        }
-        return true;
-    };
+    const Room roomy(plans, others, params.minimumGapMm);
     int grown = 0;
     for (const Seat& seat :
          nearbySeats(info, nominal, std::max(5.0, kResiteSlide * info.cavityLengthMm), kResiteTurnDeg)) {
@@ -161,7 +173,7 @@ Result<bool> resiteClearOf(std::vector<Planned>& plans, std::size_t i, const std
             break;
         bool fromSerosa = false;
         auto spec = planShape(r, info, seat, params, surfacesOf(plans, others), fromSerosa);
-        if (!spec.ok() || !roomy(*spec))
+        if (!spec.ok() || !roomy(*spec) || !ostiumCoveredBy(r, info, *spec).empty())
             continue;
         ++grown;
         HS_TRY(progress.check("pathology stage"));
@@ -203,6 +215,63 @@ Status resiteClearOfEarlier(std::vector<Planned>& plans, std::size_t i, const Su
     return {};
 }
 
+/// A clinical location names a wall, not a point on it, and the scope must find both tubal ostia: where pathology i,
+/// grown at its seat, covers an ostium or, on a lateral or cornual wall, hides that side's ostium from the cavity's
+/// middle (ostiumHiddenByShape), it is grown again at the seats of seatsOffOstia around its nominal seat whose planned
+/// shape keeps both ostia free and has room among the pathologies before it, at most kOstiumGrowths, and stays at the
+/// first whose grown shape keeps the ostia free and overlaps none of them. Either way a warning says what happened:
+/// the slide from `nominal` (also when the first seat, plannedOffOstia, already slid), or the ostium it covers when
+/// no seat keeps it free (it then goes back where it was grown first). A point placement is never moved.
+Status keepOstiaFree(std::vector<Planned>& plans, std::size_t i, const Seat& nominal, const SurfaceMesh& organ,
+                     const OrganInfo& info, const PathologyParams& params, const Rng& root, PathologyResult& result,
+                     Progress& progress, const GrowthObserver& observe) {
+    const PathologyRequest& r = *plans[i].request;
+    if (!std::holds_alternative<clinical::ClinicalPlacement>(r.placement))
+        return {};
+    auto slid = [&](const std::string& ostium) {
+        const double d = distance(plans[i].seat.endometrium, nominal.endometrium);
+        if (d > 1e-9)
+            result.warnings.push_back(who(r) + ": at its nominal seat it would cover or hide the " + ostium +
+                                      " tubal ostium; seated " + fmt(d) + " mm away on the same wall");
+    };
+    std::string hidden = ostiumHiddenByShape(r, info, plans[i].surface);
+    if (hidden.empty()) {
+        // Clear where it grew: say so when the planned seat already slid off an ostium.
+        bool fromSerosa = false;
+        auto atNominal = planShape(r, info, nominal, params, surfacesOf(plans, othersOf(i)), fromSerosa);
+        if (atNominal.ok()) {
+            const std::string planned = ostiumCoveredBy(r, info, *atNominal);
+            if (!planned.empty())
+                slid(planned);
+        }
+        return {};
+    }
+    const Planned kept = plans[i];
+    const Room roomy(plans, othersOf(i), params.minimumGapMm);
+    int grown = 0;
+    for (const Seat& seat : seatsOffOstia(info, nominal)) {
+        if (grown >= kOstiumGrowths)
+            break;
+        bool fromSerosa = false;
+        auto spec = planShape(r, info, seat, params, surfacesOf(plans, othersOf(i)), fromSerosa);
+        if (!spec.ok() || !roomy(*spec) || !ostiumCoveredBy(r, info, *spec).empty())
+            continue;
+        ++grown;
+        HS_TRY(progress.check("pathology stage"));
+        HS_TRY(growAt(plans, i, othersOf(i), seat, organ, info, params, root, result.timings, progress, observe));
+        if (ostiumHiddenByShape(r, info, plans[i].surface).empty() &&
+            !overlapsAny(plans, i, othersOf(i), params.minimumGapMm)) {
+            slid(hidden);
+            return {};
+        }
+    }
+    plans[i] = kept;
+    result.warnings.push_back(who(r) + ": covers or hides the " + hidden +
+                              " tubal ostium: no seat on the same wall within " + fmt(ostiumSlideReachMm(info)) +
+                              " mm keeps both ostia free");
+    return {};
+}
+
 } // namespace
 
 Result<PathologyResult> growPathologies(const SurfaceMesh& organ, const PathologyParams& params, Progress& progress,
@@ -222,7 +291,7 @@ Result<PathologyResult> growPathologies(const SurfaceMesh& organ, const Patholog
         const PathologyRequest& r = params.pathologies[i];
         Planned& p = plans[i];
         p.request = &r;
-        Seat seat;
+        Seat seat, nominalSeat;
         {
             ScopedStepTimer timer(result.timings, "place");
             HS_TRY(checkRequest(r));
@@ -230,13 +299,16 @@ Result<PathologyResult> growPathologies(const SurfaceMesh& organ, const Patholog
             auto nominal = seatFrom(r, info, params.contactToleranceMm, result.warnings);
             if (!nominal.ok())
                 return nominal.failure();
-            seat = *nominal;
+            nominalSeat = *nominal;
+            seat = plannedOffOstia(r, info, *nominal, params, surfacesOf(plans, othersOf(i)));
         }
         const double di = static_cast<double>(i);
         auto sub = progress.sub(di / n * 0.8, (di + 1.0) / n * 0.8);
         HS_TRY(growAt(plans, i, othersOf(i), seat, organ, info, params, root, result.timings, sub, observe));
-        if (std::holds_alternative<clinical::ClinicalPlacement>(r.placement))
+        if (std::holds_alternative<clinical::ClinicalPlacement>(r.placement)) {
             HS_TRY(resiteClearOfEarlier(plans, i, organ, info, params, root, result, sub, observe));
+            HS_TRY(keepOstiaFree(plans, i, nominalSeat, organ, info, params, root, result, sub, observe));
+        }
         result.timings.step("grow").counts.emplace_back(r.id + ".triangles",
                                                         static_cast<std::int64_t>(p.surface.triangles.size()));
         progress.report("pathology.grow", (di + 1.0) / n * 0.8);

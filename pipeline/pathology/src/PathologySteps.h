@@ -48,6 +48,22 @@ std::vector<Seat> nearbySeats(const OrganInfo& info, const Seat& nominal, double
 Result<ShapeSpec> planShape(const PathologyRequest& r, const OrganInfo& info, const Seat& seat,
                             const PathologyParams& params, const std::vector<const SurfaceMesh*>& earlier,
                             bool& fromSerosa);
+/// The tubal ostium the shape planned by `spec` for `r` covers or hides ("right", "left"), empty when it keeps both
+/// free: its head and its foot stay kOstiumClearMm beyond their radii from each labelled ostium's centre, and, on a
+/// lateral or cornual wall, its head as far from the sight line from the cavity's middle to that side's ostium.
+std::string ostiumCoveredBy(const PathologyRequest& r, const OrganInfo& info, const ShapeSpec& spec);
+/// The same for a grown shape: a point of it within kOstiumClearMm of an ostium's centre, or, on a lateral or cornual
+/// wall, within kOstiumSightClearMm of the sight line to that side's ostium or a face across it.
+std::string ostiumHiddenByShape(const PathologyRequest& r, const OrganInfo& info, const SurfaceMesh& shape);
+/// The seats a pathology placed by location may slide to off an ostium: the endometrium within the cavity's length of
+/// `nominal` whose wall faces within 80 degrees of it, nearest first; and that reach in mm.
+std::vector<Seat> seatsOffOstia(const OrganInfo& info, const Seat& nominal);
+double ostiumSlideReachMm(const OrganInfo& info);
+/// The seat to grow a pathology placed by location at first: `nominal` when the shape planned there keeps both ostia
+/// free (ostiumCoveredBy), else the nearest of seatsOffOstia whose planned shape does; `nominal` when none does or the
+/// placement is a point (a case may put a pathology on an ostium on purpose).
+Seat plannedOffOstia(const PathologyRequest& r, const OrganInfo& info, const Seat& nominal,
+                     const PathologyParams& params, const std::vector<const SurfaceMesh*>& earlier);
 
 // Stalk.cpp
 /// The stalk's direction: the way it hangs (stalkDirection), or, when that runs into a pathology planned before

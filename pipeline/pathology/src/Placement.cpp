@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 #include <variant>
 
 namespace hs::pathology::detail {
@@ -18,6 +19,16 @@ namespace {
 constexpr double kHybridPlay = 0.15;    ///< a hybrid's seat: play for the centre across the wall, of the radius
 constexpr double kHybridSlide = 0.4;    ///< a hybrid's seat slides at most this fraction of the cavity length
 constexpr double kHybridTurnDeg = 30.0; ///< and faces within this angle of the nominal seat
+/// A pathology placed by location keeps its head and foot this far beyond their radii from a tubal ostium's centre,
+/// and its head this far from the sight line to the ostium from the cavity's middle: the tube's lumen is about 1 mm
+/// [ElMowafi2008] and the model's ostium funnel 1-3 mm across, so a millimetre is left between its rim and the mass.
+constexpr double kOstiumClearMm = 3.0;
+constexpr double kOstiumSlide = 1.0; ///< a pathology moved off an ostium slides at most this fraction of the
+                                     ///< cavity length
+/// A grown shape on a lateral or cornual wall keeps this far from the sight line to that side's ostium: the organ's
+/// adaptation to the masses still moves the walls and the pathologies on them by about a millimetre.
+constexpr double kOstiumSightClearMm = 1.5;
+constexpr double kOstiumTurnDeg = 80.0; ///< and on a wall facing within this angle of the nominal seat
 
 Vec3 faceNormalOf(const OrganInfo& info, std::size_t face) {
     return faceNormal(*info.mesh, face);
@@ -285,6 +296,115 @@ Result<ShapeSpec> planShape(const PathologyRequest& r, const OrganInfo& info, co
     spec.center = seat.endometrium + seat.intoWall * *depth;
     spec.base = spec.center;
     return spec;
+}
+
+namespace {
+
+double segmentDistance(const Vec3& a, const Vec3& b, const Vec3& p) {
+    const Vec3 ab = b - a;
+    const double len2 = dot(ab, ab);
+    const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+    return distance(a + ab * t, p);
+}
+
+} // namespace
+
+namespace {
+
+/// The side whose wall a clinical location names ("left", "right"; empty for the others): a mass on it stands between
+/// the cavity's middle and that side's ostium.
+std::string_view sideOfWall(const PathologyRequest& r) {
+    if (const auto* c = std::get_if<clinical::ClinicalPlacement>(&r.placement)) {
+        if (c->location == clinical::UterineLocation::LeftLateral ||
+            c->location == clinical::UterineLocation::CornualLeft)
+            return "left";
+        if (c->location == clinical::UterineLocation::RightLateral ||
+            c->location == clinical::UterineLocation::CornualRight)
+            return "right";
+    }
+    return {};
+}
+
+struct OstiumPoint {
+    Vec3 centre;
+    const char* side;
+};
+
+/// The organ's labelled ostia.
+std::vector<OstiumPoint> labelledOstia(const OrganInfo& info) {
+    std::vector<OstiumPoint> ostia;
+    if (info.ostiumRight)
+        ostia.push_back({info.cornuRight, "right"});
+    if (info.ostiumLeft)
+        ostia.push_back({info.cornuLeft, "left"});
+    return ostia;
+}
+
+/// The scope's eye in the middle of the cavity, as the scene's validation places it: halfway from the internal os to
+/// the midpoint of the ostia.
+Vec3 sightEye(const OrganInfo& info) {
+    return (info.internalOs + (info.cornuRight + info.cornuLeft) * 0.5) * 0.5;
+}
+
+} // namespace
+
+std::string ostiumCoveredBy(const PathologyRequest& r, const OrganInfo& info, const ShapeSpec& spec) {
+    const std::string_view wall = sideOfWall(r);
+    const Vec3 eye = sightEye(info);
+    for (const auto& [centre, side] : labelledOstia(info))
+        if (distance(spec.center, centre) < spec.radius + kOstiumClearMm ||
+            distance(spec.base, centre) < spec.stalkRadius + kOstiumClearMm ||
+            (wall == side && segmentDistance(eye, centre, spec.center) < spec.radius + kOstiumClearMm))
+            return side;
+    return {};
+}
+
+std::string ostiumHiddenByShape(const PathologyRequest& r, const OrganInfo& info, const SurfaceMesh& shape) {
+    const std::string_view wall = sideOfWall(r);
+    const Vec3 eye = sightEye(info);
+    for (const auto& [centre, side] : labelledOstia(info)) {
+        for (const Vec3& q : shape.points)
+            if (distance(q, centre) < kOstiumClearMm ||
+                (wall == side && segmentDistance(eye, centre, q) < kOstiumSightClearMm))
+                return side;
+        if (wall != side)
+            continue;
+        const double length = distance(eye, centre);
+        const Vec3 dir = (centre - eye) / std::max(length, 1e-12);
+        for (const Triangle& t : shape.triangles) {
+            double at = 0.0;
+            if (rayTriangle(eye, dir, shape.points[static_cast<std::size_t>(t[0])],
+                            shape.points[static_cast<std::size_t>(t[1])], shape.points[static_cast<std::size_t>(t[2])],
+                            0.0, at) &&
+                at < length)
+                return side;
+        }
+    }
+    return {};
+}
+
+std::vector<Seat> seatsOffOstia(const OrganInfo& info, const Seat& nominal) {
+    return nearbySeats(info, nominal, std::max(5.0, kOstiumSlide * info.cavityLengthMm), kOstiumTurnDeg);
+}
+
+double ostiumSlideReachMm(const OrganInfo& info) {
+    return std::max(5.0, kOstiumSlide * info.cavityLengthMm);
+}
+
+Seat plannedOffOstia(const PathologyRequest& r, const OrganInfo& info, const Seat& nominal,
+                     const PathologyParams& params, const std::vector<const SurfaceMesh*>& earlier) {
+    if (!std::holds_alternative<clinical::ClinicalPlacement>(r.placement))
+        return nominal;
+    bool fromSerosa = false;
+    auto planned = planShape(r, info, nominal, params, earlier, fromSerosa);
+    if (!planned.ok() || ostiumCoveredBy(r, info, *planned).empty())
+        return nominal; // clear, or the grow step reports why it cannot be planned
+    for (const Seat& seat : seatsOffOstia(info, nominal)) {
+        auto spec = planShape(r, info, seat, params, earlier, fromSerosa);
+        if (spec.ok() && ostiumCoveredBy(r, info, *spec).empty())
+            return seat;
+    }
+    return nominal;
 }
 
 } // namespace hs::pathology::detail

@@ -2,22 +2,38 @@
 // is measured and printed, and a 2.9 mm office hysteroscope gets through (docs/scene-format.md, "Scope passage").
 #include "hs/generate/Generate.h"
 #include "hs/scene/ScopePassage.h"
+#include "hs/scene/ScopeView.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <optional>
 
 using namespace hs;
 
+namespace {
+
+/// The default scene, generated once for the tests of this file.
+const scene::Scene* defaultScene() {
+    static const std::optional<scene::Scene> generated = []() -> std::optional<scene::Scene> {
+        auto spec = scene::loadCase(HS_DEFAULT_CASE_FILE);
+        if (!spec.ok())
+            return std::nullopt;
+        scene::CaseSpec s = *spec;
+        s.texture.sizePx = 256; // the tets are those of the default scene; only the maps are smaller
+        auto result = generate::generateScene(s, {HS_DEFAULT_CASE_FILE, 2, {}});
+        if (!result.ok() || !result->scene)
+            return std::nullopt;
+        return std::move(*result->scene);
+    }();
+    return generated ? &*generated : nullptr;
+}
+
+} // namespace
+
 TEST(ScopePassageScene, MeasuresTheNarrowestWidthOfTheDefaultScene) {
-    auto spec = scene::loadCase(HS_DEFAULT_CASE_FILE);
-    ASSERT_TRUE(spec.ok()) << spec.error().message();
-    scene::CaseSpec s = *spec;
-    s.texture.sizePx = 256; // the tets are those of the default scene; only the maps are smaller
-    auto generated = generate::generateScene(s, {HS_DEFAULT_CASE_FILE, 2, {}});
-    ASSERT_TRUE(generated.ok()) << generated.error().message();
-    ASSERT_TRUE(generated->scene.has_value());
-    const scene::Scene& sc = *generated->scene;
+    ASSERT_NE(defaultScene(), nullptr) << "the default case did not generate";
+    const scene::Scene& sc = *defaultScene();
 
     auto landmarks = scene::findScopeLandmarks(sc);
     ASSERT_TRUE(landmarks.ok()) << landmarks.error().message();
@@ -44,4 +60,24 @@ TEST(ScopePassageScene, MeasuresTheNarrowestWidthOfTheDefaultScene) {
     EXPECT_EQ(passage->route.front().part, scene::PassagePart::Outside);
     EXPECT_EQ(passage->route.back().part, scene::PassagePart::Cavity);
     EXPECT_GT(passage->route.back().arcLengthMm, canalMm);
+}
+
+// The default case's polyp is asked for in the right cornu and its myoma on the left wall: both grow beside the
+// ostium of their side, so the scope sees both ostia from the cavity's middle (before, the polyp covered the right
+// ostium, which had no faces left, and the exploration exercise could not be completed).
+TEST(ScopePassageScene, TheDefaultSceneShowsBothOstiaFromTheCavitysMiddle) {
+    ASSERT_NE(defaultScene(), nullptr) << "the default case did not generate";
+    auto landmarks = scene::findScopeLandmarks(*defaultScene());
+    ASSERT_TRUE(landmarks.ok()) << landmarks.error().message();
+    EXPECT_EQ(landmarks->ostiaFound, 2);
+    auto passage = scene::checkScopePassage(defaultScene()->tets, *landmarks);
+    ASSERT_TRUE(passage.ok()) << passage.error().message();
+    auto ostia = scene::ostiaInSight(*defaultScene(), scene::cavityViewpoint(*defaultScene(), *passage));
+    ASSERT_TRUE(ostia.ok()) << ostia.error().message();
+    ASSERT_EQ(ostia->size(), 2u);
+    for (const auto& o : *ostia) {
+        std::printf("default scene: %s ostium at (%.1f, %.1f, %.1f) mm, %zu faces, %.0f %% in sight\n", o.side.c_str(),
+                    o.centreMm.x, o.centreMm.y, o.centreMm.z, o.faces, 100.0 * o.visibleFraction);
+        EXPECT_GE(o.visibleFraction, 0.9) << o.side;
+    }
 }

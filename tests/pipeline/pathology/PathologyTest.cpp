@@ -1,4 +1,5 @@
 // The pathology stage's bars: FIGO type and size measured from the geometry, impossible requests, timings.
+#include "OrganOstia.h"
 #include "SampleOrgans.h"
 #include "TestSupport.h"
 
@@ -327,6 +328,50 @@ TEST(Pathology, RefusesFigoNine) {
     auto grown = growPathologies(test::testOrgan(1), params);
     ASSERT_FALSE(grown.ok());
     EXPECT_NE(grown.error().detail.find("FIGO type 9 does not exist"), std::string::npos) << grown.error().detail;
+}
+
+double nearestPoint(const SurfaceMesh& mesh, const Vec3& p) {
+    double best = 1e300;
+    for (const Vec3& q : mesh.points)
+        best = std::min(best, distance(p, q));
+    return best;
+}
+
+// A cornual location names the cornu's walls, not the ostium: a polyp asked for there grows beside the right tubal
+// ostium, keeping it free, and says so: its nearest point lies more than 4 mm from the ostium's centre (at its
+// nominal seat, aimed at the cornu, 2.5-2.6 mm for a sessile and 0.5-0.7 mm for a pedunculated one; now 7.3 mm at
+// the least). A point placement on the ostium (a case that means it) stays there.
+TEST(Pathology, SeatsACornualPolypBesideTheOstiumButKeepsAPointOnIt) {
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+        const SurfaceMesh organ = test::testOrgan(seed);
+        const auto found = test::rightOstiumCentre(organ);
+        ASSERT_TRUE(found.ok()) << found.error().detail;
+        const Vec3 ostium = *found;
+        for (const bool stalked : {false, true}) {
+            PathologyParams params;
+            params.seed = seed;
+            params.pathologies.push_back(
+                polyp("p", GrowthModel::Skeleton, 10.0, stalked, 5.0, UterineLocation::CornualRight));
+            auto grown = growPathologies(organ, params);
+            ASSERT_TRUE(grown.ok()) << grown.error().detail;
+            const double gap = nearestPoint(grown->pathologies[0].surface, ostium);
+            std::printf("organ %d, %s polyp: %.1f mm from the right ostium's centre\n", static_cast<int>(seed),
+                        stalked ? "pedunculated" : "sessile", gap);
+            EXPECT_GT(gap, 4.0) << "organ " << seed << (stalked ? " pedunculated" : " sessile");
+            const bool said = std::any_of(grown->warnings.begin(), grown->warnings.end(), [](const std::string& w) {
+                return w.find("polyp 'p': at its nominal seat it would cover or hide the right tubal ostium") !=
+                       std::string::npos;
+            });
+            EXPECT_TRUE(said) << "organ " << seed;
+        }
+        PathologyParams onIt;
+        onIt.seed = seed;
+        onIt.pathologies.push_back(polyp("p", GrowthModel::Skeleton, 10.0, false, 5.0));
+        onIt.pathologies[0].placement = SurfacePlacement{ostium, {0.0, 0.0, 1.0}};
+        auto clicked = growPathologies(organ, onIt);
+        ASSERT_TRUE(clicked.ok()) << clicked.error().detail;
+        EXPECT_LT(distance(clicked->pathologies[0].anchor, ostium), 3.0) << "organ " << seed;
+    }
 }
 
 TEST(Pathology, MovesASecondPathologyAtTheSameLocationAlongItsWall) {
