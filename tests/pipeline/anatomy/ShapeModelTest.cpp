@@ -138,6 +138,23 @@ TEST(ShapeModel, SamplingIsDeterministicInTheSeed) {
     EXPECT_NE(a->points, c->points);
 }
 
+// A model whose every organ has a wall thinner than the organ checks allow (the training shapes scaled to a third:
+// walls of 3-7 mm become 1-2.5 mm) cannot give a valid sample: sample() refuses, naming the seed, instead of
+// returning the conditional mean without a word (as it did after 16 draws).
+TEST(ShapeModel, RefusesASampleWhenNoDrawIsAValidOrgan) {
+    auto cohort = smallCohort(11, 20);
+    for (auto& shape : cohort.training.shapes)
+        for (auto& p : shape)
+            p = p * (1.0 / 3.0);
+    auto built = buildShapeModel(cohort.training);
+    ASSERT_TRUE(built.ok()) << built.error().message();
+    const auto sampled = built->model.sample(PatientParams{}, 5);
+    ASSERT_FALSE(sampled.ok());
+    EXPECT_EQ(sampled.error().code, hs::ErrorCode::InvalidInput);
+    EXPECT_NE(sampled.error().detail.find("no valid organ in 64 draws"), std::string::npos) << sampled.error().detail;
+    EXPECT_NE(sampled.error().detail.find("seed 5"), std::string::npos) << sampled.error().detail;
+}
+
 TEST(ShapeModel, RefusesUnsupportedPatientsInsteadOfExtrapolating) {
     const auto& model = defaultModel();
     PatientParams p;
