@@ -118,6 +118,8 @@ Status runScene(Generated& g, const GenerateParams& params, Progress& progress) 
     if (!sim)
         return sim.failure();
     s->simulation = std::move(sim).value();
+    if (const std::string w = simulationBindingWarning(s->surface.mesh, *s->simulation); !w.empty())
+        s->warnings.push_back(w);
     HS_TRY(progress.check("scene"));
     // The hydrometra curve of the scene's own tissue model (the simulator's distension reaches it).
     mechanics::UterusModel model;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <map>
+#include <sstream>
 #include <string>
 
 namespace hs::generate {
@@ -79,6 +80,31 @@ Result<scene::SimulationMesh> simulationMesh(const scene::CaseSpec& spec, const 
                 w = w + (0.25 - w) * t;
     }
     return sim;
+}
+
+std::string simulationBindingWarning(const SurfaceMesh& visual, const scene::SimulationMesh& sim) {
+    constexpr double kOnTetMm = 1e-3;
+    std::size_t off = 0;
+    double farthest = 0.0;
+    for (std::size_t i = 0; i < visual.points.size() && i < sim.surfaceEmbedding.size(); ++i) {
+        if (sim.surfaceEmbedding[i].tet < 0)
+            continue;
+        const double d = distance(embeddedPoint(sim.tets, sim.surfaceEmbedding[i]), visual.points[i]);
+        if (d > kOnTetMm) {
+            ++off;
+            farthest = std::max(farthest, d);
+        }
+    }
+    if (off == 0)
+        return {};
+    std::ostringstream text;
+    text.setf(std::ios::fixed);
+    text.precision(2);
+    text << "simulation: " << off << " of " << visual.points.size() << " visual surface points are bound up to "
+         << farthest
+         << " mm off their simulation tet (the coarse mesh is thinner than the surface there: a thin stalk, a cornual "
+            "recess); they move with that tet";
+    return text.str();
 }
 
 } // namespace hs::generate

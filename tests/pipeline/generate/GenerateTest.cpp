@@ -1,6 +1,8 @@
 // The chain on a light version of the default case: every stage's result is kept, an edit reruns only the stages
 // it touches and gives the same package bytes as a full run, edits that reach back are refused.
 #include "hs/generate/Generate.h"
+#include "hs/core/TetEmbedding.h"
+#include "hs/generate/Simulation.h"
 #include "hs/generate/TissueLayers.h"
 
 #include "TestSupport.h"
@@ -272,4 +274,22 @@ TEST(Generate, SplitsTheWallIntoMyometriumEndometriumAndCervixWithTheirOwnMateri
                 tissue.layers.endometriumTets, tissue.layers.endometriumVolumeMm3,
                 tissue.layers.endometriumVolumePerLiningAreaMm(), asked, edge, tissue.layers.coverTets,
                 tissue.layers.cervixTets, tissue.layers.cervixVolumeMm3);
+}
+
+// Where the coarse simulation mesh is thinner than the visual surface, a point's weights are clamped and it is bound
+// off its tet: the scene says so (it did not), with the count and the largest offset; a point on its tet says nothing.
+TEST(Generate, NamesTheVisualPointsBoundOffTheirSimulationTet) {
+    scene::SimulationMesh sim;
+    sim.tets.points = {{0.0, 0.0, 0.0}, {4.0, 0.0, 0.0}, {0.0, 4.0, 0.0}, {0.0, 0.0, 4.0}};
+    sim.tets.tets = {{0, 1, 2, 3}};
+    SurfaceMesh visual;
+    visual.points = {{1.0, 1.0, 1.0}};
+    sim.surfaceEmbedding = {TetEmbedding{0, {0.25, 0.25, 0.25, 0.25}}};
+    EXPECT_EQ(generate::simulationBindingWarning(visual, sim), "");
+    visual.points.push_back({1.0, 1.0, 3.5}); // bound to the tet's centre (1, 1, 1), 2.5 mm away
+    sim.surfaceEmbedding.push_back(TetEmbedding{0, {0.25, 0.25, 0.25, 0.25}});
+    const std::string w = generate::simulationBindingWarning(visual, sim);
+    EXPECT_EQ(w.rfind("simulation: 1 of 2 visual surface points are bound up to 2.50 mm off their simulation tet", 0),
+              0u)
+        << w;
 }

@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 
 namespace hs::generate {
 
@@ -29,5 +30,10 @@ inline constexpr std::int64_t kSimulationVertices = 2000;
 simulationMesh(const scene::CaseSpec& spec, const merge::MergeResult& merged,
                const std::vector<scene::SceneMaterial>& materials, double cervixLengthMm, const SurfaceMesh& visual,
                std::optional<int> threads = std::nullopt, Progress& progress = Progress::none());
+
+/// The named warning for the points of `visual` that `sim` binds off their tet (simulationMesh clamps the weights
+/// where the coarse mesh is thinner than the surface): "simulation: N of M visual surface points are bound up to X mm
+/// off their simulation tet ...", empty when every point lies on its tet (within 1 micrometre).
+std::string simulationBindingWarning(const SurfaceMesh& visual, const scene::SimulationMesh& sim);
 
 } // namespace hs::generate
