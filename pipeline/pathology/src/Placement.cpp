@@ -383,12 +383,12 @@ std::string ostiumHiddenByShape(const PathologyRequest& r, const OrganInfo& info
     return {};
 }
 
-std::vector<Seat> seatsOffOstia(const OrganInfo& info, const Seat& nominal) {
-    return nearbySeats(info, nominal, std::max(5.0, kOstiumSlide * info.cavityLengthMm), kOstiumTurnDeg);
-}
-
 double ostiumSlideReachMm(const OrganInfo& info) {
     return std::max(5.0, kOstiumSlide * info.cavityLengthMm);
+}
+
+std::vector<Seat> seatsOffOstia(const OrganInfo& info, const Seat& nominal) {
+    return nearbySeats(info, nominal, ostiumSlideReachMm(info), kOstiumTurnDeg);
 }
 
 Seat plannedOffOstia(const PathologyRequest& r, const OrganInfo& info, const Seat& nominal,

@@ -96,8 +96,8 @@ public:
     /// A plausible organ for a patient: conditional shape (each residual coefficient truncated at 2.5 SD) and a version
     /// drawn from the pose prior. Draws whose wall is below 5.25 mm or that self-intersect are rejected and redrawn
     /// (at most 64 draws, then InvalidInput naming the seed: never a silent substitute), so the result is the
-    /// conditional Gaussian restricted to valid organs. Deterministic in `seed`. A given `versionDeg` replaces the drawn version (the draw still happens, so
-    /// the shape for a seed does not depend on it).
+    /// conditional Gaussian restricted to valid organs. Deterministic in `seed`. A given `versionDeg` replaces the
+    /// drawn version (the draw still happens, so the shape for a seed does not depend on it).
     Result<SurfaceMesh> sample(const clinical::PatientParams& patient, std::uint64_t seed,
                                std::optional<double> versionDeg = std::nullopt) const;
     /// The organ for a patient that also has the requested dimensions: starting from the expected organ (or, with a
