@@ -14,6 +14,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -38,6 +39,8 @@ struct RunOptions {
     std::size_t tasksPerIndex = 1;
     int jobs = 1;
     std::optional<int> threads;
+    std::string time = batch::SlurmParams{}.time;     ///< per job process, a Slurm time
+    std::string memory = batch::SlurmParams{}.memory; ///< per job process, a Slurm memory size
     CommonOptions common;
 };
 
@@ -105,6 +108,8 @@ int runTasks(const RunOptions& o, const batch::Manifest& manifest) {
     for (std::size_t i = first; i < last; ++i) {
         const batch::Job& job = manifest.jobs[i];
         const batch::JobRun run = batch::runJob(o.folder, job, params);
+        if (!run.rerunReason.empty())
+            std::printf("rerun       %s: %s\n", job.name.c_str(), run.rerunReason.c_str());
         if (run.action == batch::JobAction::Busy) {
             std::printf("busy        %s (another process runs it)\n", job.name.c_str());
         } else if (run.record.state == batch::JobState::Ok) {
@@ -153,6 +158,20 @@ int runLocal(const RunOptions& o, const batch::Manifest& manifest) {
     if (!self)
         return reportError("batch run", self.error());
     batch::LocalRunParams params;
+    const auto timeLimit = batch::slurmTimeSeconds(o.time);
+    const auto memoryLimit = batch::slurmMemoryMib(o.memory);
+    if (!timeLimit)
+        return reportError("batch run", Error{ErrorCode::InvalidInput,
+                                              "--time " + o.time +
+                                                  ": not a Slurm time (minutes, MM:SS, HH:MM:SS, D-HH or D-HH:MM:SS; "
+                                                  "0 for no limit)"});
+    if (!memoryLimit)
+        return reportError("batch run", Error{ErrorCode::InvalidInput,
+                                              "--mem " + o.memory +
+                                                  ": not a Slurm memory size (a whole number, optionally K, M, G or "
+                                                  "T; 0 for no limit)"});
+    params.timeLimitSeconds = *timeLimit;
+    params.memoryLimitMib = *memoryLimit;
     params.jobs = o.jobs;
     params.executable = *self;
     params.threadsPerJob = o.threads;
@@ -180,13 +199,26 @@ int runLocal(const RunOptions& o, const batch::Manifest& manifest) {
         j["seconds"] = result->seconds;
         j["scenesPerHour"] = perHour;
         j["parallelJobs"] = o.jobs;
+        j["timeLimitSeconds"] = params.timeLimitSeconds;
+        j["memoryLimitMib"] = params.memoryLimitMib;
         j["failedJobs"] = result->failedJobs;
+        auto rerun = nlohmann::ordered_json::array();
+        for (const auto& [name, reason] : result->rerunJobs)
+            rerun.push_back({{"job", name}, {"reason", reason}});
+        j["rerunJobs"] = rerun;
         printJson(std::cout, j);
     } else {
         std::printf("ran         %s: %zu jobs, %zu already done, %zu ok, %zu failed, %zu busy\n", o.folder.c_str(),
                     c.total, c.alreadyDone, c.ok, c.failed, c.busy);
         std::printf("throughput  %zu scenes in %.1f s with %d jobs at a time: %.0f scenes/hour\n", c.ok,
                     result->seconds, o.jobs, perHour);
+        const std::string timeText =
+            params.timeLimitSeconds > 0.0 ? std::to_string(std::lround(params.timeLimitSeconds)) + " s" : "none";
+        const std::string memoryText =
+            params.memoryLimitMib > 0.0 ? std::to_string(std::lround(params.memoryLimitMib)) + " MiB" : "none";
+        std::printf("limits      per job: wall clock %s, resident memory %s\n", timeText.c_str(), memoryText.c_str());
+        for (const auto& [name, reason] : result->rerunJobs)
+            std::printf("rerun       %s: %s\n", name.c_str(), reason.c_str());
         for (const auto& name : result->failedJobs)
             std::printf("failed      %s (see %s)\n", name.c_str(), batch::statusPath(o.folder, name).c_str());
     }
@@ -265,6 +297,7 @@ int runStatus(const StatusOptions& o) {
     std::size_t ok = 0, failed = 0, running = 0, pending = 0;
     double okSeconds = 0.0, peakMb = 0.0;
     auto failures = nlohmann::ordered_json::array();
+    auto stale = nlohmann::ordered_json::array();
     std::vector<std::string> lines;
     for (const batch::Job& job : manifest->jobs) {
         auto record = batch::readStatus(o.folder, job.name);
@@ -275,6 +308,15 @@ int runStatus(const StatusOptions& o) {
         } else if (!*record || (*record)->seed != job.seed) {
             ++pending;
         } else if ((*record)->state == batch::JobState::Ok) {
+            const batch::DoneCheck done = batch::checkJobDone(o.folder, job);
+            if (!done.done) { // made from other inputs, or its package changed since: the next run redoes it
+                ++pending;
+                if (!done.rerunReason.empty()) {
+                    stale.push_back({{"job", job.name}, {"reason", done.rerunReason}});
+                    lines.push_back("stale       " + job.name + ": " + done.rerunReason);
+                }
+                continue;
+            }
             ++ok;
             okSeconds += (*record)->seconds;
             peakMb = std::max(peakMb, (*record)->peakMemoryMb);
@@ -299,6 +341,7 @@ int runStatus(const StatusOptions& o) {
         j["meanSecondsPerJob"] = mean;
         j["peakMemoryMb"] = peakMb;
         j["failures"] = failures;
+        j["stale"] = stale;
         if (slurm.contains("slurm"))
             j["slurm"] = slurm["slurm"];
         printJson(std::cout, j);
@@ -365,6 +408,12 @@ void addBatchCommand(CLI::App& app, int& exitCode) {
         ->excludes(task);
     runCmd->add_option("--threads", run->threads, "threads per stage (never changes the result)")
         ->check(CLI::Range(0, 256));
+    runCmd->add_option("--time", run->time, "local runner: wall-clock limit per job (a Slurm time; 0: none)")
+        ->excludes(task)
+        ->capture_default_str();
+    runCmd->add_option("--mem", run->memory, "local runner: resident memory limit per job (a Slurm size; 0: none)")
+        ->excludes(task)
+        ->capture_default_str();
     runCmd->add_flag("--json", run->common.json, "local runner: print a JSON summary (and no progress bar)");
     runCmd->callback([run, &exitCode] { exitCode = runRun(*run); });
 

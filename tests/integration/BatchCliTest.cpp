@@ -6,6 +6,7 @@
 #include "hs/batch/Manifest.h"
 #include "hs/io/AtomicFile.h"
 #include "hs/scene/ScenePackage.h"
+#include "hs/scene/Sha256.h"
 
 #include <gtest/gtest.h>
 
@@ -178,6 +179,51 @@ TEST(BatchCli, ResumesAfterTheRunnerIsKilled) {
     expectAllPackagesValid(folder);
     for (const auto& entry : fs::directory_iterator(folder / "packages"))
         EXPECT_FALSE(hs::scene::isPackageTempName(entry.path().filename().string())) << entry.path();
+}
+
+TEST(BatchCli, KillsAJobOverItsMemoryLimitAndRerunsAJobWhoseCaseWasEdited) {
+    hs::test::TempDir dir;
+    const fs::path folder = dir.path() / "m";
+    ASSERT_EQ(cli("batch plan " + quote(curriculum()) + " -o " + quote(folder.string())).exitCode, 0);
+    // A light job reaches about 280 MiB resident: 100 MiB stops every one, and nothing of theirs is left.
+    const CliRun limited = cli("batch run " + quote(folder.string()) + " --jobs 2 --mem 100M");
+    EXPECT_EQ(limited.exitCode, 4) << limited.out;
+    EXPECT_NE(limited.out.find("0 ok, 3 failed"), std::string::npos) << limited.out;
+    EXPECT_NE(limited.out.find("limits      per job: wall clock 3600 s, resident memory 100 MiB"), std::string::npos)
+        << limited.out;
+    for (const auto& job : manifestOf(folder).jobs) {
+        auto record = hs::batch::readStatus(folder.string(), job.name);
+        ASSERT_TRUE(record.ok() && record->has_value()) << job.name;
+        ASSERT_TRUE((*record)->error.has_value()) << job.name;
+        EXPECT_EQ((*record)->error->code, hs::ErrorCode::LimitExceeded) << job.name;
+        EXPECT_NE((*record)->error->detail.find("resident: over its memory limit of 100 MiB"), std::string::npos)
+            << (*record)->error->detail;
+    }
+    EXPECT_TRUE(fs::is_empty(folder / "packages"));
+    EXPECT_EQ(cli("batch run " + quote(folder.string()) + " --mem 10X").exitCode, 3);
+
+    // The job contract: run, edit the case, run again: the package is made anew from the edited case.
+    ASSERT_EQ(cli("batch run " + quote(folder.string()) + " --task-index 0").exitCode, 0);
+    const fs::path caseFile = folder / "cases" / "polyp-0000.json";
+    std::string text = readText(caseFile);
+    const auto at = text.find("\"ageYears\": ");
+    ASSERT_NE(at, std::string::npos);
+    const auto end = text.find(',', at);
+    const std::string age = text.substr(at, end - at) == "\"ageYears\": 40.0" ? "41.0" : "40.0";
+    text.replace(at, end - at, "\"ageYears\": " + age); // inside the template's 25-45 years
+    std::ofstream(caseFile) << text;
+    const CliRun edited = cli("batch run " + quote(folder.string()) + " --task-index 0");
+    ASSERT_EQ(edited.exitCode, 0) << edited.out;
+    EXPECT_NE(edited.out.find("rerun       polyp-0000-v00: its case was edited after its package was written"),
+              std::string::npos)
+        << edited.out;
+    EXPECT_NE(edited.out.find("ok          polyp-0000-v00"), std::string::npos) << edited.out;
+    EXPECT_NE(readText(folder / "packages" / "polyp-0000-v00" / "case.json").find("\"ageYears\": " + age),
+              std::string::npos);
+    auto record = hs::batch::readStatus(folder.string(), "polyp-0000-v00");
+    ASSERT_TRUE(record.ok() && record->has_value());
+    EXPECT_EQ((*record)->caseSha256,
+              hs::scene::sha256Hex(readText(folder / "packages" / "polyp-0000-v00" / "case.json")));
 }
 
 TEST(BatchCli, ReportsEveryCaseAndThePagePlotsInHeadlessChromium) {

@@ -1,7 +1,9 @@
 // runJob: one job of a plan, idempotent, locked, with its status record.
 #include "hs/batch/Job.h"
 
+#include "hs/generate/Assembly.h"
 #include "hs/generate/Generate.h"
+#include "hs/scene/CaseSpec.h"
 #include "hs/scene/ScenePackage.h"
 #include "hs/scene/Sha256.h"
 
@@ -63,16 +65,25 @@ Status checkFolders(const std::string& batchFolder) {
     return {};
 }
 
-/// An ok record for a package that is already complete and valid, and was made from this job's seed.
-std::optional<StatusRecord> adoptExistingPackage(const std::string& batchFolder, const Job& job) {
+/// "name version, name version, ..." in name order.
+std::string toolsText(const LibraryVersions& versions) {
+    std::string text;
+    for (const auto& [name, version] : versions)
+        text += (text.empty() ? "" : ", ") + name + " " + version;
+    return text;
+}
+
+/// An ok record for a package that is already complete and valid, and was made from this job's case and tools.
+std::optional<StatusRecord> adoptExistingPackage(const std::string& batchFolder, const Job& job, const JobKey& key) {
     const std::string output = batchPath(batchFolder, job.output);
     std::error_code ec;
     if (!fs::exists(fs::path(output) / std::string(scene::kManifestName), ec))
         return std::nullopt;
-    if (!scene::verifyScenePackage(output))
+    auto manifest = scene::verifyScenePackage(output);
+    if (!manifest || toolsText(manifest->toolVersions) != key.tools)
         return std::nullopt;
-    auto packaged = scene::loadCase((fs::path(output) / "case.json").string());
-    if (!packaged || packaged->seed != job.seed)
+    auto packaged = scene::sha256File((fs::path(output) / "case.json").string(), scene::kMaxCaseFileBytes);
+    if (!packaged || packaged->sha256 != key.caseSha256)
         return std::nullopt;
     auto sha = manifestSha256(output);
     if (!sha)
@@ -154,12 +165,39 @@ double peakMemoryMb() {
     return static_cast<double>(usage.ru_maxrss) / 1024.0; // Linux reports kB
 }
 
-bool jobIsDone(const std::string& batchFolder, const Job& job) {
+Result<JobKey> jobKey(const std::string& batchFolder, const Job& job) {
+    auto spec = scene::loadCase(batchPath(batchFolder, job.caseFile));
+    if (!spec)
+        return spec.failure();
+    spec->seed = job.seed;
+    return JobKey{scene::sha256Hex(scene::toJson(*spec)), toolsText(generate::toolVersionsFor(*spec))};
+}
+
+DoneCheck checkJobDone(const std::string& batchFolder, const Job& job) {
+    DoneCheck check;
     auto record = readStatus(batchFolder, job.name);
     if (!record || !*record || (*record)->state != JobState::Ok || (*record)->seed != job.seed)
-        return false;
+        return check;
+    const StatusRecord& ok = **record;
+    auto key = jobKey(batchFolder, job);
+    if (!key)
+        return check; // the job runs and records why its case cannot be read
+    if (ok.caseSha256.empty())
+        check.rerunReason = "its status record predates content keys (status schema version 1)";
+    else if (ok.caseSha256 != key->caseSha256)
+        check.rerunReason = "its case was edited after its package was written";
+    else if (ok.tools != key->tools)
+        check.rerunReason =
+            "the tools changed since its package was written (was: " + ok.tools + "; now: " + key->tools + ")";
+    if (!check.rerunReason.empty())
+        return check;
     auto sha = manifestSha256(batchPath(batchFolder, job.output));
-    return sha && *sha == (*record)->packageManifestSha256;
+    check.done = sha && *sha == ok.packageManifestSha256;
+    return check;
+}
+
+bool jobIsDone(const std::string& batchFolder, const Job& job) {
+    return checkJobDone(batchFolder, job).done;
 }
 
 JobRun runJob(const std::string& batchFolder, const Job& job, const RunJobParams& params, Progress& progress) {
@@ -171,12 +209,23 @@ JobRun runJob(const std::string& batchFolder, const Job& job, const RunJobParams
     }
     const auto start = std::chrono::steady_clock::now();
     StatusRecord& record = run.record;
-    if (jobIsDone(batchFolder, job)) {
+    const DoneCheck done = checkJobDone(batchFolder, job);
+    if (done.done) {
         run.action = JobAction::Skipped;
         record = **readStatus(batchFolder, job.name);
         return run;
     }
-    if (auto adopted = adoptExistingPackage(batchFolder, job)) {
+    run.rerunReason = done.rerunReason;
+    const auto key = jobKey(batchFolder, job);
+    if (key) {
+        record.caseSha256 = key->caseSha256;
+        record.tools = key->tools;
+    }
+    // A package already in place is adopted only when its own case.json and tool versions are the job's now.
+    std::optional<StatusRecord> adopted = key ? adoptExistingPackage(batchFolder, job, *key) : std::nullopt;
+    if (adopted) {
+        adopted->caseSha256 = key->caseSha256;
+        adopted->tools = key->tools;
         run.action = JobAction::Skipped;
         record = std::move(*adopted);
     } else {

@@ -120,9 +120,9 @@ void readRecord(const json& root, StatusRecord& r, JsonIssues& issues) {
     int version = 0;
     o.read("format", format, true);
     o.read("schemaVersion", version, true);
-    if (format != kStatusFormat || version != kStatusSchemaVersion)
+    if (format != kStatusFormat || version < 1 || version > kStatusSchemaVersion)
         issues.push_back({"/format", "not a status record of this build (expected \"" + std::string(kStatusFormat) +
-                                         "\", schema version " + std::to_string(kStatusSchemaVersion) + ")"});
+                                         "\", schema version 1 to " + std::to_string(kStatusSchemaVersion) + ")"});
     o.read("job", r.job, true);
     std::uint64_t index = 0;
     o.read("index", index, true);
@@ -147,6 +147,8 @@ void readRecord(const json& root, StatusRecord& r, JsonIssues& issues) {
     o.read("finishedUtc", r.finishedUtc, true);
     o.read("reused", r.reused, true);
     o.read("packageManifestSha256", r.packageManifestSha256, true);
+    o.read("caseSha256", r.caseSha256, version >= 2);
+    o.read("tools", r.tools, version >= 2);
     if (const json* s = o.member("scene", true); s && !s->is_null()) {
         r.scene.emplace();
         readScene(*s, "/scene", *r.scene, issues);
@@ -177,6 +179,8 @@ std::string toJson(const StatusRecord& r) {
     j["finishedUtc"] = r.finishedUtc;
     j["reused"] = r.reused;
     j["packageManifestSha256"] = r.packageManifestSha256;
+    j["caseSha256"] = r.caseSha256;
+    j["tools"] = r.tools;
     j["scene"] = r.scene ? sceneJson(*r.scene) : ordered_json(nullptr);
     return j.dump(4, ' ', false, ordered_json::error_handler_t::replace) + "\n";
 }

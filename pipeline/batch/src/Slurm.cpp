@@ -11,6 +11,7 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -76,17 +77,24 @@ bool allOf(std::string_view text, const char* allowed) {
     });
 }
 
-bool isSlurmTime(std::string_view t) {
-    return !t.empty() && std::all_of(t.begin(), t.end(), [](char c) {
-        return std::isdigit(static_cast<unsigned char>(c)) || c == ':' || c == '-';
-    });
+/// Digits only, at most 9 of them (no overflow), as a number.
+std::optional<long> wholeNumber(std::string_view text) {
+    if (text.empty() || text.size() > 9 ||
+        !std::all_of(text.begin(), text.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
+        return std::nullopt;
+    return std::stol(std::string(text));
 }
 
-bool isSlurmMemory(std::string_view m) {
-    std::size_t digits = 0;
-    while (digits < m.size() && std::isdigit(static_cast<unsigned char>(m[digits])))
-        ++digits;
-    return digits > 0 && (digits == m.size() || (digits + 1 == m.size() && std::strchr("KMGT", m.back())));
+/// Splits at every `separator`.
+std::vector<std::string_view> split(std::string_view text, char separator) {
+    std::vector<std::string_view> parts;
+    for (std::size_t start = 0;;) {
+        const std::size_t end = text.find(separator, start);
+        parts.push_back(text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start));
+        if (end == std::string_view::npos)
+            return parts;
+        start = end + 1;
+    }
 }
 
 /// '…' for the shell.
@@ -138,14 +146,65 @@ std::string scriptText(const std::string& batchFolder, const SlurmParams& p, std
 
 } // namespace
 
+std::optional<double> slurmTimeSeconds(std::string_view time) {
+    long days = 0;
+    std::string_view clock = time;
+    const std::size_t dash = time.find('-');
+    if (dash != std::string_view::npos) {
+        const auto d = wholeNumber(time.substr(0, dash));
+        if (!d)
+            return std::nullopt;
+        days = *d;
+        clock = time.substr(dash + 1);
+    }
+    std::vector<long> fields;
+    for (std::string_view part : split(clock, ':')) {
+        const auto value = wholeNumber(part);
+        if (!value)
+            return std::nullopt;
+        fields.push_back(*value);
+    }
+    long seconds = 0;
+    if (dash == std::string_view::npos) { // minutes, minutes:seconds, hours:minutes:seconds
+        if (fields.size() == 1)
+            seconds = fields[0] * 60;
+        else if (fields.size() == 2)
+            seconds = fields[0] * 60 + fields[1];
+        else if (fields.size() == 3)
+            seconds = (fields[0] * 60 + fields[1]) * 60 + fields[2];
+        else
+            return std::nullopt;
+    } else { // days-hours, days-hours:minutes, days-hours:minutes:seconds
+        if (fields.empty() || fields.size() > 3)
+            return std::nullopt;
+        seconds = fields[0] * 3600 + (fields.size() > 1 ? fields[1] * 60 : 0) + (fields.size() > 2 ? fields[2] : 0);
+        seconds += days * 86400;
+    }
+    return static_cast<double>(seconds);
+}
+
+std::optional<double> slurmMemoryMib(std::string_view memory) {
+    std::string_view digits = memory;
+    double unitMib = 1.0; // Slurm's default unit is the megabyte (MiB)
+    const char unit = memory.empty() ? '\0' : memory.back();
+    if (unit != '\0' && std::strchr("KMGT", unit) != nullptr) {
+        unitMib = unit == 'K' ? 1.0 / 1024.0 : unit == 'M' ? 1.0 : unit == 'G' ? 1024.0 : 1024.0 * 1024.0;
+        digits = memory.substr(0, memory.size() - 1);
+    }
+    const auto value = wholeNumber(digits);
+    if (!value)
+        return std::nullopt;
+    return static_cast<double>(*value) * unitMib;
+}
+
 Status checkSlurmParams(const SlurmParams& p) {
     if (!p.partition.empty() && !allOf(p.partition, "_-.,"))
         return fail(ErrorCode::InvalidInput,
                     "--partition " + p.partition + ": not a partition name (letters, digits, '_', '-', '.', ',')");
-    if (!isSlurmTime(p.time))
+    if (!slurmTimeSeconds(p.time))
         return fail(ErrorCode::InvalidInput,
                     "--time " + p.time + ": not a Slurm time (minutes, MM:SS, HH:MM:SS, D-HH or D-HH:MM:SS)");
-    if (!isSlurmMemory(p.memory))
+    if (!slurmMemoryMib(p.memory))
         return fail(ErrorCode::InvalidInput,
                     "--mem " + p.memory + ": not a Slurm memory size (a whole number, optionally K, M, G or T)");
     if (p.arrayChunk < 1 || p.tasksPerIndex < 1 || p.threads < 1)

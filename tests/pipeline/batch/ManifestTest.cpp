@@ -136,6 +136,8 @@ TEST(JobStatus, WritesAndReadsBackARecord) {
     r.peakMemoryMb = 300;
     r.host = "h";
     r.finishedUtc = utcNow();
+    r.caseSha256 = std::string(64, 'a');
+    r.tools = "hysteroscene 0.1.0, vtk 9.1.0";
     ASSERT_TRUE(writeStatus(dir.path().string(), r).ok());
     auto read = readStatus(dir.path().string(), r.job);
     ASSERT_TRUE(read.ok()) << read.error().detail;
@@ -153,6 +155,25 @@ TEST(JobStatus, WritesAndReadsBackARecord) {
     ASSERT_TRUE(parsed.ok()) << parsed.error().detail;
     EXPECT_EQ(toJson(*parsed), toJson(r));
     EXPECT_FALSE(readStatus(dir.path().string(), "none")->has_value());
+}
+
+TEST(JobStatus, ReadsAVersion1RecordWithoutAContentKey) {
+    auto parsed = parseStatus(R"({"format": "hysteroscene-batch-status", "schemaVersion": 1, "job": "j",
+        "index": 0, "seed": 1, "output": "packages/j", "state": "ok", "error": null, "seconds": 1,
+        "peakMemoryMb": 1, "host": "", "finishedUtc": "", "reused": false, "packageManifestSha256": "",
+        "scene": null})",
+                              "s.json");
+    ASSERT_TRUE(parsed.ok()) << parsed.error().detail;
+    EXPECT_TRUE(parsed->caseSha256.empty());
+    EXPECT_TRUE(parsed->tools.empty());
+    // From version 2 on the key is required.
+    auto v2 = parseStatus(R"({"format": "hysteroscene-batch-status", "schemaVersion": 2, "job": "j",
+        "index": 0, "seed": 1, "output": "packages/j", "state": "ok", "error": null, "seconds": 1,
+        "peakMemoryMb": 1, "host": "", "finishedUtc": "", "reused": false, "packageManifestSha256": "",
+        "scene": null})",
+                          "s.json");
+    ASSERT_FALSE(v2.ok());
+    EXPECT_NE(v2.error().detail.find("caseSha256"), std::string::npos) << v2.error().detail;
 }
 
 TEST(JobStatus, RefusesAMalformedRecordNamingTheField) {

@@ -1,7 +1,9 @@
 // sbatch scripts for a plan: chunks below MaxArraySize, several jobs per array task, only the jobs not done, and
 // the options checked before they reach a script.
+#include "BatchTestSupport.h"
 #include "TestSupport.h"
 
+#include "hs/batch/Job.h"
 #include "hs/batch/JobStatus.h"
 #include "hs/batch/Slurm.h"
 #include "hs/io/AtomicFile.h"
@@ -13,37 +15,15 @@
 
 using namespace hs;
 using namespace hs::batch;
+using hs::batch::test::manifestOf;
+using hs::batch::test::markDone;
 
 namespace {
-
-Manifest manifestOf(std::size_t jobs) {
-    Manifest m;
-    for (std::size_t i = 0; i < jobs; ++i) {
-        const std::string name = "j" + std::to_string(i);
-        m.jobs.push_back({i, name, "cases/c.json", i + 1, "packages/" + name});
-    }
-    return m;
-}
 
 SlurmParams params() {
     SlurmParams p;
     p.executable = "/usr/bin/hysteroscene-cli";
     return p;
-}
-
-/// Makes `job` done: a package manifest and an ok record with its checksum.
-void markDone(const std::string& folder, const Job& job) {
-    const auto package = std::filesystem::path(folder) / job.output;
-    std::filesystem::create_directories(package);
-    ASSERT_TRUE(io::writeFileAtomically((package / "manifest.json").string(), "{}").ok());
-    StatusRecord r;
-    r.job = job.name;
-    r.index = job.index;
-    r.seed = job.seed;
-    r.output = job.output;
-    r.state = JobState::Ok;
-    r.packageManifestSha256 = scene::sha256Hex("{}");
-    ASSERT_TRUE(writeStatus(folder, r).ok());
 }
 
 } // namespace

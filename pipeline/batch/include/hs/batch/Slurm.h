@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace hs::batch {
@@ -36,6 +37,13 @@ struct SlurmScript {
     std::size_t tasks = 0;      ///< array tasks in it
     std::string text;
 };
+
+/// A Slurm time limit (sbatch(1) --time: "minutes", "minutes:seconds", "hours:minutes:seconds", "days-hours",
+/// "days-hours:minutes", "days-hours:minutes:seconds") in seconds; std::nullopt for anything else.
+std::optional<double> slurmTimeSeconds(std::string_view time);
+/// A Slurm memory size (sbatch(1) --mem: a whole number with an optional unit K, M, G or T; megabytes without one)
+/// in MiB; std::nullopt for anything else.
+std::optional<double> slurmMemoryMib(std::string_view memory);
 
 /// Checks the values that go into the scripts (a partition name, time and memory in Slurm's formats, chunk and
 /// tasks per index >= 1): InvalidInput naming the option and the allowed form.
