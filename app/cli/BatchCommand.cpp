@@ -370,13 +370,16 @@ int runReport(const ReportOptions& o) {
         j["csv"] = report->csvPath;
         j["html"] = report->htmlPath;
         j["rows"] = report->rows;
+        j["pages"] = report->pages;
         j["charts"] = report->charts;
         j["warnings"] = report->warnings;
         printJson(std::cout, j);
         return kExitOk;
     }
     std::printf("wrote       %s (%zu rows)\n", report->csvPath.c_str(), report->rows);
-    std::printf("wrote       %s (%zu charts)\n", report->htmlPath.c_str(), report->charts);
+    std::printf("wrote       %s (%zu charts, %zu page%s of cases in %s)\n", report->htmlPath.c_str(), report->charts,
+                report->pages, report->pages == 1 ? "" : "s",
+                (fs::path(report->htmlPath).parent_path() / "pages").string().c_str());
     for (const auto& w : report->warnings)
         std::printf("warning     %s\n", w.c_str());
     return kExitOk;
@@ -436,9 +439,13 @@ void addBatchCommand(CLI::App& app, int& exitCode) {
     slurmCmd->callback([slurm, &exitCode] { exitCode = runSlurm(*slurm); });
 
     auto report = std::make_shared<ReportOptions>();
-    auto* reportCmd = batch->add_subcommand("report", "Write BATCH/report/report.csv and report.html");
+    auto* reportCmd =
+        batch->add_subcommand("report", "Write BATCH/report/: report.csv, report.html (the index) and pages/ of cases");
     reportCmd->add_option("BATCH", report->folder, "batch folder")->required();
     reportCmd->add_option("--chart-library", report->params.chartLibrary, "Chart.js to inline in the page")
+        ->capture_default_str();
+    reportCmd->add_option("--rows-per-page", report->params.rowsPerPage, "cases per page of the table")
+        ->check(CLI::Range(std::size_t{1}, batch::kMaxJobs))
         ->capture_default_str();
     reportCmd->add_flag("--json", report->common.json, "print JSON");
     reportCmd->callback([report, &exitCode] { exitCode = runReport(*report); });

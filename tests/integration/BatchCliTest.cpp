@@ -244,15 +244,28 @@ TEST(BatchCli, ReportsEveryCaseAndThePagePlotsInHeadlessChromium) {
     EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 4) << csv; // the header and 3 jobs
     EXPECT_NE(csv.find("polyp-0000-v00,polyp,ok,"), std::string::npos) << csv;
     EXPECT_NE(csv.find("healthy-0000-v00,healthy,failed,\"invalid-input: "), std::string::npos) << csv;
+    EXPECT_NE(report.out.find("1 page of cases"), std::string::npos) << report.out;
     const std::string html = readText(folder / "report" / "report.html");
-    EXPECT_NE(html.find("data:image/png;base64,"), std::string::npos); // organ thumbnails, inlined
-    EXPECT_EQ(html.find("src=\"http"), std::string::npos);             // self-contained
-    EXPECT_EQ(html.find("src=\"file"), std::string::npos);
+    EXPECT_NE(html.find("<a href=\"pages/cases-0001.html\">1</a></td><td>1-3</td>"), std::string::npos);
+    // The failed job is listed on the index with its error, linked to its row.
+    EXPECT_NE(html.find("<li><a href=\"pages/cases-0001.html#healthy-0000-v00\">healthy-0000-v00</a>: invalid-input: "),
+              std::string::npos);
+    const std::string page = readText(folder / "report" / "pages" / "cases-0001.html");
+    EXPECT_NE(page.find("data:image/png;base64,"), std::string::npos); // organ thumbnails, inlined
+    EXPECT_NE(page.find("<tr id=\"polyp-0000-v00\" class=\"ok\">"), std::string::npos);
+    for (const std::string& text : {html, page}) {
+        EXPECT_EQ(text.find("src=\"http"), std::string::npos); // self-contained
+        EXPECT_EQ(text.find("src=\"file"), std::string::npos);
+    }
+    // A report with fewer cases than the last one leaves no page of the old one behind.
+    std::ofstream(folder / "report" / "pages" / "cases-0002.html") << "old";
+    ASSERT_EQ(cli("batch report " + quote(folder.string())).exitCode, 0);
+    EXPECT_FALSE(fs::exists(folder / "report" / "pages" / "cases-0002.html"));
 
     const hs::test::CommandRun which = hs::test::runCommand("command -v chromium");
     if (which.exitCode != 0)
         GTEST_SKIP() << "chromium is not installed (tools/setup.sh installs it): the page was not opened";
-    if (report.out.find("charts)") == std::string::npos || report.out.find("(0 charts)") != std::string::npos)
+    if (report.out.find(" charts, ") == std::string::npos || report.out.find("(0 charts, ") != std::string::npos)
         GTEST_SKIP() << "libjs-chart.js is not installed: the page has no plots to check";
     const hs::test::CommandRun dom =
         hs::test::runCommand("timeout 120 chromium --headless --no-sandbox --disable-gpu --dump-dom " +

@@ -213,7 +213,8 @@ void rasterize(const SurfaceMesh& mesh, const std::vector<std::int32_t>* patholo
     }
 }
 
-Result<std::string> thumbnail(const std::string& packageFolder, const std::string& scratch, int widthPx) {
+/// The organ of a package drawn as a PNG file at `pngPath` (written atomically).
+Status drawThumbnail(const std::string& packageFolder, const std::string& pngPath, int widthPx) {
     io::ReadLimits limits;
     limits.maxFileBytes = kMaxThumbnailSurfaceBytes;
     auto mesh = io::readSurface((fs::path(packageFolder) / "surface.vtp").string(), limits);
@@ -242,10 +243,31 @@ Result<std::string> thumbnail(const std::string& packageFolder, const std::strin
     rasterize(*mesh, pathology, false, u, v, w, scale, low, *image, {232.0, 170.0, 160.0});
     if (pathology) // drawn over the organ: a submucosal myoma or a polyp lies inside it
         rasterize(*mesh, pathology, true, u, v, w, scale, low, *image, {150.0, 40.0, 60.0});
+    const std::string scratch = pngPath + ".tmp-" + std::to_string(getpid()) + ".png";
     HS_TRY(texture::writeImage(*image, scratch));
-    auto bytes = io::readFile(scratch, 64 * 1024 * 1024);
     std::error_code ec;
-    fs::remove(scratch, ec);
+    fs::rename(scratch, pngPath, ec);
+    if (ec) {
+        fs::remove(scratch, ec);
+        return fail(ErrorCode::IoError, pngPath + ": cannot write the thumbnail");
+    }
+    return {};
+}
+
+/// The organ thumbnail of an ok job as a data URI. Thumbnails are kept in REPORT/thumbnails/, named by the digest of
+/// the package's manifest (a package's bytes decide its picture): a report written again draws only new packages.
+Result<std::string> thumbnail(const std::string& packageFolder, const std::string& manifestSha256,
+                              const std::string& thumbnailFolder, int widthPx) {
+    const bool digest =
+        manifestSha256.size() == 64 && manifestSha256.find_first_not_of("0123456789abcdef") == std::string::npos;
+    if (!digest)
+        return fail(ErrorCode::InvalidInput, packageFolder + ": the status record has no package digest");
+    const std::string png =
+        (fs::path(thumbnailFolder) / (manifestSha256.substr(0, 32) + "-" + std::to_string(widthPx) + ".png")).string();
+    std::error_code ec;
+    if (!fs::exists(png, ec))
+        HS_TRY(drawThumbnail(packageFolder, png, widthPx));
+    auto bytes = io::readFile(png, 64 * 1024 * 1024);
     if (!bytes)
         return bytes.failure();
     return "data:image/png;base64," + io::base64(*bytes);
@@ -438,35 +460,100 @@ ordered_json chartConfigs(const std::vector<Chart>& charts) {
     return list;
 }
 
-std::string htmlText(const std::string& title, const std::vector<Row>& rows, const std::vector<Chart>& charts,
-                     const std::string& chartLibrary, const std::string& summary) {
-    std::string h = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + htmlEscape(title) +
-                    "</title>\n<style>body{font-family:sans-serif;margin:1em}table{border-collapse:collapse;"
-                    "font-size:12px}td,th{border:1px solid #ccc;padding:2px 4px;vertical-align:top}"
-                    "tr.failed{background:#fdd}tr.pending{color:#888}.charts{display:flex;flex-wrap:wrap}"
-                    ".chart{width:420px;height:260px;margin:4px}</style></head>\n<body>\n<h1>" +
-                    htmlEscape(title) + "</h1>\n<p>" + htmlEscape(summary) + "</p>\n";
-    h += "<h2>Drawn against asked</h2>\n";
-    if (chartLibrary.empty())
-        h += "<p>No plots: the chart library (Debian's libjs-chart.js) is not installed.</p>\n";
-    h += "<div class=\"charts\">\n";
-    for (std::size_t i = 0; i < charts.size(); ++i)
-        h += io::chartCanvas(i);
-    h += "</div>\n<h2>Cases</h2>\n<table>\n<tr><th>organ</th>";
+constexpr std::string_view kPageStyle =
+    "<style>body{font-family:sans-serif;margin:1em}table{border-collapse:collapse;font-size:12px}"
+    "td,th{border:1px solid #ccc;padding:2px 4px;vertical-align:top}tr.failed{background:#fdd}"
+    "tr.pending{color:#888}.charts{display:flex;flex-wrap:wrap}.chart{width:420px;height:260px;margin:4px}"
+    "nav{margin:0.5em 0}nav a{margin-right:1em}</style>";
+
+std::string pageHead(const std::string& title) {
+    return "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + htmlEscape(title) +
+           "</title>\n" + std::string(kPageStyle) + "</head>\n<body>\n<h1>" + htmlEscape(title) + "</h1>\n";
+}
+
+/// "pages/cases-0001.html" for page 0, relative to the report folder.
+std::string pagePath(std::size_t page) {
+    char name[40];
+    std::snprintf(name, sizeof name, "pages/cases-%04zu.html", page + 1);
+    return name;
+}
+
+/// The rows [first, last) on a page of their own: the full table with the organs, links to the neighbours.
+std::string casePage(const std::string& title, const std::vector<Row>& rows, std::size_t page, std::size_t pages,
+                     std::size_t first, std::size_t last) {
+    const std::string heading = title + ": cases " + std::to_string(first + 1) + "-" + std::to_string(last) + " of " +
+                                std::to_string(rows.size());
+    std::string nav = "<nav><a href=\"../report.html\">index</a>";
+    if (page > 0)
+        nav += "<a href=\"" + fs::path(pagePath(page - 1)).filename().string() + "\">previous</a>";
+    if (page + 1 < pages)
+        nav += "<a href=\"" + fs::path(pagePath(page + 1)).filename().string() + "\">next</a>";
+    nav += "</nav>\n";
+    std::string h = pageHead(heading) + nav + "<table>\n<tr><th>organ</th>";
     for (const std::string& c : columns())
         h += "<th>" + htmlEscape(c) + "</th>";
     h += "</tr>\n";
-    for (const Row& r : rows) {
-        h += "<tr class=\"" + stateOf(r) + "\"><td>" +
+    for (std::size_t i = first; i < last; ++i) {
+        const Row& r = rows[i];
+        h += "<tr id=\"" + htmlEscape(r.job->name) + "\" class=\"" + stateOf(r) + "\"><td>" +
              (r.thumbnail.empty() ? "" : "<img alt=\"organ\" src=\"" + r.thumbnail + "\">") + "</td>";
         for (const std::string& c : cells(r))
             h += "<td>" + htmlEscape(c) + "</td>";
         h += "</tr>\n";
     }
+    return h + "</table>\n" + nav + "</body></html>\n";
+}
+
+/// The index: the summary, the distributions, one line per page of cases, and every job not ok with its error.
+std::string indexPage(const std::string& title, const std::vector<Row>& rows, std::size_t rowsPerPage,
+                      const std::vector<Chart>& charts, const std::string& chartLibrary, const std::string& summary) {
+    std::string h = pageHead(title) + "<p>" + htmlEscape(summary) + "</p>\n<h2>Drawn against asked</h2>\n";
+    if (chartLibrary.empty())
+        h += "<p>No plots: the chart library (Debian's libjs-chart.js) is not installed.</p>\n";
+    h += "<div class=\"charts\">\n";
+    for (std::size_t i = 0; i < charts.size(); ++i)
+        h += io::chartCanvas(i);
+    h += "</div>\n<h2>Cases</h2>\n<p>" + std::to_string(rowsPerPage) +
+         " cases a page, each with its organ; every case is also in report.csv.</p>\n<table>\n"
+         "<tr><th>page</th><th>cases</th><th>first job</th><th>last job</th><th>ok</th><th>failed</th>"
+         "<th>pending</th></tr>\n";
+    std::string notOk;
+    for (std::size_t first = 0, page = 0; first < rows.size(); first += rowsPerPage, ++page) {
+        const std::size_t last = std::min(first + rowsPerPage, rows.size());
+        std::size_t ok = 0, failed = 0;
+        for (std::size_t i = first; i < last; ++i) {
+            const Row& r = rows[i];
+            const std::string state = stateOf(r);
+            ok += state == "ok";
+            failed += state == "failed" || state == "unreadable";
+            if (state == "failed" || state == "unreadable")
+                notOk += "<li><a href=\"" + pagePath(page) + "#" + htmlEscape(r.job->name) + "\">" +
+                         htmlEscape(r.job->name) + "</a>: " + htmlEscape(cells(r)[3]) + "</li>\n";
+        }
+        h += "<tr><td><a href=\"" + pagePath(page) + "\">" + std::to_string(page + 1) + "</a></td><td>" +
+             std::to_string(first + 1) + "-" + std::to_string(last) + "</td><td>" + htmlEscape(rows[first].job->name) +
+             "</td><td>" + htmlEscape(rows[last - 1].job->name) + "</td><td>" + std::to_string(ok) + "</td><td>" +
+             std::to_string(failed) + "</td><td>" + std::to_string(last - first - ok - failed) + "</td></tr>\n";
+    }
     h += "</table>\n";
+    if (!notOk.empty())
+        h += "<h2>Jobs that failed</h2>\n<ul>\n" + notOk + "</ul>\n";
     h += io::chartScripts(chartLibrary, chartConfigs(charts));
-    h += "</body></html>\n";
-    return h;
+    return h + "</body></html>\n";
+}
+
+/// Removes the case pages a longer report left beyond `pages`.
+void removeStalePages(const std::string& pagesFolder, std::size_t pages) {
+    std::error_code ec;
+    for (fs::directory_iterator it(pagesFolder, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        std::size_t number = 0;
+        if (name.size() == 15 && name.rfind("cases-", 0) == 0 && name.substr(10) == ".html" &&
+            std::sscanf(name.c_str() + 6, "%4zu", &number) == 1 && number > pages) {
+            std::error_code removeError;
+            fs::remove(it->path(), removeError);
+        }
+    }
 }
 
 } // namespace
@@ -490,7 +577,13 @@ Result<ReportResult> writeBatchReport(const std::string& batchFolder, const Mani
     std::vector<Row> rows;
     std::size_t ok = 0, failed = 0;
     double seconds = 0.0;
-    const std::string scratch = (fs::path(folder) / (".thumbnail-" + std::to_string(getpid()) + ".png")).string();
+    const std::string thumbnails = (fs::path(folder) / "thumbnails").string();
+    const std::string pagesFolder = (fs::path(folder) / "pages").string();
+    for (const std::string& sub : {thumbnails, pagesFolder}) {
+        fs::create_directories(sub, ec);
+        if (ec)
+            return fail(ErrorCode::IoError, sub + ": " + ec.message());
+    }
     for (const Job& job : manifest.jobs) {
         Row r;
         r.job = &job;
@@ -512,7 +605,8 @@ Result<ReportResult> writeBatchReport(const std::string& batchFolder, const Mani
         if (r.record && r.record->state == JobState::Ok) {
             ++ok;
             seconds += r.record->seconds;
-            auto image = thumbnail(batchPath(batchFolder, job.output), scratch, params.thumbnailWidthPx);
+            auto image = thumbnail(batchPath(batchFolder, job.output), r.record->packageManifestSha256, thumbnails,
+                                   params.thumbnailWidthPx);
             if (image)
                 r.thumbnail = *image;
             else
@@ -547,8 +641,18 @@ Result<ReportResult> writeBatchReport(const std::string& batchFolder, const Mani
     result.csvPath = (fs::path(folder) / "report.csv").string();
     result.htmlPath = (fs::path(folder) / "report.html").string();
     HS_TRY(io::writeFileAtomically(result.csvPath, csvText(rows)));
-    HS_TRY(io::writeFileAtomically(result.htmlPath, htmlText(title, rows, charts, library, summary)));
+    const std::size_t perPage = std::max<std::size_t>(params.rowsPerPage, 1);
+    const std::size_t pages = (rows.size() + perPage - 1) / perPage;
+    for (std::size_t page = 0; page < pages; ++page) {
+        const std::size_t first = page * perPage;
+        HS_TRY(
+            io::writeFileAtomically((fs::path(folder) / pagePath(page)).string(),
+                                    casePage(title, rows, page, pages, first, std::min(first + perPage, rows.size()))));
+    }
+    removeStalePages(pagesFolder, pages);
+    HS_TRY(io::writeFileAtomically(result.htmlPath, indexPage(title, rows, perPage, charts, library, summary)));
     result.rows = rows.size();
+    result.pages = pages;
     result.charts = library.empty() ? 0 : charts.size();
     return result;
 }

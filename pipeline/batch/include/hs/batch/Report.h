@@ -1,7 +1,9 @@
 #pragma once
-/// The summary of a batch: BATCH/report/report.csv (one row per job) and BATCH/report/report.html, a self-contained
-/// page (no file or network access) with the same table, a thumbnail of each organ, and the distributions of the
-/// drawn values against what the curriculum asked, plotted by Chart.js (inlined from Debian's libjs-chart.js).
+/// The summary of a batch: BATCH/report/report.csv (one row per job), BATCH/report/report.html, the index (the summary,
+/// the distributions of the drawn values against what the curriculum asked, plotted by Chart.js inlined from
+/// Debian's libjs-chart.js, one line per page of cases, and the jobs that failed) and BATCH/report/pages/, the table
+/// ReportParams::rowsPerPage cases a page with a thumbnail of each organ, so that a report of 10 000 cases opens at
+/// once. Every page is self-contained (no network access; thumbnails inlined); pages link to each other.
 /// docs/batch.md, "Report".
 
 #include "hs/batch/Manifest.h"
@@ -21,12 +23,14 @@ constexpr std::string_view kDefaultChartLibrary = io::kDefaultChartLibrary;
 struct ReportParams {
     std::string chartLibrary{kDefaultChartLibrary}; ///< Chart.js (UMD build) to inline; missing: no plots, a note
     int thumbnailWidthPx = 96;                      ///< px; the height follows the organ's proportions
+    std::size_t rowsPerPage = 100;                  ///< cases per page of the table (pages/cases-NNNN.html)
 };
 
 struct ReportResult {
     std::string csvPath;
     std::string htmlPath;
     std::size_t rows = 0;
+    std::size_t pages = 0; ///< case pages
     std::size_t charts = 0;
     std::vector<std::string> warnings; ///< e.g. the chart library is missing, a thumbnail could not be drawn
 };
