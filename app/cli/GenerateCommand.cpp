@@ -33,6 +33,8 @@ struct GenerateOptions {
     int jobs = 1;
     std::optional<int> threads;
     bool zip = false;
+    std::string formats;                       ///< --formats as given
+    scene::PackageWriteOptions packageFormats; ///< parsed from it
     CommonOptions common;
 };
 
@@ -70,7 +72,7 @@ Status generateVariant(const scene::CaseSpec& spec, const GenerateOptions& optio
     auto writeSub = progress.sub(0.85, 1.0);
     {
         ScopedStepTimer timer(report.timings, "package");
-        auto written = scene::writeScenePackage(s, report.folder, {}, writeSub);
+        auto written = scene::writeScenePackage(s, report.folder, options.packageFormats, writeSub);
         if (!written)
             return written.failure();
         if (options.zip)
@@ -206,7 +208,11 @@ void printReport(const VariantReport& r) {
         std::printf("warning     %s\n", w.c_str());
 }
 
-int runGenerate(const GenerateOptions& options) {
+int runGenerate(GenerateOptions& options) {
+    auto formats = scene::parsePackageFormats(options.formats);
+    if (!formats)
+        return reportError("generate", formats.error());
+    options.packageFormats = *formats;
     auto loaded = scene::loadCase(options.casePath);
     if (!loaded)
         return reportError("generate", loaded.error());
@@ -290,6 +296,9 @@ void addGenerateCommand(CLI::App& app, int& exitCode) {
     sub->add_option("--threads", o->threads, "threads per stage instead of the case's (never changes the result)")
         ->check(CLI::Range(0, 256));
     sub->add_flag("--zip", o->zip, "also write SCENE.zip");
+    sub->add_option("--formats", o->formats,
+                    "also write formats for other tools: gltf (surface.glb), msh (mesh.msh), obj (surface.obj), sofa "
+                    "(scene.scn with mesh.msh and surface.obj), all; comma-separated");
     sub->add_flag("--json", o->common.json, "print a JSON summary (and no progress bar)");
     sub->callback([o, &exitCode] { exitCode = runGenerate(*o); });
 }

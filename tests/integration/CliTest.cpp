@@ -326,6 +326,15 @@ TEST(Cli, GenerateWritesAValidPackageForTheDefaultCase) {
     ASSERT_EQ(volumes.size(), 5u);
     EXPECT_EQ(volumes.begin()->first, 1);
     EXPECT_EQ(volumes.rbegin()->first, 5);
+    // The size budget: the default case's package, with everything the simulator and the workstation read, within
+    // 20 MB (docs/scene-format.md, "Size"); the other tools' formats only on request.
+    std::uintmax_t bytes = 0;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(scene))
+        if (entry.is_regular_file())
+            bytes += entry.file_size();
+    EXPECT_LE(bytes, 20u * 1000u * 1000u);
+    EXPECT_FALSE(std::filesystem::exists(scene + "/surface.glb"));
+    EXPECT_FALSE(std::filesystem::exists(scene + "/mesh.msh"));
 }
 
 TEST(Cli, GenerateGivesTheSamePackageOnRepeatedRunsAndAnyThreadCount) {

@@ -70,7 +70,8 @@ protected:
         auto generated = generate::generateScene(*spec, params);
         ASSERT_TRUE(generated.ok()) << generated.error().message();
         s_generated = std::make_unique<generate::Generated>(std::move(generated).value());
-        const auto written = scene::writeScenePackage(*s_generated->scene, s_dir->file("scene"));
+        const auto written =
+            scene::writeScenePackage(*s_generated->scene, s_dir->file("scene"), scene::PackageWriteOptions::all());
         ASSERT_TRUE(written.ok()) << written.error().message();
     }
     static void TearDownTestSuite() {

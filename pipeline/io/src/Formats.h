@@ -27,14 +27,13 @@ Status writeStl(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary
 
 /// `arrays`: when set, also the floating-point point arrays (see readSurfaceWithArrays).
 Result<SurfaceMesh> readVtp(const std::string& path, const ReadLimits& limits, PointArrays* arrays = nullptr);
-Status writeVtp(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary,
-                const std::vector<std::array<float, 2>>* textureCoordinates = nullptr,
-                const std::vector<Vec3>* normals = nullptr, const PointArrays* pointArrays = nullptr);
+/// Writes the options' binary/compress choice, texture coordinates, normals and point arrays.
+Status writeVtp(const SurfaceMesh& mesh, const std::string& tmpPath, const WriteOptions& options);
 
 /// A VTU with tetrahedra gives a TetMesh; one with only surface cells a SurfaceMesh.
 Result<AnyMesh> readVtu(const std::string& path, const ReadLimits& limits);
-Status writeVtu(const TetMesh& mesh, const std::string& tmpPath, bool binary);
-Status writeVtuSurface(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary);
+Status writeVtu(const TetMesh& mesh, const std::string& tmpPath, const WriteOptions& options);
+Status writeVtuSurface(const SurfaceMesh& mesh, const std::string& tmpPath, const WriteOptions& options);
 
 Result<TetMesh> readGmsh(const std::string& path, const ReadLimits& limits);
 Status writeGmsh(const TetMesh& mesh, const std::string& tmpPath);

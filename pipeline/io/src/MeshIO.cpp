@@ -186,10 +186,9 @@ Status writeSurface(const SurfaceMesh& mesh, const std::string& path, const Writ
         case MeshFormat::Off:
             return detail::writeOff(mesh, tmpPath);
         case MeshFormat::Vtp:
-            return detail::writeVtp(mesh, tmpPath, options.binary, options.textureCoordinates, options.normals,
-                                    options.pointArrays);
+            return detail::writeVtp(mesh, tmpPath, options);
         case MeshFormat::Vtu:
-            return detail::writeVtuSurface(mesh, tmpPath, options.binary);
+            return detail::writeVtuSurface(mesh, tmpPath, options);
         case MeshFormat::GmshMsh:
         case MeshFormat::Medit:
             break;
@@ -210,7 +209,7 @@ Status writeTetMesh(const TetMesh& mesh, const std::string& path, const WriteOpt
     return writeAtomically(path, [&](const std::string& tmpPath) -> Status {
         switch (f) {
         case MeshFormat::Vtu:
-            return detail::writeVtu(mesh, tmpPath, options.binary);
+            return detail::writeVtu(mesh, tmpPath, options);
         case MeshFormat::GmshMsh:
             return detail::writeGmsh(mesh, tmpPath);
         case MeshFormat::Medit:

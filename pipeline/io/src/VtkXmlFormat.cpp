@@ -795,12 +795,18 @@ Result<AnyMesh> readVtu(const std::string& path, const ReadLimits& limits) {
 namespace {
 
 template <class Writer>
-Status writeXml(vtkDataObject* data, const std::string& tmpPath, bool binary, const char* action) {
+Status writeXml(vtkDataObject* data, const std::string& tmpPath, const WriteOptions& options, const char* action) {
+    const bool binary = options.binary;
     VtkMessageCapture capture;
     vtkNew<Writer> writer;
     writer->SetInputData(data);
     writer->SetFileName(tmpPath.c_str());
-    writer->SetCompressorTypeToNone();
+    if (binary && options.compress) {
+        writer->SetCompressorTypeToZLib();
+        writer->SetCompressionLevel(5);
+    } else {
+        writer->SetCompressorTypeToNone();
+    }
     writer->SetHeaderTypeToUInt64();
     if (binary) {
         writer->SetDataModeToAppended();
@@ -827,9 +833,10 @@ Status writeXml(vtkDataObject* data, const std::string& tmpPath, bool binary, co
 
 } // namespace
 
-Status writeVtp(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary,
-                const std::vector<std::array<float, 2>>* textureCoordinates, const std::vector<Vec3>* normals,
-                const PointArrays* pointArrays) {
+Status writeVtp(const SurfaceMesh& mesh, const std::string& tmpPath, const WriteOptions& options) {
+    const auto* textureCoordinates = options.textureCoordinates;
+    const auto* normals = options.normals;
+    const auto* pointArrays = options.pointArrays;
     auto poly = toPolyData(mesh, true);
     if (pointArrays)
         for (const auto& [name, array] : *pointArrays) {
@@ -841,7 +848,18 @@ Status writeVtp(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary
                 values->SetValue(static_cast<vtkIdType>(i), array.values[i]);
             poly->GetPointData()->AddArray(values);
         }
-    if (textureCoordinates) {
+    if (textureCoordinates && options.textureOriginTopLeft) {
+        vtkNew<vtkDoubleArray> uv;
+        uv->SetName("uv");
+        uv->SetNumberOfComponents(2);
+        uv->SetNumberOfTuples(static_cast<vtkIdType>(textureCoordinates->size()));
+        for (std::size_t i = 0; i < textureCoordinates->size(); ++i) {
+            const auto& t = (*textureCoordinates)[i];
+            const double tuple[2] = {static_cast<double>(t[0]), 1.0 - static_cast<double>(t[1])};
+            uv->SetTypedTuple(static_cast<vtkIdType>(i), tuple);
+        }
+        poly->GetPointData()->SetTCoords(uv);
+    } else if (textureCoordinates) {
         vtkNew<vtkFloatArray> uv;
         uv->SetName("uv");
         uv->SetNumberOfComponents(2);
@@ -862,15 +880,15 @@ Status writeVtp(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary
         }
         poly->GetPointData()->SetNormals(n);
     }
-    return writeXml<vtkXMLPolyDataWriter>(poly, tmpPath, binary, "writing VTP");
+    return writeXml<vtkXMLPolyDataWriter>(poly, tmpPath, options, "writing VTP");
 }
 
-Status writeVtu(const TetMesh& mesh, const std::string& tmpPath, bool binary) {
-    return writeXml<vtkXMLUnstructuredGridWriter>(toUnstructuredGrid(mesh), tmpPath, binary, "writing VTU");
+Status writeVtu(const TetMesh& mesh, const std::string& tmpPath, const WriteOptions& options) {
+    return writeXml<vtkXMLUnstructuredGridWriter>(toUnstructuredGrid(mesh), tmpPath, options, "writing VTU");
 }
 
-Status writeVtuSurface(const SurfaceMesh& mesh, const std::string& tmpPath, bool binary) {
-    return writeXml<vtkXMLUnstructuredGridWriter>(toUnstructuredGrid(mesh), tmpPath, binary, "writing VTU");
+Status writeVtuSurface(const SurfaceMesh& mesh, const std::string& tmpPath, const WriteOptions& options) {
+    return writeXml<vtkXMLUnstructuredGridWriter>(toUnstructuredGrid(mesh), tmpPath, options, "writing VTU");
 }
 
 } // namespace hs::io::detail

@@ -25,9 +25,10 @@ constexpr std::string_view kAlbedoFile = "maps/albedo.png";
 constexpr std::string_view kNormalFile = "maps/normal.png";
 constexpr std::string_view kRoughnessFile = "maps/roughness.png";
 
-/// Files every package must list; the others are optional (options, or maps the scene does not have).
-constexpr std::array<std::string_view, 7> kRequiredFiles{kCaseFile, kSceneFile,      kLabelsFile,    kReportFile,
-                                                         kTetsFile, kSurfaceVtpFile, kSurfaceGlbFile};
+/// Files every package must list; the others are optional (options, or maps the scene does not have). Packages
+/// before schema version 4 (kFirstUvInVtpSchemaVersion) must also list surface.glb: their UVs are read from it.
+constexpr std::array<std::string_view, 6> kRequiredFiles{kCaseFile,   kSceneFile, kLabelsFile,
+                                                         kReportFile, kTetsFile,  kSurfaceVtpFile};
 
 /// Longest path a package may hold (manifest entries and zip entries alike).
 constexpr std::size_t kMaxPackagePathLength = 255;

@@ -170,6 +170,10 @@ Result<PackageManifest> parseManifest(const std::string& text, const PackageRead
         if (!seen.count(std::string(required)))
             return fail(ErrorCode::InvalidInput,
                         "manifest.json: does not list " + std::string(required) + ", which every package holds");
+    if (manifest.schemaVersion < kFirstUvInVtpSchemaVersion && !seen.count(std::string(detail::kSurfaceGlbFile)))
+        return fail(ErrorCode::InvalidInput, "manifest.json: does not list " + std::string(detail::kSurfaceGlbFile) +
+                                                 ", which every package of schema version " +
+                                                 std::to_string(manifest.schemaVersion) + " holds");
     return manifest;
 }
 
@@ -276,6 +280,20 @@ Status readMeshes(const fs::path& root, const PackageManifest& manifest, const P
         const auto& v = normals->second.values;
         for (std::size_t i = 0; i + 2 < v.size(); i += 3)
             scene.surface.normals.push_back({v[i], v[i + 1], v[i + 2]});
+    }
+    if (manifest.schemaVersion >= kFirstUvInVtpSchemaVersion) {
+        const auto uv = arrays.find("uv");
+        if (uv == arrays.end())
+            return {}; // a surface without texture coordinates (a scene without maps)
+        if (uv->second.components != 2)
+            return fail(ErrorCode::InvalidInput, std::string(detail::kSurfaceVtpFile) + ": 'uv' has " +
+                                                     std::to_string(uv->second.components) + " components, expected 2");
+        // Stored with VTK's bottom-left origin as (u, 1 - v) in Float64 (io::WriteOptions::textureOriginTopLeft).
+        const auto& v = uv->second.values;
+        scene.surface.uvs.reserve(v.size() / 2);
+        for (std::size_t i = 0; i + 1 < v.size(); i += 2)
+            scene.surface.uvs.push_back({static_cast<float>(v[i]), static_cast<float>(1.0 - v[i + 1])});
+        return {};
     }
     auto glbBytes = readVerified(root, *findFile(manifest, detail::kSurfaceGlbFile), limits.maxFileBytes);
     if (!glbBytes)

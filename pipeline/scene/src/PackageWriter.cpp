@@ -118,14 +118,12 @@ Result<std::vector<PendingFile>> planFiles(const Scene& scene, const PackageWrit
     bytesFile(std::string(detail::kReportFile), detail::reportJson(scene));
     files.push_back({std::string(detail::kTetsFile),
                      [&scene](const fs::path& p) { return io::writeTetMesh(scene.tets, p.string()); }});
-    // VTK's texture coordinates have their origin at the image's bottom left (as OBJ's), the scene's at its top left.
-    // The writer runs after planFiles returns: it owns its copy.
-    std::vector<std::array<float, 2>> vtkUvs = scene.surface.uvs;
-    for (auto& uv : vtkUvs)
-        uv[1] = 1.0f - uv[1];
-    files.push_back({std::string(detail::kSurfaceVtpFile), [&scene, vtkUvs = std::move(vtkUvs)](const fs::path& p) {
+    files.push_back({std::string(detail::kSurfaceVtpFile), [&scene](const fs::path& p) {
                          io::WriteOptions vtp;
-                         vtp.textureCoordinates = vtkUvs.empty() ? nullptr : &vtkUvs;
+                         // VTK's texture coordinates have their origin at the image's bottom left (as OBJ's), the
+                         // scene's at its top left: the writer flips them, exactly.
+                         vtp.textureCoordinates = scene.surface.uvs.empty() ? nullptr : &scene.surface.uvs;
+                         vtp.textureOriginTopLeft = true;
                          vtp.normals = scene.surface.normals.empty() ? nullptr : &scene.surface.normals;
                          if (scene.surface.embedding.empty() && !scene.simulation)
                              return io::writeSurface(scene.surface.mesh, p.string(), vtp);
@@ -142,7 +140,7 @@ Result<std::vector<PendingFile>> planFiles(const Scene& scene, const PackageWrit
     if (scene.simulation)
         files.push_back({std::string(detail::kSimulationFile),
                          [&scene](const fs::path& p) { return io::writeTetMesh(scene.simulation->tets, p.string()); }});
-    if (options.gmsh)
+    if (options.gmsh || options.sofa) // SOFA's MeshGmshLoader reads mesh.msh
         files.push_back({std::string(detail::kGmshFile),
                          [&scene](const fs::path& p) { return io::writeTetMesh(scene.tets, p.string()); }});
 
@@ -158,28 +156,60 @@ Result<std::vector<PendingFile>> planFiles(const Scene& scene, const PackageWrit
         bytesFile(std::string(path), std::move(*png));
         return {};
     };
-    HS_TRY(map(scene.surface.albedo, detail::kAlbedoFile, &textures.albedoPng));
-    HS_TRY(map(scene.surface.normal, detail::kNormalFile, &textures.normalPng));
+    HS_TRY(map(scene.surface.albedo, detail::kAlbedoFile, options.gltf ? &textures.albedoPng : nullptr));
+    HS_TRY(map(scene.surface.normal, detail::kNormalFile, options.gltf ? &textures.normalPng : nullptr));
     HS_TRY(map(scene.surface.roughness, detail::kRoughnessFile, nullptr));
-    if (!scene.surface.roughness.empty()) {
-        auto mr = metallicRoughnessPng(scene.surface.roughness);
-        if (!mr)
-            return mr.failure();
-        textures.metallicRoughnessPng = std::move(*mr);
+    if (options.gltf) {
+        if (!scene.surface.roughness.empty()) {
+            auto mr = metallicRoughnessPng(scene.surface.roughness);
+            if (!mr)
+                return mr.failure();
+            textures.metallicRoughnessPng = std::move(*mr);
+        }
+        const auto tool = scene.toolVersions.find("hysteroscene");
+        auto glb =
+            detail::encodeGlb(scene.surface, textures,
+                              "hysteroscene " + (tool == scene.toolVersions.end() ? std::string() : tool->second));
+        if (!glb)
+            return glb.failure();
+        bytesFile(std::string(detail::kSurfaceGlbFile), std::move(*glb));
     }
-    const auto tool = scene.toolVersions.find("hysteroscene");
-    auto glb = detail::encodeGlb(scene.surface, textures,
-                                 "hysteroscene " + (tool == scene.toolVersions.end() ? std::string() : tool->second));
-    if (!glb)
-        return glb.failure();
-    bytesFile(std::string(detail::kSurfaceGlbFile), std::move(*glb));
-    if (options.sofa) {
+    if (options.sofa)
         bytesFile(std::string(detail::kSofaFile), detail::sofaScene(scene, !scene.surface.albedo.empty()));
+    if (options.sofa || options.obj)
         bytesFile(std::string(detail::kSurfaceObjFile), detail::visualObj(scene));
-    }
     std::sort(files.begin(), files.end(), [](const auto& a, const auto& b) { return a.path < b.path; });
     return files;
 }
+
+} // namespace
+
+Result<PackageWriteOptions> parsePackageFormats(const std::string& list) {
+    PackageWriteOptions options;
+    std::size_t start = 0;
+    while (start <= list.size() && !list.empty()) {
+        const std::size_t end = std::min(list.find(',', start), list.size());
+        const std::string name = list.substr(start, end - start);
+        if (name == "gltf")
+            options.gltf = true;
+        else if (name == "msh")
+            options.gmsh = true;
+        else if (name == "obj")
+            options.obj = true;
+        else if (name == "sofa")
+            options.sofa = true;
+        else if (name == "all")
+            options = PackageWriteOptions::all();
+        else
+            return fail(ErrorCode::InvalidInput, "--formats: \"" + name +
+                                                     "\" is not a format; allowed: gltf, msh, obj, sofa, all "
+                                                     "(comma-separated)");
+        start = end + 1;
+    }
+    return options;
+}
+
+namespace {
 
 std::string manifestJson(const PackageManifest& manifest) {
     nlohmann::ordered_json j;

@@ -72,11 +72,27 @@ TEST_F(ScenePackage, HoldsEveryDocumentedFileAndAManifestOfThem) {
     std::vector<std::string> paths;
     for (const auto& f : m_manifest.files)
         paths.push_back(f.path);
-    const std::vector<std::string> expected{
+    // By default what the simulator and the workstation read; the formats of other tools on request.
+    const std::vector<std::string> expected{"case.json",       "labels.json",        "maps/albedo.png",
+                                            "maps/normal.png", "maps/roughness.png", "report.json",
+                                            "scene.json",      "surface.vtp",        "tets.vtu"};
+    EXPECT_EQ(paths, expected);
+    const auto all = writeScenePackage(test::syntheticScene(), m_dir.file("all"), PackageWriteOptions::all());
+    ASSERT_TRUE(all.ok()) << all.error().message();
+    std::vector<std::string> allPaths;
+    for (const auto& f : all->manifest.files)
+        allPaths.push_back(f.path);
+    const std::vector<std::string> expectedAll{
         "case.json",   "labels.json", "maps/albedo.png", "maps/normal.png", "maps/roughness.png",
         "mesh.msh",    "report.json", "scene.json",      "scene.scn",       "surface.glb",
         "surface.obj", "surface.vtp", "tets.vtu"};
-    EXPECT_EQ(paths, expected);
+    EXPECT_EQ(allPaths, expectedAll);
+    // Both read back as the same scene.
+    const auto small = readScenePackage(package().string());
+    const auto full = readScenePackage(m_dir.file("all"));
+    ASSERT_TRUE(small.ok() && full.ok());
+    EXPECT_EQ(small->surface.uvs, full->surface.uvs);
+    EXPECT_EQ(small->surface.mesh.points, full->surface.mesh.points);
     for (const auto& f : m_manifest.files) {
         EXPECT_EQ(static_cast<std::int64_t>(fs::file_size(package() / f.path)), f.bytes) << f.path;
         EXPECT_EQ(sha256Hex(readText(package() / f.path)), f.sha256) << f.path;
@@ -129,6 +145,12 @@ TEST_F(ScenePackage, WritesTheVisualSurfacesUvsInEachFormatsConvention) {
 // scene's have theirs at the top left: every viewer read the maps upside down. The reader turns them the right way up.
 TEST_F(ScenePackage, ReadsTheUvsOfAPackageWrittenBeforeVersion3TheRightWayUp) {
     const Scene original = test::syntheticScene();
+    // Packages before version 4 held surface.glb, and their UVs were read from it.
+    ASSERT_TRUE(writeScenePackage(original, package().string(), PackageWriteOptions::all()).ok());
+    editManifest(package(), [](auto& j) { j["schemaVersion"] = 3; });
+    const auto three = readScenePackage(package().string());
+    ASSERT_TRUE(three.ok()) << three.error().message();
+    EXPECT_EQ(three->surface.uvs, original.surface.uvs);
     editManifest(package(), [](auto& j) { j["schemaVersion"] = 2; });
     const auto read = readScenePackage(package().string());
     ASSERT_TRUE(read.ok()) << read.error().message();
@@ -216,7 +238,30 @@ TEST_F(ScenePackage, RefusesAnEmbeddingThatDoesNotGiveThePointBack) {
     EXPECT_FALSE(fs::exists(m_dir.path() / "missing"));
 }
 
+// A package of schema version 3 without surface.glb is refused, naming it: its UVs would be lost.
+TEST_F(ScenePackage, RefusesAVersion3PackageWithoutItsGlb) {
+    editManifest(package(), [](auto& j) { j["schemaVersion"] = 3; });
+    expectRefused(package(), ErrorCode::InvalidInput, {"manifest.json", "surface.glb", "schema version 3"});
+}
+
+// The UVs round-trip through surface.vtp bit for bit, also below 0.5 where 1 - v in single precision would round.
+TEST_F(ScenePackage, ReadsBackEveryUvBitForBit) {
+    Scene scene = test::syntheticScene();
+    std::uint32_t state = 12345;
+    for (auto& uv : scene.surface.uvs) {
+        state = state * 1664525u + 1013904223u;
+        uv[0] = static_cast<float>(state >> 8) / 16777216.0f;
+        state = state * 1664525u + 1013904223u;
+        uv[1] = static_cast<float>(state >> 8) / 16777216.0f * 0.5f; // every v in [0, 0.5)
+    }
+    ASSERT_TRUE(writeScenePackage(scene, m_dir.file("uvs")).ok());
+    const auto read = readScenePackage(m_dir.file("uvs"));
+    ASSERT_TRUE(read.ok()) << read.error().message();
+    EXPECT_EQ(read->surface.uvs, scene.surface.uvs);
+}
+
 TEST_F(ScenePackage, WritesASofaSceneWithOneForceFieldPerRegion) {
+    ASSERT_TRUE(writeScenePackage(test::syntheticScene(), package().string(), *parsePackageFormats("sofa,gltf")).ok());
     const std::string scn = readText(package() / "scene.scn");
     EXPECT_NE(scn.find("<MeshGmshLoader name=\"loader\" filename=\"mesh.msh\"/>"), std::string::npos);
     EXPECT_NE(scn.find("youngModulus=\"30\" poissonRatio=\"0.47\""), std::string::npos);
@@ -291,7 +336,25 @@ TEST_F(ScenePackage, RefusesAnUnknownSchemaVersion) {
     expectRefused(package(), ErrorCode::Unsupported, {"manifest.json", "schema version 99"});
 }
 
+TEST_F(ScenePackage, TakesTheFormatsAsACommaSeparatedList) {
+    const auto none = parsePackageFormats("");
+    ASSERT_TRUE(none.ok());
+    EXPECT_FALSE(none->gltf || none->gmsh || none->obj || none->sofa);
+    const auto some = parsePackageFormats("msh,obj");
+    ASSERT_TRUE(some.ok());
+    EXPECT_TRUE(some->gmsh && some->obj && !some->gltf && !some->sofa);
+    const auto all = parsePackageFormats("all");
+    ASSERT_TRUE(all.ok());
+    EXPECT_TRUE(all->gltf && all->gmsh && all->obj && all->sofa);
+    for (const char* bad : {"stl", "gltf,", ",msh", "GLTF"}) {
+        const auto refused = parsePackageFormats(bad);
+        ASSERT_FALSE(refused.ok()) << bad;
+        EXPECT_NE(refused.error().detail.find("allowed: gltf, msh, obj, sofa, all"), std::string::npos);
+    }
+}
+
 TEST_F(ScenePackage, RefusesAMissingFileNamingIt) {
+    ASSERT_TRUE(writeScenePackage(test::syntheticScene(), package().string(), PackageWriteOptions::all()).ok());
     fs::remove(package() / "scene.scn");
     expectRefused(package(), ErrorCode::NotFound, {"scene.scn", "missing"});
 }

@@ -52,9 +52,16 @@ using PointArrays = std::map<std::string, PointArray>;
 
 struct WriteOptions {
     bool binary = true; ///< STL/PLY binary, VTP/VTU appended raw (false: ASCII everywhere the format allows)
+    /// VTP/VTU binary: the appended data compressed with zlib (VTK's compressor, level 5; VTK, ParaView and meshio
+    /// inflate it). Deterministic: the same mesh gives the same bytes.
+    bool compress = true;
     /// VTP only: one (u, v) per point, written as the active texture coordinates "uv" (the other formats ignore it).
     /// A count other than the point count is an InvalidInput error.
     const std::vector<std::array<float, 2>>* textureCoordinates = nullptr;
+    /// VTP only: the texture coordinates have their origin at the image's top left (glTF's and the scene's
+    /// convention); they are written with VTK's bottom-left origin, (u, 1 - v), in Float64, where the flip is exact:
+    /// 1 - (1 - v) gives back the same float v (for v = 0 and every v >= 2^-29).
+    bool textureOriginTopLeft = false;
     /// VTP only: one normal per point, written as the active normals "normals" (Float32). A count other than the
     /// point count is an InvalidInput error, and so is a label named "uv" or "normals" next to either array.
     const std::vector<Vec3>* normals = nullptr;

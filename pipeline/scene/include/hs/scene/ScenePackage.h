@@ -28,8 +28,11 @@ constexpr std::string_view kPackageFormat = "hysteroscene-scene";
 /// (origin at the bottom left), so every viewer read the maps upside down, and readers flip those (v -> 1 - v,
 /// kFirstTopLeftUvSchemaVersion). Readers read versions kOldestPackageSchemaVersion..kPackageSchemaVersion and refuse
 /// others (Unsupported).
-constexpr int kPackageSchemaVersion = 3;
+constexpr int kPackageSchemaVersion = 4;
 constexpr int kFirstTopLeftUvSchemaVersion = 3;
+/// From version 4 the scene's UVs are read from surface.vtp (Float64, exact), and surface.glb is optional; before,
+/// they were read from surface.glb, which every package held.
+constexpr int kFirstUvInVtpSchemaVersion = 4;
 constexpr int kOldestPackageSchemaVersion = 1;
 /// The manifest's file name inside the package; it is the only file the manifest does not list.
 constexpr std::string_view kManifestName = "manifest.json";
@@ -38,10 +41,22 @@ constexpr std::string_view kManifestName = "manifest.json";
 constexpr std::string_view kTempMarker = ".hs-tmp-";
 constexpr std::string_view kOldMarker = ".hs-old";
 
+/// The formats other tools need, written on request beside what the simulator and the workstation read (case,
+/// scene, labels, report, tets.vtu, simulation.vtu, surface.vtp, maps/): none by default, so that a package of the
+/// default case stays within its size budget (docs/scene-format.md, "Size").
 struct PackageWriteOptions {
-    bool gmsh = true; ///< mesh.msh (Gmsh 4.1 ASCII)
-    bool sofa = true; ///< scene.scn and surface.obj (the SOFA scene and the mesh its OglModel loads)
+    bool gltf = false; ///< surface.glb (glTF 2.0 binary with the maps, metres)
+    bool gmsh = false; ///< mesh.msh (Gmsh 4.1 ASCII)
+    bool obj = false;  ///< surface.obj (Wavefront OBJ with UVs, mm)
+    bool sofa = false; ///< scene.scn and the surface.obj its OglModel loads
+
+    /// Every format on request.
+    static PackageWriteOptions all() { return {true, true, true, true}; }
 };
+
+/// Reads a comma-separated list of format names ("gltf", "msh", "obj", "sofa", or "all"; "" for none) as options;
+/// InvalidInput naming the unknown name and the allowed ones.
+[[nodiscard]] Result<PackageWriteOptions> parsePackageFormats(const std::string& list);
 
 /// One file as the manifest lists it.
 struct PackageFile {
