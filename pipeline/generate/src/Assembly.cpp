@@ -468,7 +468,8 @@ pathology::WallContact contactOf(const TetMesh& tets, const std::vector<std::arr
 
 } // namespace
 
-MeasuredDescriptors clinicalDescriptors(const scene::CaseSpec& spec, const SurfaceMesh& organ, const TetMesh& tets,
+MeasuredDescriptors clinicalDescriptors(const scene::CaseSpec& spec, const SurfaceMesh& organ,
+                                        const anatomy::TemplateLayout& layout, const TetMesh& tets,
                                         const SurfaceMesh& boundary, const std::vector<Vec3>& roots) {
     MeasuredDescriptors out;
     auto& c = out.clinical;
@@ -476,8 +477,7 @@ MeasuredDescriptors clinicalDescriptors(const scene::CaseSpec& spec, const Surfa
     const auto serosaFaces = sideFaces(boundary, false, -1);
     // The cavity's own wall: not what is draped over a pathology standing in it (beneath one, the displaced
     // organ's wall counts).
-    if (auto body = anatomy::measureBody(organ, anatomy::TemplateLayout{}, boundary, serosaFaces,
-                                         sideFaces(boundary, true, 0))) {
+    if (auto body = anatomy::measureBody(organ, layout, boundary, serosaFaces, sideFaces(boundary, true, 0))) {
         c.organ = {body->lengthMm,       body->widthMm,       body->apDepthMm,
                    body->cavityLengthMm, body->cavityWidthMm, body->ellipsoidVolumeMl};
     } else {
@@ -678,9 +678,22 @@ Result<scene::Scene> assembleScene(const scene::CaseSpec& spec, const OrganInsta
         roots.push_back(p.anchor);
     if (roots.size() != spec.pathologies.size())
         roots.clear();
-    auto descriptors = clinicalDescriptors(spec, frame, tissue.tets, tissue.boundary, roots);
+    auto descriptors = clinicalDescriptors(spec, frame, organ.layout, tissue.tets, tissue.boundary, roots);
     s.clinical = std::move(descriptors.clinical);
-    auto hydrometra = scene::computeHydrometra(organ.dimensions.ellipsoidVolumeMl, spec.scene.hydrometraPressureKpa);
+    // The fitted hydrometra of the final body (its measured uterine volume, pathologies included); the organ's own
+    // only when the body could not be measured, and then said (clinicalDescriptors warns why).
+    double uterineVolumeMl = s.clinical.organ.uterineVolumeMl;
+    std::string hydrometraWarning;
+    if (!(uterineVolumeMl > 0.0)) {
+        uterineVolumeMl = organ.dimensions.ellipsoidVolumeMl;
+        char text[160];
+        std::snprintf(text, sizeof text,
+                      "hydrometra: from the organ before its pathologies (%.1f mL): the final body's volume was not "
+                      "measured",
+                      uterineVolumeMl);
+        hydrometraWarning = text;
+    }
+    auto hydrometra = scene::computeHydrometra(uterineVolumeMl, spec.scene.hydrometraPressureKpa);
     if (!hydrometra)
         return hydrometra.failure();
     s.hydrometra = *hydrometra;
@@ -697,6 +710,8 @@ Result<scene::Scene> assembleScene(const scene::CaseSpec& spec, const OrganInsta
         s.warnings.push_back("meshing: " + w);
     for (const auto& w : descriptors.warnings)
         s.warnings.push_back("descriptors: " + w);
+    if (!hydrometraWarning.empty())
+        s.warnings.push_back(hydrometraWarning);
     HS_TRY(scene::checkScene(s));
     return s;
 }

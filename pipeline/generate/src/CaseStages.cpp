@@ -53,7 +53,7 @@ Result<OrganInstance> makeOrgan(const anatomy::ShapeModel& model, const OrganReq
     auto dims = anatomy::measureUterus(*mesh, *model.layout());
     if (!dims)
         return dims.failure();
-    return OrganInstance{std::move(mesh).value(), *dims};
+    return OrganInstance{std::move(mesh).value(), *dims, *model.layout()};
 }
 
 pathology::PathologyParams pathologyParamsFor(const scene::CaseSpec& spec,

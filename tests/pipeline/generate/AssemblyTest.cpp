@@ -197,7 +197,7 @@ MeasuredDescriptors cubeMyoma(double depthMm, bool draped, int askedFigo) {
         }
     }
     const TetMesh tets = tetCube(centre, normal, 8.0, 8, pathologyRegion(0));
-    return clinicalDescriptors(cubeMyomaCase(askedFigo), b.organ.mesh, tets, b.boundary);
+    return clinicalDescriptors(cubeMyomaCase(askedFigo), b.organ.mesh, b.organ.layout, tets, b.boundary);
 }
 
 bool hasWarning(const MeasuredDescriptors& m, const std::string& text) {
@@ -213,7 +213,7 @@ TEST(Assembly, OrganDimensionsOfAnUnchangedBodyAreTheGeneratorsOwn) {
     const auto& b = syntheticBody();
     scene::CaseSpec spec = scene::defaultCase();
     spec.pathologies.clear();
-    const auto m = clinicalDescriptors(spec, b.organ.mesh, TetMesh{}, b.boundary);
+    const auto m = clinicalDescriptors(spec, b.organ.mesh, b.organ.layout, TetMesh{}, b.boundary);
     const auto d = anatomy::measureUterus(b.organ.mesh, b.organ.layout);
     ASSERT_TRUE(d.ok());
     EXPECT_TRUE(m.warnings.empty()) << m.warnings.front();
@@ -224,6 +224,27 @@ TEST(Assembly, OrganDimensionsOfAnUnchangedBodyAreTheGeneratorsOwn) {
     EXPECT_NEAR(o.cavityLengthMm, d->cavityLengthMm, 0.02 * d->cavityLengthMm);
     EXPECT_NEAR(o.cavityWidthMm, d->cavityWidthMm, 0.02 * d->cavityWidthMm);
     EXPECT_NEAR(o.uterineVolumeMl, anatomy::ellipsoidVolumeMl(o.lengthMm, o.widthMm, o.apMm), 1e-9);
+}
+
+// A user's shape model has a template layout of its own: the organ is measured with it, not with the default one
+// (before, such an organ got zero dimensions and a warning).
+TEST(Assembly, OrganDimensionsAreMeasuredWithTheModelsOwnTemplateLayout) {
+    anatomy::TemplateLayout layout;
+    layout.around = 32;
+    layout.outerRings = 30;
+    ASSERT_NE(layout.vertexCount(), anatomy::TemplateLayout{}.vertexCount());
+    auto organ = anatomy::generateUterus(anatomy::UterusShapeParams{}, layout);
+    ASSERT_TRUE(organ.ok()) << organ.error().message();
+    scene::CaseSpec spec = scene::defaultCase();
+    spec.pathologies.clear();
+    const auto m = clinicalDescriptors(spec, organ->mesh, layout, TetMesh{}, organ->mesh);
+    const auto d = anatomy::measureUterus(organ->mesh, layout);
+    ASSERT_TRUE(d.ok()) << d.error().message();
+    for (const auto& w : m.warnings)
+        EXPECT_EQ(w.find("were not measured"), std::string::npos) << w;
+    EXPECT_NEAR(m.clinical.organ.lengthMm, d->lengthMm, 0.01 * d->lengthMm);
+    EXPECT_NEAR(m.clinical.organ.widthMm, d->widthMm, 0.01 * d->widthMm);
+    EXPECT_GT(m.clinical.organ.cavityLengthMm, 0.0);
 }
 
 TEST(Assembly, OrganDimensionsFollowTheFinalBodyNotTheOrganItGrewFrom) {
@@ -237,7 +258,7 @@ TEST(Assembly, OrganDimensionsFollowTheFinalBodyNotTheOrganItGrewFrom) {
         p = p * 1.1;
     scene::CaseSpec spec = scene::defaultCase();
     spec.pathologies.clear();
-    const auto m = clinicalDescriptors(spec, b.organ.mesh, TetMesh{}, larger);
+    const auto m = clinicalDescriptors(spec, b.organ.mesh, b.organ.layout, TetMesh{}, larger);
     const auto d = anatomy::measureUterus(b.organ.mesh, b.organ.layout);
     ASSERT_TRUE(d.ok());
     const auto& o = m.clinical.organ;
@@ -259,7 +280,7 @@ TEST(Assembly, DescriptorsOfTheCaseAskWarnWhenTheBodyDiffers) {
     ASSERT_TRUE(d.ok());
     spec.anatomy.dimensions.lengthMm = d->lengthMm;     // as measured: no warning
     spec.anatomy.dimensions.widthMm = 1.3 * d->widthMm; // beyond the tolerance
-    const auto m = clinicalDescriptors(spec, b.organ.mesh, TetMesh{}, b.boundary);
+    const auto m = clinicalDescriptors(spec, b.organ.mesh, b.organ.layout, TetMesh{}, b.boundary);
     ASSERT_EQ(m.warnings.size(), 1u);
     EXPECT_EQ(m.warnings[0].rfind("organ: asked width ", 0), 0u) << m.warnings[0];
 }

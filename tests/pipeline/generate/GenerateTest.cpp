@@ -90,6 +90,17 @@ TEST(Generate, KeepsEveryStageResultAndTimesEachStage) {
               (std::vector<std::string>{"organ", "pathology", "merge", "meshing", "tissue", "texture", "scene"}));
 }
 
+// The fitted hydrometra is the final body's (pathologies included), not the organ's before them.
+TEST(Generate, ComputesTheHydrometraOnTheFinalBody) {
+    const Generated& g = baseRun();
+    ASSERT_TRUE(g.scene.has_value());
+    EXPECT_GT(g.scene->clinical.organ.uterineVolumeMl, 0.0);
+    EXPECT_EQ(g.scene->hydrometra.uterineVolumeMl, g.scene->clinical.organ.uterineVolumeMl);
+    EXPECT_NE(g.scene->hydrometra.uterineVolumeMl, g.organ->dimensions.ellipsoidVolumeMl);
+    for (const auto& w : g.scene->warnings)
+        EXPECT_EQ(w.rfind("hydrometra:", 0), std::string::npos) << w;
+}
+
 TEST(Generate, RegeneratingTheTextureGivesTheBytesOfAFullRunOfTheEditedCase) {
     test::TempDir tmp;
     scene::CaseSpec edited = lightCase();

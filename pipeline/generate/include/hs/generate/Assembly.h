@@ -114,12 +114,14 @@ inline constexpr double kDescriptorTolerance = 0.10;
 
 /// The descriptors of the final scene (docs/scene-format.md, "Where the clinical descriptors are measured"): the
 /// organ's dimensions on `boundary`'s serosa and cavity by anatomy::measureBody (`organ`: the template instance nearest
-/// to the body, the pathology stage's displaced organ, whose vertices are moved onto it), each pathology's size,
+/// to the body, the pathology stage's displaced organ, whose vertices are moved onto it; `layout`: the shape model's
+/// own template layout, OrganInstance::layout), each pathology's size,
 /// volume, FIGO type and Lasmar score from its region of `tets` (scene region ids) against `boundary` (tissue and
 /// pathology face labels, labelledBoundary), by the pathology stage's rules (pathology::describeContact). Warnings name
 /// every value that differs from `spec` (FIGO, or a size or dimension beyond kDescriptorTolerance). `roots`: where
 /// each pathology grows from (pathology::GrownPathology::anchor; WallContact::root), one per pathology, or empty.
-MeasuredDescriptors clinicalDescriptors(const scene::CaseSpec& spec, const SurfaceMesh& organ, const TetMesh& tets,
+MeasuredDescriptors clinicalDescriptors(const scene::CaseSpec& spec, const SurfaceMesh& organ,
+                                        const anatomy::TemplateLayout& layout, const TetMesh& tets,
                                         const SurfaceMesh& boundary, const std::vector<Vec3>& roots = {});
 
 /// Warnings for every measured value of `measured` that differs from what `spec` asked ("descriptors: ..." is added

@@ -32,6 +32,7 @@ struct OrganRequest {
 struct OrganInstance {
     SurfaceMesh mesh; ///< face label "tissue"
     anatomy::UterusDimensions dimensions;
+    anatomy::TemplateLayout layout; ///< the shape model's own template layout: every later measurement uses it
 };
 
 /// Makes the organ: a sample or the mean for the patient, moved to the requested dimensions when there are any.
