@@ -134,15 +134,21 @@ constexpr double kReprojectReachMm = 20.0;
 
 /// Moves the vertices `ids` of `mesh` (a copy of the template instance) along their normals onto `faces` of `body`;
 /// a vertex with no crossing stays.
-void reprojectVertices(const std::vector<std::size_t>& ids, const std::vector<Vec3>& normals, const SurfaceMesh& body,
-                       const std::vector<std::int32_t>& faces, SurfaceMesh& mesh) {
+/// Returns how many stayed.
+std::size_t reprojectVertices(const std::vector<std::size_t>& ids, const std::vector<Vec3>& normals,
+                              const SurfaceMesh& body, const std::vector<std::int32_t>& faces, SurfaceMesh& mesh) {
     std::vector<Vec3> points;
     for (const auto v : ids)
         points.push_back(mesh.points[v]);
     const auto near = facesNear(points, kReprojectReachMm, body, faces);
-    for (std::size_t k = 0; k < ids.size(); ++k)
+    std::size_t stayed = 0;
+    for (std::size_t k = 0; k < ids.size(); ++k) {
         if (auto hit = reproject(points[k], normals[ids[k]], body, near, kReprojectReachMm))
             mesh.points[ids[k]] = *hit;
+        else
+            ++stayed;
+    }
+    return stayed;
 }
 
 } // namespace
@@ -153,7 +159,7 @@ double ellipsoidVolumeMl(double lengthMm, double widthMm, double apDepthMm) {
 
 Result<UterusDimensions> measureBody(const SurfaceMesh& organ, const TemplateLayout& l, const SurfaceMesh& body,
                                      const std::vector<std::int32_t>& serosaFaces,
-                                     const std::vector<std::int32_t>& cavityFaces) {
+                                     const std::vector<std::int32_t>& cavityFaces, BodyCrossings* crossings) {
     if (organ.points.size() != static_cast<std::size_t>(l.vertexCount()) ||
         organ.triangles.size() != static_cast<std::size_t>(l.faceCount()))
         return fail(ErrorCode::InvalidInput, "the organ has " + std::to_string(organ.points.size()) +
@@ -167,20 +173,31 @@ Result<UterusDimensions> measureBody(const SurfaceMesh& organ, const TemplateLay
             ids.push_back(static_cast<std::size_t>(l.vertex(r, j)));
         return ids;
     };
-    for (int r = 0; r < l.ringCount(); ++r)
-        reprojectVertices(ringIds(r), normals, body, r < l.firstCanalRing() ? serosaFaces : cavityFaces, onBody);
+    BodyCrossings counted;
+    for (int r = 0; r < l.ringCount(); ++r) {
+        const bool serosa = r < l.firstCanalRing();
+        const std::size_t stayed =
+            reprojectVertices(ringIds(r), normals, body, serosa ? serosaFaces : cavityFaces, onBody);
+        (serosa ? counted.serosaStayed : counted.cavityStayed) += stayed;
+        (serosa ? counted.serosaVertices : counted.cavityVertices) += static_cast<std::size_t>(l.around);
+    }
     // A pole with no crossing of its own follows the ring next to it.
-    auto pole = [&](std::size_t v, int ring, const std::vector<std::int32_t>& faces) {
+    auto pole = [&](std::size_t v, int ring, const std::vector<std::int32_t>& faces, std::size_t& stayed) {
         if (auto hit = reproject(organ.points[v], normals[v], body,
                                  facesNear({organ.points[v]}, kReprojectReachMm, body, faces), kReprojectReachMm)) {
             onBody.points[v] = *hit;
             return;
         }
+        ++stayed;
         const Reader before{organ, l}, after{onBody, l};
         onBody.points[v] = organ.points[v] + (after.centroid(ring) - before.centroid(ring));
     };
-    pole(0, 0, serosaFaces);
-    pole(static_cast<std::size_t>(l.innerPole()), l.ringCount() - 1, cavityFaces);
+    pole(0, 0, serosaFaces, counted.serosaStayed);
+    pole(static_cast<std::size_t>(l.innerPole()), l.ringCount() - 1, cavityFaces, counted.cavityStayed);
+    ++counted.serosaVertices;
+    ++counted.cavityVertices;
+    if (crossings)
+        *crossings = counted;
     return measureUterus(onBody, l);
 }
 

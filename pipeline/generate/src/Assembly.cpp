@@ -477,7 +477,20 @@ MeasuredDescriptors clinicalDescriptors(const scene::CaseSpec& spec, const Surfa
     const auto serosaFaces = sideFaces(boundary, false, -1);
     // The cavity's own wall: not what is draped over a pathology standing in it (beneath one, the displaced
     // organ's wall counts).
-    if (auto body = anatomy::measureBody(organ, layout, boundary, serosaFaces, sideFaces(boundary, true, 0))) {
+    anatomy::BodyCrossings crossings;
+    if (auto body =
+            anatomy::measureBody(organ, layout, boundary, serosaFaces, sideFaces(boundary, true, 0), &crossings)) {
+        // Where nothing of the body lies along a vertex's normal the displaced organ's position is kept: say how often.
+        if (crossings.serosaStayed + crossings.cavityStayed > 0) {
+            char text[320];
+            std::snprintf(text, sizeof text,
+                          "organ: %zu of %zu serosa and %zu of %zu cavity vertices of the template found no body "
+                          "surface within 20 mm along their normal and were measured where the displaced organ has "
+                          "them (beneath a pathology standing in the cavity, the wall it covers)",
+                          crossings.serosaStayed, crossings.serosaVertices, crossings.cavityStayed,
+                          crossings.cavityVertices);
+            out.warnings.push_back(text);
+        }
         c.organ = {body->lengthMm,       body->widthMm,       body->apDepthMm,
                    body->cavityLengthMm, body->cavityWidthMm, body->ellipsoidVolumeMl};
     } else {

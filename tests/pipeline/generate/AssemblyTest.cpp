@@ -272,6 +272,26 @@ TEST(Assembly, OrganDimensionsFollowTheFinalBodyNotTheOrganItGrewFrom) {
     EXPECT_NEAR(o.uterineVolumeMl, 1.331 * d->ellipsoidVolumeMl, 0.03 * d->ellipsoidVolumeMl);
 }
 
+// A template vertex that finds no body surface along its normal keeps the displaced organ's position: never silently.
+TEST(Assembly, NamesTheTemplateVerticesThatFoundNoBodySurface) {
+    const auto& b = syntheticBody();
+    scene::CaseSpec spec = scene::defaultCase();
+    spec.pathologies.clear();
+    SurfaceMesh far = b.boundary; // twice the organ about the external os: the fundus lies far beyond 20 mm
+    for (auto& p : far.points)
+        p = p * 2.0;
+    const auto m = clinicalDescriptors(spec, b.organ.mesh, b.organ.layout, TetMesh{}, far);
+    bool named = false;
+    for (const auto& w : m.warnings)
+        named =
+            named || (w.rfind("organ: ", 0) == 0 && w.find("found no body surface within 20 mm") != std::string::npos);
+    EXPECT_TRUE(named);
+    // On the organ itself every vertex finds its surface: no such warning.
+    const auto same = clinicalDescriptors(spec, b.organ.mesh, b.organ.layout, TetMesh{}, b.boundary);
+    for (const auto& w : same.warnings)
+        EXPECT_EQ(w.find("found no body surface"), std::string::npos) << w;
+}
+
 TEST(Assembly, DescriptorsOfTheCaseAskWarnWhenTheBodyDiffers) {
     const auto& b = syntheticBody();
     scene::CaseSpec spec = scene::defaultCase();

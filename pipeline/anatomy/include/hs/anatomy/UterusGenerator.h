@@ -123,9 +123,19 @@ double ellipsoidVolumeMl(double lengthMm, double widthMm, double apDepthMm);
 /// is never taken for its own). A vertex with no crossing stays where `organ` has it: where a pathology has taken
 /// the place of the cavity's wall and `cavityFaces` leave it out, the wall runs beneath it as in `organ`. Fails with
 /// InvalidInput when `organ` is not an instance of `layout`.
+/// How many of the template's vertices measureBody moved onto the body, and how many found no crossing and stayed
+/// (a pole that stays follows its ring).
+struct BodyCrossings {
+    std::size_t serosaVertices = 0; ///< serosa rings and the fundal pole
+    std::size_t serosaStayed = 0;
+    std::size_t cavityVertices = 0; ///< canal and cavity rings and the cavity pole
+    std::size_t cavityStayed = 0;
+};
+
 [[nodiscard]] Result<UterusDimensions> measureBody(const SurfaceMesh& organ, const TemplateLayout& layout,
                                                    const SurfaceMesh& body,
                                                    const std::vector<std::int32_t>& serosaFaces,
-                                                   const std::vector<std::int32_t>& cavityFaces);
+                                                   const std::vector<std::int32_t>& cavityFaces,
+                                                   BodyCrossings* crossings = nullptr);
 
 } // namespace hs::anatomy
