@@ -238,6 +238,15 @@ TEST(BatchCli, ReportsEveryCaseAndThePagePlotsInHeadlessChromium) {
     const CliRun failed = cli("batch run " + quote(folder.string()) + " --task-index 2");
     EXPECT_EQ(failed.exitCode, 3) << failed.out;
     EXPECT_NE(failed.out.find("failed      healthy-0000-v00: invalid-input: "), std::string::npos) << failed.out;
+    // Two scenes with the same kind of warning, numbers and names apart: the index counts them as one kind.
+    for (const auto& [job, text] : {std::pair<std::string, std::string>{"polyp-0000-v00", "pathology: polyp 'p-1': "
+                                                                                          "seated 8.6 mm away"},
+                                    {"polyp-0001-v00", "pathology: polyp 'p-2': seated 13.8 mm away"}}) {
+        auto record = hs::batch::readStatus(folder.string(), job);
+        ASSERT_TRUE(record.ok() && record->has_value() && (*record)->scene.has_value()) << job;
+        (*record)->scene->warnings.push_back(text);
+        ASSERT_TRUE(hs::batch::writeStatus(folder.string(), **record).ok());
+    }
     const CliRun report = cli("batch report " + quote(folder.string()));
     ASSERT_EQ(report.exitCode, 0) << report.out;
     const std::string csv = readText(folder / "report" / "report.csv");
@@ -245,11 +254,16 @@ TEST(BatchCli, ReportsEveryCaseAndThePagePlotsInHeadlessChromium) {
     EXPECT_NE(csv.find("polyp-0000-v00,polyp,ok,"), std::string::npos) << csv;
     EXPECT_NE(csv.find("healthy-0000-v00,healthy,failed,\"invalid-input: "), std::string::npos) << csv;
     EXPECT_NE(report.out.find("1 page of cases"), std::string::npos) << report.out;
+    EXPECT_NE(csv.find(",warnings,output\n"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("pathology: polyp 'p-2': seated 13.8 mm away"), std::string::npos) << csv;
     const std::string html = readText(folder / "report" / "report.html");
     EXPECT_NE(html.find("<a href=\"pages/cases-0001.html\">1</a></td><td>1-3</td>"), std::string::npos);
     // The failed job is listed on the index with its error, linked to its row.
     EXPECT_NE(html.find("<li><a href=\"pages/cases-0001.html#healthy-0000-v00\">healthy-0000-v00</a>: invalid-input: "),
               std::string::npos);
+    EXPECT_NE(html.find("<tr><td>2</td><td>pathology: polyp &#39;...&#39;: seated N mm away</td></tr>"),
+              std::string::npos)
+        << html.substr(html.find("<h2>Warnings</h2>"), 2000);
     const std::string page = readText(folder / "report" / "pages" / "cases-0001.html");
     EXPECT_NE(page.find("data:image/png;base64,"), std::string::npos); // organ thumbnails, inlined
     EXPECT_NE(page.find("<tr id=\"polyp-0000-v00\" class=\"ok\">"), std::string::npos);

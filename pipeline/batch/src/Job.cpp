@@ -112,6 +112,7 @@ SceneSummary summarise(const generate::Generated& generated) {
                                        p.figo ? p.figo->toString() : std::string(), p.lasmar ? p.lasmar->total() : -1});
     for (const StepTiming& step : generated.timings.steps)
         summary.stageSeconds.emplace_back(step.name, step.seconds);
+    summary.warnings = s.warnings;
     return summary;
 }
 

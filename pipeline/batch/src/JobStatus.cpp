@@ -45,6 +45,7 @@ ordered_json sceneJson(const SceneSummary& s) {
     for (const auto& [name, seconds] : s.stageSeconds)
         stages.push_back({{"stage", name}, {"seconds", seconds}});
     j["stages"] = stages;
+    j["warnings"] = s.warnings;
     return j;
 }
 
@@ -93,6 +94,17 @@ void readScene(const json& v, const std::string& path, SceneSummary& s, JsonIssu
             r.finish();
             s.stageSeconds.push_back(std::move(stage));
         }
+    }
+    if (const json* list = o.member("warnings", false); list && list->is_array()) {
+        for (std::size_t i = 0; i < list->size(); ++i) {
+            if (!(*list)[i].is_string()) {
+                issues.push_back({o.pathOf("warnings") + "/" + std::to_string(i), "expected a string"});
+                continue;
+            }
+            s.warnings.push_back((*list)[i].get<std::string>());
+        }
+    } else if (list) {
+        issues.push_back({o.pathOf("warnings"), "expected an array of strings"});
     }
     o.finish();
 }

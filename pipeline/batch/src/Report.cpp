@@ -12,12 +12,14 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <map>
 #include <optional>
+#include <set>
 #include <unistd.h>
 
 namespace hs::batch {
@@ -88,10 +90,10 @@ std::string measuredPathologies(const SceneSummary& s) {
 /// The columns of the table, in order, for the CSV and the page.
 const std::vector<std::string>& columns() {
     static const std::vector<std::string> names{
-        "job",    "template",  "state",      "error",      "seconds",         "peakMemoryMb",   "ageYears",
-        "parity", "gravidity", "menopausal", "asked",      "measured",        "lengthMm",       "widthMm",
-        "apMm",   "volumeMl",  "vertices",   "tetrahedra", "meanRadiusRatio", "minDihedralDeg", "slivers",
-        "output"};
+        "job",      "template",  "state",      "error",      "seconds",         "peakMemoryMb",   "ageYears",
+        "parity",   "gravidity", "menopausal", "asked",      "measured",        "lengthMm",       "widthMm",
+        "apMm",     "volumeMl",  "vertices",   "tetrahedra", "meanRadiusRatio", "minDihedralDeg", "slivers",
+        "warnings", "output"};
     return names;
 }
 
@@ -126,8 +128,10 @@ std::vector<std::string> cells(const Row& r) {
         c[18] = number(s.meanRadiusRatio, 3);
         c[19] = number(s.minDihedralDeg, 1);
         c[20] = std::to_string(s.slivers);
+        for (const std::string& w : s.warnings)
+            c[21] += (c[21].empty() ? "" : "\n") + w;
     }
-    c[21] = r.job->output;
+    c[22] = r.job->output;
     return c;
 }
 
@@ -504,6 +508,33 @@ std::string casePage(const std::string& title, const std::vector<Row>& rows, std
     return h + "</table>\n" + nav + "</body></html>\n";
 }
 
+/// A scene warning with its numbers and quoted names taken out, so that the same warning of many scenes counts as
+/// one kind: "pathology: polyp '...': at its nominal seat it would cover or hide the right tubal ostium; seated N mm
+/// away on the same wall".
+std::string warningKind(const std::string& warning) {
+    std::string kind;
+    for (std::size_t i = 0; i < warning.size() && kind.size() < 160; ++i) {
+        const char ch = warning[i];
+        if (ch == '\'') {
+            const std::size_t end = warning.find('\'', i + 1);
+            if (end != std::string::npos) {
+                kind += "'...'";
+                i = end;
+                continue;
+            }
+        }
+        if (std::isdigit(static_cast<unsigned char>(ch))) {
+            while (i + 1 < warning.size() &&
+                   (std::isdigit(static_cast<unsigned char>(warning[i + 1])) || warning[i + 1] == '.'))
+                ++i;
+            kind += 'N';
+            continue;
+        }
+        kind += ch;
+    }
+    return kind;
+}
+
 /// The index: the summary, the distributions, one line per page of cases, and every job not ok with its error.
 std::string indexPage(const std::string& title, const std::vector<Row>& rows, std::size_t rowsPerPage,
                       const std::vector<Chart>& charts, const std::string& chartLibrary, const std::string& summary) {
@@ -536,6 +567,29 @@ std::string indexPage(const std::string& title, const std::vector<Row>& rows, st
              std::to_string(failed) + "</td><td>" + std::to_string(last - first - ok - failed) + "</td></tr>\n";
     }
     h += "</table>\n";
+    // Every warning kind with the number of scenes that have it: a fallback or a missed bar is never hidden.
+    std::map<std::string, std::size_t> kinds;
+    for (const Row& r : rows) {
+        if (!r.record || !r.record->scene)
+            continue;
+        std::set<std::string> ofScene;
+        for (const std::string& w : r.record->scene->warnings)
+            ofScene.insert(warningKind(w));
+        for (const std::string& k : ofScene)
+            ++kinds[k];
+    }
+    h += "<h2>Warnings</h2>\n";
+    if (kinds.empty()) {
+        h += "<p>No scene has a warning.</p>\n";
+    } else {
+        std::vector<std::pair<std::string, std::size_t>> sorted(kinds.begin(), kinds.end());
+        std::stable_sort(sorted.begin(), sorted.end(),
+                         [](const auto& a, const auto& b) { return a.second > b.second; });
+        h += "<table>\n<tr><th>scenes</th><th>warning (numbers as N, names as '...')</th></tr>\n";
+        for (const auto& [kind, count] : sorted)
+            h += "<tr><td>" + std::to_string(count) + "</td><td>" + htmlEscape(kind) + "</td></tr>\n";
+        h += "</table>\n";
+    }
     if (!notOk.empty())
         h += "<h2>Jobs that failed</h2>\n<ul>\n" + notOk + "</ul>\n";
     h += io::chartScripts(chartLibrary, chartConfigs(charts));

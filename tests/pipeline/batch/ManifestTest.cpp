@@ -148,6 +148,7 @@ TEST(JobStatus, WritesAndReadsBackARecord) {
     s.vertices = 10;
     s.pathologies.push_back({"p1", "polyp", 8.0, "", -1});
     s.stageSeconds.emplace_back("organ", 0.5);
+    s.warnings.push_back("pathology: polyp 'p1': seated 2.0 mm away");
     r.state = JobState::Ok;
     r.error.reset();
     r.scene = s;

@@ -47,6 +47,7 @@ struct SceneSummary {
     std::size_t slivers = 0;
     std::vector<PathologySummary> pathologies;
     std::vector<std::pair<std::string, double>> stageSeconds; ///< per stage, in order
+    std::vector<std::string> warnings; ///< the scene's warnings (report.json); optional when read
 };
 
 struct StatusRecord {
