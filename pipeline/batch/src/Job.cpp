@@ -197,6 +197,16 @@ DoneCheck checkJobDone(const std::string& batchFolder, const Job& job) {
     return check;
 }
 
+StatusRecord recordOf(const Job& job, JobState state) {
+    StatusRecord record;
+    record.job = job.name;
+    record.index = job.index;
+    record.seed = job.seed;
+    record.output = job.output;
+    record.state = state;
+    return record;
+}
+
 bool jobIsDone(const std::string& batchFolder, const Job& job) {
     return checkJobDone(batchFolder, job).done;
 }

@@ -113,12 +113,7 @@ std::string describeEnd(int status) {
 
 /// A failed record of a job process as the runner saw it (the error is the caller's).
 StatusRecord processRecord(const Job& job, const Child& child, const rusage& usage) {
-    StatusRecord failed;
-    failed.job = job.name;
-    failed.index = job.index;
-    failed.seed = job.seed;
-    failed.output = job.output;
-    failed.state = JobState::Failed;
+    StatusRecord failed = recordOf(job, JobState::Failed);
     failed.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - child.start).count();
     failed.peakMemoryMb = std::max(static_cast<double>(usage.ru_maxrss) / 1024.0, child.peakResidentMib);
     failed.host = hostName();

@@ -35,12 +35,7 @@ inline void markDone(const std::string& folder, const Job& job) {
     const auto key = jobKey(folder, job);
     ASSERT_TRUE(key.ok()) << key.error().detail;
     ASSERT_TRUE(io::writeFileAtomically((package / "manifest.json").string(), "{}").ok());
-    StatusRecord r;
-    r.job = job.name;
-    r.index = job.index;
-    r.seed = job.seed;
-    r.output = job.output;
-    r.state = JobState::Ok;
+    StatusRecord r = recordOf(job, JobState::Ok);
     r.packageManifestSha256 = scene::sha256Hex("{}");
     r.caseSha256 = key->caseSha256;
     r.tools = key->tools;

@@ -56,6 +56,9 @@ struct DoneCheck {
 /// cheap check, without verifying every file: runJob verified them before it wrote the record).
 DoneCheck checkJobDone(const std::string& batchFolder, const Job& job);
 
+/// A record of `job` in `state` with the job's name, index, seed and output filled in.
+StatusRecord recordOf(const Job& job, JobState state);
+
 /// Runs `job` of the plan in `batchFolder`. Never fails as a call: every failure (an unreadable case, a pathology
 /// that does not fit the drawn organ, an I/O error, an exception) is recorded in the job's status record as
 /// failed, with the error, and returned.
