@@ -372,6 +372,10 @@
         <translation>Auch als .zip</translation>
     </message>
     <message>
+        <source>Also the formats of other tools: glTF, Gmsh MSH, OBJ, SOFA</source>
+        <translation>Auch die Formate anderer Werkzeuge: glTF, Gmsh MSH, OBJ, SOFA</translation>
+    </message>
+    <message>
         <source>More than one: a new patient of the same description per variant, each in folder/variant-NNN with its own seed</source>
         <translation>Mehr als eine: pro Variante eine neue Patientin mit derselben Beschreibung, jeweils in Ordner/variant-NNN mit eigenem Startwert</translation>
     </message>

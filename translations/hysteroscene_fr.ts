@@ -372,6 +372,10 @@
         <translation>Également en .zip</translation>
     </message>
     <message>
+        <source>Also the formats of other tools: glTF, Gmsh MSH, OBJ, SOFA</source>
+        <translation>Aussi les formats d’autres outils : glTF, Gmsh MSH, OBJ, SOFA</translation>
+    </message>
+    <message>
         <source>More than one: a new patient of the same description per variant, each in folder/variant-NNN with its own seed</source>
         <translation>Plus d&apos;une : une nouvelle patiente de même description par variante, chacune dans dossier/variant-NNN avec sa propre graine</translation>
     </message>

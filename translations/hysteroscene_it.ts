@@ -372,6 +372,10 @@
         <translation>Anche come .zip</translation>
     </message>
     <message>
+        <source>Also the formats of other tools: glTF, Gmsh MSH, OBJ, SOFA</source>
+        <translation>Anche i formati di altri strumenti: glTF, Gmsh MSH, OBJ, SOFA</translation>
+    </message>
+    <message>
         <source>More than one: a new patient of the same description per variant, each in folder/variant-NNN with its own seed</source>
         <translation>Più di una: una nuova paziente con la stessa descrizione per ogni variante, ciascuna in cartella/variant-NNN con il proprio seme</translation>
     </message>

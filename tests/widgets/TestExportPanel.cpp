@@ -62,11 +62,15 @@ void TestExportPanel::writesAndValidatesThePackage() {
     const QString folder = dir.filePath("scene");
     panel.setFolder(folder);
     panel.findChild<QCheckBox*>("exportZipCheck")->setChecked(true);
+    QVERIFY(!panel.findChild<QCheckBox*>("exportFormatsCheck")->isChecked()); // other tools' formats on request
+    panel.findChild<QCheckBox*>("exportFormatsCheck")->setChecked(true);
     QSignalSpy exported(&session, &GenerationSession::exported);
     panel.findChild<QPushButton*>("exportButton")->click();
     QVERIFY(exported.wait(180000));
     QVERIFY(hs::scene::verifyScenePackage(QFile::encodeName(folder).toStdString()).ok());
     QVERIFY(QFile::exists(folder + ".zip"));
+    for (const char* file : {"surface.glb", "mesh.msh", "surface.obj", "scene.scn"})
+        QVERIFY2(QFile::exists(folder + "/" + file), file);
     const QString text = panel.findChild<QLabel*>("exportResultLabel")->text();
     QVERIFY2(text.contains("valid") && text.contains("scope"), qPrintable(text));
     QCOMPARE(panel.lastPackage(), folder);
@@ -109,6 +113,8 @@ void TestExportPanel::writesOneFolderPerVariant() {
                      QFile::encodeName(QDir(dir.filePath("variants")).filePath(name)).toStdString())
                      .ok(),
                  name);
+    // Without the other tools' formats asked for, the package holds what the simulator and the workstation read.
+    QVERIFY(!QFile::exists(QDir(dir.filePath("variants")).filePath("variant-000/surface.glb")));
 }
 
 QTEST_MAIN(TestExportPanel)

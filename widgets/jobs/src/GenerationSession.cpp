@@ -118,10 +118,11 @@ void GenerationSession::runThrough(generate::Stage last) {
 namespace {
 
 /// Writes `scene` to `folder`, verifies it and checks the scope's passage.
-Result<ExportedPackage> writeAndCheck(const scene::Scene& scene, const QString& folder, bool zip, Progress& progress) {
+Result<ExportedPackage> writeAndCheck(const scene::Scene& scene, const QString& folder, bool zip,
+                                      const scene::PackageWriteOptions& formats, Progress& progress) {
     const std::string path = QFile::encodeName(folder).toStdString();
     auto writeSub = progress.sub(0.0, 0.7);
-    auto written = scene::writeScenePackage(scene, path, {}, writeSub);
+    auto written = scene::writeScenePackage(scene, path, formats, writeSub);
     if (!written)
         return written.failure();
     auto verified = scene::verifyScenePackage(path);
@@ -150,7 +151,8 @@ Result<ExportedPackage> writeAndCheck(const scene::Scene& scene, const QString& 
 
 } // namespace
 
-void GenerationSession::exportPackage(const QString& folder, bool zip, int variants) {
+void GenerationSession::exportPackage(const QString& folder, bool zip, int variants,
+                                      const scene::PackageWriteOptions& formats) {
     m_autoTimer.stop();
     auto previous = m_results;
     struct Exported {
@@ -161,7 +163,7 @@ void GenerationSession::exportPackage(const QString& folder, bool zip, int varia
     const auto count = static_cast<std::size_t>(std::max(1, variants));
     m_runner.start<Exported>(
         tr("Exporting the scene"), m_document.revision(),
-        [previous, spec = m_document.spec(), params = params(), absolute, zip,
+        [previous, spec = m_document.spec(), params = params(), absolute, zip, formats,
          count](Progress& progress) -> Result<Exported> {
             Exported out;
             out.written.folder = absolute;
@@ -187,7 +189,7 @@ void GenerationSession::exportPackage(const QString& folder, bool zip, int varia
                     count == 1 ? absolute
                                : QDir(absolute).filePath(QString::fromStdString(generate::variantFolderName(i)));
                 auto writeSub = part.sub(0.85, 1.0);
-                auto package = writeAndCheck(*generated->scene, target, zip, writeSub);
+                auto package = writeAndCheck(*generated->scene, target, zip, formats, writeSub);
                 if (!package)
                     return package.failure();
                 out.written.packages.push_back(std::move(package).value());

@@ -42,6 +42,9 @@ ExportPanel::ExportPanel(CaseDocument& document, GenerationSession& session, QWi
     m_zipCheck = new QCheckBox(tr("Also as a .zip"), group);
     m_zipCheck->setObjectName("exportZipCheck");
     form->addRow(QString(), m_zipCheck);
+    m_formatsCheck = new QCheckBox(tr("Also the formats of other tools: glTF, Gmsh MSH, OBJ, SOFA"), group);
+    m_formatsCheck->setObjectName("exportFormatsCheck");
+    form->addRow(QString(), m_formatsCheck);
 
     m_variantsSpin = new QSpinBox(group);
     m_variantsSpin->setObjectName("exportVariantsSpin");
@@ -98,7 +101,9 @@ void ExportPanel::onExport() {
         return;
     }
     m_resultLabel->setText(tr("Exporting..."));
-    m_session.exportPackage(QDir::fromNativeSeparators(target), m_zipCheck->isChecked(), m_variantsSpin->value());
+    m_session.exportPackage(QDir::fromNativeSeparators(target), m_zipCheck->isChecked(), m_variantsSpin->value(),
+                            m_formatsCheck->isChecked() ? scene::PackageWriteOptions::all()
+                                                        : scene::PackageWriteOptions{});
 }
 
 void ExportPanel::onExported(const ExportResult& result) {

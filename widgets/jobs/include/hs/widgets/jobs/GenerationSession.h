@@ -61,8 +61,10 @@ public:
     void runThrough(generate::Stage last);
     /// Runs every stage, writes the scene package to `folder` (and `folder`.zip when `zip`), verifies it and checks
     /// that a 2.9 mm scope passes. With `variants` > 1, writes folder/variant-NNN for each variant seed instead (as
-    /// `hysteroscene-cli generate --variants` does).
-    void exportPackage(const QString& folder, bool zip, int variants = 1);
+    /// `hysteroscene-cli generate --variants` does). `formats`: the other tools' formats written besides (glTF, MSH,
+    /// OBJ, SOFA; none by default, as `generate --formats`).
+    void exportPackage(const QString& folder, bool zip, int variants = 1,
+                       const scene::PackageWriteOptions& formats = {});
     /// Rebuilds the organ after each edit (default on); the delay lets edits in a row end first.
     void setAutoUpdate(bool enabled) { m_autoUpdate = enabled; }
     static constexpr int kAutoUpdateDelayMs = 250;

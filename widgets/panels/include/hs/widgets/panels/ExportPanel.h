@@ -50,6 +50,7 @@ private:
     QLineEdit* m_folderEdit = nullptr;
     QPushButton* m_browseButton = nullptr;
     QCheckBox* m_zipCheck = nullptr;
+    QCheckBox* m_formatsCheck = nullptr; ///< also glTF, MSH, OBJ and SOFA
     QSpinBox* m_variantsSpin = nullptr;
     QPushButton* m_exportButton = nullptr;
     QLabel* m_resultLabel = nullptr;
