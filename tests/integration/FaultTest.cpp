@@ -18,7 +18,9 @@
 #include <thread>
 #include <vector>
 
+#include <cstring>
 #include <fcntl.h>
+#include <sys/mount.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -266,6 +268,67 @@ TEST(Faults, AFullDiskGivesANamedErrorAndLeavesNoHalfPackage) {
     EXPECT_TRUE(hs::scene::verifyScenePackage(target).ok());
     EXPECT_EQ(readText(fs::path(target) / "manifest.json"), before);
     EXPECT_EQ(strayTemporaries(tmp.path()), std::vector<std::string>{});
+}
+
+/// A size-limited tmpfs mounted at `folder` for the test's life; unmounted (lazily) when it ends.
+class SmallFileSystem {
+public:
+    SmallFileSystem(const fs::path& folder, std::uintmax_t bytes) : m_folder(folder) {
+        fs::create_directories(folder);
+        const std::string options = "size=" + std::to_string(bytes) + ",mode=0755";
+        if (::mount("tmpfs", folder.c_str(), "tmpfs", MS_NOSUID | MS_NODEV, options.c_str()) == 0)
+            m_mounted = true;
+        else
+            m_why = std::strerror(errno);
+    }
+    ~SmallFileSystem() {
+        if (m_mounted)
+            ::umount2(m_folder.c_str(), MNT_DETACH);
+    }
+    SmallFileSystem(const SmallFileSystem&) = delete;
+    SmallFileSystem& operator=(const SmallFileSystem&) = delete;
+    bool mounted() const { return m_mounted; }
+    const std::string& why() const { return m_why; }
+
+private:
+    fs::path m_folder;
+    bool m_mounted = false;
+    std::string m_why;
+};
+
+std::uintmax_t folderBytes(const fs::path& folder) {
+    std::uintmax_t bytes = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(folder))
+        if (entry.is_regular_file())
+            bytes += entry.file_size();
+    return bytes;
+}
+
+// A real full file system, not a per-file size limit: a tmpfs with room for one package and a half. The first package
+// fits; replacing it needs room for a second beside it (the writer's temporary folder), runs out of space, and says
+// so by name, leaving the first package as it was and nothing else.
+TEST(Faults, AFullFileSystemGivesANamedErrorAndLeavesThePackageAsItWas) {
+    hs::test::TempDir tmp("hs-fullfs");
+    const std::string first = writeTinyCase(tmp, 1);
+    ASSERT_EQ(runCli({"generate", first, "-o", tmp.file("reference")}, tmp).exitCode, 0);
+    const std::uintmax_t packageBytes = folderBytes(tmp.path() / "reference");
+    const fs::path mountPoint = tmp.path() / "small";
+    SmallFileSystem small(mountPoint, packageBytes * 3 / 2);
+    if (!small.mounted())
+        GTEST_SKIP() << "cannot mount a size-limited tmpfs here (" << small.why()
+                     << "; it needs root with CAP_SYS_ADMIN): the full file system was not tested";
+    const std::string target = (mountPoint / "scene").string();
+    ASSERT_EQ(runCli({"generate", first, "-o", target}, tmp).exitCode, 0);
+    const std::string before = readText(fs::path(target) / "manifest.json");
+    const auto run = runCli({"generate", writeTinyCase(tmp, 2), "-o", target}, tmp);
+    EXPECT_NE(run.exitCode, 0) << run.out;
+    EXPECT_NE(run.out.find("No space left on device"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find(target), std::string::npos) << run.out;
+    EXPECT_TRUE(hs::scene::verifyScenePackage(target).ok());
+    EXPECT_EQ(readText(fs::path(target) / "manifest.json"), before);
+    EXPECT_EQ(strayTemporaries(mountPoint), std::vector<std::string>{});
+    // The space the failed write took is given back: the package alone is left.
+    EXPECT_EQ(folderBytes(mountPoint), packageBytes);
 }
 
 TEST(Faults, AReadOnlyOutputFolderGivesANamedError) {
