@@ -35,15 +35,6 @@ constexpr double kFundalWallSd = 1.2;     ///< mm at 12 mm
 constexpr double kWidthSd = 2.2;          ///< mm at 45 mm, besides the cavity's share
 constexpr double kApDepthSd = 3.5;        ///< mm at 40 mm
 
-double truncatedNormal(Rng& rng, double mean, double sd, double lo, double hi) {
-    for (int i = 0; i < 64; ++i) {
-        const double v = rng.normal(mean, sd);
-        if (v >= lo && v <= hi)
-            return v;
-    }
-    return std::clamp(mean, lo, hi);
-}
-
 int drawIndex(Rng& rng, const double* weights, int n) {
     double u = rng.uniform();
     for (int i = 0; i < n; ++i) {
@@ -124,8 +115,8 @@ Relations relations(const clinical::PatientParams& p, double menopauseAge) {
 
 clinical::PatientParams samplePatient(Rng& rng, double* menopauseAgeYears) {
     clinical::PatientParams p;
-    p.ageYears = truncatedNormal(rng, kAgeMean, kAgeSd, 18.0, 85.0);
-    const double menopause = truncatedNormal(rng, kMenopauseMean, kMenopauseSd, 40.0, 60.0);
+    p.ageYears = rng.truncatedNormal(kAgeMean, kAgeSd, 18.0, 85.0);
+    const double menopause = rng.truncatedNormal(kMenopauseMean, kMenopauseSd, 40.0, 60.0);
     p.menopausal = p.ageYears >= menopause;
     // Parity by age group (assumed distributions of a Western population).
     static const double young[] = {0.75, 0.20, 0.05};
@@ -139,8 +130,8 @@ clinical::PatientParams samplePatient(Rng& rng, double* menopauseAgeYears) {
         p.parity = drawIndex(rng, older, 7);
     static const double extra[] = {0.60, 0.28, 0.09, 0.03};
     p.gravidity = std::min(10, p.parity + drawIndex(rng, extra, 4));
-    p.heightCm = truncatedNormal(rng, kHeightMean, kHeightSd, 140.0, 195.0);
-    const double bmi = truncatedNormal(rng, kBmiMean, kBmiSd, 17.0, 45.0);
+    p.heightCm = rng.truncatedNormal(kHeightMean, kHeightSd, 140.0, 195.0);
+    const double bmi = rng.truncatedNormal(kBmiMean, kBmiSd, 17.0, 45.0);
     p.weightKg = std::clamp(bmi * (p.heightCm / 100.0) * (p.heightCm / 100.0), 35.0, 160.0);
     if (menopauseAgeYears)
         *menopauseAgeYears = menopause;
@@ -197,8 +188,8 @@ UterusShapeParams sampleShape(const clinical::PatientParams& patient, double men
     s.cavityWidthMm += cavityWidthNoise;
     s.cavityDepthMm = std::max(2.0, s.cavityDepthMm + rng.normal(0.0, kCavityDepthSd) * shrink);
     // The canal narrows with the atrophy after menopause, like the cavity.
-    s.internalOsWidthMm = truncatedNormal(rng, 7.5, 1.75, 4.0, 11.0) * shrink;
-    s.cornualAngleDeg = truncatedNormal(rng, 63.5, 12.3, 35.0, 92.0);
+    s.internalOsWidthMm = rng.truncatedNormal(7.5, 1.75, 4.0, 11.0) * shrink;
+    s.cornualAngleDeg = rng.truncatedNormal(63.5, 12.3, 35.0, 92.0);
     s.fundalWallMm = std::max(6.0, s.fundalWallMm + rng.normal(0.0, kFundalWallSd) * m.fundalWallMm / 12.0);
     // A wider cavity comes with a wider organ.
     s.widthMm += cavityWidthNoise + rng.normal(0.0, kWidthSd) * m.widthMm / 45.0;
@@ -207,10 +198,10 @@ UterusShapeParams sampleShape(const clinical::PatientParams& patient, double men
     // [Retroversion]).
     const bool retroverted = rng.bernoulli(0.2);
     s.versionDeg =
-        retroverted ? truncatedNormal(rng, -25.0, 10.0, -60.0, -5.0) : truncatedNormal(rng, 20.0, 10.0, 0.0, 60.0);
+        retroverted ? rng.truncatedNormal(-25.0, 10.0, -60.0, -5.0) : rng.truncatedNormal(20.0, 10.0, 0.0, 60.0);
     const bool retroflexed = retroverted ? rng.bernoulli(0.6) : rng.bernoulli(0.05);
     s.flexionDeg =
-        retroflexed ? truncatedNormal(rng, -20.0, 10.0, -50.0, 0.0) : truncatedNormal(rng, 22.0, 12.0, -5.0, 55.0);
+        retroflexed ? rng.truncatedNormal(-20.0, 10.0, -50.0, 0.0) : rng.truncatedNormal(22.0, 12.0, -5.0, 55.0);
     s.lateralAsymmetry = std::clamp(rng.normal(0.0, 0.04), -0.12, 0.12);
     s.apAsymmetry = std::clamp(rng.normal(0.0, 0.04), -0.12, 0.12);
     s.cornualHeightAsymmetryMm = std::clamp(rng.normal(0.0, 0.8), -2.5, 2.5);

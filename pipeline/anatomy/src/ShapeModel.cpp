@@ -102,12 +102,8 @@ SurfaceMesh organFrom(const ShapeModel::Data& d, const Eigen::VectorXd& v) {
 /// Standard normal deviates truncated at kTruncation: samples stay where the training shapes are.
 Eigen::VectorXd truncatedNormals(Rng& rng, Eigen::Index k) {
     Eigen::VectorXd z(k);
-    for (Eigen::Index i = 0; i < k; ++i) {
-        double v = rng.normal();
-        while (std::abs(v) > kTruncation)
-            v = rng.normal();
-        z(i) = v;
-    }
+    for (Eigen::Index i = 0; i < k; ++i)
+        z(i) = rng.truncatedNormal(0.0, 1.0, -kTruncation, kTruncation);
     return z;
 }
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace hs {
 namespace {
@@ -62,6 +63,17 @@ std::int64_t Rng::between(std::int64_t lo, std::int64_t hi) {
     if (span == 0) // the full 64-bit range
         return static_cast<std::int64_t>(next());
     return static_cast<std::int64_t>(static_cast<std::uint64_t>(lo) + below(span));
+}
+
+double Rng::truncatedNormal(double mean, double sd, double lo, double hi) {
+    if (!(sd > 0.0) || !(lo <= hi))
+        throw std::invalid_argument("Rng::truncatedNormal: needs sd > 0 and lo <= hi");
+    for (int draw = 0; draw < 1000000; ++draw) {
+        const double v = normal(mean, sd);
+        if (v >= lo && v <= hi)
+            return v;
+    }
+    throw std::invalid_argument("Rng::truncatedNormal: [lo, hi] holds almost none of the normal's mass");
 }
 
 double Rng::normal() {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 #include <cmath>
 #include <vector>
 
@@ -69,6 +71,22 @@ TEST(Rng, NormalHasUnitVarianceAndZeroMean) {
     const double mean = sum / n;
     EXPECT_NEAR(mean, 0.0, 0.01);
     EXPECT_NEAR(sum2 / n - mean * mean, 1.0, 0.02);
+}
+
+TEST(Rng, TruncatedNormalKeepsTheNormalsDrawsInsideItsInterval) {
+    Rng a(11), b(11);
+    for (int i = 0; i < 2000; ++i) {
+        const double v = a.truncatedNormal(2.0, 1.5, 0.5, 4.0);
+        ASSERT_GE(v, 0.5);
+        ASSERT_LE(v, 4.0);
+        double w = b.normal(2.0, 1.5); // the same draws, those outside redrawn
+        while (w < 0.5 || w > 4.0)
+            w = b.normal(2.0, 1.5);
+        ASSERT_EQ(v, w);
+    }
+    EXPECT_THROW(a.truncatedNormal(0.0, 1.0, 1.0, -1.0), std::invalid_argument);
+    EXPECT_THROW(a.truncatedNormal(0.0, 0.0, -1.0, 1.0), std::invalid_argument);
+    EXPECT_THROW(a.truncatedNormal(0.0, 1.0, 50.0, 51.0), std::invalid_argument); // no draw ever lands there
 }
 
 TEST(Rng, DerivedGeneratorsAreIndependentAndReproducible) {

@@ -28,6 +28,10 @@ public:
     /// Standard normal deviate (Marsaglia polar method).
     double normal();
     double normal(double mean, double sd) { return mean + sd * normal(); }
+    /// A normal deviate of `mean` and `sd` drawn again until it lies in [lo, hi]: the normal's density cut to the
+    /// interval (rejection sampling; the one sampler of truncated normals). The interval must hold a fair share of the
+    /// mass: std::invalid_argument for sd <= 0, lo > hi, or a million draws without one inside.
+    double truncatedNormal(double mean, double sd, double lo, double hi);
     /// True with probability p.
     bool bernoulli(double p) { return uniform() < p; }
 
