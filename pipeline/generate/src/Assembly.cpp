@@ -489,7 +489,7 @@ MeasuredDescriptors clinicalDescriptors(const scene::CaseSpec& spec, const Surfa
                           "them (beneath a pathology standing in the cavity, the wall it covers)",
                           crossings.serosaStayed, crossings.serosaVertices, crossings.cavityStayed,
                           crossings.cavityVertices);
-            out.warnings.push_back(text);
+            out.measurementWarnings.push_back(text);
         }
         c.organ = {body->lengthMm,       body->widthMm,       body->apDepthMm,
                    body->cavityLengthMm, body->cavityWidthMm, body->ellipsoidVolumeMl};
@@ -723,6 +723,8 @@ Result<scene::Scene> assembleScene(const scene::CaseSpec& spec, const OrganInsta
         s.warnings.push_back("meshing: " + w);
     for (const auto& w : descriptors.warnings)
         s.warnings.push_back("descriptors: " + w);
+    for (const auto& w : descriptors.measurementWarnings)
+        s.warnings.push_back("measurement: " + w);
     if (!hydrometraWarning.empty())
         s.warnings.push_back(hydrometraWarning);
     HS_TRY(scene::checkScene(s));
