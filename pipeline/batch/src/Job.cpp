@@ -176,11 +176,13 @@ Result<JobKey> jobKey(const std::string& batchFolder, const Job& job) {
 
 DoneCheck checkJobDone(const std::string& batchFolder, const Job& job) {
     DoneCheck check;
+    if (auto key = jobKey(batchFolder, job))
+        check.key = std::move(key).value();
     auto record = readStatus(batchFolder, job.name);
     if (!record || !*record || (*record)->state != JobState::Ok || (*record)->seed != job.seed)
         return check;
     const StatusRecord& ok = **record;
-    auto key = jobKey(batchFolder, job);
+    const std::optional<JobKey>& key = check.key;
     if (!key)
         return check; // the job runs and records why its case cannot be read
     if (ok.caseSha256.empty())
@@ -227,16 +229,10 @@ JobRun runJob(const std::string& batchFolder, const Job& job, const RunJobParams
         return run;
     }
     run.rerunReason = done.rerunReason;
-    const auto key = jobKey(batchFolder, job);
-    if (key) {
-        record.caseSha256 = key->caseSha256;
-        record.tools = key->tools;
-    }
+    const std::optional<JobKey>& key = done.key;
     // A package already in place is adopted only when its own case.json and tool versions are the job's now.
     std::optional<StatusRecord> adopted = key ? adoptExistingPackage(batchFolder, job, *key) : std::nullopt;
     if (adopted) {
-        adopted->caseSha256 = key->caseSha256;
-        adopted->tools = key->tools;
         run.action = JobAction::Skipped;
         record = std::move(*adopted);
     } else {
@@ -258,6 +254,10 @@ JobRun runJob(const std::string& batchFolder, const Job& job, const RunJobParams
     record.index = job.index;
     record.seed = job.seed;
     record.output = job.output;
+    if (key) {
+        record.caseSha256 = key->caseSha256;
+        record.tools = key->tools;
+    }
     record.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     record.peakMemoryMb = peakMemoryMb();
     record.host = hostName();

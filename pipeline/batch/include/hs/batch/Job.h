@@ -50,6 +50,7 @@ struct DoneCheck {
     /// "" unless an ok record exists for a package made from other inputs: "its case was edited after its package
     /// was written", "the tools changed since its package was written (was: ...; now: ...)".
     std::string rerunReason;
+    std::optional<JobKey> key; ///< the job's key now; unset when its case cannot be read
 };
 
 /// Whether `job` has an ok record made with its key now, whose package manifest still has the recorded checksum (a
