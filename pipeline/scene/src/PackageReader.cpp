@@ -290,6 +290,10 @@ Status readMeshes(const fs::path& root, const PackageManifest& manifest, const P
                                                      std::to_string(uv->second.components) + " components, expected 2");
         // Stored with VTK's bottom-left origin as (u, 1 - v) in Float64 (io::WriteOptions::textureOriginTopLeft).
         const auto& v = uv->second.values;
+        if (v.size() != 2 * scene.surface.mesh.points.size())
+            return fail(ErrorCode::InvalidInput, std::string(detail::kSurfaceVtpFile) + ": 'uv' has " +
+                                                     std::to_string(v.size() / 2) + " tuples for " +
+                                                     std::to_string(scene.surface.mesh.points.size()) + " points");
         scene.surface.uvs.reserve(v.size() / 2);
         for (std::size_t i = 0; i + 1 < v.size(); i += 2)
             scene.surface.uvs.push_back({static_cast<float>(v[i]), static_cast<float>(1.0 - v[i + 1])});
