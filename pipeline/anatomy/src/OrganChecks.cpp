@@ -3,10 +3,10 @@
 #include "OrganChecksCgal.h"
 
 #include "hs/core/TriangleGeometry.h"
+#include "hs/core/TriangleGrid.h"
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
 namespace hs::anatomy {
 
@@ -58,44 +58,14 @@ Result<bool> wallAtLeast(const SurfaceMesh& mesh, const TemplateLayout& l, doubl
     HS_TRY(checkInstance(mesh, l));
     if (!(minMm > 0.0))
         return fail(ErrorCode::InvalidInput, "minimum wall thickness must be > 0 mm");
-    // Hash grid of serosa triangles by the cells their bounding boxes touch; a vertex closer than minMm to a
-    // triangle lies in a cell next to one of that triangle's cells.
-    const auto faces = serosaFaces(mesh, l);
-    auto cellOf = [minMm](double v) { return static_cast<std::int64_t>(std::floor(v / minMm)); };
-    auto key = [](std::int64_t i, std::int64_t j, std::int64_t k) {
-        return (static_cast<std::uint64_t>(i & 0x1FFFFF) << 42) | (static_cast<std::uint64_t>(j & 0x1FFFFF) << 21) |
-               static_cast<std::uint64_t>(k & 0x1FFFFF);
-    };
-    std::unordered_map<std::uint64_t, std::vector<std::size_t>> grid;
-    grid.reserve(faces.size() * 2);
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-        Bounds b;
-        for (auto v : faces[f])
-            b.add(mesh.points[static_cast<std::size_t>(v)]);
-        for (auto i = cellOf(b.min.x); i <= cellOf(b.max.x); ++i)
-            for (auto j = cellOf(b.min.y); j <= cellOf(b.max.y); ++j)
-                for (auto k = cellOf(b.min.z); k <= cellOf(b.max.z); ++k)
-                    grid[key(i, j, k)].push_back(f);
-    }
+    SurfaceMesh serosa;
+    serosa.points = mesh.points;
+    serosa.triangles = serosaFaces(mesh, l);
+    const TriangleGrid grid(serosa, 0.0, false);
     const double min2 = minMm * minMm;
-    for (const Vec3& p : innerVertices(mesh, l)) {
-        const auto ci = cellOf(p.x), cj = cellOf(p.y), ck = cellOf(p.z);
-        for (auto i = ci - 1; i <= ci + 1; ++i)
-            for (auto j = cj - 1; j <= cj + 1; ++j)
-                for (auto k = ck - 1; k <= ck + 1; ++k) {
-                    const auto it = grid.find(key(i, j, k));
-                    if (it == grid.end())
-                        continue;
-                    for (auto f : it->second) {
-                        const auto& t = faces[f];
-                        const auto cp = closestPointOnTriangle(p, mesh.points[static_cast<std::size_t>(t[0])],
-                                                               mesh.points[static_cast<std::size_t>(t[1])],
-                                                               mesh.points[static_cast<std::size_t>(t[2])]);
-                        if (cp.distance2 < min2)
-                            return false;
-                    }
-                }
-    }
+    for (const Vec3& p : innerVertices(mesh, l))
+        if (grid.closestWithin(p, min2).triangle >= 0)
+            return false;
     return true;
 }
 

@@ -3,6 +3,7 @@
 #include "Particles.h"
 
 #include "hs/core/Parallel.h"
+#include "hs/core/PointGrid.h"
 #include "hs/meshing/Geometry.h"
 
 #include <algorithm>
@@ -56,42 +57,6 @@ const ProfileTable& profile() {
     return table;
 }
 
-/// A uniform hash of particles by cell (cell = rest distance * cutoff), rebuilt by counting sort.
-struct NeighbourGrid {
-    Vec3 origin;
-    double cell = 1.0;
-    std::int64_t dims[3] = {1, 1, 1};
-    std::vector<std::uint32_t> start;
-    std::vector<std::uint32_t> items;
-
-    void build(const std::vector<Vec3>& points, const Bounds& box, double cellSize) {
-        cell = cellSize;
-        origin = box.min - Vec3(cell, cell, cell);
-        for (int q = 0; q < 3; ++q)
-            dims[q] = static_cast<std::int64_t>(std::floor((box.max[q] - origin[q]) / cell)) + 2;
-        const auto n = static_cast<std::size_t>(dims[0] * dims[1] * dims[2]);
-        start.assign(n + 1, 0);
-        std::vector<std::uint32_t> cellOf(points.size());
-        for (std::size_t i = 0; i < points.size(); ++i) {
-            cellOf[i] = static_cast<std::uint32_t>(cellIndex(points[i]));
-            ++start[cellOf[i] + 1];
-        }
-        for (std::size_t c = 0; c < n; ++c)
-            start[c + 1] += start[c];
-        items.resize(points.size());
-        std::vector<std::uint32_t> cursor(start.begin(), start.end() - 1);
-        for (std::size_t i = 0; i < points.size(); ++i)
-            items[cursor[cellOf[i]]++] = static_cast<std::uint32_t>(i);
-    }
-    std::int64_t coord(const Vec3& p, int q) const {
-        return std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor((p[q] - origin[q]) / cell)), 0,
-                                        dims[q] - 1);
-    }
-    std::size_t cellIndex(const Vec3& p) const {
-        return static_cast<std::size_t>((coord(p, 2) * dims[1] + coord(p, 1)) * dims[0] + coord(p, 0));
-    }
-};
-
 } // namespace
 
 double interactionForce(double d) {
@@ -124,7 +89,7 @@ Result<RelaxationStats> relaxParticles(Particles& ps, const RegionModel& body, c
     Bounds box;
     for (const Vec3& p : ps.position)
         box.add(p);
-    NeighbourGrid neighbours;
+    PointGrid neighbours;
     std::vector<Vec3> next(n);
     std::vector<std::int32_t> nextTriangle(ps.triangle);
     const std::size_t chunks = chunkCount(n, kParticleChunk);
@@ -153,7 +118,10 @@ Result<RelaxationStats> relaxParticles(Particles& ps, const RegionModel& body, c
 
     for (int it = 0; it < iterations; ++it) {
         HS_TRY(progress.check("meshing", "relaxing particles"));
-        neighbours.build(ps.position, box, cutoff);
+        // Cells of one cut-off with a corner one cell below the first box, so every interacting pair lies in
+        // neighbouring cells.
+        neighbours.reset(box, cutoff, box.min - Vec3(cutoff, cutoff, cutoff), 1);
+        neighbours.insertAll(ps.position);
         const double stepScale = motility * r0;
         const double maxStep = kMaxStep * r0;
         parallelChunks(n, kParticleChunk, threads, [&](std::size_t c, std::size_t begin, std::size_t end) {
@@ -166,36 +134,21 @@ Result<RelaxationStats> relaxParticles(Particles& ps, const RegionModel& body, c
                         ? adjacency[static_cast<std::size_t>(si)].faceNormals[static_cast<std::size_t>(ps.triangle[i])]
                         : Vec3{};
                 Vec3 force;
-                std::int64_t cc[3];
-                for (int q = 0; q < 3; ++q)
-                    cc[q] = neighbours.coord(xi, q);
-                for (std::int64_t k = std::max<std::int64_t>(cc[2] - 1, 0);
-                     k <= std::min(cc[2] + 1, neighbours.dims[2] - 1); ++k)
-                    for (std::int64_t j = std::max<std::int64_t>(cc[1] - 1, 0);
-                         j <= std::min(cc[1] + 1, neighbours.dims[1] - 1); ++j) {
-                        const std::int64_t row = (k * neighbours.dims[1] + j) * neighbours.dims[0];
-                        const auto b =
-                            neighbours.start[static_cast<std::size_t>(row + std::max<std::int64_t>(cc[0] - 1, 0))];
-                        const auto e =
-                            neighbours
-                                .start[static_cast<std::size_t>(row + std::min(cc[0] + 1, neighbours.dims[0] - 1)) + 1];
-                        for (std::uint32_t m = b; m < e; ++m) {
-                            const std::uint32_t jdx = neighbours.items[m];
-                            // Boundary particles of two different sheets do not interact: across a layer or slit
-                            // thinner than one edge they would thin each other out (see kCrossSurfaceRadius).
-                            if (jdx == i ||
-                                (si >= 0 && ps.surface[jdx] >= 0 && !sameSheet(ps, adjacency, jdx, si, normalI)))
-                                continue;
-                            const Vec3 dx = xi - ps.position[jdx];
-                            const double d2 = norm2(dx) * invR02;
-                            if (d2 >= kInteractionCutoff * kInteractionCutoff)
-                                continue;
-                            double fOverD = 0.0, e2 = 0.0;
-                            table.lookup(d2, fOverD, e2);
-                            force += dx * (fOverD / r0);
-                            energy += 0.5 * e2;
-                        }
-                    }
+                neighbours.forEachInCellsAround(xi, [&](std::int32_t id) {
+                    const auto jdx = static_cast<std::size_t>(id);
+                    // Boundary particles of two different sheets do not interact: across a layer or slit thinner
+                    // than one edge they would thin each other out (see kCrossSurfaceRadius).
+                    if (jdx == i || (si >= 0 && ps.surface[jdx] >= 0 && !sameSheet(ps, adjacency, jdx, si, normalI)))
+                        return;
+                    const Vec3 dx = xi - ps.position[jdx];
+                    const double d2 = norm2(dx) * invR02;
+                    if (d2 >= kInteractionCutoff * kInteractionCutoff)
+                        return;
+                    double fOverD = 0.0, e2 = 0.0;
+                    table.lookup(d2, fOverD, e2);
+                    force += dx * (fOverD / r0);
+                    energy += 0.5 * e2;
+                });
                 Vec3 moved = xi;
                 const ParticleKind kind = ps.kind[i];
                 if (kind == ParticleKind::Inner || kind == ParticleKind::Surface) {

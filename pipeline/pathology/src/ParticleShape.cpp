@@ -3,6 +3,8 @@
 
 #include "ShapeFields.h"
 
+#include "hs/core/PointGrid.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -39,14 +41,8 @@ Result<SurfaceMesh> particleShape(const ShapeSpec& spec, const SurfaceMesh& orga
     const double rho = std::cbrt(0.64 * volume * 3.0 / (4.0 * kPi * static_cast<double>(n)));
     std::vector<Vec3> cells{spec.center};
     std::vector<Vec3> disp;
-    std::unordered_map<std::int64_t, std::vector<std::size_t>> hash;
-    const double cell = 2.0 * rho;
-    auto key = [&](const Vec3& p, int dx, int dy, int dz) {
-        const auto x = static_cast<std::int64_t>(std::floor(p.x / cell)) + dx;
-        const auto y = static_cast<std::int64_t>(std::floor(p.y / cell)) + dy;
-        const auto z = static_cast<std::int64_t>(std::floor(p.z / cell)) + dz;
-        return (x * 73856093) ^ (y * 19349663) ^ (z * 83492791);
-    };
+    PointGrid neighbours;
+    const double cell = 2.0 * rho; // the repulsion's reach: neighbours lie in the cells around
     for (int generation = 0; cells.size() < n; ++generation) {
         HS_TRY(progress.check("pathology growth"));
         // Division: faster where the surroundings yield (cavity, outside) than in the resisting wall.
@@ -61,33 +57,29 @@ Result<SurfaceMesh> particleShape(const ShapeSpec& spec, const SurfaceMesh& orga
         }
         // Relaxation: short-range repulsion, confinement strong in the wall, weak where it yields.
         for (int it = 0; it < 8; ++it) {
-            hash.clear();
-            for (std::size_t i = 0; i < cells.size(); ++i)
-                hash[key(cells[i], 0, 0, 0)].push_back(i);
+            Bounds box;
+            for (const Vec3& c : cells)
+                box.add(c);
+            neighbours.reset(box, cell);
+            neighbours.insertAll(cells);
             disp.assign(cells.size(), Vec3{});
             for (std::size_t i = 0; i < cells.size(); ++i) {
-                for (int dz = -1; dz <= 1; ++dz)
-                    for (int dy = -1; dy <= 1; ++dy)
-                        for (int dx = -1; dx <= 1; ++dx) {
-                            auto found = hash.find(key(cells[i], dx, dy, dz));
-                            if (found == hash.end())
-                                continue;
-                            for (std::size_t j : found->second) {
-                                if (j <= i)
-                                    continue;
-                                Vec3 d = cells[i] - cells[j];
-                                double len = norm(d);
-                                if (len >= 2.0 * rho)
-                                    continue;
-                                if (len < 1e-9) {
-                                    d = Vec3{1.0, 0.0, 0.0};
-                                    len = 1.0;
-                                }
-                                const Vec3 push = d * (0.25 * (2.0 * rho - norm(cells[i] - cells[j])) / len);
-                                disp[i] += push;
-                                disp[j] -= push;
-                            }
-                        }
+                neighbours.forEachInCellsAround(cells[i], [&](std::int32_t id) {
+                    const auto j = static_cast<std::size_t>(id);
+                    if (j <= i)
+                        return;
+                    Vec3 d = cells[i] - cells[j];
+                    double len = norm(d);
+                    if (len >= 2.0 * rho)
+                        return;
+                    if (len < 1e-9) {
+                        d = Vec3{1.0, 0.0, 0.0};
+                        len = 1.0;
+                    }
+                    const Vec3 push = d * (0.25 * (2.0 * rho - norm(cells[i] - cells[j])) / len);
+                    disp[i] += push;
+                    disp[j] -= push;
+                });
                 const bool wall = inTissue(cells[i]);
                 disp[i] -=
                     (cells[i] - spec.center) * (wall ? 0.02 * tuning.tissueResistance : 0.02 * tuning.yieldResistance);

@@ -1,7 +1,7 @@
 #pragma once
 /// The steps of the bake (bakeAppearance): the texel map, the per-texel shading and the finished maps.
 
-#include "SpatialGrid.h"
+#include "hs/core/PointGrid.h"
 
 #include "hs/texture/Bake.h"
 
@@ -48,7 +48,7 @@ struct TexelMap {
 
 /// Vessel segments bucketed by grid cell for per-texel lookups.
 struct VesselIndex {
-    detail::SpatialGrid grid{1.0};
+    PointGrid grid;
     const std::vector<VesselSegment>* segments = nullptr;
     double reach = 0.0; ///< largest radius + margin, mm
     double query = 0.0; ///< search radius around a point for segment midpoints, mm

@@ -16,9 +16,10 @@ VesselIndex indexVessels(const VesselNetwork& net, double texelMm) {
     }
     index.reach = maxR + 2.0 * texelMm;
     index.query = 0.5 * maxLen + index.reach;
-    index.grid = detail::SpatialGrid(std::max(0.5, index.query));
+    std::vector<Vec3> midpoints(net.segments.size());
     for (std::size_t i = 0; i < net.segments.size(); ++i)
-        index.grid.insert(static_cast<std::int32_t>(i), (net.segments[i].a + net.segments[i].b) * 0.5);
+        midpoints[i] = (net.segments[i].a + net.segments[i].b) * 0.5;
+    index.grid = PointGrid::of(midpoints, std::max(0.5, index.query));
     return index;
 }
 

@@ -1,7 +1,6 @@
 #include "hs/texture/Vessels.h"
 
-#include "SpatialGrid.h"
-
+#include "hs/core/PointGrid.h"
 #include "hs/core/Rng.h"
 
 #include <algorithm>
@@ -103,8 +102,9 @@ struct Node {
 struct SurfaceSnap {
     const SurfaceMesh& mesh;
     const std::vector<Vec3>& normals;
-    const detail::SpatialGrid& grid;
+    const PointGrid& grid;
     double radius;
+    Bounds bounds; ///< of the surface's points
 
     bool snap(Vec3& p, Vec3& n) const {
         std::int32_t v = grid.nearest(p, radius, mesh.points);
@@ -168,11 +168,10 @@ std::vector<Node> growClass(const SurfaceMesh& mesh, const ClassSurface& cs, App
     for (auto& a : attractors)
         a = samplePoint(mesh, cs, rng);
     std::vector<std::uint8_t> alive(attractors.size(), 1);
-    detail::SpatialGrid attractorGrid(cp.influenceMm);
-    for (std::size_t i = 0; i < attractors.size(); ++i)
-        attractorGrid.insert(static_cast<std::int32_t>(i), attractors[i]);
+    const PointGrid attractorGrid = PointGrid::of(attractors, cp.influenceMm);
 
-    detail::SpatialGrid nodeGrid(cp.influenceMm);
+    // Nodes stay on the surface (a node off the grid's box goes to a border cell and is still found).
+    PointGrid nodeGrid(surface.bounds, cp.influenceMm, Vec3{}, 1);
     std::vector<Vec3> nodePos;
     const auto addNode = [&](const Node& n) {
         nodeGrid.insert(static_cast<std::int32_t>(nodes.size()), n.p);
@@ -266,10 +265,11 @@ Result<VesselNetwork> growVessels(const SurfaceMesh& surface, const std::vector<
         edgeSum +=
             distance(surface.points[static_cast<std::size_t>(t[0])], surface.points[static_cast<std::size_t>(t[1])]);
     const double meanEdge = std::max(1e-6, edgeSum / static_cast<double>(surface.triangles.size()));
-    detail::SpatialGrid vertexGrid(2.0 * meanEdge);
-    for (std::size_t v = 0; v < surface.points.size(); ++v)
-        vertexGrid.insert(static_cast<std::int32_t>(v), surface.points[v]);
-    const SurfaceSnap snap{surface, normals, vertexGrid, 2.0 * meanEdge};
+    const PointGrid vertexGrid = PointGrid::of(surface.points, 2.0 * meanEdge);
+    Bounds bounds;
+    for (const Vec3& p : surface.points)
+        bounds.add(p);
+    const SurfaceSnap snap{surface, normals, vertexGrid, 2.0 * meanEdge, bounds};
 
     for (Appearance cls : kAppearances) {
         const auto ci = static_cast<std::size_t>(cls);
