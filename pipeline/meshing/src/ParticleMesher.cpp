@@ -8,6 +8,7 @@
 #include "Pinches.h"
 #include "hs/core/Parallel.h"
 #include "hs/core/Rng.h"
+#include "hs/core/Streams.h"
 #include "hs/core/TriangleGrid.h"
 #include "hs/meshing/Geometry.h"
 #include "hs/meshing/VoxelSpace.h"
@@ -187,7 +188,7 @@ Result<ParticleMeshResult> meshParticles(const RegionModel& input, const Particl
         detail::SliverRepairParams repair;
         repair.minDihedralDeg = kRepairDihedralDeg;
         repair.step = kRepairStepPerEdge * *edge;
-        repair.seed = Rng::deriveSeed(params.seed, 7);
+        repair.seed = Rng::deriveSeed(params.seed, streams::kMeshingSliverRepair);
         repair.rounds = kRepairRounds;
         detail::SliverRepairCallbacks callbacks;
         callbacks.kept = [&](const Vec3& c) { return locator.regionAt(c) >= 0; };

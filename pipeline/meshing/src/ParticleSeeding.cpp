@@ -4,6 +4,7 @@
 #include "MesherSteps.h"
 
 #include "hs/core/Rng.h"
+#include "hs/core/Streams.h"
 #include "hs/meshing/Geometry.h"
 
 #include <algorithm>
@@ -140,7 +141,7 @@ void seedSurface(const SeedingInput& in, std::size_t s, const Rng& base, Particl
         const std::uint32_t b = sv.start[v], e = sv.start[v + 1];
         if (b == e)
             continue;
-        Rng rng = base.derive((static_cast<std::uint64_t>(s) << 40) ^ v);
+        Rng rng = base.derive((static_cast<std::uint64_t>(s) << 40) ^ v); // hs/core/Streams.h
         const Vec3 corner = grid.minCorner(grid.unlinear(v));
         for (int c = 0; c < kSurfaceCandidatesPerVoxel; ++c) {
             const Vec3 q = corner + Vec3(rng.uniform(), rng.uniform(), rng.uniform()) * h;
@@ -188,7 +189,7 @@ void seedInner(const SeedingInput& in, const Rng& base, Particles& ps, AcceptedI
         const bool surfaceVoxel = voxelRegion == VoxelSpace::kSurface && lattice && in.locator;
         if (voxelRegion < 0 && !surfaceVoxel)
             continue;
-        Rng rng = base.derive((std::uint64_t(1) << 62) ^ v);
+        Rng rng = base.derive(streams::kMeshingSeedingInner ^ v);
         const Vec3 corner = grid.minCorner(grid.unlinear(v));
         const int count = lattice ? 2 : std::clamp(params.particlesPerVoxel, 1, 16);
         for (int c = 0; c < count; ++c) {

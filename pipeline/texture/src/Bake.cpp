@@ -4,6 +4,7 @@
 
 #include "hs/core/Parallel.h"
 #include "hs/core/Rng.h"
+#include "hs/core/Streams.h"
 #include "hs/texture/ImageFiles.h"
 #include "hs/texture/Synthesis.h"
 
@@ -34,7 +35,8 @@ Status checkParams(const BakeParams& p) {
 Result<ImageU8> exemplarFor(const BakeParams& params, Appearance cls) {
     const std::string& file = params.exemplarFiles[static_cast<std::size_t>(cls)];
     if (file.empty())
-        return makeExemplar(cls, 256, Rng::deriveSeed(params.seed, 100 + static_cast<std::uint64_t>(cls)),
+        return makeExemplar(cls, 256,
+                            Rng::deriveSeed(params.seed, streams::kTextureExemplars + static_cast<std::uint64_t>(cls)),
                             params.endometrium);
     auto image = readExemplarFile(file);
     if (!image.ok())
@@ -103,7 +105,7 @@ Result<BakeResult> bakeAppearance(const SurfaceMesh& surface, const BakeParams& 
                 return exemplar.failure();
             SynthesisParams sp;
             sp.width = sp.height = params.baseTextureSize;
-            sp.seed = Rng::deriveSeed(params.seed, 200 + c);
+            sp.seed = Rng::deriveSeed(params.seed, streams::kTextureSynthesis + c);
             sp.threads = threads;
             Progress::Sub sub = progress.sub(0.1 + 0.1 * static_cast<double>(c), 0.2 + 0.1 * static_cast<double>(c));
             auto synth = synthesizeTexture(*exemplar, sp, sub);
@@ -116,7 +118,7 @@ Result<BakeResult> bakeAppearance(const SurfaceMesh& surface, const BakeParams& 
     if (params.vessels) {
         ScopedStepTimer timer(result.timings, "vessels");
         VesselParams vp = params.vesselParams;
-        vp.seed = Rng::deriveSeed(params.seed, 300);
+        vp.seed = Rng::deriveSeed(params.seed, streams::kTextureVessels);
         vp.perClass[static_cast<std::size_t>(Appearance::Endometrium)].attractorsPerMm2 *=
             endometrialSurface(params.endometrium).vesselDensity;
         Progress::Sub sub = progress.sub(0.4, 0.6);

@@ -1,11 +1,14 @@
 #pragma once
-/// The seed plan: every random number of a scene derives from the case seed through this one table.
+/// The seed plan: every random number of a scene derives from the case seed through the one table of
+/// hs/core/Streams.h; this header turns a case seed into its stage and variant seeds.
 ///
 /// Each stage draws from its own stream, `Rng::deriveSeed(caseSeed, stream)`, so changing one stage's use of
 /// randomness leaves the others alone. Variants of a case (`generate --variants N`) get seeds from a separate range
 /// of stream indices. deriveSeed is injective in its index for a fixed seed (the index is multiplied by an odd
 /// constant modulo 2^64, xor-ed with the seed and passed through SplitMix64's bijective finaliser), so a variant's
 /// seed can never equal one of the base case's stage seeds: the two index ranges are disjoint.
+
+#include "hs/core/Streams.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -25,10 +28,10 @@ bool fromString(std::string_view key, Stage& out);
 
 /// A named random stream of the case seed.
 enum class Stream : std::uint64_t {
-    Pathology = 5, ///< placement and growth of every pathology (one sub-stream per pathology inside the stage)
-    Meshing = 7,   ///< particle seeding and relaxation
-    Texture = 11,  ///< exemplar synthesis, vessels
-    Material = 13, ///< per-tet heterogeneity of Young's modulus
+    Pathology = streams::kPathology, ///< placement and growth of every pathology (one sub-stream per pathology)
+    Meshing = streams::kMeshing,     ///< particle seeding, relaxation, sliver repair
+    Texture = streams::kTexture,     ///< exemplar synthesis, vessels
+    Material = streams::kMaterial,   ///< per-tet heterogeneity of Young's modulus
 };
 
 /// The organ stage uses the case seed itself (the shape model's sample); every other stage its stream.
@@ -36,7 +39,7 @@ std::uint64_t organSeed(std::uint64_t caseSeed);
 std::uint64_t streamSeed(std::uint64_t caseSeed, Stream stream);
 
 /// First stream index of variant seeds: far above every stage stream, so the ranges cannot meet.
-inline constexpr std::uint64_t kVariantStreamBase = std::uint64_t{1} << 62;
+inline constexpr std::uint64_t kVariantStreamBase = streams::kVariantBase;
 
 /// The seed of variant `index` of a case whose seed is `baseSeed` (`Rng::deriveSeed(baseSeed, 2^62 + index)`).
 std::uint64_t variantSeed(std::uint64_t baseSeed, std::size_t index);
