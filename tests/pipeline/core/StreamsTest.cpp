@@ -6,15 +6,17 @@
 #include <set>
 
 // The seed table's promise: the named streams of one parent never meet each other or its per-element ranges.
-TEST(Streams, NamedStreamsOfTheMeshingSeedLieOutsideItsSeedingRanges) {
+TEST(Streams, TheMeshingSeedingRangesDoNotMeet) {
     using namespace hs::streams;
-    const std::uint64_t repair = kMeshingSliverRepair;
-    // Surface seeding: (s << 40) ^ v below 2^62; inner seeding: 2^62 ^ v in [2^62, 2^63).
-    EXPECT_GE(repair, std::uint64_t{1} << 63);
-    EXPECT_GE(kMeshingSeedingInner, std::uint64_t{1} << 62);
+    // Surface seeding: (s << 40) ^ v below 2^62; inner seeding: kMeshingSeedingInner ^ v in [2^62, 2^63).
+    EXPECT_EQ(kMeshingSeedingInner, std::uint64_t{1} << 62);
     EXPECT_LT(kMeshingSeedingInner ^ ((std::uint64_t{1} << 62) - 1), std::uint64_t{1} << 63);
-    // The first surface's voxel 7 and the repair draw from different seeds.
-    EXPECT_NE(hs::Rng::deriveSeed(42, (std::uint64_t{0} << 40) ^ 7), hs::Rng::deriveSeed(42, repair));
+    EXPECT_LT((std::uint64_t{(1 << 22) - 1} << 40) ^ ((std::uint64_t{1} << 40) - 1), kMeshingSeedingInner);
+    // The sliver repair derives per vertex from its stream; the voxel that shares its index draws from it directly.
+    const hs::Rng voxel(hs::Rng::deriveSeed(42, kMeshingSliverRepair));
+    const hs::Rng repairVertex = hs::Rng(hs::Rng::deriveSeed(42, kMeshingSliverRepair)).derive(0);
+    hs::Rng a = voxel, b = repairVertex;
+    EXPECT_NE(a.next(), b.next());
 }
 
 TEST(Streams, StageAndTextureStreamsAreDistinct) {
