@@ -3,6 +3,7 @@
 #include "Commands.h"
 
 #include "hs/scene/CaseSpec.h"
+#include "hs/scene/MeshBars.h"
 #include "hs/scene/ScenePackage.h"
 #include "hs/scene/ScopePassage.h"
 #include "hs/scene/ScopeView.h"
@@ -142,6 +143,23 @@ ScopeCheck checkScope(const scene::Scene& sc, double diameterMm) {
     return check;
 }
 
+/// The scope checks, then a warning named by each mesh quality bar the package's report misses.
+ScopeCheck checkPackage(const scene::Scene& sc, double diameterMm) {
+    ScopeCheck check = checkScope(sc, diameterMm);
+    for (const auto& bar : scene::meshBars(sc.quality))
+        if (!bar.met)
+            check.warnings.push_back({bar.name, bar.detail});
+    return check;
+}
+
+nlohmann::ordered_json meshBarsJson(const scene::MeshQuality& quality) {
+    nlohmann::ordered_json bars = nlohmann::ordered_json::array();
+    for (const auto& b : scene::meshBars(quality))
+        bars.push_back(
+            {{"name", b.name}, {"value", b.value}, {"bar", b.limit}, {"atLeast", b.atLeast}, {"met", b.met}});
+    return bars;
+}
+
 nlohmann::ordered_json pointJson(const scene::PassagePoint& p) {
     return {{"widthMm", p.freeWidthMm},
             {"part", std::string(scene::toString(p.part))},
@@ -249,7 +267,8 @@ int runValidatePackage(const ValidateOptions& options, const std::string& folder
             j["simulationTets"] = scene->simulation ? scene->simulation->tets.tetCount() : 0;
             j["regions"] = scene->regions.size();
             j["labels"] = scene->labels.size();
-            const auto scope = checkScope(*scene, options.scopeDiameterMm);
+            const auto scope = checkPackage(*scene, options.scopeDiameterMm);
+            j["meshBars"] = meshBarsJson(scene->quality);
             j["scopePassage"] = scopeJson(scope, options.scopeDiameterMm, scene::ScopePassageParams{}.straightLengthMm);
             j["warnings"] = nlohmann::ordered_json::array();
             for (const auto& w : scope.warnings)
@@ -283,7 +302,11 @@ int runValidatePackage(const ValidateOptions& options, const std::string& folder
     std::cout << "labels      " << scene->labels.size() << '\n'
               << "hydrometra  " << scene->hydrometra.cavityVolumeMl << " mL at " << scene->hydrometra.pressureKpa
               << " kPa\n";
-    printScope(checkScope(*scene, options.scopeDiameterMm), options.scopeDiameterMm,
+    const auto bars = scene::meshBars(scene->quality);
+    std::cout << "mesh        "
+              << std::count_if(bars.begin(), bars.end(), [](const scene::MeshBar& b) { return b.met; }) << " of "
+              << bars.size() << " quality bars met (report.json)\n";
+    printScope(checkPackage(*scene, options.scopeDiameterMm), options.scopeDiameterMm,
                scene::ScopePassageParams{}.straightLengthMm);
     return kExitOk;
 }

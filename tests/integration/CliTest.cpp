@@ -318,6 +318,21 @@ TEST(Cli, GenerateWritesAValidPackageForTheDefaultCase) {
     for (const auto& w : wj["warnings"])
         names.push_back(w["name"].get<std::string>());
     EXPECT_NE(std::find(names.begin(), names.end(), "scope-passage-narrow"), names.end()) << wide.out;
+    // Every mesh quality bar is measured on the organ's scene and recorded; each one missed is a warning by name,
+    // in validate and in the scene's own warnings.
+    ASSERT_EQ(wj["meshBars"].size(), 6u) << wide.out;
+    const auto report = nlohmann::json::parse(readText(scene + "/report.json"));
+    ASSERT_EQ(report["quality"]["bars"].size(), 6u);
+    for (const auto& bar : wj["meshBars"]) {
+        const std::string name = bar["name"].get<std::string>();
+        const bool warned = std::find(names.begin(), names.end(), name) != names.end();
+        EXPECT_EQ(warned, !bar["met"].get<bool>()) << name;
+        bool inScene = false;
+        for (const auto& w : report["warnings"])
+            inScene = inScene || w.get<std::string>().rfind(name + ": ", 0) == 0;
+        EXPECT_EQ(inScene, !bar["met"].get<bool>()) << name;
+    }
+    EXPECT_NE(validate.out.find("quality bars met (report.json)"), std::string::npos) << validate.out;
     EXPECT_EQ(cli("validate --scope-diameter 11 " + quote(scene)).exitCode, 2);
     auto tets = hs::io::readTetMesh(scene + "/tets.vtu");
     ASSERT_TRUE(tets.ok()) << tets.error().message();

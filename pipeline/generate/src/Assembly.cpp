@@ -8,6 +8,7 @@
 #include "hs/generate/Seeds.h"
 #include "hs/meshing/BaselineMeshers.h"
 #include "hs/meshing/LibraryVersions.h"
+#include "hs/scene/MeshBars.h"
 #include "hs/texture/LibraryVersions.h"
 
 #include <algorithm>
@@ -172,6 +173,8 @@ scene::MeshQuality qualityOf(const meshing::QualityReport& q) {
     m.hausdorffDistanceMm = q.hausdorffDistance;
     m.hausdorffRelative = q.hausdorffRelative;
     m.volumeError = q.volumeError;
+    m.boundaryNonManifoldEdges = q.boundaryNonManifoldEdges;
+    m.boundaryNonManifoldVertices = q.boundaryNonManifoldVertices;
     return m;
 }
 
@@ -254,6 +257,8 @@ Result<scene::Scene> assembleScene(const scene::CaseSpec& spec, const OrganInsta
         s.warnings.push_back("measurement: " + w);
     if (!hydrometraWarning.empty())
         s.warnings.push_back(hydrometraWarning);
+    for (const auto& w : scene::missedMeshBars(s.quality))
+        s.warnings.push_back(w);
     HS_TRY(scene::checkScene(s));
     return s;
 }

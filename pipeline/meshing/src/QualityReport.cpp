@@ -1,6 +1,8 @@
 #include "hs/meshing/QualityReport.h"
 
 #include "hs/core/Parallel.h"
+#include "hs/core/SurfaceMesh.h"
+#include "hs/core/TetMesh.h"
 #include "hs/core/TriangleGrid.h"
 #include "hs/meshing/Geometry.h"
 
@@ -229,6 +231,9 @@ QualityReport measureQuality(const TetMesh& mesh, const RegionModel* reference, 
     report.tetCount = mesh.tets.size();
     threads = resolveThreads(threads);
     measureShapes(mesh, threads, report);
+    const SurfaceTopology outer = analyzeTopology(extractBoundary(mesh));
+    report.boundaryNonManifoldEdges = outer.nonManifoldEdges;
+    report.boundaryNonManifoldVertices = outer.nonManifoldVertices;
     if (reference)
         measureFidelity(mesh, *reference, threads, report);
     return report;

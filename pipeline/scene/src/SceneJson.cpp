@@ -2,6 +2,7 @@
 
 #include "SceneJson.h"
 #include "hs/scene/JsonText.h"
+#include "hs/scene/MeshBars.h"
 
 #include <nlohmann/json.hpp>
 
@@ -332,6 +333,14 @@ std::string reportJson(const Scene& scene) {
                            {"hausdorffDistanceMm", q.hausdorffDistanceMm},
                            {"hausdorffRelative", q.hausdorffRelative},
                            {"volumeError", q.volumeError}};
+    if (q.boundaryNonManifoldEdges)
+        j["quality"]["boundaryNonManifoldEdges"] = *q.boundaryNonManifoldEdges;
+    if (q.boundaryNonManifoldVertices)
+        j["quality"]["boundaryNonManifoldVertices"] = *q.boundaryNonManifoldVertices;
+    j["quality"]["bars"] = ordered::array();
+    for (const auto& b : meshBars(q))
+        j["quality"]["bars"].push_back(
+            ordered{{"name", b.name}, {"value", b.value}, {"bar", b.limit}, {"atLeast", b.atLeast}, {"met", b.met}});
     j["warnings"] = scene.warnings;
     return dump(j);
 }
@@ -449,6 +458,11 @@ Status parseReportJson(std::string_view text, const std::string& name, Scene& sc
         q.hausdorffDistanceMm = r.number(*j, "hausdorffDistanceMm", path);
         q.hausdorffRelative = r.number(*j, "hausdorffRelative", path);
         q.volumeError = r.number(*j, "volumeError", path);
+        // Measured since the mesh bars were recorded; older reports lack them.
+        if (j->contains("boundaryNonManifoldEdges"))
+            q.boundaryNonManifoldEdges = count("boundaryNonManifoldEdges");
+        if (j->contains("boundaryNonManifoldVertices"))
+            q.boundaryNonManifoldVertices = count("boundaryNonManifoldVertices");
     }
     if (const json* w = r.array(*doc, "warnings", "")) {
         for (const auto& item : *w)

@@ -77,6 +77,24 @@ TEST(QualityReport, CountsSliversInvertedTetsAndHistogramBuckets) {
     EXPECT_FALSE(q.hasReference);
 }
 
+TEST(QualityReport, CountsNonManifoldEdgesAndVerticesOfTheOuterBoundary) {
+    TetMesh mesh;
+    mesh.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 2}, {0, 1, 2}, {1, 0, 2}, {0, -1, -1}};
+    mesh.tets = {{0, 1, 2, 3}};
+    QualityReport q = measureQuality(mesh);
+    EXPECT_EQ(q.boundaryNonManifoldEdges, 0u);
+    EXPECT_EQ(q.boundaryNonManifoldVertices, 0u);
+    // A second tet touching the first only at point 3: one vertex with two fans.
+    mesh.tets = {{0, 1, 2, 3}, {3, 4, 5, 6}};
+    q = measureQuality(mesh);
+    EXPECT_EQ(q.boundaryNonManifoldEdges, 0u);
+    EXPECT_EQ(q.boundaryNonManifoldVertices, 1u);
+    // A second tet sharing only the edge 0-1: four boundary faces at that edge.
+    mesh.tets = {{0, 1, 2, 3}, {0, 1, 7, 6}};
+    q = measureQuality(mesh);
+    EXPECT_EQ(q.boundaryNonManifoldEdges, 1u);
+}
+
 TEST(TriangleGrid, BoundedSearchFindsTheClosestTriangleOrNothingWithinTheBound) {
     // A small sphere far from most query points, as a pathology's grid is from most samples of a merged body.
     const SurfaceMesh sphere = test::icosphere(3.0, 3, {20.0, 0.0, 0.0});

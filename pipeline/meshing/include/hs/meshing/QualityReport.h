@@ -40,6 +40,10 @@ struct QualityReport {
     std::size_t sliverCount = 0;     ///< min dihedral < kSliverDihedralDeg
     std::size_t invertedCount = 0;   ///< signed volume < 0
     std::size_t degenerateCount = 0; ///< |volume| <= 1e-12 * (mean edge)^3
+    /// The outer boundary (faces of one tet): edges shared by more than two of its faces, vertices whose faces form
+    /// more than one fan (two parts of the mesh touching along an edge or at a point).
+    std::size_t boundaryNonManifoldEdges = 0;
+    std::size_t boundaryNonManifoldVertices = 0;
 
     /// The following need the input body (hasReference).
     bool hasReference = false;

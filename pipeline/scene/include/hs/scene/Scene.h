@@ -165,6 +165,9 @@ struct MeshQuality {
     double hausdorffDistanceMm = 0.0;
     double hausdorffRelative = 0.0;
     double volumeError = 0.0; ///< largest relative per-region volume error
+    /// Non-manifold edges and vertices of the outer boundary; unset in packages written before they were measured.
+    std::optional<std::size_t> boundaryNonManifoldEdges;
+    std::optional<std::size_t> boundaryNonManifoldVertices;
 };
 
 struct Scene {
