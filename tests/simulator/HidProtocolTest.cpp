@@ -43,6 +43,15 @@ TEST(HidDescriptor, TruncatedItemsAreRefused) {
     EXPECT_FALSE(parseDescriptor(cut, sizeof cut).ok());
 }
 
+TEST(HidDescriptor, ItemsOfTheReservedTypeAreRefusedByName) {
+    // Found by fuzzing: prefix 0x3C (bType 3, reserved in HID 1.11) was parsed as an item of type 3.
+    const std::uint8_t reserved[] = {0x05, 0x09, 0x3C, 0xFF};
+    const auto items = parseDescriptor(reserved, sizeof reserved);
+    ASSERT_FALSE(items.ok());
+    EXPECT_NE(items.error().detail.find("reserved type 3"), std::string::npos) << items.error().detail;
+    EXPECT_NE(items.error().detail.find("byte 2"), std::string::npos) << items.error().detail;
+}
+
 TEST(HidInput, RoundTripsToTheCount) {
     sim::DeviceSample s;
     s.insertionMm = 42.1234;

@@ -349,6 +349,10 @@ Result<std::vector<DescriptorItem>> parseDescriptor(const std::uint8_t* data, st
         item.size = static_cast<std::uint8_t>((prefix & 0x3) == 3 ? 4 : (prefix & 0x3));
         item.type = static_cast<std::uint8_t>((prefix >> 2) & 0x3);
         item.tag = static_cast<std::uint8_t>(prefix >> 4);
+        // bType 3 is reserved (HID 1.11, 6.2.2.2); its only use, the long item 0xFE, is refused above.
+        if (item.type == 3)
+            return refused("report descriptor", "item at byte " + std::to_string(i) +
+                                                    " has the reserved type 3 (prefix " + std::to_string(prefix) + ")");
         if (size - i - 1 < item.size)
             return refused("report descriptor", "item at byte " + std::to_string(i) + " is truncated");
         for (std::uint8_t b = 0; b < item.size; ++b)
