@@ -255,6 +255,8 @@ Result<scene::Scene> assembleScene(const scene::CaseSpec& spec, const OrganInsta
         s.warnings.push_back("descriptors: " + w);
     for (const auto& w : descriptors.measurementWarnings)
         s.warnings.push_back("measurement: " + w);
+    for (const auto& w : descriptors.seatingWarnings)
+        s.warnings.push_back("seating: " + w);
     if (!hydrometraWarning.empty())
         s.warnings.push_back(hydrometraWarning);
     for (const auto& w : scene::missedMeshBars(s.quality))

@@ -226,6 +226,87 @@ pathology::WallContact contactOf(const TetMesh& tets, const std::vector<std::arr
     return c;
 }
 
+/// Share of region `region`'s surface (by area) against tissue: a face of it lies in the cavity when the ray from
+/// its centre along its outward normal first meets the body's boundary on the cavity side within `reachMm` (through
+/// no more than the endometrium laid over it); any other face lies against tissue (the base or stalk of a polyp).
+double tissueContactFraction(const TetMesh& tets, const std::vector<std::array<std::int32_t, 4>>& adjacent,
+                             std::int32_t region, const SurfaceMesh& boundary, double reachMm) {
+    struct Face {
+        Vec3 centre, normal;
+        double area = 0.0;
+    };
+    std::vector<Face> faces;
+    Bounds box;
+    for (std::size_t t = 0; t < tets.tets.size(); ++t) {
+        if (tets.regionOf(t) != region)
+            continue;
+        for (std::size_t k = 0; k < 4; ++k) {
+            const auto u = adjacent[t][k];
+            if (u >= 0 && tets.regionOf(static_cast<std::size_t>(u)) == region)
+                continue;
+            std::array<Vec3, 3> p;
+            for (std::size_t c = 0; c < 3; ++c)
+                p[c] =
+                    tets.points[static_cast<std::size_t>(tets.tets[t][static_cast<std::size_t>(kTetFacePoints[k][c])])];
+            Vec3 n = cross(p[1] - p[0], p[2] - p[0]);
+            const double twice = norm(n);
+            if (!(twice > 0.0))
+                continue;
+            if (signedVolume(tets, t) < 0.0)
+                n = -n; // kTetFacePoints wind outward for a positive tet
+            faces.push_back({(p[0] + p[1] + p[2]) / 3.0, n / twice, 0.5 * twice});
+            box.add(faces.back().centre);
+        }
+    }
+    // The boundary faces a ray of length reachMm from the region can meet.
+    const auto& tissue = boundary.faceLabels.at(clinical::kSurfaceTissueLabel);
+    std::vector<std::int32_t> near;
+    for (std::size_t f = 0; f < boundary.triangles.size(); ++f) {
+        Bounds fb;
+        for (auto v : boundary.triangles[f])
+            fb.add(boundary.points[static_cast<std::size_t>(v)]);
+        bool overlaps = true;
+        for (int q = 0; q < 3; ++q)
+            overlaps = overlaps && fb.max[q] >= box.min[q] - reachMm && fb.min[q] <= box.max[q] + reachMm;
+        if (overlaps)
+            near.push_back(static_cast<std::int32_t>(f));
+    }
+    double total = 0.0, against = 0.0;
+    for (const Face& face : faces) {
+        total += face.area;
+        double first = reachMm;
+        bool cavity = false;
+        for (auto f : near) {
+            const auto& tri = boundary.triangles[static_cast<std::size_t>(f)];
+            double t = 0.0, u = 0.0, v = 0.0;
+            if (rayTriangle(face.centre, face.normal, boundary.points[static_cast<std::size_t>(tri[0])],
+                            boundary.points[static_cast<std::size_t>(tri[1])],
+                            boundary.points[static_cast<std::size_t>(tri[2])], 1e-9, t, u, v) &&
+                t <= first) {
+                first = t;
+                cavity = onCavitySide(tissue[static_cast<std::size_t>(f)]);
+            }
+        }
+        if (!cavity)
+            against += face.area;
+    }
+    return total > 0.0 ? against / total : 0.0;
+}
+
+/// A polyp whose surface lies against tissue beyond its attachment's bar, as a warning; empty when it stands.
+std::string seatingWarning(const scene::PathologySpec& a, const scene::PathologyDescriptor& m) {
+    if (!a.attachment || !m.tissueContactFraction)
+        return "";
+    const bool stalked = *a.attachment == clinical::PolypAttachment::Pedunculated;
+    const double bar = stalked ? scene::kPedunculatedPolypMaxContact : scene::kSessilePolypMaxContact;
+    if (*m.tissueContactFraction <= bar)
+        return "";
+    return a.id + ": " + std::to_string(static_cast<int>(std::lround(100.0 * *m.tissueContactFraction))) +
+           " % of its surface lies against tissue on the final tets; a " + (stalked ? "pedunculated" : "sessile") +
+           " polyp stands in the cavity with at most " + std::to_string(static_cast<int>(std::lround(100.0 * bar))) +
+           " %";
+}
+
 } // namespace
 
 MeasuredDescriptors clinicalDescriptors(const scene::CaseSpec& spec, const SurfaceMesh& organ,
@@ -269,6 +350,10 @@ MeasuredDescriptors clinicalDescriptors(const scene::CaseSpec& spec, const Surfa
         if (i < roots.size())
             contact.root = roots[i];
         pd.volumeMl = units::mlFromMm3(contact.volumeMm3);
+        if (asked.kind == clinical::PathologyKind::Polyp && contact.volumeMm3 > 0.0)
+            pd.tissueContactFraction =
+                tissueContactFraction(tets, adjacent, pd.regionId, boundary,
+                                      tissueLayerParamsFor(spec).endometriumThicknessMm + kDrapeMarginMm);
         pd.sizeMm = contact.sizeMm;
         if (contact.volumeMm3 <= 0.0) {
             out.warnings.push_back(asked.id + ": no tets in its region; not measured");
@@ -283,6 +368,9 @@ MeasuredDescriptors clinicalDescriptors(const scene::CaseSpec& spec, const Surfa
         }
         c.pathologies.push_back(pd);
     }
+    for (std::size_t i = 0; i < spec.pathologies.size() && i < c.pathologies.size(); ++i)
+        if (auto w = seatingWarning(spec.pathologies[i], c.pathologies[i]); !w.empty())
+            out.seatingWarnings.push_back(w);
     auto differ = descriptorWarnings(spec, c);
     out.warnings.insert(out.warnings.end(), differ.begin(), differ.end());
     return out;
@@ -355,6 +443,12 @@ std::string descriptorTable(const scene::CaseSpec& spec, const scene::ClinicalDe
                     std::to_string(m.lasmar->size) + "/" + std::to_string(m.lasmar->topography) + "/" +
                         std::to_string(m.lasmar->extension) + "/" + std::to_string(m.lasmar->penetration) + "/" +
                         std::to_string(m.lasmar->wall) + " = " + std::to_string(m.lasmar->total()));
+        }
+        if (p.attachment && m.tissueContactFraction) {
+            const bool stalked = *p.attachment == clinical::PolypAttachment::Pedunculated;
+            row(p.id + " against tissue %",
+                "<= " + mm(100.0 * (stalked ? scene::kPedunculatedPolypMaxContact : scene::kSessilePolypMaxContact)),
+                mm(100.0 * *m.tissueContactFraction));
         }
     }
     return t;

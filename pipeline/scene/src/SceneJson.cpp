@@ -58,6 +58,8 @@ ordered pathologyJson(const PathologyDescriptor& p) {
         j["lasmar"] = nullptr;
     }
     j["location"] = p.location;
+    if (p.tissueContactFraction)
+        j["tissueContactFraction"] = *p.tissueContactFraction;
     return j;
 }
 
@@ -237,6 +239,12 @@ void readClinical(Reader& r, const json& j, Scene& scene) {
             out.lasmar = s;
         }
         out.location = r.text(p, "location", path);
+        if (p.is_object() && p.contains("tissueContactFraction")) {
+            const double f = r.number(p, "tissueContactFraction", path);
+            if (!(f >= 0.0 && f <= 1.0) && r.error.empty())
+                r.error = r.name + ": " + path + "/tissueContactFraction must be in 0..1";
+            out.tissueContactFraction = f;
+        }
         scene.clinical.pathologies.push_back(std::move(out));
     }
 }

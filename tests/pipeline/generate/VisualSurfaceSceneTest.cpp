@@ -105,6 +105,36 @@ TEST(DefaultScene, DescriptorsMeasuredOnTheFinalBodyAreNearTheRequest) {
         EXPECT_NE(w.rfind("descriptors: ", 0), 0u) << w;
 }
 
+TEST(DefaultScene, MeasuresThePolypsSeatingOnTheFinalTetsAsTheMergeLabelledIt) {
+    const auto& g = defaultScene();
+    ASSERT_TRUE(g.scene && g.body);
+    const auto& polyp = g.scene->clinical.pathologies.at(1);
+    ASSERT_TRUE(polyp.tissueContactFraction.has_value());
+    EXPECT_FALSE(g.scene->clinical.pathologies.at(0).tissueContactFraction.has_value()); // a myoma
+    // The independent measure: the merged surface's "contact" label, by area (Myometrium = its base in the wall).
+    const SurfaceMesh& surface = g.body->body.surfaces.at(2).surface;
+    const auto& contact = surface.faceLabels.at(merge::kContactLabel);
+    double total = 0.0, wall = 0.0;
+    for (std::size_t f = 0; f < surface.triangles.size(); ++f) {
+        const auto& t = surface.triangles[f];
+        const Vec3& a = surface.points[static_cast<std::size_t>(t[0])];
+        const double area = 0.5 * norm(cross(surface.points[static_cast<std::size_t>(t[1])] - a,
+                                             surface.points[static_cast<std::size_t>(t[2])] - a));
+        total += area;
+        if (contact[f] == static_cast<std::int32_t>(merge::Contact::Myometrium))
+            wall += area;
+    }
+    std::printf("default polyp against tissue: %.1f %% on the final tets, %.1f %% by the merge's labels\n",
+                100.0 * *polyp.tissueContactFraction, 100.0 * wall / total);
+    // The two measures agree to within a tet layer's worth of the polyp's surface.
+    EXPECT_NEAR(*polyp.tissueContactFraction, wall / total, 0.15);
+    // Over its bar it is a named warning, else none.
+    bool warned = false;
+    for (const auto& w : g.scene->warnings)
+        warned = warned || w.rfind("seating: polyp-1: ", 0) == 0;
+    EXPECT_EQ(warned, *polyp.tissueContactFraction > scene::kSessilePolypMaxContact);
+}
+
 TEST(VisualSurface, IsRefinedAndSmoothWhereTheScopeSeesIt) {
     const auto& g = defaultScene();
     ASSERT_TRUE(g.scene.has_value());

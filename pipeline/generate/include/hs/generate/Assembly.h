@@ -109,7 +109,15 @@ struct MeasuredDescriptors {
     /// How the measurement itself went where it fell back ("organ: 0 of 1873 serosa and 213 of 1441 cavity vertices of
     /// the template found no body surface ..."): not a difference from the request.
     std::vector<std::string> measurementWarnings;
+    /// Polyps that do not stand in the cavity: more of their surface against tissue on the final tets than
+    /// scene::kPedunculatedPolypMaxContact or kSessilePolypMaxContact allow ("polyp-1: 52 % of its surface ...").
+    std::vector<std::string> seatingWarnings;
 };
+
+/// How far beyond the endometrium laid over a pathology its surface's outward normal may run and still reach the
+/// cavity (mm): the layer is resolved to about an edge of the tets (2 mm at the default density) plus the merge's
+/// cover (0.8 mm).
+inline constexpr double kDrapeMarginMm = 3.0;
 
 /// Tolerance of a measured size or organ dimension against the case's request before it is reported, as a
 /// fraction: the pathology stage's bar (docs/pathology.md, "Bars").

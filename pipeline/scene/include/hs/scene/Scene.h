@@ -129,7 +129,16 @@ struct PathologyDescriptor {
     std::optional<clinical::FigoType> figo;      ///< myomas; where the region lies against cavity and serosa
     std::optional<clinical::LasmarScore> lasmar; ///< myomas
     std::string location;                        ///< a UterineLocation key ("fundal", ...) or empty
+    /// Polyps: share of its region's surface (by area) against tissue on the final tets rather than in the cavity
+    /// under the endometrium laid over it (docs/scene-format.md, "Polyp seating"). Unset for myomas and in
+    /// packages written before it was measured.
+    std::optional<double> tissueContactFraction;
 };
+
+/// A polyp stands in the cavity: at most this share of its surface lies against tissue on the final tets (a
+/// pedunculated polyp: its stalk; a sessile one: its broad base).
+inline constexpr double kPedunculatedPolypMaxContact = 0.20;
+inline constexpr double kSessilePolypMaxContact = 0.40;
 
 /// Organ dimensions as measured on the final body's serosa and cavity (mm, mL); 0 when not measured.
 struct OrganDimensions {
