@@ -44,11 +44,16 @@ Vec3 minNormInHull(const std::vector<Vec3>& g) {
 
 } // namespace
 
-double Improver::qualityWith(TetId t, std::int32_t v, const Vec3& x) const {
+std::array<Vec3, 4> Improver::pointsWith(TetId t, std::int32_t v, const Vec3& x) const {
     const Tet& tet = m_tets[t];
     std::array<Vec3, 4> p;
     for (std::size_t i = 0; i < 4; ++i)
         p[i] = tet[i] == v ? x : point(tet[i]);
+    return p;
+}
+
+double Improver::qualityWith(TetId t, std::int32_t v, const Vec3& x) const {
+    const auto p = pointsWith(t, v, x);
     return minDihedralDeg(p[0], p[1], p[2], p[3]);
 }
 
@@ -142,10 +147,7 @@ Vec3 Improver::ascentDirection(const std::vector<TetId>& star, std::int32_t v, c
 }
 
 double Improver::radiusRatioWith(TetId t, std::int32_t v, const Vec3& x) const {
-    const Tet& tet = m_tets[t];
-    std::array<Vec3, 4> p;
-    for (std::size_t i = 0; i < 4; ++i)
-        p[i] = tet[i] == v ? x : point(tet[i]);
+    const auto p = pointsWith(t, v, x);
     return radiusRatio(p[0], p[1], p[2], p[3]);
 }
 

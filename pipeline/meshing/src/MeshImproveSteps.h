@@ -123,6 +123,9 @@ private:
 
     // ---- smoothing (MeshImproveSmooth.cpp) ----
 
+    /// The points of tet t with vertex v moved to x.
+    std::array<Vec3, 4> pointsWith(TetId t, std::int32_t v, const Vec3& x) const;
+    /// Smallest dihedral angle (degrees) of tet t with vertex v moved to x.
     double qualityWith(TetId t, std::int32_t v, const Vec3& x) const;
 
     double starWorst(const std::vector<TetId>& star, std::int32_t v, const Vec3& x) const;
