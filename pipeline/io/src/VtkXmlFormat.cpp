@@ -26,8 +26,8 @@
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include <cerrno>
-#include <cstring>
 #include <cmath>
+#include <cstring>
 #include <exception>
 #include <limits>
 #include <vector>
