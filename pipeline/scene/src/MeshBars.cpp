@@ -13,6 +13,8 @@ MeshBar bar(const char* name, double value, double limit, bool atLeast, const ch
     b.limit = limit;
     b.atLeast = atLeast;
     b.met = atLeast ? value >= limit : value <= limit;
+    if (!format)
+        return b; // the caller words it
     char text[200];
     std::snprintf(text, sizeof text, format, value, b.met ? "meets" : (atLeast ? "below" : "above"), limit);
     b.detail = text;
@@ -44,7 +46,7 @@ std::vector<MeshBar> meshBars(const MeshQuality& q) {
     }
     if (q.boundaryNonManifoldEdges && q.boundaryNonManifoldVertices) {
         const std::size_t edges = *q.boundaryNonManifoldEdges, vertices = *q.boundaryNonManifoldVertices;
-        MeshBar m = bar("mesh-non-manifold", double(edges + vertices), 0.0, false, "%.0f non-manifold %s %.0f");
+        MeshBar m = bar("mesh-non-manifold", double(edges + vertices), 0.0, false, nullptr);
         char text[200];
         std::snprintf(text, sizeof text,
                       "the outer boundary has %zu non-manifold edge%s and %zu non-manifold vert%s (parts of the mesh "
