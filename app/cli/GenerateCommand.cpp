@@ -1,25 +1,23 @@
 // `generate CASE.json -o SCENE`: the whole pipeline into a scene package, with a progress bar and per-stage timings;
-// --variants N makes N scenes with derived seeds. The chain itself is hs::generate::generateScene; this file holds
-// the options, the progress printing, the package writing and the report.
+// --variants N makes N scenes with derived seeds. The export itself (the chain, the package written, read back and
+// swept by the scope) is hs::generate::exportScenes, as in the workstation and a batch job; this file holds the
+// options, the progress printing and the report.
 #include "CliCommon.h"
 #include "Commands.h"
 
 #include "hs/core/Timings.h"
+#include "hs/generate/Export.h"
 #include "hs/generate/Generate.h"
-#include "hs/generate/Seeds.h"
 #include "hs/scene/Scene.h"
 #include "hs/scene/ScenePackage.h"
 
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <mutex>
-#include <thread>
 #include <unistd.h>
 
 namespace hs::cli {
@@ -39,58 +37,31 @@ struct GenerateOptions {
 };
 
 struct VariantReport {
-    int index = 0;
-    std::uint64_t seed = 0;
-    std::string folder;
-    std::optional<Error> error;
-    StageTimings timings;
+    generate::ExportedPackage package; ///< where it went, its error, timings, warnings and scope verdict
     std::size_t vertices = 0;
     std::size_t tets = 0;
     scene::MeshQuality quality;
     std::vector<scene::PathologyDescriptor> pathologies;
     scene::OrganDimensions organ;
-    std::vector<std::string> warnings;
     double liningAskedMm = 0.0;  ///< mm, one wall's endometrium as the case asks for it
     double liningMeshedMm = 0.0; ///< mm, the endometrium's volume per lining area (docs/anatomy.md)
     double endometriumMl = 0.0;  ///< mL
     double cervixMl = 0.0;       ///< mL
 };
 
-/// Generates one variant (`spec` already carries its seed) and writes its package.
-Status generateVariant(const scene::CaseSpec& spec, const GenerateOptions& options, VariantReport& report,
-                       Progress& progress) {
-    auto generateSub = progress.sub(0.0, 0.85);
-    generate::GenerateParams params;
-    params.caseFile = options.casePath;
-    params.threads = options.threads;
-    auto generated = generate::generateScene(spec, params, generateSub);
-    if (!generated)
-        return generated.failure();
-    report.timings = generated->timings;
-    const scene::Scene& s = *generated->scene;
-
-    auto writeSub = progress.sub(0.85, 1.0);
-    {
-        ScopedStepTimer timer(report.timings, "package");
-        auto written = scene::writeScenePackage(s, report.folder, options.packageFormats, writeSub);
-        if (!written)
-            return written.failure();
-        if (options.zip)
-            HS_TRY(scene::zipScenePackage(report.folder, report.folder + ".zip"));
-    }
-    progress.report("done", 1.0);
+/// What the report needs of a variant's results (the results themselves are freed once it is written).
+void summarise(const scene::CaseSpec& spec, const generate::Generated& generated, VariantReport& report) {
+    const scene::Scene& s = *generated.scene;
     report.vertices = s.tets.points.size();
     report.tets = s.tets.tets.size();
     report.quality = s.quality;
     report.pathologies = s.clinical.pathologies;
     report.organ = s.clinical.organ;
-    report.warnings = s.warnings;
-    const auto& layers = generated->tissue->layers;
+    const auto& layers = generated.tissue->layers;
     report.liningAskedMm = generate::tissueLayerParamsFor(spec).endometriumThicknessMm;
     report.liningMeshedMm = layers.endometriumVolumePerLiningAreaMm();
     report.endometriumMl = layers.endometriumVolumeMm3 / 1000.0;
     report.cervixMl = layers.cervixVolumeMm3 / 1000.0;
-    return {};
 }
 
 /// Terminal progress: one bar over all variants on a terminal, a line per stage change otherwise.
@@ -137,21 +108,36 @@ private:
     std::string m_lastKey;
 };
 
+nlohmann::ordered_json scopeJson(const generate::ScopeVerdict& scope) {
+    if (!scope.checked)
+        return {{"checked", false}, {"reason", scope.uncheckedBecause}};
+    return {{"checked", true},
+            {"scopeDiameterMm", scope.scopeDiameterMm},
+            {"passes", scope.passes},
+            {"canalNarrowestMm", scope.canalNarrowestMm},
+            {"reachesFundus", scope.reachesFundus},
+            {"narrowestMm", scope.narrowestMm}};
+}
+
 nlohmann::ordered_json reportJson(const VariantReport& r) {
+    const generate::ExportedPackage& package = r.package;
     nlohmann::ordered_json j;
-    j["variant"] = r.index;
-    j["seed"] = r.seed;
-    j["folder"] = r.folder;
-    j["ok"] = !r.error.has_value();
-    if (r.error) {
-        j["error"] = {{"code", std::string(errorCodeKey(r.error->code))}, {"detail", r.error->detail}};
+    j["variant"] = package.index;
+    j["seed"] = package.seed;
+    j["folder"] = package.folder;
+    j["ok"] = !package.error.has_value();
+    if (package.error) {
+        j["error"] = {{"code", std::string(errorCodeKey(package.error->code))}, {"detail", package.error->detail}};
         return j;
     }
+    if (!package.zipPath.empty())
+        j["zip"] = package.zipPath;
+    j["files"] = package.files;
     auto steps = nlohmann::ordered_json::array();
-    for (const auto& s : r.timings.steps)
+    for (const auto& s : package.timings.steps)
         steps.push_back({{"stage", s.name}, {"seconds", s.seconds}});
     j["timings"] = steps;
-    j["seconds"] = r.timings.totalSeconds();
+    j["seconds"] = package.timings.totalSeconds();
     j["vertices"] = r.vertices;
     j["tetrahedra"] = r.tets;
     j["quality"] = {{"meanRadiusRatio", r.quality.meanRadiusRatio},
@@ -178,17 +164,21 @@ nlohmann::ordered_json reportJson(const VariantReport& r) {
                    {"endometriumVolumePerLiningAreaMm", r.liningMeshedMm},
                    {"endometriumMl", r.endometriumMl},
                    {"cervixMl", r.cervixMl}};
-    j["warnings"] = r.warnings;
+    j["scope"] = scopeJson(package.scope);
+    j["warnings"] = package.warnings;
     return j;
 }
 
 void printReport(const VariantReport& r) {
-    if (r.error) {
-        std::printf("variant %d (seed %llu): failed: %s\n", r.index, static_cast<unsigned long long>(r.seed),
-                    r.error->message().c_str());
+    const generate::ExportedPackage& package = r.package;
+    if (package.error) {
+        std::printf("variant %zu (seed %llu): failed: %s\n", package.index,
+                    static_cast<unsigned long long>(package.seed), package.error->message().c_str());
         return;
     }
-    std::printf("wrote       %s (seed %llu)\n", r.folder.c_str(), static_cast<unsigned long long>(r.seed));
+    std::printf("wrote       %s (seed %llu), %zu files read back with matching checksums%s\n", package.folder.c_str(),
+                static_cast<unsigned long long>(package.seed), package.files,
+                package.zipPath.empty() ? "" : ", and its .zip");
     std::printf("organ       %.1f x %.1f x %.1f mm (L x W x AP), %.1f mL\n", r.organ.lengthMm, r.organ.widthMm,
                 r.organ.apMm, r.organ.uterineVolumeMl);
     for (const auto& p : r.pathologies)
@@ -200,11 +190,19 @@ void printReport(const VariantReport& r) {
     std::printf("mesh        %zu vertices, %zu tetrahedra, mean radius ratio %.3f, min dihedral %.1f deg, "
                 "%zu slivers\n",
                 r.vertices, r.tets, r.quality.meanRadiusRatio, r.quality.minDihedralDeg, r.quality.sliverCount);
+    if (!package.scope.checked)
+        std::printf("scope       not checked: %s\n", package.scope.uncheckedBecause.c_str());
+    else
+        std::printf("scope       a %.1f mm scope %s the cervical canal (narrowest %.2f mm) and %s the fundus "
+                    "(narrowest %.2f mm)\n",
+                    package.scope.scopeDiameterMm, package.scope.passes ? "passes" : "does not pass",
+                    package.scope.canalNarrowestMm, package.scope.reachesFundus ? "reaches" : "does not reach",
+                    package.scope.narrowestMm);
     std::printf("timings    ");
-    for (const auto& s : r.timings.steps)
+    for (const auto& s : package.timings.steps)
         std::printf(" %s %.2f s,", s.name.c_str(), s.seconds);
-    std::printf(" total %.2f s\n", r.timings.totalSeconds());
-    for (const auto& w : r.warnings)
+    std::printf(" total %.2f s\n", package.timings.totalSeconds());
+    for (const auto& w : package.warnings)
         std::printf("warning     %s\n", w.c_str());
 }
 
@@ -216,51 +214,38 @@ int runGenerate(GenerateOptions& options) {
     auto loaded = scene::loadCase(options.casePath);
     if (!loaded)
         return reportError("generate", loaded.error());
-    const std::uint64_t baseSeed = options.seed.value_or(loaded->seed);
+    scene::CaseSpec spec = *loaded;
+    spec.seed = options.seed.value_or(loaded->seed);
     const auto n = static_cast<std::size_t>(options.variants);
     std::vector<VariantReport> reports(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        reports[i].index = static_cast<int>(i);
-        reports[i].seed = generate::exportSeed(baseSeed, i, n);
-        reports[i].folder =
-            n == 1 ? options.output : (std::filesystem::path(options.output) / generate::variantFolderName(i)).string();
-    }
-    { // the folder that will hold the package (or the variants)
-        std::error_code ec;
-        const std::filesystem::path out(options.output);
-        const std::filesystem::path holder = n > 1 ? out : out.parent_path();
-        if (!holder.empty())
-            std::filesystem::create_directories(holder, ec);
-        if (ec)
-            return reportError("generate", Error{ErrorCode::IoError, options.output + ": " + ec.message()});
-    }
 
+    generate::GenerateParams generateParams;
+    generateParams.caseFile = options.casePath;
+    generateParams.threads = options.threads;
+    generate::ExportParams params;
+    params.folder = options.output;
+    params.variants = n;
+    params.jobs = static_cast<std::size_t>(std::max(options.jobs, 1));
+    params.zip = options.zip;
+    params.formats = options.packageFormats;
     ProgressPrinter printer(n, options.common.json);
-    std::atomic<std::size_t> next{0};
-    auto worker = [&] {
-        for (std::size_t i = next++; i < n; i = next++) {
-            scene::CaseSpec spec = *loaded;
-            spec.seed = reports[i].seed;
-            Progress progress([&printer, i](std::string_view stage, double f) { printer.update(i, stage, f); });
-            const Status status = generateVariant(spec, options, reports[i], progress);
-            if (!status.ok())
-                reports[i].error = status.error();
-            printer.update(i, "done", 1.0);
-        }
+    params.variantProgress = [&printer](std::size_t i, std::string_view stage, double f) {
+        printer.update(i, stage, f);
     };
-    const auto jobs = std::min<std::size_t>(static_cast<std::size_t>(std::max(options.jobs, 1)), n);
-    std::vector<std::thread> threads;
-    for (std::size_t j = 1; j < jobs; ++j)
-        threads.emplace_back(worker);
-    worker();
-    for (auto& th : threads)
-        th.join();
+    params.onExported = [&reports, &spec](const generate::ExportedPackage& p, const generate::Generated& generated) {
+        summarise(spec, generated, reports[p.index]);
+    };
+    auto exported = generate::exportScenes(spec, generateParams, params);
     printer.finish();
+    if (!exported)
+        return reportError("generate", exported.error());
+    for (std::size_t i = 0; i < n; ++i)
+        reports[i].package = std::move((*exported)[i]);
 
     int exitCode = kExitOk;
     for (const auto& r : reports)
-        if (r.error && exitCode == kExitOk)
-            exitCode = exitCodeFor(*r.error);
+        if (r.package.error && exitCode == kExitOk)
+            exitCode = exitCodeFor(*r.package.error);
     if (options.common.json) {
         nlohmann::ordered_json j;
         j["case"] = options.casePath;
@@ -274,9 +259,9 @@ int runGenerate(GenerateOptions& options) {
         for (const auto& r : reports)
             printReport(r);
         for (const auto& r : reports)
-            if (r.error)
-                reportError("generate",
-                            Error{r.error->code, "variant " + std::to_string(r.index) + ": " + r.error->detail});
+            if (r.package.error)
+                reportError("generate", Error{r.package.error->code, "variant " + std::to_string(r.package.index) +
+                                                                         ": " + r.package.error->detail});
     }
     return exitCode;
 }

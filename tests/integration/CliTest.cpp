@@ -300,7 +300,16 @@ TEST(Cli, GenerateWritesAValidPackageForTheDefaultCase) {
     for (const auto& t : v["timings"])
         stages.push_back(t["stage"].get<std::string>());
     EXPECT_EQ(stages, (std::vector<std::string>{"organ", "pathology", "merge", "meshing", "tissue", "texture", "scene",
-                                                "package"}));
+                                                "package", "scope"}));
+    // generate read the package back and swept the scope with validate's own criterion (one criterion for both).
+    EXPECT_GT(v["files"].get<int>(), 5);
+    ASSERT_TRUE(v["scope"]["checked"].get<bool>()) << run.out;
+    auto swept = cli("validate --json " + quote(scene));
+    const auto sj = nlohmann::json::parse(swept.out);
+    EXPECT_EQ(v["scope"]["passes"].get<bool>(), sj["scopePassage"]["passes"].get<bool>());
+    EXPECT_EQ(v["scope"]["canalNarrowestMm"].get<double>(),
+              sj["scopePassage"]["canal"]["narrowest"]["widthMm"].get<double>());
+    EXPECT_EQ(v["scope"]["reachesFundus"].get<bool>(), sj["scopePassage"]["toFundus"]["passes"].get<bool>());
     auto validate = cli("validate " + quote(scene));
     EXPECT_EQ(validate.exitCode, 0) << validate.out;
     // The scope passage is measured and printed whether or not the 2.9 mm scope fits.

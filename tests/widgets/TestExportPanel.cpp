@@ -5,6 +5,7 @@
 #include "hs/widgets/document/CaseDocument.h"
 #include "hs/widgets/jobs/GenerationSession.h"
 #include "hs/widgets/panels/ExportPanel.h"
+#include "hs/widgets/panels/SceneWarnings.h"
 
 #include <QCheckBox>
 #include <QDir>
@@ -12,6 +13,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QSet>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QTemporaryDir>
@@ -39,6 +41,7 @@ private slots:
     void asksForAFolderFirst();
     void writesAndValidatesThePackage();
     void writesOneFolderPerVariant();
+    void eachWarningSaysWhatItMeans();
 };
 
 void TestExportPanel::asksForAFolderFirst() {
@@ -73,6 +76,14 @@ void TestExportPanel::writesAndValidatesThePackage() {
         QVERIFY2(QFile::exists(folder + "/" + file), file);
     const QString text = panel.findChild<QLabel*>("exportResultLabel")->text();
     QVERIFY2(text.contains("valid") && text.contains("scope"), qPrintable(text));
+    // Every warning of the scene is listed, with what it means, not only counted.
+    const auto result = exported.at(0).at(0).value<hs::widgets::ExportResult>();
+    QCOMPARE(result.packages.size(), std::size_t{1});
+    QVERIFY(result.packages[0].scope.checked);
+    for (const std::string& w : result.packages[0].warnings) {
+        QVERIFY2(text.contains(QString::fromStdString(w).toHtmlEscaped()), w.c_str());
+        QVERIFY2(text.contains(hs::widgets::warningMeaning(w).toHtmlEscaped()), w.c_str());
+    }
     QCOMPARE(panel.lastPackage(), folder);
     QVERIFY(session.isCurrent(hs::generate::Stage::Scene));
 
@@ -115,6 +126,35 @@ void TestExportPanel::writesOneFolderPerVariant() {
                  name);
     // Without the other tools' formats asked for, the package holds what the simulator and the workstation read.
     QVERIFY(!QFile::exists(QDir(dir.filePath("variants")).filePath("variant-000/surface.glb")));
+}
+
+// A warning's meaning follows the stage that wrote it (the text before ": "); each stage has its own, and a warning
+// of no known stage points at the documentation instead of saying nothing.
+void TestExportPanel::eachWarningSaysWhatItMeans() {
+    using hs::widgets::warningMeaning;
+    const std::vector<std::string> warnings{
+        "pathology: polyp-1: at its nominal seat it would cover or hide the right tubal ostium",
+        "merge: polyp-1: 3 % of its volume dropped",
+        "meshing: 2 pinches opened",
+        "descriptors: myoma-1: asked FIGO 1, the final body measures FIGO 2",
+        "measurement: 213 of 1441 template vertices found no body surface",
+        "seating: polyp-1: 45 % of its surface lies against tissue (sessile polyps: at most 40 %)",
+        "hydrometra: from the organ before its pathologies (67.6 mL)",
+        "simulation: 3 of 9000 visual surface points are bound up to 1.20 mm off their simulation tet",
+        "texture: the exemplar could not be read; the bundled one is used",
+        "mesh-hausdorff: 2.11 % of the diagonal (bar: at most 1 %)"};
+    QSet<QString> meanings;
+    for (const std::string& w : warnings) {
+        const QString meaning = warningMeaning(w);
+        QVERIFY2(!meaning.contains("docs/scene-format.md"), w.c_str());
+        meanings.insert(meaning);
+    }
+    QCOMPARE(meanings.size(), int(warnings.size()));
+    QCOMPARE(warningMeaning("mesh-min-dihedral: 8.1 deg"), warningMeaning("mesh-slivers: 3"));
+    QVERIFY(warningMeaning("something new").contains("docs/scene-format.md"));
+    const QString html = hs::widgets::warningsHtml({"seating: <b>polyp</b>"});
+    QVERIFY2(html.contains("&lt;b&gt;polyp") && html.contains("<li>"), qPrintable(html));
+    QVERIFY(hs::widgets::warningsHtml({}).isEmpty());
 }
 
 QTEST_MAIN(TestExportPanel)

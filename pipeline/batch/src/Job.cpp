@@ -2,6 +2,7 @@
 #include "hs/batch/Job.h"
 
 #include "hs/generate/Assembly.h"
+#include "hs/generate/Export.h"
 #include "hs/generate/Generate.h"
 #include "hs/scene/CaseSpec.h"
 #include "hs/scene/ScenePackage.h"
@@ -128,22 +129,24 @@ Status generatePackage(const std::string& batchFolder, const Job& job, const Run
     generate::GenerateParams generateParams;
     generateParams.caseFile = caseFile;
     generateParams.threads = params.threads;
-    auto generateProgress = progress.sub(0.0, 0.85);
-    auto generated = generate::generateScene(*spec, generateParams, generateProgress);
-    if (!generated)
-        return generated.failure();
+    generate::ExportParams exportParams;
     const std::string output = batchPath(batchFolder, job.output);
-    auto writeProgress = progress.sub(0.85, 1.0);
-    auto written = scene::writeScenePackage(*generated->scene, output, {}, writeProgress);
-    if (!written)
-        return written.failure();
-    if (auto verified = scene::verifyScenePackage(output); !verified)
-        return verified.failure();
+    exportParams.folder = output;
+    exportParams.onExported = [&record](const generate::ExportedPackage& package, generate::Generated&& generated) {
+        record.scene = summarise(generated);
+        if (package.scope.checked) {
+            record.scene->scopePasses = package.scope.passes;
+            record.scene->scopeNarrowestMm = package.scope.canalNarrowestMm;
+        }
+    };
+    auto exported = generate::exportScenes(*spec, generateParams, exportParams, progress);
+    if (!exported)
+        return exported.failure();
+    HS_TRY(generate::firstFailure(*exported));
     auto sha = manifestSha256(output);
     if (!sha)
         return sha.failure();
     record.packageManifestSha256 = *sha;
-    record.scene = summarise(*generated);
     return {};
 }
 

@@ -46,6 +46,8 @@ ordered_json sceneJson(const SceneSummary& s) {
         stages.push_back({{"stage", name}, {"seconds", seconds}});
     j["stages"] = stages;
     j["warnings"] = s.warnings;
+    if (s.scopePasses)
+        j["scope"] = {{"passes", *s.scopePasses}, {"narrowestMm", s.scopeNarrowestMm}};
     return j;
 }
 
@@ -105,6 +107,14 @@ void readScene(const json& v, const std::string& path, SceneSummary& s, JsonIssu
         }
     } else if (list) {
         issues.push_back({o.pathOf("warnings"), "expected an array of strings"});
+    }
+    if (const json* scope = o.member("scope", false)) {
+        ObjectReader r(*scope, o.pathOf("scope"), issues);
+        bool passes = false;
+        r.read("passes", passes, true);
+        r.read("narrowestMm", s.scopeNarrowestMm, true);
+        r.finish();
+        s.scopePasses = passes;
     }
     o.finish();
 }

@@ -90,10 +90,10 @@ std::string measuredPathologies(const SceneSummary& s) {
 /// The columns of the table, in order, for the CSV and the page.
 const std::vector<std::string>& columns() {
     static const std::vector<std::string> names{
-        "job",      "template",  "state",      "error",      "seconds",         "peakMemoryMb",   "ageYears",
-        "parity",   "gravidity", "menopausal", "asked",      "measured",        "lengthMm",       "widthMm",
-        "apMm",     "volumeMl",  "vertices",   "tetrahedra", "meanRadiusRatio", "minDihedralDeg", "slivers",
-        "warnings", "output"};
+        "job",    "template",  "state",      "error",      "seconds",         "peakMemoryMb",   "ageYears",
+        "parity", "gravidity", "menopausal", "asked",      "measured",        "lengthMm",       "widthMm",
+        "apMm",   "volumeMl",  "vertices",   "tetrahedra", "meanRadiusRatio", "minDihedralDeg", "slivers",
+        "scope",  "warnings",  "output"};
     return names;
 }
 
@@ -128,10 +128,13 @@ std::vector<std::string> cells(const Row& r) {
         c[18] = number(s.meanRadiusRatio, 3);
         c[19] = number(s.minDihedralDeg, 1);
         c[20] = std::to_string(s.slivers);
+        if (s.scopePasses)
+            c[21] = (*s.scopePasses ? "passes, narrowest " : "does not pass, narrowest ") +
+                    number(s.scopeNarrowestMm, 2) + " mm";
         for (const std::string& w : s.warnings)
-            c[21] += (c[21].empty() ? "" : "\n") + w;
+            c[22] += (c[22].empty() ? "" : "\n") + w;
     }
-    c[22] = r.job->output;
+    c[23] = r.job->output;
     return c;
 }
 

@@ -14,10 +14,10 @@ void Progress::report(std::string_view stageKey, double fraction) {
         return;
     const double f = std::clamp(fraction, 0.0, 1.0);
     m_last.store(f, std::memory_order_relaxed);
+    if (m_callback)
+        m_callback(stageKey, f);
     if (m_parent)
         m_parent->report(stageKey, m_begin + (m_end - m_begin) * f);
-    else if (m_callback)
-        m_callback(stageKey, f);
 }
 
 void Progress::requestCancel() noexcept {

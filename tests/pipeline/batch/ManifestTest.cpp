@@ -155,6 +155,16 @@ TEST(JobStatus, WritesAndReadsBackARecord) {
     auto parsed = parseStatus(toJson(r), "s.json");
     ASSERT_TRUE(parsed.ok()) << parsed.error().detail;
     EXPECT_EQ(toJson(*parsed), toJson(r));
+    EXPECT_FALSE(parsed->scene->scopePasses); // not checked: no "scope" written or read
+    // The export's scope verdict round-trips too.
+    r.scene->scopePasses = false;
+    r.scene->scopeNarrowestMm = 2.25;
+    auto swept = parseStatus(toJson(r), "s.json");
+    ASSERT_TRUE(swept.ok()) << swept.error().detail;
+    EXPECT_EQ(toJson(*swept), toJson(r));
+    ASSERT_TRUE(swept->scene->scopePasses);
+    EXPECT_FALSE(*swept->scene->scopePasses);
+    EXPECT_EQ(swept->scene->scopeNarrowestMm, 2.25);
     EXPECT_FALSE(readStatus(dir.path().string(), "none")->has_value());
 }
 

@@ -2,6 +2,7 @@
 // it touches and gives the same package bytes as a full run, edits that reach back are refused.
 #include "hs/generate/Generate.h"
 #include "hs/core/TetEmbedding.h"
+#include "hs/generate/Export.h"
 #include "hs/generate/Simulation.h"
 #include "hs/generate/TissueLayers.h"
 
@@ -16,6 +17,8 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <memory>
+#include <mutex>
 #include <string>
 
 using namespace hs;
@@ -303,4 +306,122 @@ TEST(Generate, NamesTheVisualPointsBoundOffTheirSimulationTet) {
     EXPECT_EQ(w.rfind("simulation: 1 of 2 visual surface points are bound up to 2.50 mm off their simulation tet", 0),
               0u)
         << w;
+}
+
+// The one export (CLI, workstation, batch): each variant generated, written, read back against its manifest, zipped
+// and swept by the scope; progress per variant; the same bytes as the chain written by hand; parallel jobs change
+// nothing.
+TEST(Export, WritesReadsBackZipsAndSweepsEachVariant) {
+    test::TempDir tmp;
+    scene::CaseSpec spec = lightCase();
+    spec.pathologies.clear(); // two new patients: keep them light
+    ExportParams params;
+    params.folder = tmp.file("variants");
+    params.variants = 2;
+    params.jobs = 2;
+    params.zip = true;
+    std::mutex mutex;
+    std::map<std::size_t, double> lastFraction;
+    params.variantProgress = [&](std::size_t i, std::string_view, double f) {
+        std::lock_guard<std::mutex> lock(mutex);
+        lastFraction[i] = f;
+    };
+    std::map<std::size_t, std::size_t> tets;
+    params.onExported = [&](const ExportedPackage& p, Generated&& g) {
+        std::lock_guard<std::mutex> lock(mutex);
+        tets[p.index] = g.scene->tets.tets.size();
+    };
+    auto exported = exportScenes(spec, {}, params);
+    ASSERT_TRUE(exported.ok()) << exported.error().message();
+    ASSERT_EQ(exported->size(), 2u);
+    for (std::size_t i = 0; i < 2; ++i) {
+        const ExportedPackage& p = (*exported)[i];
+        ASSERT_FALSE(p.error) << p.error->message();
+        EXPECT_EQ(p.index, i);
+        EXPECT_EQ(p.seed, exportSeed(spec.seed, i, 2));
+        EXPECT_EQ(p.folder, tmp.file("variants/" + variantFolderName(i)));
+        auto manifest = scene::verifyScenePackage(p.folder);
+        ASSERT_TRUE(manifest.ok()) << manifest.error().message();
+        EXPECT_EQ(p.files, manifest->files.size());
+        EXPECT_TRUE(fs::is_regular_file(p.zipPath)) << p.zipPath;
+        EXPECT_TRUE(p.scope.checked) << p.scope.uncheckedBecause;
+        EXPECT_EQ(p.scope.scopeDiameterMm, 2.9);
+        EXPECT_GT(p.scope.narrowestMm, 0.0);
+        EXPECT_EQ(lastFraction[i], 1.0);
+        EXPECT_GT(tets[i], 0u);
+        for (const char* step : {"organ", "scene", "package", "scope"})
+            EXPECT_TRUE(std::any_of(p.timings.steps.begin(), p.timings.steps.end(), [&](const StepTiming& t) {
+                return t.name == step;
+            })) << step;
+    }
+    EXPECT_NE((*exported)[0].seed, (*exported)[1].seed);
+    EXPECT_TRUE(firstFailure(*exported).ok());
+
+    // Variant 1 is the chain on its seed, written by hand, byte for byte.
+    scene::CaseSpec variant = spec;
+    variant.seed = exportSeed(spec.seed, 1, 2);
+    auto direct = generateScene(variant);
+    ASSERT_TRUE(direct.ok()) << direct.error().message();
+    expectSameBytes(packageFiles((*exported)[1].folder), written(*direct, tmp, "direct"));
+}
+
+// A session's earlier results are brought up to date rather than rerun; the package is the same as a fresh one.
+TEST(Export, FromPreviousResultsGivesTheSameBytes) {
+    test::TempDir tmp;
+    ExportParams params;
+    params.folder = tmp.file("deep/er/scene"); // the folders that hold it are created
+    params.checkScope = false;
+    params.previous = std::make_shared<const Generated>(baseRun());
+    auto exported = exportScenes(lightCase(), {}, params);
+    ASSERT_TRUE(exported.ok()) << exported.error().message();
+    ASSERT_FALSE((*exported)[0].error) << (*exported)[0].error->message();
+    EXPECT_FALSE((*exported)[0].scope.checked);
+    // Nothing was rerun: the timings are the previous run's stages plus the package.
+    EXPECT_EQ((*exported)[0].timings.steps.size(), baseRun().timings.steps.size() + 1);
+    expectSameBytes(packageFiles(params.folder), written(baseRun(), tmp, "fresh"));
+}
+
+// A variant that cannot be written fails alone and is named; the others are written. Out-of-range parameters and a
+// cancel are refused before anything is written.
+TEST(Export, NamesAFailedVariantAndRefusesBadParametersAndACancel) {
+    test::TempDir tmp;
+    scene::CaseSpec spec = lightCase();
+    spec.pathologies.clear();
+    fs::create_directories(tmp.file("variants"));
+    std::ofstream(tmp.file("variants/variant-001")) << "a file where variant 1's folder goes";
+    ExportParams params;
+    params.folder = tmp.file("variants");
+    params.variants = 2;
+    params.checkScope = false;
+    params.previous = std::make_shared<const Generated>(baseRun()); // ignored: variants are new patients
+    auto exported = exportScenes(spec, {}, params);
+    ASSERT_TRUE(exported.ok()) << exported.error().message();
+    EXPECT_FALSE((*exported)[0].error);
+    EXPECT_TRUE(scene::verifyScenePackage((*exported)[0].folder).ok());
+    ASSERT_TRUE((*exported)[1].error);
+    const Status first = firstFailure(*exported);
+    ASSERT_FALSE(first.ok());
+    EXPECT_EQ(first.error().detail.rfind("variant 1: ", 0), 0u) << first.error().detail;
+    EXPECT_TRUE(fs::is_regular_file(tmp.file("variants/variant-001"))); // left as it was
+
+    ExportParams bad;
+    bad.folder = tmp.file("bad");
+    bad.variants = 0;
+    auto refused = exportScenes(spec, {}, bad);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.error().code, ErrorCode::InvalidInput);
+    EXPECT_NE(refused.error().detail.find("variants 0 is out of range (1 to 10000)"), std::string::npos)
+        << refused.error().detail;
+    bad.variants = 1;
+    bad.folder.clear();
+    EXPECT_EQ(exportScenes(spec, {}, bad).error().code, ErrorCode::InvalidInput);
+
+    Progress cancelled;
+    cancelled.requestCancel();
+    ExportParams params2;
+    params2.folder = tmp.file("cancelled");
+    auto stopped = exportScenes(spec, {}, params2, cancelled);
+    ASSERT_FALSE(stopped.ok());
+    EXPECT_EQ(stopped.error().code, ErrorCode::Cancelled);
+    EXPECT_FALSE(fs::exists(params2.folder));
 }

@@ -1,6 +1,5 @@
 #include "hs/widgets/jobs/GenerationSession.h"
 
-#include "hs/scene/ScopePassage.h"
 #include "hs/widgets/document/CaseDocument.h"
 
 #include <QDir>
@@ -115,92 +114,40 @@ void GenerationSession::runThrough(generate::Stage last) {
         });
 }
 
-namespace {
-
-/// Writes `scene` to `folder`, verifies it and checks the scope's passage.
-Result<ExportedPackage> writeAndCheck(const scene::Scene& scene, const QString& folder, bool zip,
-                                      const scene::PackageWriteOptions& formats, Progress& progress) {
-    const std::string path = QFile::encodeName(folder).toStdString();
-    auto writeSub = progress.sub(0.0, 0.7);
-    auto written = scene::writeScenePackage(scene, path, formats, writeSub);
-    if (!written)
-        return written.failure();
-    auto verified = scene::verifyScenePackage(path);
-    if (!verified)
-        return verified.failure();
-    ExportedPackage out;
-    out.folder = folder;
-    out.seed = scene.caseSpec.seed;
-    out.files = verified->files.size();
-    out.warnings = scene.warnings;
-    if (zip) {
-        out.zipPath = folder + QStringLiteral(".zip");
-        HS_TRY(scene::zipScenePackage(path, QFile::encodeName(out.zipPath).toStdString()));
-    }
-    if (auto landmarks = scene::findScopeLandmarks(scene)) {
-        auto scopeSub = progress.sub(0.7, 1.0);
-        auto passage = scene::checkScopePassage(scene.tets, *landmarks, {}, scopeSub);
-        if (!passage)
-            return passage.failure();
-        out.scopeChecked = true;
-        out.scopePasses = passage->open && passage->ballPasses;
-        out.narrowestMm = passage->narrowest.freeWidthMm;
-    }
-    return out;
-}
-
-} // namespace
-
 void GenerationSession::exportPackage(const QString& folder, bool zip, int variants,
                                       const scene::PackageWriteOptions& formats) {
     m_autoTimer.stop();
-    auto previous = m_results;
     struct Exported {
-        std::optional<generate::Generated> generated; ///< the document's own case (one package only)
+        std::shared_ptr<const generate::Generated> generated; ///< the document's own case (one package only)
         ExportResult written;
     };
+    generate::ExportParams exportParams;
     const QString absolute = QFileInfo(folder).absoluteFilePath();
-    const auto count = static_cast<std::size_t>(std::max(1, variants));
+    exportParams.folder = QFile::encodeName(absolute).toStdString();
+    exportParams.variants = static_cast<std::size_t>(std::max(1, variants));
+    exportParams.zip = zip;
+    exportParams.formats = formats;
+    exportParams.previous = m_results;
     m_runner.start<Exported>(
         tr("Exporting the scene"), m_document.revision(),
-        [previous, spec = m_document.spec(), params = params(), absolute, zip, formats,
-         count](Progress& progress) -> Result<Exported> {
+        [spec = m_document.spec(), params = params(), exportParams, absolute](Progress& progress) -> Result<Exported> {
             Exported out;
             out.written.folder = absolute;
-            if (count > 1 && !QDir().mkpath(absolute))
-                return fail(ErrorCode::IoError,
-                            QFile::encodeName(absolute).toStdString() + ": cannot create the folder");
-            for (std::size_t i = 0; i < count; ++i) {
-                auto part = progress.sub(double(i) / double(count), double(i + 1) / double(count));
-                scene::CaseSpec variant = spec;
-                variant.seed = generate::exportSeed(spec.seed, i, count);
-                // One package reuses what the session has; variants are new patients, generated whole.
-                generate::Generated base;
-                if (count == 1 && previous)
-                    base = *previous;
-                else
-                    base.spec = variant;
-                auto generateSub = part.sub(0.0, 0.85);
-                auto generated =
-                    generate::updateThrough(generate::Stage::Scene, std::move(base), variant, params, generateSub);
-                if (!generated)
-                    return generated.failure();
-                const QString target =
-                    count == 1 ? absolute
-                               : QDir(absolute).filePath(QString::fromStdString(generate::variantFolderName(i)));
-                auto writeSub = part.sub(0.85, 1.0);
-                auto package = writeAndCheck(*generated->scene, target, zip, formats, writeSub);
-                if (!package)
-                    return package.failure();
-                out.written.packages.push_back(std::move(package).value());
-                if (count == 1)
-                    out.generated = std::move(generated).value();
-            }
+            auto keep = exportParams;
+            if (keep.variants == 1)
+                keep.onExported = [&out](const generate::ExportedPackage&, generate::Generated&& generated) {
+                    out.generated = std::make_shared<const generate::Generated>(std::move(generated));
+                };
+            auto packages = generate::exportScenes(spec, params, keep, progress);
+            if (!packages)
+                return packages.failure();
+            HS_TRY(generate::firstFailure(*packages));
+            out.written.packages = std::move(packages).value();
             return out;
         },
         [this](Exported&& done) {
             if (done.generated) {
-                m_results = std::make_shared<const generate::Generated>(std::move(*done.generated));
+                m_results = std::move(done.generated);
                 emit resultsChanged();
             }
             emit exported(done.written);

@@ -2,9 +2,11 @@
 
 #include "hs/widgets/document/CaseDocument.h"
 #include "hs/widgets/jobs/GenerationSession.h"
+#include "hs/widgets/panels/SceneWarnings.h"
 
 #include <QCheckBox>
 #include <QDir>
+#include <QFile>
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QGroupBox>
@@ -109,29 +111,40 @@ void ExportPanel::onExport() {
 void ExportPanel::onExported(const ExportResult& result) {
     const QLocale locale;
     QStringList lines;
-    for (const ExportedPackage& p : result.packages) {
+    for (const generate::ExportedPackage& p : result.packages) {
+        const QString folder = QDir::toNativeSeparators(QFile::decodeName(p.folder.c_str()));
         QString line = tr("<b>%1</b>: valid, %2 files with matching checksums (seed %3).")
-                           .arg(QDir::toNativeSeparators(p.folder).toHtmlEscaped())
+                           .arg(folder.toHtmlEscaped())
                            .arg(p.files)
                            .arg(p.seed);
-        if (!p.zipPath.isEmpty())
-            line += QLatin1Char(' ') + tr("Zipped as %1.").arg(QFileInfo(p.zipPath).fileName().toHtmlEscaped());
-        if (!p.scopeChecked)
-            line += QLatin1Char(' ') + tr("The scope's passage could not be checked.");
-        else if (p.scopePasses)
-            line +=
-                QLatin1Char(' ') +
-                tr("A 2.9 mm scope reaches the fundus (narrowest %1 mm).").arg(locale.toString(p.narrowestMm, 'f', 2));
+        if (!p.zipPath.empty())
+            line += QLatin1Char(' ') +
+                    tr("Zipped as %1.").arg(QFileInfo(QFile::decodeName(p.zipPath.c_str())).fileName().toHtmlEscaped());
+        const QString diameter = locale.toString(p.scope.scopeDiameterMm, 'f', 1);
+        const QString canal = locale.toString(p.scope.canalNarrowestMm, 'f', 2);
+        const QString fundus = locale.toString(p.scope.narrowestMm, 'f', 2);
+        if (!p.scope.checked)
+            line += QLatin1Char(' ') + tr("The scope's passage could not be checked: %1")
+                                           .arg(QString::fromStdString(p.scope.uncheckedBecause).toHtmlEscaped());
+        else if (!p.scope.passes)
+            line += QLatin1Char(' ') + tr("<span style='color:#c0392b'>A %1 mm scope does not pass the cervical canal "
+                                          "(narrowest %2 mm).</span>")
+                                           .arg(diameter, canal);
+        else if (p.scope.reachesFundus)
+            line += QLatin1Char(' ') + tr("A %1 mm scope passes the cervical canal (narrowest %2 mm) and reaches the "
+                                          "fundus (narrowest %3 mm).")
+                                           .arg(diameter, canal, fundus);
         else
-            line += QLatin1Char(' ') + tr("<span style='color:#c0392b'>A 2.9 mm scope does not reach the fundus "
-                                          "(narrowest %1 mm).</span>")
-                                           .arg(locale.toString(p.narrowestMm, 'f', 2));
+            line += QLatin1Char(' ') + tr("A %1 mm scope passes the cervical canal (narrowest %2 mm); a pathology "
+                                          "narrows the way to the fundus to %3 mm.")
+                                           .arg(diameter, canal, fundus);
         if (!p.warnings.empty())
-            line += QLatin1Char(' ') + tr("%n warning(s) in scene.json.", "", int(p.warnings.size()));
+            line += QLatin1Char(' ') + tr("%n warning(s), also in scene.json:", "", int(p.warnings.size())) +
+                    warningsHtml(p.warnings);
         lines << line;
     }
     m_resultLabel->setText(lines.join(QStringLiteral("<br>")));
-    m_lastPackage = result.packages.empty() ? QString() : result.packages.front().folder;
+    m_lastPackage = result.packages.empty() ? QString() : QFile::decodeName(result.packages.front().folder.c_str());
     setSimulatorPath(m_simulatorPath);
 }
 

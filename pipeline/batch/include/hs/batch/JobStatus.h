@@ -48,6 +48,11 @@ struct SceneSummary {
     std::vector<PathologySummary> pathologies;
     std::vector<std::pair<std::string, double>> stageSeconds; ///< per stage, in order
     std::vector<std::string> warnings; ///< the scene's warnings (report.json); optional when read
+    /// The export's scope verdict (generate::ScopeVerdict::passes): a 2.9 mm scope gets through the cervical canal
+    /// into the cavity; unset when it was not checked (records written before it, a scene without the landmarks).
+    /// Optional when read.
+    std::optional<bool> scopePasses;
+    double scopeNarrowestMm = 0.0; ///< mm, the least free width of that passage, when checked
 };
 
 struct StatusRecord {

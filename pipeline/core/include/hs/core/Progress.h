@@ -40,8 +40,9 @@ public:
     double fraction() const noexcept { return m_last.load(std::memory_order_relaxed); }
 
     /// A child whose [0, 1] maps onto [begin, end] of this one; cancelling either cancels the child's checks.
+    /// `observer`, when given, also gets the child's reports on the child's own scale (before the parent does).
     class Sub;
-    Sub sub(double begin, double end);
+    Sub sub(double begin, double end, Callback observer = {});
 
 private:
     friend class Sub;
@@ -59,15 +60,16 @@ private:
 
 class Progress::Sub : public Progress {
 public:
-    Sub(Progress& parent, double begin, double end) {
+    Sub(Progress& parent, double begin, double end, Callback observer = {}) {
         m_parent = &parent;
         m_begin = begin;
         m_end = end;
+        m_callback = std::move(observer);
     }
 };
 
-inline Progress::Sub Progress::sub(double begin, double end) {
-    return Sub(*this, begin, end);
+inline Progress::Sub Progress::sub(double begin, double end, Callback observer) {
+    return Sub(*this, begin, end, std::move(observer));
 }
 
 } // namespace hs

@@ -6,6 +6,7 @@
 /// After an edit of the case the organ is rebuilt in the background on its own (a short pause lets a slider drag
 /// end first); the later stages run when the user asks (Grow, Merge, Mesh, Texture, Export).
 
+#include "hs/generate/Export.h"
 #include "hs/generate/Generate.h"
 #include "hs/scene/ScenePackage.h"
 #include "hs/widgets/jobs/JobRunner.h"
@@ -23,22 +24,11 @@ namespace hs::widgets {
 
 class CaseDocument;
 
-/// One package an export wrote, and what its validation said.
-struct ExportedPackage {
-    QString folder;
-    QString zipPath; ///< empty when no zip was asked for
-    std::uint64_t seed = 0;
-    std::size_t files = 0;             ///< in the verified manifest (every checksum matched)
-    std::vector<std::string> warnings; ///< the scene's warnings (descriptors that differ from the case, ...)
-    bool scopeChecked = false;         ///< the scene has the labels the scope check needs
-    bool scopePasses = false;          ///< a 2.9 mm rigid scope gets from the external os to the fundus
-    double narrowestMm = 0.0;          ///< mm, the narrowest free width on that route
-};
-
-/// What an export wrote: one package, or one per variant (folder/variant-NNN).
+/// What an export wrote: one package, or one per variant (folder/variant-NNN), each as generate::exportScenes
+/// checked it (files read back, the scene's warnings, the scope's verdict).
 struct ExportResult {
     QString folder;
-    std::vector<ExportedPackage> packages;
+    std::vector<generate::ExportedPackage> packages;
 };
 
 class GenerationSession : public QObject {
@@ -60,9 +50,9 @@ public:
     /// Runs, on a worker thread, what the case needs through `last` (nothing when it is current already).
     void runThrough(generate::Stage last);
     /// Runs every stage, writes the scene package to `folder` (and `folder`.zip when `zip`), verifies it and checks
-    /// that a 2.9 mm scope passes. With `variants` > 1, writes folder/variant-NNN for each variant seed instead (as
-    /// `hysteroscene-cli generate --variants` does). `formats`: the other tools' formats written besides (glTF, MSH,
-    /// OBJ, SOFA; none by default, as `generate --formats`).
+    /// that a 2.9 mm scope passes (generate::exportScenes, as the command line's generate). With `variants` > 1, writes
+    /// folder/variant-NNN for each variant seed instead (as `hysteroscene-cli generate --variants` does). `formats`:
+    /// the other tools' formats written besides (glTF, MSH, OBJ, SOFA; none by default, as `generate --formats`).
     void exportPackage(const QString& folder, bool zip, int variants = 1,
                        const scene::PackageWriteOptions& formats = {});
     /// Rebuilds the organ after each edit (default on); the delay lets edits in a row end first.
