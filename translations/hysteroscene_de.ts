@@ -420,27 +420,31 @@
         <translation>Als %1 gezippt.</translation>
     </message>
     <message>
-        <source>The scope&apos;s passage could not be checked.</source>
-        <translation>Der Durchgang des Hysteroskops konnte nicht geprüft werden.</translation>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The simulator could not be started.&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;Der Simulator konnte nicht gestartet werden.&lt;/span&gt;</translation>
     </message>
     <message>
-        <source>A 2.9 mm scope reaches the fundus (narrowest %1 mm).</source>
-        <translation>Ein 2,9-mm-Hysteroskop erreicht den Fundus (engste Stelle %1 mm).</translation>
-    </message>
-    <message>
-        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;A 2.9 mm scope does not reach the fundus (narrowest %1 mm).&lt;/span&gt;</source>
-        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;Ein 2,9-mm-Hysteroskop erreicht den Fundus nicht (engste Stelle %1 mm).&lt;/span&gt;</translation>
+        <source>The scope&apos;s passage could not be checked: %1</source>
+        <translation>Der Durchgang des Hysteroskops konnte nicht geprüft werden: %1</translation>
     </message>
     <message numerus="yes">
-        <source>%n warning(s) in scene.json.</source>
+        <source>%n warning(s), also in scene.json:</source>
         <translation>
-            <numerusform>%n Warnung in scene.json.</numerusform>
-            <numerusform>%n Warnungen in scene.json.</numerusform>
+            <numerusform>%n Warnung, auch in scene.json:</numerusform>
+            <numerusform>%n Warnungen, auch in scene.json:</numerusform>
         </translation>
     </message>
     <message>
-        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The simulator could not be started.&lt;/span&gt;</source>
-        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;Der Simulator konnte nicht gestartet werden.&lt;/span&gt;</translation>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;A %1 mm scope does not pass the cervical canal (narrowest %2 mm).&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;Ein %1-mm-Hysteroskop passiert den Zervikalkanal nicht (engste Stelle %2 mm).&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>A %1 mm scope passes the cervical canal (narrowest %2 mm) and reaches the fundus (narrowest %3 mm).</source>
+        <translation>Ein %1-mm-Hysteroskop passiert den Zervikalkanal (engste Stelle %2 mm) und erreicht den Fundus (engste Stelle %3 mm).</translation>
+    </message>
+    <message>
+        <source>A %1 mm scope passes the cervical canal (narrowest %2 mm); a pathology narrows the way to the fundus to %3 mm.</source>
+        <translation>Ein %1-mm-Hysteroskop passiert den Zervikalkanal (engste Stelle %2 mm); eine Pathologie verengt den Weg zum Fundus auf %3 mm.</translation>
     </message>
 </context>
 <context>
@@ -1131,13 +1135,6 @@
         <source>From before the last edit: grow again.</source>
         <translation>Stand vor der letzten Änderung: Erneut wachsen lassen.</translation>
     </message>
-    <message numerus="yes">
-        <source>%n note(s) from the stage</source>
-        <translation>
-            <numerusform>%n Hinweis der Stufe</numerusform>
-            <numerusform>%n Hinweise der Stufe</numerusform>
-        </translation>
-    </message>
     <message>
         <source>Fundus</source>
         <translation>Fundus</translation>
@@ -1149,6 +1146,25 @@
     <message>
         <source>Site</source>
         <translation>Lokalisation</translation>
+    </message>
+    <message>
+        <source>measured FIGO %1</source>
+        <translation>gemessen FIGO %1</translation>
+    </message>
+    <message>
+        <source>On the final body: FIGO &lt;b&gt;%1&lt;/b&gt;</source>
+        <translation>Am fertigen Körper: FIGO &lt;b&gt;%1&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>Requested FIGO %1, measured FIGO %2: the trainee meets another type than the case asks for.</source>
+        <translation>Verlangt FIGO %1, gemessen FIGO %2: die Lernenden treffen einen anderen Typ an, als der Fall verlangt.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n note(s) from the stage:</source>
+        <translation>
+            <numerusform>%n Hinweis der Stufe:</numerusform>
+            <numerusform>%n Hinweise der Stufe:</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1405,6 +1421,10 @@
         <source>Fundal wall thickness</source>
         <translation>Dicke der Funduswand</translation>
     </message>
+    <message>
+        <source>(outside)</source>
+        <translation>(außerhalb)</translation>
+    </message>
 </context>
 <context>
     <name>hs::widgets::ReviewPanel</name>
@@ -1535,6 +1555,53 @@
     <message>
         <source>Saved to %1.</source>
         <translation>Gespeichert unter %1.</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::SceneWarnings</name>
+    <message>
+        <source>The texture stage substituted or left out part of the look: the surface may not look as the case describes.</source>
+        <translation>Die Texturstufe hat einen Teil des Aussehens ersetzt oder weggelassen: die Oberfläche sieht womöglich nicht aus, wie der Fall es beschreibt.</translation>
+    </message>
+    <message>
+        <source>A pathology could not be placed or grown exactly as asked (moved off a tubal ostium or another pathology, or grown to another size or type): look at it in the 3-D view.</source>
+        <translation>Eine Pathologie konnte nicht genau wie verlangt platziert oder gezüchtet werden (von einem Tubenostium oder einer anderen Pathologie weggerückt, oder in anderer Größe oder anderem Typ gewachsen): in der 3-D-Ansicht ansehen.</translation>
+    </message>
+    <message>
+        <source>Joining the pathologies to the organ changed or dropped part of one: check where they meet.</source>
+        <translation>Beim Verbinden der Pathologien mit dem Organ wurde ein Teil einer Pathologie verändert oder entfernt: die Berührungsstellen prüfen.</translation>
+    </message>
+    <message>
+        <source>The mesher repaired or approximated part of the body: the mesh may differ from the shape it was made from.</source>
+        <translation>Der Vernetzer hat einen Teil des Körpers repariert oder angenähert: das Netz kann von der Form abweichen, aus der es entstand.</translation>
+    </message>
+    <message>
+        <source>A measured FIGO type, Lasmar score or size differs from the one the case asks for: the trainee meets another grade than intended.</source>
+        <translation>Ein gemessener FIGO-Typ, Lasmar-Score oder eine Größe weicht von der Vorgabe des Falls ab: die Lernenden treffen einen anderen Grad an als beabsichtigt.</translation>
+    </message>
+    <message>
+        <source>A clinical measurement fell back to an approximation: the reported figures are less certain.</source>
+        <translation>Eine klinische Messung musste auf eine Näherung ausweichen: die berichteten Werte sind unsicherer.</translation>
+    </message>
+    <message>
+        <source>A polyp lies against the wall over more of its surface than its kind allows: it may look buried in the wall rather than standing in the cavity.</source>
+        <translation>Ein Polyp liegt mit mehr Oberfläche an der Wand, als seine Art erlaubt: er wirkt womöglich in der Wand vergraben statt im Cavum stehend.</translation>
+    </message>
+    <message>
+        <source>The cavity&apos;s opening under the distension pressure was estimated from the organ without its pathologies: distension in the simulator is approximate.</source>
+        <translation>Die Öffnung des Cavums unter dem Distensionsdruck wurde am Organ ohne seine Pathologien geschätzt: die Distension im Simulator ist genähert.</translation>
+    </message>
+    <message>
+        <source>Part of the visible surface is bound away from the simulation mesh: it may drift off the tissue when the tissue moves.</source>
+        <translation>Ein Teil der sichtbaren Oberfläche ist abseits des Simulationsnetzes gebunden: er kann sich vom Gewebe lösen, wenn sich das Gewebe bewegt.</translation>
+    </message>
+    <message>
+        <source>The tetrahedral mesh misses one of its quality bars: the simulation may be less accurate or less stable where the bad elements are.</source>
+        <translation>Das Tetraedernetz verfehlt eine seiner Qualitätsschwellen: die Simulation kann dort, wo die schlechten Elemente liegen, ungenauer oder weniger stabil sein.</translation>
+    </message>
+    <message>
+        <source>See the scene package&apos;s documentation (docs/scene-format.md) for this warning.</source>
+        <translation>Zu dieser Warnung siehe die Dokumentation des Szenenpakets (docs/scene-format.md).</translation>
     </message>
 </context>
 <context>

@@ -420,27 +420,31 @@
         <translation>Compressé en %1.</translation>
     </message>
     <message>
-        <source>The scope&apos;s passage could not be checked.</source>
-        <translation>Le passage de l&apos;hystéroscope n&apos;a pas pu être vérifié.</translation>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The simulator could not be started.&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;Le simulateur n&apos;a pas pu être lancé.&lt;/span&gt;</translation>
     </message>
     <message>
-        <source>A 2.9 mm scope reaches the fundus (narrowest %1 mm).</source>
-        <translation>Un hystéroscope de 2,9 mm atteint le fond utérin (passage le plus étroit %1 mm).</translation>
-    </message>
-    <message>
-        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;A 2.9 mm scope does not reach the fundus (narrowest %1 mm).&lt;/span&gt;</source>
-        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;Un hystéroscope de 2,9 mm n&apos;atteint pas le fond utérin (passage le plus étroit %1 mm).&lt;/span&gt;</translation>
+        <source>The scope&apos;s passage could not be checked: %1</source>
+        <translation>Le passage de l&apos;hystéroscope n&apos;a pas pu être vérifié : %1</translation>
     </message>
     <message numerus="yes">
-        <source>%n warning(s) in scene.json.</source>
+        <source>%n warning(s), also in scene.json:</source>
         <translation>
-            <numerusform>%n avertissement dans scene.json.</numerusform>
-            <numerusform>%n avertissements dans scene.json.</numerusform>
+            <numerusform>%n avertissement, aussi dans scene.json :</numerusform>
+            <numerusform>%n avertissements, aussi dans scene.json :</numerusform>
         </translation>
     </message>
     <message>
-        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The simulator could not be started.&lt;/span&gt;</source>
-        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;Le simulateur n&apos;a pas pu être lancé.&lt;/span&gt;</translation>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;A %1 mm scope does not pass the cervical canal (narrowest %2 mm).&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;Un hystéroscope de %1 mm ne franchit pas le canal cervical (passage le plus étroit %2 mm).&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>A %1 mm scope passes the cervical canal (narrowest %2 mm) and reaches the fundus (narrowest %3 mm).</source>
+        <translation>Un hystéroscope de %1 mm franchit le canal cervical (passage le plus étroit %2 mm) et atteint le fond utérin (passage le plus étroit %3 mm).</translation>
+    </message>
+    <message>
+        <source>A %1 mm scope passes the cervical canal (narrowest %2 mm); a pathology narrows the way to the fundus to %3 mm.</source>
+        <translation>Un hystéroscope de %1 mm franchit le canal cervical (passage le plus étroit %2 mm) ; une pathologie rétrécit le chemin vers le fond utérin à %3 mm.</translation>
     </message>
 </context>
 <context>
@@ -1131,13 +1135,6 @@
         <source>From before the last edit: grow again.</source>
         <translation>Antérieur à la dernière modification : relancez la croissance.</translation>
     </message>
-    <message numerus="yes">
-        <source>%n note(s) from the stage</source>
-        <translation>
-            <numerusform>%n remarque de l&apos;étape</numerusform>
-            <numerusform>%n remarques de l&apos;étape</numerusform>
-        </translation>
-    </message>
     <message>
         <source>Fundus</source>
         <translation>Fond utérin</translation>
@@ -1149,6 +1146,25 @@
     <message>
         <source>Site</source>
         <translation>Localisation</translation>
+    </message>
+    <message>
+        <source>measured FIGO %1</source>
+        <translation>FIGO mesuré %1</translation>
+    </message>
+    <message>
+        <source>On the final body: FIGO &lt;b&gt;%1&lt;/b&gt;</source>
+        <translation>Sur le corps final : FIGO &lt;b&gt;%1&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>Requested FIGO %1, measured FIGO %2: the trainee meets another type than the case asks for.</source>
+        <translation>FIGO %1 demandé, FIGO %2 mesuré : l&apos;apprenant rencontre un autre type que celui du cas.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n note(s) from the stage:</source>
+        <translation>
+            <numerusform>%n remarque de l&apos;étape :</numerusform>
+            <numerusform>%n remarques de l&apos;étape :</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1405,6 +1421,10 @@
         <source>Fundal wall thickness</source>
         <translation>Épaisseur de la paroi fundique</translation>
     </message>
+    <message>
+        <source>(outside)</source>
+        <translation>(hors plage)</translation>
+    </message>
 </context>
 <context>
     <name>hs::widgets::ReviewPanel</name>
@@ -1535,6 +1555,53 @@
     <message>
         <source>Saved to %1.</source>
         <translation>Enregistré dans %1.</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::SceneWarnings</name>
+    <message>
+        <source>The texture stage substituted or left out part of the look: the surface may not look as the case describes.</source>
+        <translation>L&apos;étape de texture a remplacé ou omis une partie de l&apos;aspect : la surface peut ne pas ressembler à ce que décrit le cas.</translation>
+    </message>
+    <message>
+        <source>A pathology could not be placed or grown exactly as asked (moved off a tubal ostium or another pathology, or grown to another size or type): look at it in the 3-D view.</source>
+        <translation>Une pathologie n&apos;a pas pu être placée ou croître exactement comme demandé (écartée d&apos;un ostium tubaire ou d&apos;une autre pathologie, ou d&apos;une autre taille ou d&apos;un autre type) : examinez-la dans la vue 3D.</translation>
+    </message>
+    <message>
+        <source>Joining the pathologies to the organ changed or dropped part of one: check where they meet.</source>
+        <translation>La fusion des pathologies avec l&apos;organe a modifié ou supprimé une partie de l&apos;une d&apos;elles : vérifiez leurs zones de contact.</translation>
+    </message>
+    <message>
+        <source>The mesher repaired or approximated part of the body: the mesh may differ from the shape it was made from.</source>
+        <translation>Le mailleur a réparé ou approché une partie du corps : le maillage peut différer de la forme d&apos;origine.</translation>
+    </message>
+    <message>
+        <source>A measured FIGO type, Lasmar score or size differs from the one the case asks for: the trainee meets another grade than intended.</source>
+        <translation>Un type FIGO, un score de Lasmar ou une taille mesurés diffèrent de ceux du cas : l&apos;apprenant rencontre un autre grade que prévu.</translation>
+    </message>
+    <message>
+        <source>A clinical measurement fell back to an approximation: the reported figures are less certain.</source>
+        <translation>Une mesure clinique a dû recourir à une approximation : les valeurs rapportées sont moins sûres.</translation>
+    </message>
+    <message>
+        <source>A polyp lies against the wall over more of its surface than its kind allows: it may look buried in the wall rather than standing in the cavity.</source>
+        <translation>Un polype repose contre la paroi sur une plus grande part de sa surface que son type ne le permet : il peut sembler enfoui dans la paroi plutôt que dressé dans la cavité.</translation>
+    </message>
+    <message>
+        <source>The cavity&apos;s opening under the distension pressure was estimated from the organ without its pathologies: distension in the simulator is approximate.</source>
+        <translation>L&apos;ouverture de la cavité sous la pression de distension a été estimée sur l&apos;organe sans ses pathologies : la distension dans le simulateur est approximative.</translation>
+    </message>
+    <message>
+        <source>Part of the visible surface is bound away from the simulation mesh: it may drift off the tissue when the tissue moves.</source>
+        <translation>Une partie de la surface visible est liée à l&apos;écart du maillage de simulation : elle peut se détacher du tissu quand celui-ci bouge.</translation>
+    </message>
+    <message>
+        <source>The tetrahedral mesh misses one of its quality bars: the simulation may be less accurate or less stable where the bad elements are.</source>
+        <translation>Le maillage tétraédrique manque l&apos;un de ses seuils de qualité : la simulation peut être moins précise ou moins stable là où sont les mauvais éléments.</translation>
+    </message>
+    <message>
+        <source>See the scene package&apos;s documentation (docs/scene-format.md) for this warning.</source>
+        <translation>Pour cet avertissement, voir la documentation du paquet de scène (docs/scene-format.md).</translation>
     </message>
 </context>
 <context>

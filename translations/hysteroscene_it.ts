@@ -420,27 +420,31 @@
         <translation>Compresso come %1.</translation>
     </message>
     <message>
-        <source>The scope&apos;s passage could not be checked.</source>
-        <translation>Non è stato possibile verificare il passaggio dell&apos;isteroscopio.</translation>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The simulator could not be started.&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;Impossibile avviare il simulatore.&lt;/span&gt;</translation>
     </message>
     <message>
-        <source>A 2.9 mm scope reaches the fundus (narrowest %1 mm).</source>
-        <translation>Un isteroscopio da 2,9 mm raggiunge il fondo (punto più stretto %1 mm).</translation>
-    </message>
-    <message>
-        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;A 2.9 mm scope does not reach the fundus (narrowest %1 mm).&lt;/span&gt;</source>
-        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;Un isteroscopio da 2,9 mm non raggiunge il fondo (punto più stretto %1 mm).&lt;/span&gt;</translation>
+        <source>The scope&apos;s passage could not be checked: %1</source>
+        <translation>Non è stato possibile verificare il passaggio dell&apos;isteroscopio: %1</translation>
     </message>
     <message numerus="yes">
-        <source>%n warning(s) in scene.json.</source>
+        <source>%n warning(s), also in scene.json:</source>
         <translation>
-            <numerusform>%n avviso in scene.json.</numerusform>
-            <numerusform>%n avvisi in scene.json.</numerusform>
+            <numerusform>%n avviso, anche in scene.json:</numerusform>
+            <numerusform>%n avvisi, anche in scene.json:</numerusform>
         </translation>
     </message>
     <message>
-        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The simulator could not be started.&lt;/span&gt;</source>
-        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;Impossibile avviare il simulatore.&lt;/span&gt;</translation>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;A %1 mm scope does not pass the cervical canal (narrowest %2 mm).&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;Un isteroscopio da %1 mm non attraversa il canale cervicale (punto più stretto %2 mm).&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>A %1 mm scope passes the cervical canal (narrowest %2 mm) and reaches the fundus (narrowest %3 mm).</source>
+        <translation>Un isteroscopio da %1 mm attraversa il canale cervicale (punto più stretto %2 mm) e raggiunge il fondo (punto più stretto %3 mm).</translation>
+    </message>
+    <message>
+        <source>A %1 mm scope passes the cervical canal (narrowest %2 mm); a pathology narrows the way to the fundus to %3 mm.</source>
+        <translation>Un isteroscopio da %1 mm attraversa il canale cervicale (punto più stretto %2 mm); una patologia restringe la via verso il fondo a %3 mm.</translation>
     </message>
 </context>
 <context>
@@ -1131,13 +1135,6 @@
         <source>From before the last edit: grow again.</source>
         <translation>Precedente all&apos;ultima modifica: ripeti la crescita.</translation>
     </message>
-    <message numerus="yes">
-        <source>%n note(s) from the stage</source>
-        <translation>
-            <numerusform>%n nota della fase</numerusform>
-            <numerusform>%n note della fase</numerusform>
-        </translation>
-    </message>
     <message>
         <source>Fundus</source>
         <translation>Fondo</translation>
@@ -1149,6 +1146,25 @@
     <message>
         <source>Site</source>
         <translation>Sede</translation>
+    </message>
+    <message>
+        <source>measured FIGO %1</source>
+        <translation>FIGO misurato %1</translation>
+    </message>
+    <message>
+        <source>On the final body: FIGO &lt;b&gt;%1&lt;/b&gt;</source>
+        <translation>Sul corpo finale: FIGO &lt;b&gt;%1&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>Requested FIGO %1, measured FIGO %2: the trainee meets another type than the case asks for.</source>
+        <translation>FIGO %1 richiesto, FIGO %2 misurato: chi si esercita incontra un altro tipo rispetto al caso.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n note(s) from the stage:</source>
+        <translation>
+            <numerusform>%n nota della fase:</numerusform>
+            <numerusform>%n note della fase:</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1405,6 +1421,10 @@
         <source>Fundal wall thickness</source>
         <translation>Spessore della parete fundica</translation>
     </message>
+    <message>
+        <source>(outside)</source>
+        <translation>(fuori intervallo)</translation>
+    </message>
 </context>
 <context>
     <name>hs::widgets::ReviewPanel</name>
@@ -1535,6 +1555,53 @@
     <message>
         <source>Saved to %1.</source>
         <translation>Salvato in %1.</translation>
+    </message>
+</context>
+<context>
+    <name>hs::widgets::SceneWarnings</name>
+    <message>
+        <source>The texture stage substituted or left out part of the look: the surface may not look as the case describes.</source>
+        <translation>La fase di texture ha sostituito o omesso parte dell&apos;aspetto: la superficie potrebbe non apparire come descrive il caso.</translation>
+    </message>
+    <message>
+        <source>A pathology could not be placed or grown exactly as asked (moved off a tubal ostium or another pathology, or grown to another size or type): look at it in the 3-D view.</source>
+        <translation>Una patologia non è stata posizionata o cresciuta esattamente come richiesto (spostata da un ostio tubarico o da un&apos;altra patologia, o cresciuta con altra dimensione o altro tipo): osservarla nella vista 3D.</translation>
+    </message>
+    <message>
+        <source>Joining the pathologies to the organ changed or dropped part of one: check where they meet.</source>
+        <translation>L&apos;unione delle patologie all&apos;organo ne ha modificato o eliminato una parte: controllare dove si toccano.</translation>
+    </message>
+    <message>
+        <source>The mesher repaired or approximated part of the body: the mesh may differ from the shape it was made from.</source>
+        <translation>Il generatore di mesh ha riparato o approssimato parte del corpo: la mesh può differire dalla forma di partenza.</translation>
+    </message>
+    <message>
+        <source>A measured FIGO type, Lasmar score or size differs from the one the case asks for: the trainee meets another grade than intended.</source>
+        <translation>Un tipo FIGO, un punteggio di Lasmar o una dimensione misurati differiscono da quelli del caso: chi si esercita incontra un altro grado rispetto al previsto.</translation>
+    </message>
+    <message>
+        <source>A clinical measurement fell back to an approximation: the reported figures are less certain.</source>
+        <translation>Una misura clinica è ricorsa a un&apos;approssimazione: i valori riportati sono meno certi.</translation>
+    </message>
+    <message>
+        <source>A polyp lies against the wall over more of its surface than its kind allows: it may look buried in the wall rather than standing in the cavity.</source>
+        <translation>Un polipo poggia sulla parete con una parte della superficie maggiore di quanto il suo tipo consenta: può sembrare sepolto nella parete invece che sporgere nella cavità.</translation>
+    </message>
+    <message>
+        <source>The cavity&apos;s opening under the distension pressure was estimated from the organ without its pathologies: distension in the simulator is approximate.</source>
+        <translation>L&apos;apertura della cavità sotto la pressione di distensione è stata stimata sull&apos;organo senza le sue patologie: la distensione nel simulatore è approssimata.</translation>
+    </message>
+    <message>
+        <source>Part of the visible surface is bound away from the simulation mesh: it may drift off the tissue when the tissue moves.</source>
+        <translation>Parte della superficie visibile è legata lontano dalla mesh di simulazione: può staccarsi dal tessuto quando il tessuto si muove.</translation>
+    </message>
+    <message>
+        <source>The tetrahedral mesh misses one of its quality bars: the simulation may be less accurate or less stable where the bad elements are.</source>
+        <translation>La mesh tetraedrica non rispetta una delle sue soglie di qualità: la simulazione può essere meno accurata o meno stabile dove si trovano gli elementi scadenti.</translation>
+    </message>
+    <message>
+        <source>See the scene package&apos;s documentation (docs/scene-format.md) for this warning.</source>
+        <translation>Per questo avviso vedere la documentazione del pacchetto di scena (docs/scene-format.md).</translation>
     </message>
 </context>
 <context>

@@ -7,6 +7,7 @@
 #include "hs/widgets/jobs/GenerationSession.h"
 #include "hs/widgets/panels/PathologyPanel.h"
 
+#include <QColor>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
@@ -54,6 +55,7 @@ private slots:
     void differentEditsAreDifferentUndoSteps();
     void placesByAClickOnTheWall();
     void growShowsTheMeasuredDescriptors();
+    void flagsAMeasuredFigoTypeOtherThanTheRequestedOne();
 
 private:
     template <class T>
@@ -182,6 +184,35 @@ void TestPathologyPanel::growShowsTheMeasuredDescriptors() {
     QVERIFY(m_session->isCurrent(hs::generate::Stage::Pathology));
     const QString text = find<QLabel>("pathologyResultLabel")->text();
     QVERIFY2(text.contains("FIGO") && text.contains("Lasmar"), qPrintable(text));
+}
+
+// An 8 mm FIGO 7 (stalked subserosal) myoma on the posterior wall grows into a 14.6 mm FIGO 6: the list marks it in
+// red with the measured type, the measurements say it, and the stage's notes stand in the panel, not in a tooltip.
+void TestPathologyPanel::flagsAMeasuredFigoTypeOtherThanTheRequestedOne() {
+    m_document->edit("FIGO 7", [](hs::scene::CaseSpec& s) {
+        auto& myoma = s.pathologies[0];
+        myoma.figo = hs::clinical::FigoType{7, -1};
+        myoma.sizeMm = 8.0;
+        myoma.placement = hs::clinical::ClinicalPlacement{hs::clinical::UterineLocation::Posterior};
+    });
+    m_panel->setCurrentIndex(0);
+    auto* list = find<QListWidget>("pathologyList");
+    QVERIFY(!list->item(0)->data(Qt::UserRole).toBool()); // nothing measured yet
+    QSignalSpy changed(m_session, &GenerationSession::resultsChanged);
+    find<QPushButton>("growButton")->click();
+    QVERIFY(changed.wait(60000));
+    QVERIFY(list->item(0)->data(Qt::UserRole).toBool());
+    QVERIFY2(list->item(0)->text().contains("measured FIGO 6"), qPrintable(list->item(0)->text()));
+    QCOMPARE(list->item(0)->foreground().color(), QColor(0xc0, 0x39, 0x2b));
+    QVERIFY(!list->item(1)->data(Qt::UserRole).toBool()); // the polyp has no FIGO type
+    const QString text = find<QLabel>("pathologyResultLabel")->text();
+    QVERIFY2(text.contains("Requested FIGO 7, measured FIGO 6"), qPrintable(text));
+    const QString notes = find<QLabel>("pathologyWarningsLabel")->text();
+    QVERIFY2(notes.contains("requested FIGO 7, measured 6"), qPrintable(notes));
+    QVERIFY(find<QLabel>("pathologyWarningsLabel")->toolTip().isEmpty());
+    // Asking for what grew clears the mark.
+    m_document->edit("FIGO 6", [](hs::scene::CaseSpec& s) { s.pathologies[0].figo = hs::clinical::FigoType{6, -1}; });
+    QVERIFY(!list->item(0)->data(Qt::UserRole).toBool());
 }
 
 QTEST_MAIN(TestPathologyPanel)

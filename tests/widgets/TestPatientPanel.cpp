@@ -15,6 +15,8 @@
 #include <QSpinBox>
 #include <QTest>
 
+#include <cmath>
+
 using hs::widgets::CaseDocument;
 using hs::widgets::GenerationSession;
 using hs::widgets::PatientPanel;
@@ -31,6 +33,7 @@ private slots:
     void refusesAContradictionBetweenFields();
     void aMeasuredDimensionIsSetAndCleared();
     void showsTheOrgansDimensionsBesideTheExpectedRange();
+    void flagsADimensionOutsideThePatientsRangeInPlace();
 
 private:
     template <class T>
@@ -133,10 +136,34 @@ void TestPatientPanel::showsTheOrgansDimensionsBesideTheExpectedRange() {
     QSignalSpy changed(m_session, &GenerationSession::resultsChanged);
     m_session->runThrough(hs::generate::Stage::Organ);
     QVERIFY(changed.wait(30000));
-    QVERIFY2(organ->text().endsWith(" mm"), qPrintable(organ->text()));
+    QVERIFY2(organ->text().contains(" mm"), qPrintable(organ->text()));
     QVERIFY(organ->isEnabled());
     find<QDoubleSpinBox>("ageSpin")->setValue(45.0);
     QVERIFY(!organ->isEnabled()); // grey: the organ is of the case before the edit
+}
+
+// An organ fitted to a measured cavity length beyond the patient's expected 95 % range shows it, flagged where it
+// stands (red, a sign and the word), not only in a tooltip.
+void TestPatientPanel::flagsADimensionOutsideThePatientsRangeInPlace() {
+    auto* organ = find<QLabel>("cavityLengthOrganLabel");
+    const auto expected = hs::anatomy::expectedDimensions(m_document->spec().patient).cavityLengthMm;
+    const double measured = std::ceil(expected.high()) + 6.0; // mm, whole (the field has one decimal); within 20 - 55
+    QVERIFY(measured <= 55.0);
+    find<QCheckBox>("cavityLengthCheck")->setChecked(true);
+    find<QDoubleSpinBox>("cavityLengthSpin")->setValue(measured);
+    QCOMPARE(*m_document->spec().anatomy.dimensions.cavityLengthMm, measured);
+    QSignalSpy changed(m_session, &GenerationSession::resultsChanged);
+    m_session->runThrough(hs::generate::Stage::Organ);
+    QVERIFY(changed.wait(30000));
+    QVERIFY2(organ->property("outside").toBool(), qPrintable(organ->text()));
+    QVERIFY2(organ->text().contains(QStringLiteral("⚠")) && organ->text().contains("outside"),
+             qPrintable(organ->text()));
+    // Back to the organ the patient's relations give: within its range, nothing flagged.
+    find<QCheckBox>("cavityLengthCheck")->setChecked(false);
+    m_session->runThrough(hs::generate::Stage::Organ);
+    QVERIFY(changed.wait(30000));
+    const bool inside = !organ->property("outside").toBool();
+    QVERIFY2(inside && !organ->text().contains(QStringLiteral("⚠")), qPrintable(organ->text()));
 }
 
 QTEST_MAIN(TestPatientPanel)

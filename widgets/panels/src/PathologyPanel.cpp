@@ -5,7 +5,9 @@
 #include "hs/widgets/jobs/GenerationSession.h"
 #include "hs/widgets/panels/CaseEdits.h"
 
+#include <QBrush>
 #include <QButtonGroup>
+#include <QColor>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -265,6 +267,8 @@ void PathologyPanel::buildResults() {
     m_warningsLabel = new QLabel(group);
     m_warningsLabel->setObjectName("pathologyWarningsLabel");
     m_warningsLabel->setWordWrap(true);
+    m_warningsLabel->setTextFormat(Qt::RichText);
+    m_warningsLabel->setStyleSheet(QStringLiteral("color: #8a5a00;"));
     box->addWidget(m_warningsLabel);
     layout()->addWidget(group);
 }
@@ -507,6 +511,7 @@ void PathologyPanel::refresh() {
         for (std::size_t i = 0; i < spec.pathologies.size(); ++i)
             m_list->item(static_cast<int>(i))->setText(itemText(spec.pathologies[i]));
     }
+    markFigoMismatches();
     m_duplicateButton->setEnabled(m_list->currentRow() >= 0);
     m_removeButton->setEnabled(m_list->currentRow() >= 0);
     m_refreshing = false;
@@ -557,7 +562,44 @@ void PathologyPanel::refreshEditor() {
     m_refreshing = false;
 }
 
+namespace {
+
+/// The FIGO type measured for pathology `id`: on the final body when the scene is current, else on the grown
+/// pathology; nothing for a polyp or before growth.
+std::optional<FigoType> measuredFigo(const generate::Generated& results, bool sceneCurrent, const std::string& id) {
+    if (sceneCurrent && results.scene)
+        for (const scene::PathologyDescriptor& d : results.scene->clinical.pathologies)
+            if (d.id == id)
+                return d.figo;
+    if (results.pathologies)
+        for (const pathology::GrownPathology& g : results.pathologies->pathologies)
+            if (g.id == id && g.descriptors.kind == PathologyKind::Myoma)
+                return g.descriptors.figo;
+    return std::nullopt;
+}
+
+} // namespace
+
+void PathologyPanel::markFigoMismatches() {
+    const auto results = m_session.results();
+    const bool sceneCurrent = m_session.isCurrent(generate::Stage::Scene);
+    const auto& pathologies = m_document.spec().pathologies;
+    for (int row = 0; row < m_list->count() && row < static_cast<int>(pathologies.size()); ++row) {
+        const PathologySpec& p = pathologies[static_cast<std::size_t>(row)];
+        QListWidgetItem* item = m_list->item(row);
+        const auto measured = results ? measuredFigo(*results, sceneCurrent, p.id) : std::nullopt;
+        const bool differs = p.figo && measured && *measured != *p.figo;
+        item->setText(
+            itemText(p) +
+            (differs ? QStringLiteral("  ⚠ ") + tr("measured FIGO %1").arg(QString::fromStdString(measured->toString()))
+                     : QString()));
+        item->setForeground(differs ? QBrush(QColor(0xc0, 0x39, 0x2b)) : QBrush());
+        item->setData(Qt::UserRole, differs);
+    }
+}
+
 void PathologyPanel::refreshResults() {
+    markFigoMismatches();
     const int index = currentIndex();
     const auto results = m_session.results();
     const bool grown = results && results->pathologies && m_session.isCurrent(generate::Stage::Pathology);
@@ -567,7 +609,8 @@ void PathologyPanel::refreshResults() {
         m_warningsLabel->clear();
         return;
     }
-    const std::string& id = m_document.spec().pathologies[static_cast<std::size_t>(index)].id;
+    const PathologySpec& asked = m_document.spec().pathologies[static_cast<std::size_t>(index)];
+    const std::string& id = asked.id;
     const auto& list = results->pathologies->pathologies;
     const auto it =
         std::find_if(list.begin(), list.end(), [&](const pathology::GrownPathology& g) { return g.id == id; });
@@ -593,6 +636,17 @@ void PathologyPanel::refreshResults() {
                         .arg(d.lasmar.extension)
                         .arg(d.lasmar.penetration)
                         .arg(d.lasmar.wall);
+        // The type the trainee meets is the final body's when the scene is current.
+        const auto final = measuredFigo(*results, m_session.isCurrent(generate::Stage::Scene), id);
+        if (final && !(*final == d.figo))
+            text += QStringLiteral("<br>") +
+                    tr("On the final body: FIGO <b>%1</b>").arg(QString::fromStdString(final->toString()));
+        const auto shown = final ? *final : d.figo;
+        if (asked.figo && !(shown == *asked.figo))
+            text += QStringLiteral("<br><span style='color:#c0392b'>⚠ ") +
+                    tr("Requested FIGO %1, measured FIGO %2: the trainee meets another type than the case asks for.")
+                        .arg(QString::fromStdString(asked.figo->toString()), QString::fromStdString(shown.toString())) +
+                    QStringLiteral("</span>");
     } else {
         text = d.pedunculated ? tr("Measured: a %1 mm head on a %2 mm stalk")
                                     .arg(locale.toString(d.sizeMm, 'f', 1), locale.toString(d.stalkLengthMm, 'f', 1))
@@ -602,13 +656,16 @@ void PathologyPanel::refreshResults() {
     if (!m_session.isCurrent(generate::Stage::Pathology))
         text += QStringLiteral("<br><i>") + tr("From before the last edit: grow again.") + QStringLiteral("</i>");
     m_resultLabel->setText(text);
-    // The stage's notes name the pathology by id; they are technical English, shown as the stage wrote them.
+    // The stage's notes name the pathology by id; they are technical English, shown as the stage wrote them, in
+    // the panel (not behind a tooltip).
     QStringList notes;
     for (const std::string& w : results->pathologies->warnings)
         if (w.find(id) != std::string::npos)
-            notes << QString::fromStdString(w);
-    m_warningsLabel->setText(notes.isEmpty() ? QString() : tr("%n note(s) from the stage", "", int(notes.size())));
-    m_warningsLabel->setToolTip(notes.join(QLatin1Char('\n')));
+            notes << QStringLiteral("• ") + QString::fromStdString(w).toHtmlEscaped();
+    m_warningsLabel->setText(notes.isEmpty() ? QString()
+                                             : tr("%n note(s) from the stage:", "", int(notes.size())) +
+                                                   QStringLiteral("<br>") + notes.join(QStringLiteral("<br>")));
+    m_warningsLabel->setToolTip(QString());
 }
 
 } // namespace hs::widgets

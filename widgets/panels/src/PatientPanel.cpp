@@ -341,13 +341,19 @@ void PatientPanel::refreshDimensions() {
             tr("%1 – %2 mm").arg(locale.toString(e.low(), 'f', 1), locale.toString(e.high(), 'f', 1)));
         if (results && results->organ) {
             const double value = results->organ->dimensions.*(info.organField);
-            row.organLabel->setText(tr("%1 mm").arg(locale.toString(value, 'f', 1)));
+            // Outside the patient's expected range: flagged in place (red, a sign and the word), not only on hover.
+            const bool outside = value < e.low() || value > e.high();
+            const QString text = tr("%1 mm").arg(locale.toString(value, 'f', 1));
+            row.organLabel->setText(
+                outside ? QStringLiteral("<span style='color:#c0392b'>⚠ %1 %2</span>").arg(text, tr("(outside)"))
+                        : text);
+            row.organLabel->setProperty("outside", outside);
             // Grey while the organ is being rebuilt for the edited case.
             row.organLabel->setEnabled(current);
-            const bool outside = value < e.low() || value > e.high();
             row.organLabel->setToolTip(outside ? tr("Outside the expected range for this patient") : QString());
         } else {
             row.organLabel->setText(QStringLiteral("–"));
+            row.organLabel->setProperty("outside", false);
         }
     }
 }

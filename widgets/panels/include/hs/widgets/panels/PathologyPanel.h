@@ -66,6 +66,9 @@ private:
     void refresh();
     void refreshEditor();
     void refreshResults();
+    /// Marks, in the list, each myoma whose measured FIGO type (the final body's when the scene is current) differs
+    /// from the requested one: red, with the measured type after its name.
+    void markFigoMismatches();
     void setPlacing(bool placing);
     /// One edit of the selected pathology; refused with a reason when the case would break a rule.
     void editCurrent(const QString& text, const std::function<void(scene::PathologySpec&)>& change, int mergeKey = 0);
