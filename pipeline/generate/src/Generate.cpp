@@ -88,8 +88,13 @@ Status runTexture(Generated& g, const GenerateParams& params, Progress& progress
     auto baked = texture::bakeAppearance(boundary, bake, progress);
     if (!baked)
         return baked.failure();
+    // The close-up surface and its binding take no progress of their own: a cancel is checked between them.
+    progress.report("texture.closeUp", 1.0);
+    HS_TRY(progress.check("texture", "refining the close-up surface"));
     texture::TexturedSurface textured =
         texture::makeCloseUpSurface(boundary, baked->atlas, closeUpParamsFor(boundary, ostia));
+    progress.report("texture.bind", 1.0);
+    HS_TRY(progress.check("texture", "binding the visual surface to the tets"));
     Appearance a;
     a.surface.embedding =
         embedPoints(g.tissue->tets, textured.mesh.points, params.threads.value_or(g.spec.meshing.threads));
@@ -113,8 +118,10 @@ Status runScene(Generated& g, const GenerateParams& params, Progress& progress) 
     auto s = assembleScene(g.spec, *g.organ, *g.pathologies, *g.body, *g.mesh, *g.tissue, *g.appearance);
     if (!s)
         return s.failure();
+    // The simulation mesh and the hydrometra's static solves take about half of the stage each.
+    auto simProgress = progress.sub(0.0, 0.5);
     auto sim = simulationMesh(g.spec, *g.body, s->materials, g.organ->dimensions.cervixLengthMm, s->surface.mesh,
-                              params.threads, progress);
+                              params.threads, simProgress);
     if (!sim)
         return sim.failure();
     s->simulation = std::move(sim).value();
@@ -122,12 +129,16 @@ Status runScene(Generated& g, const GenerateParams& params, Progress& progress) 
         s->warnings.push_back(w);
     HS_TRY(progress.check("scene"));
     // The hydrometra curve of the scene's own tissue model (the simulator's distension reaches it).
+    auto curveProgress = progress.sub(0.5, 1.0);
+    curveProgress.report("scene.hydrometra", 0.0);
     mechanics::UterusModel model;
     HS_TRY(mechanics::buildUterusModel(*s, mechanics::FemSettings{}, model));
     std::vector<double> pressures;
     for (const double mmHg : scene::kHydrometraCurveMmHg)
         pressures.push_back(mmHg * units::kKpaPerMmHg);
-    auto curve = mechanics::hydrometraCurve(model, pressures);
+    auto curve = mechanics::hydrometraCurve(model, pressures, curveProgress);
+    if (!curve && curve.error().code == ErrorCode::Cancelled)
+        return curve.failure();
     if (!curve)
         return fail(curve.error().code, "hydrometra curve: " + curve.error().detail);
     for (std::size_t i = 0; i < pressures.size(); ++i)

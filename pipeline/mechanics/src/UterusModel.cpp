@@ -175,7 +175,8 @@ Status staticSolver(const UterusModel& model, CorotationalFem& still) {
 }
 
 /// Raises the pressure on `still` from `fromKpa` to `toKpa` and lets the cavity settle; `pts` follows, mm.
-Status settle(const UterusModel& model, CorotationalFem& still, double fromKpa, double toKpa, std::vector<Vec3>& pts) {
+Status settle(const UterusModel& model, CorotationalFem& still, double fromKpa, double toKpa, std::vector<Vec3>& pts,
+              Progress& progress) {
     if (!std::isfinite(toKpa) || toKpa < 0.0 || toKpa > 40.0)
         return fail(ErrorCode::InvalidInput,
                     "static cavity: pressure " + std::to_string(toKpa) + " kPa is outside 0-40 kPa");
@@ -183,6 +184,7 @@ Status settle(const UterusModel& model, CorotationalFem& still, double fromKpa, 
     std::vector<FemConstraint> none;
     double last = model.cavityVolumeMl(pts);
     for (int s = 0; s < kStaticSteps; ++s) {
+        HS_TRY(progress.check("static cavity", "settling the tissue"));
         const double ramp = std::min(1.0, static_cast<double>(s + 1) / kStaticRampSteps);
         model.pressureForces(pts, fromKpa + (toKpa - fromKpa) * ramp, forces);
         still.step(forces, none);
@@ -201,23 +203,27 @@ Status settle(const UterusModel& model, CorotationalFem& still, double fromKpa, 
 
 } // namespace
 
-Status staticOpen(const UterusModel& model, double pressureKpa, std::vector<Vec3>& pts) {
+Status staticOpen(const UterusModel& model, double pressureKpa, std::vector<Vec3>& pts, Progress& progress) {
     CorotationalFem still;
     HS_TRY(staticSolver(model, still));
     pts = model.restMm;
-    return settle(model, still, 0.0, pressureKpa, pts);
+    return settle(model, still, 0.0, pressureKpa, pts, progress);
 }
 
-Result<std::vector<double>> hydrometraCurve(const UterusModel& model, const std::vector<double>& pressuresKpa) {
+Result<std::vector<double>> hydrometraCurve(const UterusModel& model, const std::vector<double>& pressuresKpa,
+                                            Progress& progress) {
     CorotationalFem still;
     HS_TRY(staticSolver(model, still));
+    HS_TRY(progress.check("hydrometra curve"));
     std::vector<Vec3> pts = model.restMm;
     std::vector<double> opening;
     double last = 0.0;
-    for (const double p : pressuresKpa) {
+    for (std::size_t i = 0; i < pressuresKpa.size(); ++i) {
+        const double p = pressuresKpa[i];
         if (p < last)
             return fail(ErrorCode::InvalidInput, "hydrometra curve: the pressures must ascend");
-        HS_TRY(settle(model, still, last, p, pts));
+        progress.report("scene.hydrometra", double(i) / double(pressuresKpa.size()));
+        HS_TRY(settle(model, still, last, p, pts, progress));
         opening.push_back(model.cavityVolumeMl(pts) - model.restCavityMl);
         last = p;
     }

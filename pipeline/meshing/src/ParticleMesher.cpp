@@ -223,7 +223,7 @@ Result<ParticleMeshResult> meshParticles(const RegionModel& input, const Particl
         step.counts.emplace_back("delaunayTets", static_cast<std::int64_t>(dt.tets.size()));
         step.counts.emplace_back("repairedTets", static_cast<std::int64_t>(dt.repairedTets));
         step.counts.emplace_back("movedVertices", static_cast<std::int64_t>(dt.movedVertices));
-        progress.report("meshing.tetrahedralize", 1.0);
+        progress.report("meshing.tetrahedralize", 0.9);
         if (pass >= kInterfacePasses)
             break;
         const std::size_t added = addInterfaceParticles(dt, body, locator, voxels, *edge, particles);
@@ -243,6 +243,9 @@ Result<ParticleMeshResult> meshParticles(const RegionModel& input, const Particl
         const std::size_t peeled = peelBoundarySlivers(body, particles.position, particles, dt, region);
         timings.step("clean").counts.emplace_back("peeled", static_cast<std::int64_t>(peeled));
     }
+    // Between the steps that take no progress of their own, so that a cancel is never held for more than one of them.
+    progress.report("meshing.clean", 0.9);
+    HS_TRY(progress.check("meshing", "cleaning the tetrahedra"));
     std::vector<Tet> tets = std::move(dt.tets);
     {
         ScopedStepTimer timer(timings, "improve");
@@ -262,6 +265,8 @@ Result<ParticleMeshResult> meshParticles(const RegionModel& input, const Particl
         counts.emplace_back("keptVertices", static_cast<std::int64_t>(stats.keptVertices));
         counts.emplace_back("largestOffsetMicrometres", std::lround(stats.largestOffset * 1000.0));
     }
+    progress.report("meshing.interfaceVolume", 0.96);
+    HS_TRY(progress.check("meshing", "matching the interfaces' volumes"));
     {
         // After the flips and the interface offsets, so that what the simulator gets has a manifold boundary.
         ScopedStepTimer timer(timings, "pinches");
@@ -275,10 +280,13 @@ Result<ParticleMeshResult> meshParticles(const RegionModel& input, const Particl
                 std::to_string(stats.pinchedAfter) +
                 " pinched boundary edges or vertices are left (two parts of the body touch there)");
     }
+    HS_TRY(progress.check("meshing", "opening pinches"));
     {
         ScopedStepTimer timer(timings, "assemble");
         result.mesh = assemble(particles, tets, region);
     }
+    progress.report("meshing.quality", 0.98);
+    HS_TRY(progress.check("meshing", "measuring the quality"));
     if (result.mesh.tets.empty())
         return fail(ErrorCode::InvalidInput, "the mesh of this body is empty: the target edge length " +
                                                  std::to_string(*edge) + " mm is too large");

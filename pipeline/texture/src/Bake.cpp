@@ -145,7 +145,7 @@ Result<BakeResult> bakeAppearance(const SurfaceMesh& surface, const BakeParams& 
         const std::vector<Weights3> weights =
             vertexWeights(surface, result.faceAppearance, params.labels, params.blendMm);
         const VesselIndex vessels = indexVessels(result.vessels, texelMm);
-        shading = shade(surface, map, normals, weights, tiles, vessels, params, texelMm, threads);
+        shading = shade(surface, map, normals, weights, tiles, vessels, params, texelMm, threads, progress);
     }
     HS_TRY(progress.check("bake"));
     progress.report("texture.bake", 0.85);
@@ -153,6 +153,7 @@ Result<BakeResult> bakeAppearance(const SurfaceMesh& surface, const BakeParams& 
         ScopedStepTimer timer(result.timings, "normals");
         result.normal = normalMap(map, shading, result.atlas, texelMm, params.normalStrength, threads);
     }
+    HS_TRY(progress.check("bake", "deriving the normal map"));
     result.albedo = std::move(shading.albedo);
     result.roughness = std::move(shading.roughness);
     result.coverage = ImageU8::create(map.size, map.size, 1).value();
@@ -185,6 +186,7 @@ Result<BakeResult> bakeAppearance(const SurfaceMesh& surface, const BakeParams& 
         fillGutters({&result.albedo, &result.normal, &result.roughness}, shading.covered, map.size,
                     result.atlas.stats.padding + 1, fallback);
     }
+    HS_TRY(progress.check("bake", "filling the gutters"));
     {
         ScopedStepTimer timer(result.timings, "seams");
         result.stats.chartSeamRatio = chartSeamRatio(surface, result.atlas, result.albedo, map);

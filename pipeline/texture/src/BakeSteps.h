@@ -73,9 +73,12 @@ Tile toTile(const ImageU8& image);
 std::vector<Weights3> vertexWeights(const SurfaceMesh& mesh, const std::vector<Appearance>& faceClass,
                                     const AppearanceLabels& labels, double blendMm);
 
+/// The albedo and roughness of every texel; stops between rows once `progress` is cancelled (the caller then
+/// returns Cancelled and the partial maps are dropped).
 Shading shade(const SurfaceMesh& mesh, const TexelMap& map, const std::vector<Vec3>& normals,
               const std::vector<Weights3>& weights, const std::array<Tile, kAppearanceCount>& tiles,
-              const VesselIndex& vessels, const BakeParams& params, double texelMm, int threads);
+              const VesselIndex& vessels, const BakeParams& params, double texelMm, int threads,
+              const Progress& progress);
 
 // TexelMap.cpp
 TexelMap rasterize(const SurfaceMesh& mesh, const Atlas& atlas, int threads);

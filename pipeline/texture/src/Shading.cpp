@@ -108,7 +108,8 @@ std::vector<Weights3> vertexWeights(const SurfaceMesh& mesh, const std::vector<A
 }
 Shading shade(const SurfaceMesh& mesh, const TexelMap& map, const std::vector<Vec3>& normals,
               const std::vector<Weights3>& weights, const std::array<Tile, kAppearanceCount>& tiles,
-              const VesselIndex& vessels, const BakeParams& params, double texelMm, int threads) {
+              const VesselIndex& vessels, const BakeParams& params, double texelMm, int threads,
+              const Progress& progress) {
     Shading out;
     const int n = map.size;
     out.albedo = ImageU8::create(n, n, 3).value();
@@ -122,7 +123,7 @@ Shading shade(const SurfaceMesh& mesh, const TexelMap& map, const std::vector<Ve
     parallelChunks(static_cast<std::size_t>(n), evenChunk(static_cast<std::size_t>(n), threads), threads,
                    [&](std::size_t, std::size_t y0Chunk, std::size_t y1Chunk) {
                        const int y0 = static_cast<int>(y0Chunk), y1 = static_cast<int>(y1Chunk);
-                       for (int y = y0; y < y1; ++y)
+                       for (int y = y0; y < y1 && !progress.cancelled(); ++y)
                            for (int x = 0; x < n; ++x) {
                                const std::size_t i = map.index(x, y);
                                const std::int32_t f = map.face[i];

@@ -425,3 +425,29 @@ TEST(Export, NamesAFailedVariantAndRefusesBadParametersAndACancel) {
     EXPECT_EQ(stopped.error().code, ErrorCode::Cancelled);
     EXPECT_FALSE(fs::exists(params2.folder));
 }
+
+// A cancel is taken between the steps that report no progress of their own (found by bench_jobs in the window: the
+// scene's hydrometra solves held a cancel for seconds, the close-up surface and the mesher's cleaning for 370 ms):
+// cancelled as each step begins, the chain stops there and names it.
+TEST(Generate, StopsOnACancelBetweenStepsThatReportNoProgress) {
+    const struct {
+        Stage from;
+        const char* key;
+        const char* named;
+    } cases[] = {{Stage::Meshing, "meshing.clean", "meshing cancelled while cleaning the tetrahedra"},
+                 {Stage::Texture, "texture.closeUp", "texture cancelled while refining the close-up surface"},
+                 {Stage::Texture, "texture.bind", "texture cancelled while binding the visual surface to the tets"},
+                 {Stage::Scene, "scene.hydrometra", "hydrometra curve cancelled"}};
+    for (const auto& c : cases) {
+        Progress* self = nullptr;
+        Progress progress([&](std::string_view key, double) {
+            if (key == c.key)
+                self->requestCancel();
+        });
+        self = &progress;
+        auto stopped = regenerateFrom(c.from, baseRun(), lightCase(), {}, progress);
+        ASSERT_FALSE(stopped.ok()) << c.key;
+        EXPECT_EQ(stopped.error().code, ErrorCode::Cancelled) << c.key;
+        EXPECT_NE(stopped.error().detail.find(c.named), std::string::npos) << c.key << ": " << stopped.error().detail;
+    }
+}

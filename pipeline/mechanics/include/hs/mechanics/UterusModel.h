@@ -7,6 +7,7 @@
 ///
 /// Lengths mm, pressures kPa, volumes mL, forces N; the solver itself works in metres.
 
+#include "hs/core/Progress.h"
 #include "hs/core/Result.h"
 #include "hs/core/SurfaceMesh.h"
 #include "hs/core/Vec3.h"
@@ -53,12 +54,14 @@ struct UterusModel {
 
 /// The cavity opened at `pressureKpa` (0-40) by a static solve of the model from rest (1 s steps, the pressure raised
 /// over 20 of them and following the faces as they open, until the cavity's volume settles): the points, mm.
-/// InvalidInput out of range or when the tissue finds no equilibrium.
-[[nodiscard]] Status staticOpen(const UterusModel& model, double pressureKpa, std::vector<Vec3>& pts);
+/// InvalidInput out of range or when the tissue finds no equilibrium; Cancelled on request (checked every step).
+[[nodiscard]] Status staticOpen(const UterusModel& model, double pressureKpa, std::vector<Vec3>& pts,
+                                Progress& progress = Progress::none());
 
 /// The model's hydrometra curve: the cavity's opening (mL over rest) at each of `pressuresKpa` (ascending, 0-40), one
-/// static solve raised from each pressure to the next.
+/// static solve raised from each pressure to the next. Cancelled on request (checked every step).
 [[nodiscard]] Result<std::vector<double>> hydrometraCurve(const UterusModel& model,
-                                                          const std::vector<double>& pressuresKpa);
+                                                          const std::vector<double>& pressuresKpa,
+                                                          Progress& progress = Progress::none());
 
 } // namespace hs::mechanics
