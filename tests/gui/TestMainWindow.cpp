@@ -10,6 +10,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QLabel>
@@ -313,6 +314,23 @@ void TestMainWindow::theCommandLinesCaseFileOpensAsACase() {
     QCOMPARE(m_window->document().filePath(), QFileInfo(path).absoluteFilePath());
     QCOMPARE(m_window->document().spec().seed, std::uint64_t{5});
     QVERIFY(!m_window->isLoading()); // nothing went to the mesh reader
+    // A package's manifest.json stands for its package: it goes to review (here a broken one, refused by name), not
+    // to the case reader.
+    const QString package = fixture("package");
+    QVERIFY(QDir().mkpath(package));
+    QFile manifest(package + "/manifest.json");
+    QVERIFY(manifest.open(QIODevice::WriteOnly));
+    manifest.write("{\"format\": \"hysteroscene-scene\", \"schemaVersion\": 1, \"files\": []}");
+    manifest.close();
+    m_window->openArgument(manifest.fileName());
+    QList<MessageBox::Message> messages;
+    QTRY_VERIFY_WITH_TIMEOUT((messages += MessageBox::takeRecorded(), !messages.isEmpty()), 20000);
+    QVERIFY2(messages.first().title.contains("package", Qt::CaseInsensitive) ||
+                 messages.first().text.contains("package", Qt::CaseInsensitive),
+             qPrintable(messages.first().title + " / " + messages.first().text));
+    QVERIFY2(messages.first().details.contains("manifest.json"), qPrintable(messages.first().details));
+    QCOMPARE(m_window->document().filePath(), QFileInfo(path).absoluteFilePath()); // the case stays
+    QVERIFY(!m_window->isLoading());
 }
 
 void TestMainWindow::caseTitleShowsFileAndUnsavedMark() {

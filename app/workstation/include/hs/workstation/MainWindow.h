@@ -59,7 +59,7 @@ public:
     /// Starts loading `path` on a worker thread; fileLoaded or loadFailed follows on the GUI thread.
     void openFile(const QString& path);
     /// What `hysteroscene PATH` opens: a case file (.json) as the case being authored, a scene package (a folder
-    /// with a manifest.json) for review, anything else as a mesh (openFile).
+    /// with a manifest.json, or that manifest.json itself) for review, anything else as a mesh (openFile).
     void openArgument(const QString& path);
     bool isLoading() const;
     /// The file shown now; empty before the first successful load.
