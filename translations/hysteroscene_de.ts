@@ -2144,6 +2144,70 @@
         <source>Cancel Placing</source>
         <translation>Platzieren abbrechen</translation>
     </message>
+    <message>
+        <source>&amp;Orientation Marker</source>
+        <translation>&amp;Orientierungsmarke</translation>
+    </message>
+    <message>
+        <source>Show the patient&apos;s directions in the corner of the 3-D view</source>
+        <translation>Die Richtungen der Patientin in der Ecke der 3-D-Ansicht zeigen</translation>
+    </message>
+    <message>
+        <source>&amp;Anterior</source>
+        <translation>&amp;Anterior</translation>
+    </message>
+    <message>
+        <source>Look at the organ from in front of the patient</source>
+        <translation>Das Organ von vorne betrachten</translation>
+    </message>
+    <message>
+        <source>&amp;Posterior</source>
+        <translation>&amp;Posterior</translation>
+    </message>
+    <message>
+        <source>Look at the organ from behind the patient</source>
+        <translation>Das Organ von hinten betrachten</translation>
+    </message>
+    <message>
+        <source>&amp;Left</source>
+        <translation>&amp;Links</translation>
+    </message>
+    <message>
+        <source>Look at the organ from the patient&apos;s left</source>
+        <translation>Das Organ von der linken Seite der Patientin betrachten</translation>
+    </message>
+    <message>
+        <source>&amp;Right</source>
+        <translation>&amp;Rechts</translation>
+    </message>
+    <message>
+        <source>Look at the organ from the patient&apos;s right</source>
+        <translation>Das Organ von der rechten Seite der Patientin betrachten</translation>
+    </message>
+    <message>
+        <source>&amp;Fundal</source>
+        <translation>&amp;Fundal</translation>
+    </message>
+    <message>
+        <source>Look down the uterine axis from above the fundus</source>
+        <translation>Von oberhalb des Fundus entlang der Uterusachse blicken</translation>
+    </message>
+    <message>
+        <source>From the External &amp;Os</source>
+        <translation>Vom äußeren &amp;Muttermund</translation>
+    </message>
+    <message>
+        <source>Look up the cervical canal from the external os, as the scope enters</source>
+        <translation>Vom äußeren Muttermund den Zervikalkanal hinauf blicken, wie das Hysteroskop eintritt</translation>
+    </message>
+    <message>
+        <source>Look &amp;From</source>
+        <translation>&amp;Ansicht von</translation>
+    </message>
+    <message>
+        <source>Views</source>
+        <translation>Ansichten</translation>
+    </message>
 </context>
 <context>
     <name>main</name>

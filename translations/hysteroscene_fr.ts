@@ -2144,6 +2144,70 @@
         <source>Cancel Placing</source>
         <translation>Annuler le placement</translation>
     </message>
+    <message>
+        <source>&amp;Orientation Marker</source>
+        <translation>Repère d&apos;&amp;orientation</translation>
+    </message>
+    <message>
+        <source>Show the patient&apos;s directions in the corner of the 3-D view</source>
+        <translation>Afficher les directions de la patiente dans le coin de la vue 3D</translation>
+    </message>
+    <message>
+        <source>&amp;Anterior</source>
+        <translation>&amp;Antérieur</translation>
+    </message>
+    <message>
+        <source>Look at the organ from in front of the patient</source>
+        <translation>Regarder l&apos;organe de devant la patiente</translation>
+    </message>
+    <message>
+        <source>&amp;Posterior</source>
+        <translation>&amp;Postérieur</translation>
+    </message>
+    <message>
+        <source>Look at the organ from behind the patient</source>
+        <translation>Regarder l&apos;organe de derrière la patiente</translation>
+    </message>
+    <message>
+        <source>&amp;Left</source>
+        <translation>&amp;Gauche</translation>
+    </message>
+    <message>
+        <source>Look at the organ from the patient&apos;s left</source>
+        <translation>Regarder l&apos;organe depuis la gauche de la patiente</translation>
+    </message>
+    <message>
+        <source>&amp;Right</source>
+        <translation>&amp;Droite</translation>
+    </message>
+    <message>
+        <source>Look at the organ from the patient&apos;s right</source>
+        <translation>Regarder l&apos;organe depuis la droite de la patiente</translation>
+    </message>
+    <message>
+        <source>&amp;Fundal</source>
+        <translation>&amp;Fundique</translation>
+    </message>
+    <message>
+        <source>Look down the uterine axis from above the fundus</source>
+        <translation>Regarder le long de l&apos;axe utérin depuis le dessus du fond</translation>
+    </message>
+    <message>
+        <source>From the External &amp;Os</source>
+        <translation>Depuis l&apos;&amp;orifice externe</translation>
+    </message>
+    <message>
+        <source>Look up the cervical canal from the external os, as the scope enters</source>
+        <translation>Regarder le long du canal cervical depuis l&apos;orifice externe, comme l&apos;hystéroscope entre</translation>
+    </message>
+    <message>
+        <source>Look &amp;From</source>
+        <translation>&amp;Vue depuis</translation>
+    </message>
+    <message>
+        <source>Views</source>
+        <translation>Vues</translation>
+    </message>
 </context>
 <context>
     <name>main</name>

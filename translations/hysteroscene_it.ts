@@ -2144,6 +2144,70 @@
         <source>Cancel Placing</source>
         <translation>Annulla il posizionamento</translation>
     </message>
+    <message>
+        <source>&amp;Orientation Marker</source>
+        <translation>Indicatore di &amp;orientamento</translation>
+    </message>
+    <message>
+        <source>Show the patient&apos;s directions in the corner of the 3-D view</source>
+        <translation>Mostrare le direzioni della paziente nell&apos;angolo della vista 3D</translation>
+    </message>
+    <message>
+        <source>&amp;Anterior</source>
+        <translation>&amp;Anteriore</translation>
+    </message>
+    <message>
+        <source>Look at the organ from in front of the patient</source>
+        <translation>Guardare l&apos;organo dal davanti della paziente</translation>
+    </message>
+    <message>
+        <source>&amp;Posterior</source>
+        <translation>&amp;Posteriore</translation>
+    </message>
+    <message>
+        <source>Look at the organ from behind the patient</source>
+        <translation>Guardare l&apos;organo da dietro la paziente</translation>
+    </message>
+    <message>
+        <source>&amp;Left</source>
+        <translation>&amp;Sinistra</translation>
+    </message>
+    <message>
+        <source>Look at the organ from the patient&apos;s left</source>
+        <translation>Guardare l&apos;organo dal lato sinistro della paziente</translation>
+    </message>
+    <message>
+        <source>&amp;Right</source>
+        <translation>&amp;Destra</translation>
+    </message>
+    <message>
+        <source>Look at the organ from the patient&apos;s right</source>
+        <translation>Guardare l&apos;organo dal lato destro della paziente</translation>
+    </message>
+    <message>
+        <source>&amp;Fundal</source>
+        <translation>&amp;Fundico</translation>
+    </message>
+    <message>
+        <source>Look down the uterine axis from above the fundus</source>
+        <translation>Guardare lungo l&apos;asse uterino da sopra il fondo</translation>
+    </message>
+    <message>
+        <source>From the External &amp;Os</source>
+        <translation>Dall&apos;&amp;orifizio esterno</translation>
+    </message>
+    <message>
+        <source>Look up the cervical canal from the external os, as the scope enters</source>
+        <translation>Guardare su per il canale cervicale dall&apos;orifizio esterno, come entra l&apos;isteroscopio</translation>
+    </message>
+    <message>
+        <source>Look &amp;From</source>
+        <translation>&amp;Vista da</translation>
+    </message>
+    <message>
+        <source>Views</source>
+        <translation>Viste</translation>
+    </message>
 </context>
 <context>
     <name>main</name>

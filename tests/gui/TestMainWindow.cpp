@@ -21,6 +21,10 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <vtkCamera.h>
+#include <vtkRenderer.h>
+
+#include <cmath>
 #include <memory>
 
 using hs::widgets::FileDialog;
@@ -53,6 +57,7 @@ private slots:
     void clipToggleShowsCutTetrahedra();
     void clipShortcutTogglesClip();
     void clickOnViewPicksSurfacePoint();
+    void anatomicalViewsTurnTheCameraAndTheMarkerShowsTheSides();
     void recentFilesPersistInSettings();
     void badFileShowsErrorAndKeepsMesh();
     void missingRecentFileIsForgotten();
@@ -118,6 +123,48 @@ void TestMainWindow::cleanup() {
     m_window.reset();
     hs::widgets::CaseDocument::discardRecovery(m_dir.filePath("recovery"));
     QCOMPARE(MessageBox::takeRecorded().size(), 0); // no test leaves an unexpected message behind
+}
+
+// Each anatomical view (View > Look From, the Views tool bar, Ctrl+Alt+1..6) looks from its side of the patient in the
+// scene's frame (+x right, +y anterior, +z up the canal) at the whole mesh; the orientation marker draws in the view's
+// lower-left corner and goes with its action.
+void TestMainWindow::anatomicalViewsTurnTheCameraAndTheMarkerShowsTheSides() {
+    QVERIFY(openThroughDialog(fixture("sphere.off")));
+    vtkCamera* camera = m_window->view()->renderer()->GetActiveCamera();
+    const struct {
+        const char* action;
+        double towardsCamera[3];
+        double up[3];
+    } looks[] = {{"actionLookAnterior", {0, 1, 0}, {0, 0, 1}}, {"actionLookPosterior", {0, -1, 0}, {0, 0, 1}},
+                 {"actionLookLeft", {-1, 0, 0}, {0, 0, 1}},    {"actionLookRight", {1, 0, 0}, {0, 0, 1}},
+                 {"actionLookFundal", {0, 0, 1}, {0, 1, 0}},   {"actionLookExternalOs", {0, 0, -1}, {0, 1, 0}}};
+    QCOMPARE(find<QMenu>("menuLookFrom")->actions().size(), 6);
+    for (const auto& look : looks) {
+        auto* action = find<QAction>(look.action);
+        QVERIFY2(action && action->isEnabled(), look.action);
+        action->trigger();
+        double dop[3];
+        camera->GetDirectionOfProjection(dop);
+        double up[3];
+        camera->GetViewUp(up);
+        for (int k = 0; k < 3; ++k) {
+            QVERIFY2(std::abs(dop[k] + look.towardsCamera[k]) < 1e-9, look.action);
+            QVERIFY2(std::abs(up[k] - look.up[k]) < 1e-9, look.action);
+        }
+        // The whole sphere (centred at the origin) is in the picture: the camera looks at its centre.
+        double focal[3];
+        camera->GetFocalPoint(focal);
+        QVERIFY2(std::abs(focal[0]) + std::abs(focal[1]) + std::abs(focal[2]) < 0.02 * kSphereRadius, look.action);
+    }
+    // The marker: its corner of the picture differs from the same corner with the marker hidden.
+    auto* marker = find<QAction>("actionOrientationMarker");
+    QVERIFY(marker->isChecked());
+    const QImage with = viewImage();
+    marker->setChecked(false);
+    const QImage without = viewImage();
+    const QRect corner(0, with.height() * 5 / 6, with.width() / 8, with.height() / 6);
+    QVERIFY(with.copy(corner) != without.copy(corner));
+    marker->setChecked(true);
 }
 
 bool TestMainWindow::openThroughDialog(const QString& path) {

@@ -35,6 +35,7 @@
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QToolBar>
 #include <QtConcurrent/QtConcurrentRun>
 
 #include <vtkCamera.h>
@@ -77,6 +78,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setCentralWidget(m_view);
     m_display = std::make_unique<widgets::MeshDisplay>(m_view->renderer());
     m_growth = std::make_unique<widgets::GrowthDisplay>(m_view->renderer());
+    m_orientationMarker = std::make_unique<widgets::OrientationMarker>(*m_view);
     m_handles = new widgets::SurfaceHandles(m_view, this);
 
     createActions();
@@ -211,6 +213,46 @@ void MainWindow::createActions() {
     m_resetCameraAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
     connect(m_resetCameraAction, &QAction::triggered, this, &MainWindow::onResetCamera);
 
+    m_orientationMarkerAction = new QAction(tr("&Orientation Marker"), this);
+    m_orientationMarkerAction->setObjectName("actionOrientationMarker");
+    m_orientationMarkerAction->setCheckable(true);
+    m_orientationMarkerAction->setChecked(true);
+    m_orientationMarkerAction->setStatusTip(tr("Show the patient's directions in the corner of the 3-D view"));
+    connect(m_orientationMarkerAction, &QAction::toggled, this, [this](bool on) {
+        m_orientationMarker->setVisible(on);
+        m_view->requestRender();
+    });
+    // The anatomical views, in the scene's frame; Ctrl+Alt+1..6 in the order of the menu.
+    const struct {
+        widgets::AnatomicalView view;
+        const char* text;
+        const char* name;
+        const char* tip;
+    } looks[] = {
+        {widgets::AnatomicalView::Anterior, QT_TR_NOOP("&Anterior"), "actionLookAnterior",
+         QT_TR_NOOP("Look at the organ from in front of the patient")},
+        {widgets::AnatomicalView::Posterior, QT_TR_NOOP("&Posterior"), "actionLookPosterior",
+         QT_TR_NOOP("Look at the organ from behind the patient")},
+        {widgets::AnatomicalView::Left, QT_TR_NOOP("&Left"), "actionLookLeft",
+         QT_TR_NOOP("Look at the organ from the patient's left")},
+        {widgets::AnatomicalView::Right, QT_TR_NOOP("&Right"), "actionLookRight",
+         QT_TR_NOOP("Look at the organ from the patient's right")},
+        {widgets::AnatomicalView::Fundal, QT_TR_NOOP("&Fundal"), "actionLookFundal",
+         QT_TR_NOOP("Look down the uterine axis from above the fundus")},
+        {widgets::AnatomicalView::ExternalOs, QT_TR_NOOP("From the External &Os"), "actionLookExternalOs",
+         QT_TR_NOOP("Look up the cervical canal from the external os, as the scope enters")},
+    };
+    int key = 0;
+    for (const auto& look : looks) {
+        auto* action = new QAction(tr(look.text), this);
+        action->setObjectName(QString::fromLatin1(look.name));
+        action->setShortcut(QKeySequence(Qt::CTRL | Qt::ALT | Qt::Key(Qt::Key_1 + key++)));
+        action->setStatusTip(tr(look.tip));
+        action->setToolTip(tr(look.tip));
+        connect(action, &QAction::triggered, this, [this, view = look.view] { widgets::lookFrom(*m_view, view); });
+        m_lookFromActions.push_back(action);
+    }
+
     m_reviewAction = new QAction(tr("Revie&w Scene Package..."), this);
     m_reviewAction->setObjectName("actionReviewPackage");
     m_reviewAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R));
@@ -261,6 +303,16 @@ void MainWindow::createMenus() {
     viewMenu->setObjectName("menuView");
     viewMenu->addAction(m_clipAction);
     viewMenu->addAction(m_resetCameraAction);
+    QMenu* lookMenu = viewMenu->addMenu(tr("Look &From"));
+    lookMenu->setObjectName("menuLookFrom");
+    QToolBar* views = addToolBar(tr("Views"));
+    views->setObjectName("viewsToolBar"); // saveState() keeps it by name
+    views->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    for (QAction* action : m_lookFromActions) {
+        lookMenu->addAction(action);
+        views->addAction(action);
+    }
+    viewMenu->addAction(m_orientationMarkerAction);
     viewMenu->addSeparator();
     m_panelsMenu = viewMenu->addMenu(tr("&Panels"));
     m_panelsMenu->setObjectName("menuPanels");

@@ -1,12 +1,14 @@
 #pragma once
 /// The workstation's main window: the case being authored (widgets::CaseDocument: New/Open/Save of case.json, undo,
 /// autosave and recovery), a 3-D view of one mesh (surface or tetrahedral), File/Edit/View/Help menus, a status bar
-/// with the mesh's counts. Meshes load on a worker thread; the window keeps its mesh when a file fails to load.
+/// with the mesh's counts, an orientation marker and the anatomical views (View > Look From, the Views tool bar).
+/// Meshes load on a worker thread; the window keeps its mesh when a file fails to load.
 
 #include "hs/core/Error.h"
 #include "hs/io/MeshIO.h"
 #include "hs/widgets/document/CaseDocument.h"
 #include "hs/widgets/jobs/GenerationSession.h"
+#include "hs/widgets/view/AnatomicalViews.h"
 #include "hs/widgets/view/ResultsDisplay.h"
 #include "hs/widgets/view/VtkView.h"
 
@@ -170,6 +172,7 @@ private:
     widgets::VtkView* m_view = nullptr;
     std::unique_ptr<widgets::MeshDisplay> m_display;
     std::unique_ptr<widgets::GrowthDisplay> m_growth;
+    std::unique_ptr<widgets::OrientationMarker> m_orientationMarker;
     widgets::SurfaceHandles* m_handles = nullptr;
     QFutureWatcher<LoadedMesh> m_loadWatcher;
     QString m_currentFile;
@@ -210,6 +213,8 @@ private:
     QAction* m_quitAction = nullptr;
     QAction* m_clipAction = nullptr;
     QAction* m_resetCameraAction = nullptr;
+    QAction* m_orientationMarkerAction = nullptr;
+    std::vector<QAction*> m_lookFromActions; ///< one per widgets::kAnatomicalViews, in its order
     QAction* m_aboutAction = nullptr;
     QAction* m_clearRecentAction = nullptr;
     QMenu* m_recentMenu = nullptr;
