@@ -4,6 +4,7 @@
 #include "hs/io/MeshIO.h"
 #include "hs/widgets/common/FileDialog.h"
 #include "hs/widgets/common/MessageBox.h"
+#include "hs/widgets/view/ClipPlaneWidget.h"
 #include "hs/widgets/view/MeshDisplay.h"
 #include "hs/widgets/view/VtkView.h"
 #include "hs/workstation/MainWindow.h"
@@ -231,7 +232,39 @@ void TestMainWindow::clipToggleShowsCutTetrahedra() {
     const int changed = hs::test::pixelsDifferentBetween(whole, cut);
     QVERIFY2(changed > 1000, qPrintable(QString::number(changed)));
 
+    // The plane is a handle in the view: shown with the clip, at the display's plane (the mesh's centre, +x).
+    hs::widgets::ClipPlaneWidget& plane = m_window->clipPlane();
+    QVERIFY(plane.isVisible());
+    QVERIFY(hs::distance(plane.origin(), m_window->display().clipOrigin()) < 1e-9);
+    // Dragged towards -x, fewer tets are kept; tilted to +z, another half.
+    const auto box = m_window->display().meshBounds();
+    plane.moveTo({box[0] + 0.2 * (box[1] - box[0]), 0.5 * (box[2] + box[3]), 0.5 * (box[4] + box[5])}, {1, 0, 0});
+    const std::size_t slid = m_window->display().visibleCellCount();
+    QVERIFY2(slid > 0 && slid < shown, qPrintable(QString::number(slid)));
+    QVERIFY(find<QLabel>("countsLabel")->text().endsWith(QStringLiteral("Shown: %1").arg(count(slid))));
+    plane.moveTo({0.5 * (box[0] + box[1]), 0.5 * (box[2] + box[3]), 0.5 * (box[4] + box[5])}, {0, 0, 1});
+    const std::size_t tilted = m_window->display().visibleCellCount();
+    QVERIFY2(tilted > slid && tilted < m_cube.tetCount(), qPrintable(QString::number(tilted)));
+    // A real drag of the plane with the mouse moves it (and the cut) too.
+    const hs::Vec3 before = plane.origin();
+    const QImage beforeDrag = viewImage();
+    vtkRenderer* renderer = m_window->view()->renderer();
+    renderer->SetWorldPoint(before.x, before.y, before.z, 1.0);
+    renderer->WorldToDisplay();
+    double display[3];
+    renderer->GetDisplayPoint(display);
+    const double ratio = m_window->view()->devicePixelRatioF();
+    const QPoint at(int(display[0] / ratio), m_window->view()->height() - int(display[1] / ratio));
+    QTest::mousePress(m_window->view(), Qt::LeftButton, Qt::NoModifier, at);
+    for (int k = 1; k <= 10; ++k)
+        QTest::mouseMove(m_window->view(), at + QPoint(0, 4 * k));
+    QTest::mouseRelease(m_window->view(), Qt::LeftButton, Qt::NoModifier, at + QPoint(0, 40));
+    QVERIFY2(hs::distance(plane.origin(), before) > 1e-6 || hs::distance(plane.normal(), {0, 0, 1}) > 1e-6,
+             "the drag did not move the plane");
+    QVERIFY(hs::test::pixelsDifferentBetween(beforeDrag, viewImage()) > 100);
+
     clip->trigger();
+    QVERIFY(!plane.isVisible());
     QCOMPARE(m_window->display().visibleCellCount(), m_cube.tetCount());
     QVERIFY(hs::test::pixelsDifferentBetween(whole, viewImage()) < 50);
 }

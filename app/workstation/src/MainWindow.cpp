@@ -79,6 +79,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_display = std::make_unique<widgets::MeshDisplay>(m_view->renderer());
     m_growth = std::make_unique<widgets::GrowthDisplay>(m_view->renderer());
     m_orientationMarker = std::make_unique<widgets::OrientationMarker>(*m_view);
+    m_clipPlane = std::make_unique<widgets::ClipPlaneWidget>(*m_view, [this](const Vec3& origin, const Vec3& normal) {
+        m_display->setClipPlane(origin, normal);
+        m_view->requestRender();
+        updateStatus();
+    });
     m_handles = new widgets::SurfaceHandles(m_view, this);
 
     createActions();
@@ -461,6 +466,7 @@ void MainWindow::showResults() {
     m_currentFile.clear();
     updateHandles();
     m_clipAction->setEnabled(true); // cuts a tet mesh or opens a surface (to click on the cavity's wall)
+    syncClipPlane();
     m_meshPanel->applyToDisplay();
     m_view->requestRender();
     updateStatus();
@@ -511,8 +517,16 @@ void MainWindow::closeEvent(QCloseEvent* event) {
 
 void MainWindow::onClipToggled(bool enabled) {
     m_display->setClipEnabled(enabled);
+    syncClipPlane();
     m_view->requestRender();
     updateStatus();
+}
+
+void MainWindow::syncClipPlane() {
+    if (m_clipAction->isChecked() && !m_display->isEmpty())
+        m_clipPlane->show(m_display->meshBounds(), m_display->clipOrigin(), m_display->clipNormal());
+    else
+        m_clipPlane->hide();
 }
 
 void MainWindow::onResetCamera() {

@@ -135,6 +135,7 @@ void MainWindow::showMesh(const LoadedMesh& loaded) {
         },
         *loaded.mesh);
     m_clipAction->setEnabled(m_display->isTetMesh());
+    syncClipPlane();
     onResetCamera();
     m_currentFile = loaded.path;
     m_shownLayer = widgets::ResultLayer::None;

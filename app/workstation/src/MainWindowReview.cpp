@@ -89,6 +89,7 @@ void MainWindow::reviewPackage(const QString& folder) {
             m_preview->setScene(opened.scene);
             m_preview->setInsertion(0.0);
             m_display->showTetMesh(opened.scene->tets);
+            syncClipPlane();
             m_shownLayer = widgets::ResultLayer::None;
             m_currentFile = absolute;
             updateAuthoringActions();

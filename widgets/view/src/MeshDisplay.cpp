@@ -383,6 +383,27 @@ std::array<double, 6> MeshDisplay::highlightTet(std::int64_t tet) {
     return box;
 }
 
+std::array<double, 6> MeshDisplay::meshBounds() const {
+    std::array<double, 6> box{};
+    if (m_kind == Kind::Tets && m_grid)
+        m_grid->GetBounds(box.data());
+    else if (m_kind == Kind::Surface && m_surface)
+        m_surface->GetBounds(box.data());
+    return box;
+}
+
+Vec3 MeshDisplay::clipOrigin() const {
+    double o[3];
+    m_plane->GetOrigin(o);
+    return {o[0], o[1], o[2]};
+}
+
+Vec3 MeshDisplay::clipNormal() const {
+    double n[3];
+    m_plane->GetNormal(n);
+    return {n[0], n[1], n[2]};
+}
+
 void MeshDisplay::setClipPlane(const Vec3& origin, const Vec3& normal) {
     m_plane->SetOrigin(origin.x, origin.y, origin.z);
     m_plane->SetNormal(normal.x, normal.y, normal.z);

@@ -9,6 +9,7 @@
 #include "hs/widgets/document/CaseDocument.h"
 #include "hs/widgets/jobs/GenerationSession.h"
 #include "hs/widgets/view/AnatomicalViews.h"
+#include "hs/widgets/view/ClipPlaneWidget.h"
 #include "hs/widgets/view/ResultsDisplay.h"
 #include "hs/widgets/view/VtkView.h"
 
@@ -99,6 +100,8 @@ public:
     widgets::VtkView* view() const { return m_view; }
     widgets::HysteroscopicPreview* preview() const { return m_preview; }
     const widgets::MeshDisplay& display() const { return *m_display; }
+    /// The clip plane's handle in the 3-D view (shown while View > Clip is on).
+    widgets::ClipPlaneWidget& clipPlane() { return *m_clipPlane; }
     /// The pathologies' growth while Grow runs.
     const widgets::GrowthDisplay& growthDisplay() const { return *m_growth; }
     /// The seat and size handles of the selected pathology, shown while it is being placed.
@@ -166,6 +169,8 @@ private:
     void removeRecentFile(const QString& path);
     void rebuildRecentMenu();
     void updateStatus();
+    /// Shows the clip plane's handle on the mesh shown (at the display's plane) while the clip is on, else hides it.
+    void syncClipPlane();
     static QString layerName(widgets::ResultLayer layer);
     QString openFilter() const;
 
@@ -173,6 +178,7 @@ private:
     std::unique_ptr<widgets::MeshDisplay> m_display;
     std::unique_ptr<widgets::GrowthDisplay> m_growth;
     std::unique_ptr<widgets::OrientationMarker> m_orientationMarker;
+    std::unique_ptr<widgets::ClipPlaneWidget> m_clipPlane; ///< the clip plane's handle, shown while the clip is on
     widgets::SurfaceHandles* m_handles = nullptr;
     QFutureWatcher<LoadedMesh> m_loadWatcher;
     QString m_currentFile;

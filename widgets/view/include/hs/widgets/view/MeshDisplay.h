@@ -75,6 +75,10 @@ public:
     /// Keeps the tetrahedra with at least one point on the side opposite `normal`. showTetMesh resets the plane to
     /// the mesh's bounding-box centre with normal +x.
     void setClipPlane(const Vec3& origin, const Vec3& normal);
+    Vec3 clipOrigin() const;
+    Vec3 clipNormal() const;
+    /// The whole mesh's bounds (xmin, xmax, ymin, ymax, zmin, zmax), whatever the clip shows; zeros when empty.
+    std::array<double, 6> meshBounds() const;
     /// Tetrahedra drawn (all of them with the clip off) for a tet mesh; triangles for a surface.
     std::size_t visibleCellCount() const;
 
