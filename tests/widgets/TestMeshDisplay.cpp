@@ -29,6 +29,7 @@ private slots:
     void clipKeepsWholeTetsOnOneSide();
     void clipIsKeptForTheNextMesh();
     void clipChangesTheImage();
+    void legendsNameTheRegionsOrTheMeasure();
 };
 
 void TestMeshDisplay::countsOfSurface_data() {
@@ -133,6 +134,42 @@ void TestMeshDisplay::clipChangesTheImage() {
     const QImage cut = view.grabImage();
     const int changed = hs::test::pixelsDifferentBetween(whole, cut);
     QVERIFY2(changed > 500, qPrintable(QString::number(changed)));
+}
+
+// Coloured by region, the view's corner names each region present with its colour; coloured by a measure, a colour
+// bar with the measure's name; a surface has neither. Both are drawn.
+void TestMeshDisplay::legendsNameTheRegionsOrTheMeasure() {
+    VtkView view;
+    MeshDisplay display(view.renderer());
+    view.renderer()->SetBackground(0.0, 0.0, 0.0);
+    view.resize(400, 400);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    const hs::TetMesh cube = hs::test::makeTetCube(4); // regions 0 and 1
+    display.setRegionNames({{0, "myometrium"}, {1, "myoma-1"}, {7, "not in this mesh"}});
+    display.showTetMesh(cube);
+    view.resetCamera();
+    QCOMPARE(display.legendEntries(), (std::vector<std::string>{"myometrium", "myoma-1"}));
+    QVERIFY(display.colourBarTitle().empty());
+    const QImage regions = view.grabImage();
+
+    std::vector<double> values(cube.tetCount());
+    for (std::size_t i = 0; i < values.size(); ++i)
+        values[i] = double(i) / double(values.size());
+    display.colourTets(values, 0.0, 1.0, "radius ratio");
+    QVERIFY(display.legendEntries().empty());
+    QCOMPARE(display.colourBarTitle(), std::string("radius ratio"));
+    view.requestRender();
+    const QImage measure = view.grabImage();
+    // The lower-right corner, where the legends are, changed between the two.
+    const QRect corner(view.width() * 3 / 5, view.height() * 3 / 4, view.width() * 2 / 5, view.height() / 4);
+    QVERIFY(regions.copy(corner) != measure.copy(corner));
+    QVERIFY(hs::test::pixelsDifferentFrom(measure.copy(corner), qRgb(0, 0, 0)) > 200);
+
+    display.colourTets({}, 0.0, 1.0);
+    QCOMPARE(display.legendEntries().size(), std::size_t(2));
+    display.showSurface(hs::test::makeSphere());
+    QVERIFY(display.legendEntries().empty() && display.colourBarTitle().empty());
 }
 
 int main(int argc, char** argv) {

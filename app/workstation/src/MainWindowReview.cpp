@@ -19,6 +19,7 @@
 #include <QMenu>
 #include <QStatusBar>
 
+#include <map>
 #include <memory>
 #include <string>
 #include <utility>
@@ -88,6 +89,10 @@ void MainWindow::reviewPackage(const QString& folder) {
             m_reviewDock->raise();
             m_preview->setScene(opened.scene);
             m_preview->setInsertion(0.0);
+            std::map<std::int32_t, std::string> names; // the legend names the package's own regions
+            for (const scene::SceneRegion& region : opened.scene->regions)
+                names[region.id] = region.name;
+            m_display->setRegionNames(names);
             m_display->showTetMesh(opened.scene->tets);
             syncClipPlane();
             m_shownLayer = widgets::ResultLayer::None;

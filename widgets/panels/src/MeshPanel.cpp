@@ -31,7 +31,9 @@
 #include <vtkRenderer.h>
 
 #include <algorithm>
+#include <map>
 #include <set>
+#include <string>
 
 namespace hs::widgets {
 
@@ -350,6 +352,11 @@ void MeshPanel::applyColouring() {
     if (!m_display || !m_display->isTetMesh())
         return;
     const auto colouring = static_cast<Colouring>(m_colourCombo->currentData().toInt());
+    // The legend names the regions as their check boxes do.
+    std::map<std::int32_t, std::string> names;
+    for (QCheckBox* check : m_regionChecks)
+        names[check->property("regionId").toInt()] = check->text().toStdString();
+    m_display->setRegionNames(names);
     if (colouring == Colouring::Tissue || !m_shapes) {
         m_display->colourTets({}, 0.0, 1.0);
     } else {
@@ -357,7 +364,9 @@ void MeshPanel::applyColouring() {
         for (std::size_t i = 0; i < values.size(); ++i)
             values[i] = colouring == Colouring::RadiusRatio ? (*m_shapes)[i].radiusRatio : (*m_shapes)[i].minDihedral;
         // 70.53 degrees: the regular tetrahedron's dihedral angle.
-        m_display->colourTets(values, 0.0, colouring == Colouring::RadiusRatio ? 1.0 : 70.53);
+        m_display->colourTets(
+            values, 0.0, colouring == Colouring::RadiusRatio ? 1.0 : 70.53,
+            (colouring == Colouring::RadiusRatio ? tr("radius ratio") : tr("smallest dihedral (°)")).toStdString());
     }
     if (m_view)
         m_view->requestRender();

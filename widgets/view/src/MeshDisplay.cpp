@@ -6,6 +6,8 @@
 #include <vtkCellData.h>
 #include <vtkCellType.h>
 #include <vtkClipPolyData.h>
+#include <vtkCommand.h>
+#include <vtkCoordinate.h>
 #include <vtkDataSetSurfaceFilter.h>
 #include <vtkExtractCells.h>
 #include <vtkExtractGeometry.h>
@@ -14,6 +16,8 @@
 #include <vtkIdTypeArray.h>
 #include <vtkImageData.h>
 #include <vtkIntArray.h>
+#include <vtkLegendBoxActor.h>
+#include <vtkLookupTable.h>
 #include <vtkPlane.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -22,6 +26,8 @@
 #include <vtkPolyDataNormals.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkTextProperty.h>
 #include <vtkTexture.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
@@ -51,10 +57,57 @@ constexpr std::array<Rgb, 8> kRegionPalette{{
 }};
 constexpr double kEdgeColour[3] = {0.25, 0.12, 0.12};
 const char* const kRegionLabel = "region";
+/// The legends' size in pixels (placeLegends).
+constexpr double kLegendWidthPx = 180.0;
+constexpr double kLegendLinePx = 18.0;
+constexpr double kColourBarWidthPx = 260.0;
+constexpr double kColourBarHeightPx = 60.0;
 
 Rgb regionColour(std::int32_t region) {
     const auto n = static_cast<std::int32_t>(kRegionPalette.size());
     return kRegionPalette[static_cast<std::size_t>(((region % n) + n) % n)];
+}
+
+/// The blue - white - red diverging scale (Moreland 2009) through its three anchor colours, at t in [0, 1]; 0-255.
+std::array<double, 3> divergingColour(double t) {
+    t = std::clamp(t, 0.0, 1.0);
+    const double a = t < 0.5 ? t * 2.0 : (t - 0.5) * 2.0;
+    const std::array<double, 3> from =
+        t < 0.5 ? std::array<double, 3>{59, 76, 192} : std::array<double, 3>{221, 221, 221};
+    const std::array<double, 3> to = t < 0.5 ? std::array<double, 3>{221, 221, 221} : std::array<double, 3>{180, 4, 38};
+    std::array<double, 3> rgb{};
+    for (std::size_t c = 0; c < 3; ++c)
+        rgb[c] = from[c] + a * (to[c] - from[c]);
+    return rgb;
+}
+
+/// The same scale as a lookup table, for the colour bar.
+vtkSmartPointer<vtkLookupTable> divergingTable() {
+    auto table = vtkSmartPointer<vtkLookupTable>::New();
+    constexpr int kColours = 256;
+    table->SetNumberOfTableValues(kColours);
+    for (int i = 0; i < kColours; ++i) {
+        const std::array<double, 3> rgb = divergingColour(double(i) / double(kColours - 1));
+        table->SetTableValue(i, rgb[0] / 255.0, rgb[1] / 255.0, rgb[2] / 255.0, 1.0);
+    }
+    table->SetRange(0.0, 1.0);
+    return table;
+}
+
+/// A unit square, the legend's swatch.
+vtkSmartPointer<vtkPolyData> squareSymbol() {
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->InsertNextPoint(0.0, 0.0, 0.0);
+    points->InsertNextPoint(1.0, 0.0, 0.0);
+    points->InsertNextPoint(1.0, 1.0, 0.0);
+    points->InsertNextPoint(0.0, 1.0, 0.0);
+    auto polys = vtkSmartPointer<vtkCellArray>::New();
+    const vtkIdType square[4] = {0, 1, 2, 3};
+    polys->InsertNextCell(4, square);
+    auto symbol = vtkSmartPointer<vtkPolyData>::New();
+    symbol->SetPoints(points);
+    symbol->SetPolys(polys);
+    return symbol;
 }
 
 vtkSmartPointer<vtkPoints> toPoints(const std::vector<Vec3>& points) {
@@ -182,7 +235,8 @@ MeshDisplay::MeshDisplay(vtkRenderer* renderer)
       m_clip(vtkSmartPointer<vtkExtractGeometry>::New()),
       m_gridSurface(vtkSmartPointer<vtkDataSetSurfaceFilter>::New()),
       m_surfaceClip(vtkSmartPointer<vtkClipPolyData>::New()), m_regionFilter(vtkSmartPointer<vtkExtractCells>::New()),
-      m_highlight(vtkSmartPointer<vtkActor>::New()) {
+      m_highlight(vtkSmartPointer<vtkActor>::New()), m_legend(vtkSmartPointer<vtkLegendBoxActor>::New()),
+      m_colourBar(vtkSmartPointer<vtkScalarBarActor>::New()) {
     // Whole tetrahedra with any point on the kept side stay: the cut shows the tets themselves, not sliced ones.
     m_clip->SetImplicitFunction(m_plane);
     m_clip->ExtractInsideOn();
@@ -204,11 +258,86 @@ MeshDisplay::MeshDisplay(vtkRenderer* renderer)
     m_highlight->GetProperty()->SetLineWidth(3.0);
     m_highlight->GetProperty()->LightingOff();
     m_renderer->AddActor(m_highlight);
+    // The legends sit in the view's lower-right corner (the orientation marker has the lower-left).
+    // Sized in pixels before each render (placeLegends), so its text stays readable in a narrow view.
+    m_legend->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    m_legend->GetPosition2Coordinate()->SetCoordinateSystemToNormalizedViewport();
+    m_legendObserver = m_renderer->AddObserver(vtkCommand::StartEvent, this, &MeshDisplay::placeLegends);
+    m_legend->BorderOff();
+    m_legend->UseBackgroundOn();
+    m_legend->SetBackgroundColor(0.1, 0.1, 0.12);
+    m_legend->SetBackgroundOpacity(0.6);
+    m_legend->VisibilityOff();
+    m_renderer->AddViewProp(m_legend);
+    m_colourBar->SetLookupTable(divergingTable());
+    m_colourBar->SetOrientationToHorizontal();
+    m_colourBar->SetNumberOfLabels(3);
+    m_colourBar->VisibilityOff();
+    m_renderer->AddViewProp(m_colourBar);
 }
 
 MeshDisplay::~MeshDisplay() {
     m_renderer->RemoveActor(m_actor);
     m_renderer->RemoveActor(m_highlight);
+    m_renderer->RemoveViewProp(m_legend);
+    m_renderer->RemoveViewProp(m_colourBar);
+    m_renderer->RemoveObserver(m_legendObserver);
+}
+
+void MeshDisplay::setRegionNames(const std::map<std::int32_t, std::string>& names) {
+    m_regionNames = names;
+    updateLegend();
+}
+
+void MeshDisplay::updateLegend() {
+    const bool tets = m_kind == Kind::Tets;
+    m_colourBar->SetVisibility(tets && m_colouredByValue);
+    std::vector<std::pair<std::int32_t, std::string>> entries;
+    if (tets && !m_colouredByValue && m_grid)
+        if (auto* regions = vtkIntArray::SafeDownCast(m_grid->GetCellData()->GetArray(kRegionLabel))) {
+            std::set<std::int32_t> present;
+            for (vtkIdType i = 0; i < regions->GetNumberOfTuples(); ++i)
+                present.insert(regions->GetValue(i));
+            for (const auto& [id, name] : m_regionNames)
+                if (present.count(id) != 0)
+                    entries.emplace_back(id, name);
+        }
+    m_legend->SetNumberOfEntries(static_cast<int>(entries.size()));
+    static const vtkSmartPointer<vtkPolyData> swatch = squareSymbol();
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+        const Rgb rgb = regionColour(entries[i].first);
+        double colour[3] = {rgb[0] / 255.0, rgb[1] / 255.0, rgb[2] / 255.0};
+        m_legend->SetEntry(static_cast<int>(i), swatch, entries[i].second.c_str(), colour);
+    }
+    m_legend->SetVisibility(!entries.empty());
+}
+
+void MeshDisplay::placeLegends(vtkObject*, unsigned long, void*) {
+    // A line of 18 px per region, 180 px wide, in the lower-right corner; at most the whole view.
+    const int* size = m_renderer->GetSize();
+    if (size[0] <= 0 || size[1] <= 0)
+        return;
+    const double width = std::min(0.98, kLegendWidthPx / double(size[0]));
+    const double height =
+        std::min(0.9, kLegendLinePx * double(std::max(1, m_legend->GetNumberOfEntries())) / double(size[1]));
+    m_legend->GetPositionCoordinate()->SetValue(0.99 - width, 0.01);
+    m_legend->GetPosition2Coordinate()->SetValue(width, height);
+    const double barWidth = std::min(0.98, kColourBarWidthPx / double(size[0]));
+    m_colourBar->SetPosition(0.99 - barWidth, 0.01);
+    m_colourBar->SetWidth(barWidth);
+    m_colourBar->SetHeight(std::min(0.5, kColourBarHeightPx / double(size[1])));
+}
+
+std::vector<std::string> MeshDisplay::legendEntries() const {
+    std::vector<std::string> names;
+    if (m_legend->GetVisibility())
+        for (int i = 0; i < m_legend->GetNumberOfEntries(); ++i)
+            names.emplace_back(m_legend->GetEntryString(i));
+    return names;
+}
+
+std::string MeshDisplay::colourBarTitle() const {
+    return m_colourBar->GetVisibility() && m_colourBar->GetTitle() ? std::string(m_colourBar->GetTitle()) : "";
 }
 
 vtkActor* MeshDisplay::actor() const {
@@ -277,11 +406,13 @@ void MeshDisplay::showSurface(const SurfaceMesh& mesh) {
     setUniformLook(m_actor->GetProperty());
     m_actor->GetProperty()->EdgeVisibilityOff();
     m_actor->VisibilityOn();
+    updateLegend();
 }
 
 void MeshDisplay::showTetMesh(const TetMesh& mesh) {
     m_actor->SetTexture(nullptr);
     m_textured = false;
+    m_colouredByValue = false;
     m_grid = toUnstructuredGrid(mesh);
     m_kind = Kind::Tets;
     m_highlight->VisibilityOff();
@@ -293,6 +424,7 @@ void MeshDisplay::showTetMesh(const TetMesh& mesh) {
     m_actor->GetProperty()->SetEdgeColor(kEdgeColour[0], kEdgeColour[1], kEdgeColour[2]);
     connectTetPipeline();
     m_actor->VisibilityOn();
+    updateLegend();
 }
 
 void MeshDisplay::clear() {
@@ -301,6 +433,7 @@ void MeshDisplay::clear() {
     m_kind = Kind::None;
     m_counts = {};
     m_actor->VisibilityOff();
+    updateLegend();
 }
 
 void MeshDisplay::setClipEnabled(bool enabled) {
@@ -321,9 +454,12 @@ void MeshDisplay::connectSurfacePipeline() {
     m_mapper->SetInputConnection(m_surfaceNormals->GetOutputPort());
 }
 
-void MeshDisplay::colourTets(const std::vector<double>& values, double low, double high) {
+void MeshDisplay::colourTets(const std::vector<double>& values, double low, double high, const std::string& title) {
     if (m_kind != Kind::Tets)
         return;
+    m_colouredByValue = values.size() == static_cast<std::size_t>(m_grid->GetNumberOfCells());
+    m_colourBar->SetTitle(title.c_str());
+    m_colourBar->GetLookupTable()->SetRange(low, high);
     vtkCellData* cells = m_grid->GetCellData();
     if (values.size() != static_cast<std::size_t>(m_grid->GetNumberOfCells())) {
         auto* regions = vtkIntArray::SafeDownCast(cells->GetArray(kRegionLabel));
@@ -338,21 +474,14 @@ void MeshDisplay::colourTets(const std::vector<double>& values, double low, doub
         colours->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
         const double span = high > low ? high - low : 1.0;
         for (std::size_t i = 0; i < values.size(); ++i) {
-            // Blue - white - red diverging scale (Moreland 2009) through its three anchor colours.
-            const double t = std::clamp((values[i] - low) / span, 0.0, 1.0);
-            const double a = t < 0.5 ? t * 2.0 : (t - 0.5) * 2.0;
-            const std::array<double, 3> from =
-                t < 0.5 ? std::array<double, 3>{59, 76, 192} : std::array<double, 3>{221, 221, 221};
-            const std::array<double, 3> to =
-                t < 0.5 ? std::array<double, 3>{221, 221, 221} : std::array<double, 3>{180, 4, 38};
+            const std::array<double, 3> rgb = divergingColour((values[i] - low) / span);
             for (int c = 0; c < 3; ++c)
-                colours->SetComponent(static_cast<vtkIdType>(i), c,
-                                      from[static_cast<std::size_t>(c)] +
-                                          a * (to[static_cast<std::size_t>(c)] - from[static_cast<std::size_t>(c)]));
+                colours->SetComponent(static_cast<vtkIdType>(i), c, rgb[static_cast<std::size_t>(c)]);
         }
         cells->SetScalars(colours);
     }
     m_grid->Modified();
+    updateLegend();
 }
 
 void MeshDisplay::setHiddenRegions(const std::set<std::int32_t>& regions) {

@@ -12,7 +12,9 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <set>
+#include <string>
 #include <vector>
 
 class vtkActor;
@@ -21,6 +23,9 @@ class vtkClipPolyData;
 class vtkExtractCells;
 class vtkDataSetSurfaceFilter;
 class vtkExtractGeometry;
+class vtkLegendBoxActor;
+class vtkObject;
+class vtkScalarBarActor;
 class vtkPlane;
 class vtkPolyData;
 class vtkPolyDataMapper;
@@ -82,9 +87,16 @@ public:
     /// Tetrahedra drawn (all of them with the clip off) for a tet mesh; triangles for a surface.
     std::size_t visibleCellCount() const;
 
-    /// Tet meshes: colours each tet by `values` (one per tet) on a blue (low) to red (high) scale over [low, high];
-    /// an empty `values` goes back to the region colours.
-    void colourTets(const std::vector<double>& values, double low, double high);
+    /// Tet meshes: colours each tet by `values` (one per tet) on a blue (low) to red (high) scale over [low, high],
+    /// with a colour bar titled `title` in the view's corner; an empty `values` goes back to the region colours and
+    /// their legend.
+    void colourTets(const std::vector<double>& values, double low, double high, const std::string& title = {});
+    /// The names of a tet mesh's regions for its legend (a swatch of each region's colour and its name, in the view's
+    /// corner while the tets are coloured by region); regions without a name are left out, none: no legend.
+    void setRegionNames(const std::map<std::int32_t, std::string>& names);
+    /// What the legend shows now: the regions' names, or the colour bar's title; empty when none is shown.
+    std::vector<std::string> legendEntries() const;
+    std::string colourBarTitle() const;
     /// Tet meshes: hides the tets of the given regions (the others stay, cut by the clip when it is on).
     void setHiddenRegions(const std::set<std::int32_t>& regions);
     const std::set<std::int32_t>& hiddenRegions() const { return m_hiddenRegions; }
@@ -98,6 +110,8 @@ private:
     enum class Kind { None, Surface, Tets };
 
     void connectTetPipeline();
+    void updateLegend();
+    void placeLegends(vtkObject*, unsigned long, void*);
     void connectSurfacePipeline();
 
     vtkRenderer* m_renderer;
@@ -112,6 +126,11 @@ private:
     vtkSmartPointer<vtkClipPolyData> m_surfaceClip;
     vtkSmartPointer<vtkExtractCells> m_regionFilter;
     vtkSmartPointer<vtkActor> m_highlight;
+    vtkSmartPointer<vtkLegendBoxActor> m_legend;
+    vtkSmartPointer<vtkScalarBarActor> m_colourBar;
+    std::map<std::int32_t, std::string> m_regionNames;
+    bool m_colouredByValue = false;
+    unsigned long m_legendObserver = 0; ///< placeLegends on the renderer's StartEvent
     vtkSmartPointer<vtkTexture> m_texture;
     bool m_textured = false;
     std::set<std::int32_t> m_hiddenRegions;
