@@ -44,6 +44,8 @@
 
 #include <QUndoStack>
 
+#include <algorithm>
+#include <cmath>
 #include <variant>
 
 using hs::widgets::FileDialog;
@@ -355,7 +357,41 @@ void TestAuthoringFlow::aClinicianReviewsTheExportedPackage() {
     QVERIFY(m_window->isReviewing());
     QCOMPARE(find<hs::widgets::ReviewPanel>("reviewPanel")->packageFolder(), QFileInfo(m_exported).absoluteFilePath());
     QVERIFY(find<QPushButton>("visitButton0")->isEnabled());
+    // Visit turns the hysteroscopic view to the pathology: the camera aims at the centre of its tets (measured 43.5
+    // degrees off it before the click, 0.0 after).
+    auto reviewed = hs::scene::readScenePackage(QFile::encodeName(m_exported).toStdString());
+    QVERIFY(reviewed.ok());
+    std::int32_t regionId = -1;
+    for (const hs::scene::SceneRegion& region : reviewed->regions)
+        if (region.pathologyId == reviewed->clinical.pathologies[0].id)
+            regionId = region.id;
+    QVERIFY(regionId >= 0);
+    hs::Vec3 centre{};
+    std::size_t tets = 0;
+    for (std::size_t t = 0; t < reviewed->tets.tets.size(); ++t)
+        if (reviewed->tets.regions[t] == regionId) {
+            for (const auto i : reviewed->tets.tets[t])
+                centre = centre + reviewed->tets.points[static_cast<std::size_t>(i)] * 0.25;
+            ++tets;
+        }
+    QVERIFY(tets > 0);
+    centre = centre * (1.0 / double(tets));
+    vtkCamera* camera = find<hs::widgets::VtkView>("previewView")->renderer()->GetActiveCamera();
+    const auto angleToPathology = [&] {
+        double position[3], direction[3];
+        camera->GetPosition(position);
+        camera->GetDirectionOfProjection(direction);
+        const hs::Vec3 to = hs::normalized(centre - hs::Vec3{position[0], position[1], position[2]});
+        const double c = to.x * direction[0] + to.y * direction[1] + to.z * direction[2];
+        return std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / M_PI;
+    };
+    const double before = angleToPathology();
     find<QPushButton>("visitButton0")->click();
+    const double after = angleToPathology();
+    qInfo("Visit: the camera %.1f deg off the pathology's centre before, %.1f after", before, after);
+    QVERIFY2(after < 1.0 && before > 1.0, qPrintable(QStringLiteral("%1 -> %2 deg").arg(before).arg(after)));
+    QVERIFY2(find<QLabel>("previewStatusLabel")->text().contains(QStringLiteral("region %1").arg(regionId)),
+             qPrintable(find<QLabel>("previewStatusLabel")->text()));
     find<QSpinBox>("pathologyScore0")->setValue(5);
     find<QSpinBox>("textureScore0")->setValue(4);
     find<QPushButton>("saveReviewButton")->click();
