@@ -12,6 +12,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QFileInfo>
 #include <QLabel>
@@ -19,6 +20,7 @@
 #include <QMenu>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -67,6 +69,7 @@ private slots:
     void caseTitleShowsFileAndUnsavedMark();
     void theCommandLinesCaseFileOpensAsACase();
     void undoAndRedoActionsFollowTheDocument();
+    void undoingEveryEditThroughTheEditMenuSavesTheOpenedBytes();
     void closingWithUnsavedChangesAsks();
     void savingAnInvalidCaseShowsTheFieldAndKeepsTheFile();
     void autosaveIsOfferedBackAfterACrash();
@@ -471,6 +474,50 @@ void TestMainWindow::undoAndRedoActionsFollowTheDocument() {
     QTRY_VERIFY(m_window->isActiveWindow());
     QTest::keySequence(m_window.get(), QKeySequence::Redo);
     QCOMPARE(m_window->document().spec().patient.ageYears, 41.0);
+}
+
+// Edits made in the panels' fields, undone one by one with Edit > Undo, then saved: the file is the opened one byte for
+// byte; redone with Edit > Redo and saved: the edited case again, byte for byte.
+void TestMainWindow::undoingEveryEditThroughTheEditMenuSavesTheOpenedBytes() {
+    const QString path = fixture("bytes.json");
+    FileDialog::setNextFileName(path);
+    find<QAction>("actionSaveCaseAs")->trigger();
+    const auto readAll = [](const QString& file) {
+        QFile f(file);
+        return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+    };
+    const QByteArray opened = readAll(path);
+    QVERIFY(!opened.isEmpty());
+    m_window = std::make_unique<MainWindow>();
+    m_window->openArgument(path);
+    QCOMPARE(m_window->document().filePath(), QFileInfo(path).absoluteFilePath());
+    find<QDoubleSpinBox>("ageSpin")->setValue(47.0);
+    find<QSpinBox>("paritySpin")->setValue(0); // at most the gravidity (1)
+    find<QDoubleSpinBox>("weightSpin")->setValue(71.0);
+    find<QDoubleSpinBox>("heightSpin")->setValue(170.0);
+    QVERIFY(m_window->isWindowModified());
+    QAction* undo = find<QAction>("actionUndo");
+    QAction* redo = find<QAction>("actionRedo");
+    QVERIFY(find<QMenu>("menuEdit")->actions().contains(undo));
+    int undone = 0;
+    while (undo->isEnabled() && undone < 100) {
+        undo->trigger();
+        ++undone;
+    }
+    QCOMPARE(undone, 4);
+    QVERIFY(!m_window->isWindowModified());
+    find<QAction>("actionSaveCase")->trigger();
+    QCOMPARE(readAll(path), opened);
+    while (redo->isEnabled())
+        redo->trigger();
+    find<QAction>("actionSaveCase")->trigger();
+    const QByteArray edited = readAll(path);
+    QVERIFY(edited != opened);
+    auto reread = hs::scene::loadCase(path.toStdString());
+    QVERIFY(reread.ok());
+    QCOMPARE(reread->patient.ageYears, 47.0);
+    QCOMPARE(reread->patient.parity, 0);
+    QCOMPARE(hs::scene::toJson(*reread), hs::scene::toJson(m_window->document().spec()));
 }
 
 void TestMainWindow::closingWithUnsavedChangesAsks() {
