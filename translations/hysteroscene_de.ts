@@ -1558,6 +1558,77 @@
     </message>
 </context>
 <context>
+    <name>hs::widgets::SceneTree</name>
+    <message>
+        <source>Organ (shape model)</source>
+        <translation>Organ (Formmodell)</translation>
+    </message>
+    <message>
+        <source>Growth</source>
+        <translation>Wachstum</translation>
+    </message>
+    <message>
+        <source>Displaced organ</source>
+        <translation>Verdrängtes Organ</translation>
+    </message>
+    <message>
+        <source>%1 (grown)</source>
+        <translation>%1 (gewachsen)</translation>
+    </message>
+    <message>
+        <source>Merged body</source>
+        <translation>Vereinigter Körper</translation>
+    </message>
+    <message>
+        <source>Wall</source>
+        <translation>Wand</translation>
+    </message>
+    <message>
+        <source>%1 (merged)</source>
+        <translation>%1 (vereinigt)</translation>
+    </message>
+    <message>
+        <source>Tetrahedral mesh</source>
+        <translation>Tetraedernetz</translation>
+    </message>
+    <message>
+        <source>Visual surface (textured)</source>
+        <translation>Sichtbare Oberfläche (texturiert)</translation>
+    </message>
+    <message>
+        <source>Simulation mesh</source>
+        <translation>Simulationsnetz</translation>
+    </message>
+    <message>
+        <source>Part</source>
+        <translation>Teil</translation>
+    </message>
+    <message>
+        <source>Opacity</source>
+        <translation>Deckkraft</translation>
+    </message>
+    <message>
+        <source>What the 3-D view shows: tick a part to show it, set its opacity to see inside it</source>
+        <translation>Was die 3-D-Ansicht zeigt: ein Teil abhaken, um es zu zeigen, seine Deckkraft senken, um hineinzusehen</translation>
+    </message>
+    <message>
+        <source>Opacity of %1: lower it to see the parts inside</source>
+        <translation>Deckkraft von %1: senken, um die Teile darin zu sehen</translation>
+    </message>
+    <message>
+        <source>Opacity of %1</source>
+        <translation>Deckkraft von %1</translation>
+    </message>
+    <message>
+        <source>%1 — out of date</source>
+        <translation>%1 — veraltet</translation>
+    </message>
+    <message>
+        <source>The case has changed since this stage ran: what it shows is not the case as it is now, until the stage reruns</source>
+        <translation>Der Fall wurde geändert, seit dieser Schritt lief: Was er zeigt, ist nicht der Fall, wie er jetzt ist, bis der Schritt erneut läuft</translation>
+    </message>
+</context>
+<context>
     <name>hs::widgets::SceneWarnings</name>
     <message>
         <source>The texture stage substituted or left out part of the look: the surface may not look as the case describes.</source>
@@ -2207,6 +2278,22 @@
     <message>
         <source>Views</source>
         <translation>Ansichten</translation>
+    </message>
+    <message>
+        <source>Scene</source>
+        <translation>Szene</translation>
+    </message>
+    <message>
+        <source>Out of date: the case has changed since this scene was made.</source>
+        <translation>Veraltet: Der Fall wurde geändert, seit diese Szene erstellt wurde.</translation>
+    </message>
+    <message>
+        <source>on %1</source>
+        <translation>auf %1</translation>
+    </message>
+    <message>
+        <source>Out of date (%1): the case has changed since this view was made. It is remade when its stage runs again.</source>
+        <translation>Veraltet (%1): Der Fall wurde geändert, seit diese Ansicht erstellt wurde. Sie wird neu erstellt, wenn ihr Schritt erneut läuft.</translation>
     </message>
 </context>
 <context>

@@ -1558,6 +1558,77 @@
     </message>
 </context>
 <context>
+    <name>hs::widgets::SceneTree</name>
+    <message>
+        <source>Organ (shape model)</source>
+        <translation>Organe (modèle de forme)</translation>
+    </message>
+    <message>
+        <source>Growth</source>
+        <translation>Croissance</translation>
+    </message>
+    <message>
+        <source>Displaced organ</source>
+        <translation>Organe déplacé</translation>
+    </message>
+    <message>
+        <source>%1 (grown)</source>
+        <translation>%1 (croissance)</translation>
+    </message>
+    <message>
+        <source>Merged body</source>
+        <translation>Corps fusionné</translation>
+    </message>
+    <message>
+        <source>Wall</source>
+        <translation>Paroi</translation>
+    </message>
+    <message>
+        <source>%1 (merged)</source>
+        <translation>%1 (fusionné)</translation>
+    </message>
+    <message>
+        <source>Tetrahedral mesh</source>
+        <translation>Maillage tétraédrique</translation>
+    </message>
+    <message>
+        <source>Visual surface (textured)</source>
+        <translation>Surface visuelle (texturée)</translation>
+    </message>
+    <message>
+        <source>Simulation mesh</source>
+        <translation>Maillage de simulation</translation>
+    </message>
+    <message>
+        <source>Part</source>
+        <translation>Partie</translation>
+    </message>
+    <message>
+        <source>Opacity</source>
+        <translation>Opacité</translation>
+    </message>
+    <message>
+        <source>What the 3-D view shows: tick a part to show it, set its opacity to see inside it</source>
+        <translation>Ce que montre la vue 3D : cochez une partie pour l’afficher, baissez son opacité pour voir à l’intérieur</translation>
+    </message>
+    <message>
+        <source>Opacity of %1: lower it to see the parts inside</source>
+        <translation>Opacité de %1 : baissez-la pour voir les parties à l’intérieur</translation>
+    </message>
+    <message>
+        <source>Opacity of %1</source>
+        <translation>Opacité de %1</translation>
+    </message>
+    <message>
+        <source>%1 — out of date</source>
+        <translation>%1 — périmé</translation>
+    </message>
+    <message>
+        <source>The case has changed since this stage ran: what it shows is not the case as it is now, until the stage reruns</source>
+        <translation>Le cas a changé depuis l’exécution de cette étape : ce qu’elle montre n’est pas le cas actuel, jusqu’à ce qu’elle soit relancée</translation>
+    </message>
+</context>
+<context>
     <name>hs::widgets::SceneWarnings</name>
     <message>
         <source>The texture stage substituted or left out part of the look: the surface may not look as the case describes.</source>
@@ -2207,6 +2278,22 @@
     <message>
         <source>Views</source>
         <translation>Vues</translation>
+    </message>
+    <message>
+        <source>Scene</source>
+        <translation>Scène</translation>
+    </message>
+    <message>
+        <source>Out of date: the case has changed since this scene was made.</source>
+        <translation>Périmé : le cas a changé depuis la création de cette scène.</translation>
+    </message>
+    <message>
+        <source>on %1</source>
+        <translation>sur %1</translation>
+    </message>
+    <message>
+        <source>Out of date (%1): the case has changed since this view was made. It is remade when its stage runs again.</source>
+        <translation>Périmé (%1) : le cas a changé depuis la création de cette vue. Elle sera refaite à la prochaine exécution de son étape.</translation>
     </message>
 </context>
 <context>

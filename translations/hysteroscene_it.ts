@@ -1558,6 +1558,77 @@
     </message>
 </context>
 <context>
+    <name>hs::widgets::SceneTree</name>
+    <message>
+        <source>Organ (shape model)</source>
+        <translation>Organo (modello di forma)</translation>
+    </message>
+    <message>
+        <source>Growth</source>
+        <translation>Crescita</translation>
+    </message>
+    <message>
+        <source>Displaced organ</source>
+        <translation>Organo dislocato</translation>
+    </message>
+    <message>
+        <source>%1 (grown)</source>
+        <translation>%1 (cresciuto)</translation>
+    </message>
+    <message>
+        <source>Merged body</source>
+        <translation>Corpo unito</translation>
+    </message>
+    <message>
+        <source>Wall</source>
+        <translation>Parete</translation>
+    </message>
+    <message>
+        <source>%1 (merged)</source>
+        <translation>%1 (unito)</translation>
+    </message>
+    <message>
+        <source>Tetrahedral mesh</source>
+        <translation>Mesh tetraedrica</translation>
+    </message>
+    <message>
+        <source>Visual surface (textured)</source>
+        <translation>Superficie visiva (con texture)</translation>
+    </message>
+    <message>
+        <source>Simulation mesh</source>
+        <translation>Mesh di simulazione</translation>
+    </message>
+    <message>
+        <source>Part</source>
+        <translation>Parte</translation>
+    </message>
+    <message>
+        <source>Opacity</source>
+        <translation>Opacità</translation>
+    </message>
+    <message>
+        <source>What the 3-D view shows: tick a part to show it, set its opacity to see inside it</source>
+        <translation>Ciò che mostra la vista 3D: spunta una parte per mostrarla, abbassa l’opacità per vedere all’interno</translation>
+    </message>
+    <message>
+        <source>Opacity of %1: lower it to see the parts inside</source>
+        <translation>Opacità di %1: abbassala per vedere le parti all’interno</translation>
+    </message>
+    <message>
+        <source>Opacity of %1</source>
+        <translation>Opacità di %1</translation>
+    </message>
+    <message>
+        <source>%1 — out of date</source>
+        <translation>%1 — non aggiornato</translation>
+    </message>
+    <message>
+        <source>The case has changed since this stage ran: what it shows is not the case as it is now, until the stage reruns</source>
+        <translation>Il caso è cambiato da quando questa fase è stata eseguita: ciò che mostra non è il caso attuale, finché la fase non viene rieseguita</translation>
+    </message>
+</context>
+<context>
     <name>hs::widgets::SceneWarnings</name>
     <message>
         <source>The texture stage substituted or left out part of the look: the surface may not look as the case describes.</source>
@@ -2207,6 +2278,22 @@
     <message>
         <source>Views</source>
         <translation>Viste</translation>
+    </message>
+    <message>
+        <source>Scene</source>
+        <translation>Scena</translation>
+    </message>
+    <message>
+        <source>Out of date: the case has changed since this scene was made.</source>
+        <translation>Non aggiornato: il caso è cambiato da quando questa scena è stata creata.</translation>
+    </message>
+    <message>
+        <source>on %1</source>
+        <translation>su %1</translation>
+    </message>
+    <message>
+        <source>Out of date (%1): the case has changed since this view was made. It is remade when its stage runs again.</source>
+        <translation>Non aggiornato (%1): il caso è cambiato da quando questa vista è stata creata. Verrà rifatta quando la sua fase verrà rieseguita.</translation>
     </message>
 </context>
 <context>

@@ -9,8 +9,10 @@
 #include "hs/widgets/jobs/GenerationSession.h"
 #include "hs/widgets/panels/PathologyPanel.h"
 #include "hs/widgets/panels/ReviewPanel.h"
+#include "hs/widgets/panels/SceneTree.h"
 #include "hs/widgets/view/HysteroscopicPreview.h"
 #include "hs/widgets/view/MeshDisplay.h"
+#include "hs/widgets/view/SceneParts.h"
 #include "hs/widgets/view/SurfaceHandles.h"
 #include "hs/widgets/view/VariantsView.h"
 #include "hs/widgets/view/VtkView.h"
@@ -21,6 +23,7 @@
 #include <QBarSeries>
 #include <QBarSet>
 #include <QChartView>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
@@ -38,6 +41,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolButton>
+#include <QTreeWidget>
 
 #include <vtkCamera.h>
 #include <vtkRenderer.h>
@@ -130,6 +134,16 @@ QPoint onScreen(hs::widgets::VtkView* view, const hs::Vec3& p) {
     renderer->GetDisplayPoint(d);
     const double ratio = view->devicePixelRatioF();
     return QPoint(int(d[0] / ratio), int((view->height() * ratio - d[1]) / ratio));
+}
+
+/// Looks at `target` (mm) from 200 mm along `direction`, z up.
+void aim(hs::widgets::VtkView* view, const hs::Vec3& target, const hs::Vec3& direction) {
+    vtkCamera* camera = view->renderer()->GetActiveCamera();
+    camera->SetFocalPoint(target.x, target.y, target.z);
+    camera->SetPosition(target.x + 200.0 * direction.x, target.y + 200.0 * direction.y, target.z + 200.0 * direction.z);
+    camera->SetViewUp(0.0, 0.0, 1.0);
+    view->renderer()->ResetCameraClippingRange();
+    view->requestRender();
 }
 
 /// A left-button drag on `view` from `from` to `to`, in small steps, as a hand does it.
@@ -245,10 +259,86 @@ void TestAuthoringFlow::authorsTheDefaultCaseFromNewToAValidatedPackage() {
     QVERIFY(session().isCurrent(hs::generate::Stage::Pathology));
     QVERIFY(find<QLabel>("pathologyResultLabel")->text().contains("FIGO"));
     shot("workstation-pathologies", "pathologyDock");
+
+    // The scene tree lists every part; the growth is shown, the organ of the shape model hidden.
+    hs::widgets::SceneTree* tree = m_window->sceneTree();
+    hs::widgets::SceneParts& parts = m_window->sceneParts();
+    auto* list = find<hs::widgets::PathologyPanel>("pathologyPanel");
+    const int myoma = static_cast<int>(m_window->document().spec().pathologies.size()) - 1;
+    const std::string grown = "growth/" + std::to_string(myoma + 1);
+    QVERIFY(tree->itemOf("organ") && tree->itemOf("growth/organ") && tree->itemOf(grown));
+    QVERIFY(parts.isShown(grown) && parts.isShown("growth/organ") && !parts.isShown("organ"));
+    QCOMPARE(tree->itemOf("organ")->checkState(0), Qt::Unchecked);
+    // Watched inside a translucent organ: where the (intramural) myoma's centre is on the screen, the opaque organ
+    // hides it; at 30 % opacity the myoma's colour shows through.
+    const hs::Bounds myomaBox = hs::bounds(session().results()->pathologies->pathologies.back().surface);
+    aim(view, myomaBox.center(), {0.0, 1.0, 0.0});
+    const QPoint myomaOnScreen = onScreen(view, myomaBox.center());
+    const QColor opaque = view->grabImage().pixelColor(myomaOnScreen * view->devicePixelRatioF());
+    find<QSpinBox>("opacity:growth/organ")->setValue(30);
+    QCOMPARE(parts.display("growth/organ")->opacity(), 0.3);
+    QCOMPARE(parts.display(grown)->opacity(), 1.0);
+    const QColor translucent = view->grabImage().pixelColor(myomaOnScreen * view->devicePixelRatioF());
+    QVERIFY2(std::abs(opaque.red() - translucent.red()) + std::abs(opaque.green() - translucent.green()) +
+                     std::abs(opaque.blue() - translucent.blue()) >
+                 30,
+             qPrintable(opaque.name() + " " + translucent.name()));
+    // Unticking the displaced organ hides it; a click on the myoma selects it in the list and the tree.
+    tree->itemOf("growth/organ")->setCheckState(0, Qt::Unchecked);
+    QVERIFY(!parts.isShown("growth/organ") && parts.isShown("growth"));
+    list->setCurrentIndex(0 == myoma ? -1 : 0);
+    QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, myomaOnScreen);
+    QVERIFY2(list->currentIndex() == myoma, qPrintable(find<QLabel>("pickLabel")->text()));
+    QCOMPARE(tree->selectedPathology(), myoma);
+    QCOMPARE(parts.highlightedPathology(), myoma);
+    // Selected in the tree: the list follows.
+    if (myoma > 0) {
+        const std::string other = "growth/" + std::to_string(myoma);
+        QTest::mouseClick(tree->tree()->viewport(), Qt::LeftButton, Qt::NoModifier,
+                          tree->tree()->visualItemRect(tree->itemOf(other)).center());
+        QCOMPARE(list->currentIndex(), myoma - 1);
+        list->setCurrentIndex(myoma);
+        QCOMPARE(tree->selectedPathology(), myoma);
+    }
+    find<QSpinBox>("opacity:growth/organ")->setValue(100);
+    tree->itemOf("growth/organ")->setCheckState(0, Qt::Checked);
+
     QVERIFY(runStage("mergeButton"));
     QVERIFY(m_window->shownLayer() == hs::widgets::ResultLayer::Body);
     QVERIFY(runStage("meshButton"));
     QVERIFY(m_window->shownLayer() == hs::widgets::ResultLayer::Tissues);
+    // The tissues are the mesh's regions; with all but the myoma's hidden in the tree, a click on it picks its
+    // region and selects it.
+    QVERIFY(tree->itemOf("tissues") && tree->itemOf("surface") == nullptr);
+    std::int32_t myomaRegion = -1;
+    for (const hs::widgets::ScenePart& part : parts.parts())
+        if (part.kind == hs::widgets::PartKind::TissueRegion) {
+            if (part.pathology == myoma)
+                myomaRegion = part.region;
+            else
+                tree->itemOf(part.key)->setCheckState(0, Qt::Unchecked);
+        }
+    QVERIFY(myomaRegion >= 0);
+    QVERIFY(!m_window->display().hiddenRegions().count(myomaRegion));
+    QVERIFY(find<QCheckBox>(QStringLiteral("regionCheck%1").arg(myomaRegion))->isChecked()); // the Mesh panel agrees
+    const auto regionBox = m_window->display().regionBounds(myomaRegion);
+    const hs::Vec3 regionCentre{(regionBox[0] + regionBox[1]) / 2, (regionBox[2] + regionBox[3]) / 2,
+                                (regionBox[4] + regionBox[5]) / 2};
+    aim(view, regionCentre, {0.0, 1.0, 0.0});
+    list->setCurrentIndex(0 == myoma ? -1 : 0);
+    QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, onScreen(view, regionCentre));
+    QCOMPARE(list->currentIndex(), myoma);
+    QVERIFY(m_window->findChild<QLabel*>("pickLabel")
+                ->text()
+                .contains(QString::fromStdString(m_window->document().spec().pathologies.back().id)));
+    // The mesh hidden and shown again: every tissue in it, the Mesh panel's boxes too.
+    tree->itemOf("tissues")->setCheckState(0, Qt::Unchecked);
+    QVERIFY(!m_window->display().isShown());
+    tree->itemOf("tissues")->setCheckState(0, Qt::Checked);
+    QVERIFY(m_window->display().isShown() && m_window->display().hiddenRegions().empty());
+    for (const hs::widgets::ScenePart& part : parts.parts())
+        if (part.kind == hs::widgets::PartKind::TissueRegion)
+            QVERIFY(find<QCheckBox>(QStringLiteral("regionCheck%1").arg(part.region))->isChecked());
     auto* histogram = qobject_cast<QBarSeries*>(find<QChartView>("radiusRatioChart")->chart()->series().value(0));
     QVERIFY(histogram && histogram->barSets().value(0)->sum() > 0);
     find<QAction>("actionResetCamera")->trigger();
@@ -261,6 +351,22 @@ void TestAuthoringFlow::authorsTheDefaultCaseFromNewToAValidatedPackage() {
     m_window->preview()->setInsertion(25.0);
     shot("workstation-texture", "textureDock");
     shot("workstation-materials", "materialsDock");
+
+    // An edit outdates the stages that read it: the cycle phase is read by the tissue layers, so the mesh, the
+    // surface, the simulation mesh and the views showing them are marked until they rerun; the organ is not.
+    auto* phase = find<QComboBox>("cyclePhaseCombo");
+    const int phaseBefore = phase->currentIndex();
+    phase->setCurrentIndex(phaseBefore == 0 ? 1 : 0);
+    const auto outOfDate = [&](const char* key) { return tree->itemOf(key)->data(0, Qt::UserRole + 2).toBool(); };
+    QVERIFY(outOfDate("tissues") && outOfDate("surface") && outOfDate("simulation"));
+    QVERIFY(!outOfDate("organ") && !outOfDate("growth") && !outOfDate("body"));
+    QVERIFY(find<QLabel>("viewOutOfDate")->isVisible());
+    QVERIFY(find<QLabel>("previewOutOfDate")->isVisible());
+    shot("workstation-out-of-date");
+    QVERIFY(runStage("textureButton"));
+    QVERIFY(!outOfDate("tissues") && !outOfDate("surface") && !outOfDate("simulation"));
+    QVERIFY(!find<QLabel>("viewOutOfDate")->isVisible());
+    QVERIFY(!find<QLabel>("previewOutOfDate")->isVisible());
 
     // Export: the folder comes from the file dialog seam.
     // HS_EXPORT_DIR keeps the package (to open it in other tools); by default it goes with the test's folder.

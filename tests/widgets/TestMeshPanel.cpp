@@ -4,6 +4,7 @@
 #include "PanelTestSupport.h"
 #include "hs/widgets/document/CaseDocument.h"
 #include "hs/widgets/jobs/GenerationSession.h"
+#include "hs/widgets/panels/MaterialsPanel.h"
 #include "hs/widgets/panels/MeshPanel.h"
 #include "hs/widgets/view/MeshDisplay.h"
 #include "hs/widgets/view/ResultsDisplay.h"
@@ -101,7 +102,7 @@ void TestMeshPanel::meshesAndInspectsTheResult() {
     QVERIFY(find<QChartView>("dihedralChart")->chart()->series().size() == 1);
 
     // The display shows the mesh; the inspector lists the worst tets once their measures are in.
-    hs::widgets::showResults(*m_display, *m_session->results());
+    m_display->showTetMesh(m_session->results()->tissue->tets);
     m_panel->applyToDisplay();
     auto* table = find<QTableWidget>("worstTetTable");
     QTRY_COMPARE_WITH_TIMEOUT(table->rowCount(), MeshPanel::kWorstCount, 20000);
@@ -124,7 +125,9 @@ void TestMeshPanel::meshesAndInspectsTheResult() {
     const auto& regions = m_session->results()->tissue->regions;
     QVERIFY(!regions.empty());
     auto* myometrium = find<QCheckBox>(QStringLiteral("regionCheck%1").arg(regions.front().id));
-    QCOMPARE(myometrium->text(), QString::fromStdString(regions.front().name));
+    // Named in the user's language, as the Materials panel names the tissue.
+    QCOMPARE(myometrium->text(), hs::widgets::tissueName(regions.front().tissue));
+    QCOMPARE(myometrium->text(), QStringLiteral("Myometrium"));
     myometrium->setChecked(false);
     QVERIFY(m_display->visibleCellCount() < all);
     QCOMPARE(m_display->hiddenRegions().count(regions.front().id), std::size_t{1});

@@ -13,9 +13,11 @@
 #include "hs/widgets/panels/PathologyPanel.h"
 #include "hs/widgets/panels/PatientPanel.h"
 #include "hs/widgets/panels/ReviewPanel.h"
+#include "hs/widgets/panels/SceneTree.h"
 #include "hs/widgets/panels/TexturePanel.h"
 #include "hs/widgets/view/HysteroscopicPreview.h"
 #include "hs/widgets/view/MeshDisplay.h"
+#include "hs/widgets/view/SceneParts.h"
 #include "hs/widgets/view/SurfaceHandles.h"
 #include "hs/widgets/view/VariantsView.h"
 
@@ -77,10 +79,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_view->renderer()->SetBackground2(kBackgroundTop[0], kBackgroundTop[1], kBackgroundTop[2]);
     setCentralWidget(m_view);
     m_display = std::make_unique<widgets::MeshDisplay>(m_view->renderer());
+    m_parts = std::make_unique<widgets::SceneParts>(m_view->renderer(), *m_display);
     m_growth = std::make_unique<widgets::GrowthDisplay>(m_view->renderer());
     m_orientationMarker = std::make_unique<widgets::OrientationMarker>(*m_view);
     m_clipPlane = std::make_unique<widgets::ClipPlaneWidget>(*m_view, [this](const Vec3& origin, const Vec3& normal) {
-        m_display->setClipPlane(origin, normal);
+        m_parts->setClipPlane(origin, normal);
         m_view->requestRender();
         updateStatus();
     });
@@ -102,6 +105,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(&m_document, &widgets::CaseDocument::changed, this, [this] {
         if (!isReviewing()) // the reviewed package stays in the views whatever happens to the case
             m_currentFile.clear();
+        updateOutOfDateMarks();
     });
     m_autosaveTimer.setInterval(kAutosaveMs);
     connect(&m_autosaveTimer, &QTimer::timeout, this, &MainWindow::autosave);
@@ -368,6 +372,12 @@ void MainWindow::createPanels() {
     QDockWidget* patient = addPanel(m_patientPanel, tr("Patient"), "patientDock", Qt::LeftDockWidgetArea);
     QDockWidget* pathologies = addPanel(m_pathologyPanel, tr("Pathologies"), "pathologyDock", Qt::LeftDockWidgetArea);
     QDockWidget* materials = addPanel(m_materialsPanel, tr("Materials"), "materialsDock", Qt::LeftDockWidgetArea);
+    // Below them the scene tree: what the 3-D view shows, part by part.
+    m_sceneTree = new widgets::SceneTree(this);
+    m_sceneTree->setParts(m_parts.get());
+    m_sceneTree->setCurrentCheck([this](generate::Stage stage) { return m_session.isCurrent(stage); });
+    QDockWidget* sceneDock = addPanel(m_sceneTree, tr("Scene"), "sceneDock", Qt::LeftDockWidgetArea);
+    splitDockWidget(patient, sceneDock, Qt::Vertical); // before the tabs: a tabbed dock cannot be split
     tabifyDockWidget(patient, pathologies);
     tabifyDockWidget(pathologies, materials);
     patient->raise();
@@ -392,6 +402,34 @@ void MainWindow::createPanels() {
     tabifyDockWidget(exportDock, m_reviewDock);
     mesh->raise();
     m_authoringDocks = {patient, pathologies, materials, mesh, texture, exportDock};
+    // The marks over the views an edit has outdated.
+    const auto mark = [this](QWidget* over, const char* name) {
+        auto* label = new QLabel(over);
+        label->setObjectName(QString::fromLatin1(name));
+        label->setWordWrap(true);
+        label->setStyleSheet(QStringLiteral("QLabel { background: rgba(200, 110, 0, 220); color: white; "
+                                            "padding: 4px; border-radius: 3px; }"));
+        label->setAttribute(Qt::WA_TransparentForMouseEvents);
+        label->move(8, 8);
+        label->setFixedWidth(320);
+        label->hide();
+        return label;
+    };
+    m_viewOutOfDate = mark(m_view, "viewOutOfDate");
+    m_previewOutOfDate = mark(m_preview, "previewOutOfDate");
+    m_previewOutOfDate->setText(tr("Out of date: the case has changed since this scene was made."));
+    m_previewOutOfDate->adjustSize();
+    // One selection: the pathology list, the scene tree and a pick in 3-D.
+    connect(m_pathologyPanel, &widgets::PathologyPanel::currentChanged, this,
+            [this] { m_sceneTree->selectPathology(m_pathologyPanel->currentIndex()); });
+    connect(m_sceneTree, &widgets::SceneTree::pathologySelected, this,
+            [this](int index) { m_pathologyPanel->setCurrentIndex(index); });
+    connect(m_sceneTree, &widgets::SceneTree::visibilityChanged, this, [this] {
+        m_meshPanel->syncRegionChecks();
+        syncClipPlane();
+    });
+    connect(m_sceneTree, &widgets::SceneTree::displayChanged, m_view, &widgets::VtkView::requestRender);
+    connect(m_meshPanel, &widgets::MeshPanel::displayChanged, m_sceneTree, &widgets::SceneTree::refreshChecks);
     connect(m_texturePanel, &widgets::TexturePanel::exemplarBrowseRequested, this, [this](int index) {
         const QString path = FileDialog::getOpenFileName(this, tr("Exemplar Image"), m_lastFolder,
                                                          tr("Images (*.png *.jpg *.jpeg *.exr *.tif *.tiff)") +
@@ -457,9 +495,9 @@ void MainWindow::showResults() {
         return;
     // The preview shares the results' scene (no copy): it lives as long as the preview holds it.
     m_preview->setScene(results->scene ? std::shared_ptr<const scene::Scene>(results, &*results->scene) : nullptr);
-    const widgets::ResultLayer layer =
-        widgets::showResults(*m_display, *results,
-                             m_pathologyPanel->isPlacing() ? std::optional(widgets::ResultLayer::Organ) : std::nullopt);
+    const widgets::ResultLayer layer = m_parts->show(
+        results, m_pathologyPanel->isPlacing() ? std::optional(widgets::ResultLayer::Organ) : std::nullopt);
+    m_sceneTree->refresh();
     if (layer == widgets::ResultLayer::None)
         return;
     m_shownLayer = layer;
@@ -468,8 +506,33 @@ void MainWindow::showResults() {
     m_clipAction->setEnabled(true); // cuts a tet mesh or opens a surface (to click on the cavity's wall)
     syncClipPlane();
     m_meshPanel->applyToDisplay();
+    m_sceneTree->refreshChecks();
+    updateOutOfDateMarks();
     m_view->requestRender();
     updateStatus();
+}
+
+void MainWindow::showOwnMesh() {
+    m_parts->clear();
+    m_display->setShown(true);
+    m_display->setOpacity(1.0);
+    m_sceneTree->refresh();
+    m_shownLayer = widgets::ResultLayer::None;
+    updateOutOfDateMarks();
+}
+
+void MainWindow::updateOutOfDateMarks() {
+    m_sceneTree->refreshMarks();
+    const bool ownMesh = !m_currentFile.isEmpty() || isReviewing();
+    const bool view =
+        !ownMesh && m_shownLayer != widgets::ResultLayer::None && !m_session.isCurrent(widgets::stageOf(m_shownLayer));
+    m_viewOutOfDate->setText(tr("Out of date (%1): the case has changed since this view was made. It is remade "
+                                "when its stage runs again.")
+                                 .arg(layerName(m_shownLayer)));
+    m_viewOutOfDate->setVisible(view);
+    const auto results = m_session.results();
+    m_previewOutOfDate->setVisible(!ownMesh && results && results->scene &&
+                                   !m_session.isCurrent(generate::Stage::Scene));
 }
 
 void MainWindow::updateHandles() {
@@ -479,7 +542,8 @@ void MainWindow::updateHandles() {
             m_handles->hide();
         return;
     }
-    m_handles->show(m_display->actor(), seat->pointMm, seat->normal, seat->sizeMm);
+    if (const widgets::MeshDisplay* organ = m_parts->display("organ"))
+        m_handles->show(organ->actor(), seat->pointMm, seat->normal, seat->sizeMm);
 }
 
 void MainWindow::onJobFailed(const QString& title, const Error& error) {
@@ -516,15 +580,16 @@ void MainWindow::closeEvent(QCloseEvent* event) {
 // --- The case -----------------------------------------------------------------------------------------------------
 
 void MainWindow::onClipToggled(bool enabled) {
-    m_display->setClipEnabled(enabled);
+    m_parts->setClipEnabled(enabled);
     syncClipPlane();
     m_view->requestRender();
     updateStatus();
 }
 
 void MainWindow::syncClipPlane() {
-    if (m_clipAction->isChecked() && !m_display->isEmpty())
-        m_clipPlane->show(m_display->meshBounds(), m_display->clipOrigin(), m_display->clipNormal());
+    const widgets::MeshDisplay& shown = m_parts->reference();
+    if (m_clipAction->isChecked() && !shown.isEmpty())
+        m_clipPlane->show(shown.meshBounds(), shown.clipOrigin(), shown.clipNormal());
     else
         m_clipPlane->hide();
 }
@@ -550,10 +615,20 @@ void MainWindow::onPicked(const widgets::PickResult& result) {
         return;
     }
     const QLocale locale;
-    m_pickLabel->setText(tr("Picked (%1, %2, %3) mm")
-                             .arg(locale.toString(double(result.point.x()), 'f', 2),
-                                  locale.toString(double(result.point.y()), 'f', 2),
-                                  locale.toString(double(result.point.z()), 'f', 2)));
+    QString text =
+        tr("Picked (%1, %2, %3) mm")
+            .arg(locale.toString(double(result.point.x()), 'f', 2), locale.toString(double(result.point.y()), 'f', 2),
+                 locale.toString(double(result.point.z()), 'f', 2));
+    // A pick on a pathology (grown, merged or meshed) selects it, in the list and in the scene tree.
+    if (const int pathology = m_parts->pathologyAt(result.prop, result.region); pathology >= 0 && !isReviewing()) {
+        const auto& pathologies = m_document.spec().pathologies;
+        if (static_cast<std::size_t>(pathology) < pathologies.size())
+            text += QStringLiteral("   ") +
+                    tr("on %1").arg(QString::fromStdString(pathologies[static_cast<std::size_t>(pathology)].id));
+        m_pathologyPanel->setCurrentIndex(pathology);
+        m_sceneTree->selectPathology(pathology);
+    }
+    m_pickLabel->setText(text);
 }
 
 QString MainWindow::layerName(widgets::ResultLayer layer) {

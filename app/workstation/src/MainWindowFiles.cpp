@@ -126,6 +126,8 @@ void MainWindow::onLoadFinished() {
 }
 
 void MainWindow::showMesh(const LoadedMesh& loaded) {
+    m_currentFile = loaded.path;
+    showOwnMesh();
     std::visit(
         [this](const auto& mesh) {
             if constexpr (std::is_same_v<std::decay_t<decltype(mesh)>, SurfaceMesh>)
@@ -137,8 +139,6 @@ void MainWindow::showMesh(const LoadedMesh& loaded) {
     m_clipAction->setEnabled(m_display->isTetMesh());
     syncClipPlane();
     onResetCamera();
-    m_currentFile = loaded.path;
-    m_shownLayer = widgets::ResultLayer::None;
     m_pickLabel->clear();
     addRecentFile(loaded.path);
     updateStatus();

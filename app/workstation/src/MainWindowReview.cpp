@@ -6,6 +6,7 @@
 #include "hs/scene/ScenePackage.h"
 #include "hs/widgets/common/FileDialog.h"
 #include "hs/widgets/common/MessageBox.h"
+#include "hs/widgets/panels/MaterialsPanel.h"
 #include "hs/widgets/panels/ReviewPanel.h"
 #include "hs/widgets/view/HysteroscopicPreview.h"
 #include "hs/widgets/view/MeshDisplay.h"
@@ -91,12 +92,12 @@ void MainWindow::reviewPackage(const QString& folder) {
             m_preview->setInsertion(0.0);
             std::map<std::int32_t, std::string> names; // the legend names the package's own regions
             for (const scene::SceneRegion& region : opened.scene->regions)
-                names[region.id] = region.name;
+                names[region.id] = widgets::regionName(region).toStdString();
+            m_currentFile = absolute;
+            showOwnMesh();
             m_display->setRegionNames(names);
             m_display->showTetMesh(opened.scene->tets);
             syncClipPlane();
-            m_shownLayer = widgets::ResultLayer::None;
-            m_currentFile = absolute;
             updateAuthoringActions();
             onResetCamera();
             updateStatus();

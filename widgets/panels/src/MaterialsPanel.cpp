@@ -22,22 +22,6 @@ using scene::MaterialOverride;
 
 constexpr int kMergeBase = 400;
 
-QString tissueName(clinical::Tissue tissue) {
-    switch (tissue) {
-    case clinical::Tissue::Myometrium:
-        return MaterialsPanel::tr("Myometrium");
-    case clinical::Tissue::Endometrium:
-        return MaterialsPanel::tr("Endometrium");
-    case clinical::Tissue::Cervix:
-        return MaterialsPanel::tr("Cervix");
-    case clinical::Tissue::Myoma:
-        return MaterialsPanel::tr("Myoma");
-    case clinical::Tissue::Polyp:
-        break;
-    }
-    return MaterialsPanel::tr("Polyp");
-}
-
 std::optional<double> MaterialOverride::*overrideOf(int column) {
     switch (column) {
     case MaterialsPanel::kYoungsColumn:
@@ -67,6 +51,26 @@ std::pair<double, scene::Range> defaultAndRange(clinical::Tissue tissue, int col
 }
 
 } // namespace
+
+QString tissueName(clinical::Tissue tissue) {
+    switch (tissue) {
+    case clinical::Tissue::Myometrium:
+        return MaterialsPanel::tr("Myometrium");
+    case clinical::Tissue::Endometrium:
+        return MaterialsPanel::tr("Endometrium");
+    case clinical::Tissue::Cervix:
+        return MaterialsPanel::tr("Cervix");
+    case clinical::Tissue::Myoma:
+        return MaterialsPanel::tr("Myoma");
+    case clinical::Tissue::Polyp:
+        break;
+    }
+    return MaterialsPanel::tr("Polyp");
+}
+
+QString regionName(const scene::SceneRegion& region) {
+    return region.pathologyId.empty() ? tissueName(region.tissue) : QString::fromStdString(region.name);
+}
 
 MaterialsPanel::MaterialsPanel(CaseDocument& document, QWidget* parent) : QWidget(parent), m_document(document) {
     setObjectName("materialsPanel");

@@ -4,6 +4,7 @@
 #include "hs/widgets/document/CaseDocument.h"
 #include "hs/widgets/jobs/GenerationSession.h"
 #include "hs/widgets/panels/CaseEdits.h"
+#include "hs/widgets/panels/MaterialsPanel.h"
 #include "hs/widgets/view/MeshDisplay.h"
 #include "hs/widgets/view/VtkView.h"
 
@@ -22,6 +23,7 @@
 #include <QLabel>
 #include <QLocale>
 #include <QPushButton>
+#include <QSignalBlocker>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -280,14 +282,18 @@ void MeshPanel::onResults() {
                  locale.toString(q.hausdorffDistance, 'f', 2), locale.toString(100.0 * q.volumeError, 'f', 2)));
     fillCharts();
 
-    // One check box per region of the tissue mesh.
-    for (QCheckBox* check : m_regionChecks)
+    // One check box per region of the tissue mesh; a region the user hid stays hidden in the next result.
+    std::set<int> hidden;
+    for (QCheckBox* check : m_regionChecks) {
+        if (!check->isChecked())
+            hidden.insert(check->property("regionId").toInt());
         delete check;
+    }
     m_regionChecks.clear();
     for (const scene::SceneRegion& region : results->tissue->regions) {
-        auto* check = new QCheckBox(QString::fromStdString(region.name), this);
+        auto* check = new QCheckBox(regionName(region), this);
         check->setObjectName(QStringLiteral("regionCheck%1").arg(region.id));
-        check->setChecked(true);
+        check->setChecked(hidden.count(region.id) == 0);
         check->setProperty("regionId", region.id);
         connect(check, &QCheckBox::toggled, this, &MeshPanel::applyRegionVisibility);
         m_regionsLayout->addWidget(check);
@@ -384,6 +390,15 @@ void MeshPanel::applyRegionVisibility() {
     if (m_view)
         m_view->requestRender();
     emit displayChanged();
+}
+
+void MeshPanel::syncRegionChecks() {
+    if (!m_display)
+        return;
+    for (QCheckBox* check : m_regionChecks) {
+        const QSignalBlocker block(check);
+        check->setChecked(m_display->hiddenRegions().count(check->property("regionId").toInt()) == 0);
+    }
 }
 
 void MeshPanel::applyToDisplay() {

@@ -397,7 +397,11 @@ void PathologyPanel::setPlacing(bool placing) {
         if (!m_session.isCurrent(generate::Stage::Organ))
             m_session.runThrough(generate::Stage::Organ);
     }
-    emit placingChanged(placing);
+    // Only a change is news: selecting another pathology while not placing redraws nothing.
+    if (placing != m_placingAnnounced) {
+        m_placingAnnounced = placing;
+        emit placingChanged(placing);
+    }
 }
 
 void PathologyPanel::placeAt(bool hit, const QVector3D& point) {

@@ -291,7 +291,7 @@ void MeshDisplay::setRegionNames(const std::map<std::int32_t, std::string>& name
 
 void MeshDisplay::updateLegend() {
     const bool tets = m_kind == Kind::Tets;
-    m_colourBar->SetVisibility(tets && m_colouredByValue);
+    m_colourBar->SetVisibility(m_shown && tets && m_colouredByValue);
     std::vector<std::pair<std::int32_t, std::string>> entries;
     if (tets && !m_colouredByValue && m_grid)
         if (auto* regions = vtkIntArray::SafeDownCast(m_grid->GetCellData()->GetArray(kRegionLabel))) {
@@ -309,7 +309,7 @@ void MeshDisplay::updateLegend() {
         double colour[3] = {rgb[0] / 255.0, rgb[1] / 255.0, rgb[2] / 255.0};
         m_legend->SetEntry(static_cast<int>(i), swatch, entries[i].second.c_str(), colour);
     }
-    m_legend->SetVisibility(!entries.empty());
+    m_legend->SetVisibility(m_shown && !entries.empty());
 }
 
 void MeshDisplay::placeLegends(vtkObject*, unsigned long, void*) {
@@ -342,6 +342,29 @@ std::string MeshDisplay::colourBarTitle() const {
 
 vtkActor* MeshDisplay::actor() const {
     return m_actor;
+}
+
+void MeshDisplay::setShown(bool shown) {
+    m_shown = shown;
+    m_actor->SetVisibility(shown && m_kind != Kind::None);
+    if (!shown)
+        m_highlight->VisibilityOff();
+    updateLegend();
+}
+
+void MeshDisplay::setOpacity(double opacity) {
+    m_actor->GetProperty()->SetOpacity(std::clamp(opacity, 0.0, 1.0));
+}
+
+double MeshDisplay::opacity() const {
+    return m_actor->GetProperty()->GetOpacity();
+}
+
+void MeshDisplay::setWireframe(bool wireframe) {
+    if (wireframe)
+        m_actor->GetProperty()->SetRepresentationToWireframe();
+    else
+        m_actor->GetProperty()->SetRepresentationToSurface();
 }
 
 void MeshDisplay::showTexturedSurface(const SurfaceMesh& mesh, const std::vector<std::array<float, 2>>& uvs,
@@ -405,7 +428,7 @@ void MeshDisplay::showSurface(const SurfaceMesh& mesh) {
     connectSurfacePipeline();
     setUniformLook(m_actor->GetProperty());
     m_actor->GetProperty()->EdgeVisibilityOff();
-    m_actor->VisibilityOn();
+    m_actor->SetVisibility(m_shown);
     updateLegend();
 }
 
@@ -423,7 +446,7 @@ void MeshDisplay::showTetMesh(const TetMesh& mesh) {
     setUniformLook(m_actor->GetProperty());
     m_actor->GetProperty()->SetEdgeColor(kEdgeColour[0], kEdgeColour[1], kEdgeColour[2]);
     connectTetPipeline();
-    m_actor->VisibilityOn();
+    m_actor->SetVisibility(m_shown);
     updateLegend();
 }
 
@@ -518,6 +541,28 @@ std::array<double, 6> MeshDisplay::meshBounds() const {
         m_grid->GetBounds(box.data());
     else if (m_kind == Kind::Surface && m_surface)
         m_surface->GetBounds(box.data());
+    return box;
+}
+
+std::array<double, 6> MeshDisplay::regionBounds(std::int32_t region) const {
+    std::array<double, 6> box{1.0, -1.0, 1.0, -1.0, 1.0, -1.0};
+    if (m_kind != Kind::Tets || !m_grid)
+        return box;
+    auto* regions = vtkIntArray::SafeDownCast(m_grid->GetCellData()->GetArray(kRegionLabel));
+    if (!regions)
+        return box;
+    bool any = false;
+    for (vtkIdType c = 0; c < m_grid->GetNumberOfCells(); ++c) {
+        if (regions->GetValue(c) != region)
+            continue;
+        double cell[6];
+        m_grid->GetCellBounds(c, cell);
+        for (int axis = 0; axis < 3; ++axis) {
+            box[2 * axis] = any ? std::min(box[2 * axis], cell[2 * axis]) : cell[2 * axis];
+            box[2 * axis + 1] = any ? std::max(box[2 * axis + 1], cell[2 * axis + 1]) : cell[2 * axis + 1];
+        }
+        any = true;
+    }
     return box;
 }
 

@@ -10,10 +10,13 @@
 #include <QTimer>
 #include <QWheelEvent>
 
+#include <vtkCellData.h>
 #include <vtkCellPicker.h>
 #include <vtkCommand.h>
+#include <vtkDataSet.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkGenericRenderWindowInteractor.h>
+#include <vtkIntArray.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkNew.h>
 #include <vtkOpenGLFramebufferObject.h>
@@ -474,6 +477,12 @@ PickResult VtkView::pickAt(const QPoint& pos) const {
         result.point = QVector3D(static_cast<float>(position[0]), static_cast<float>(position[1]),
                                  static_cast<float>(position[2]));
         result.cellId = static_cast<qint64>(m_picker->GetCellId());
+        result.prop = m_picker->GetViewProp();
+        // The region label of the cell hit, as the mesh displays carry it through their filters.
+        if (vtkDataSet* picked = m_picker->GetDataSet(); picked && result.cellId >= 0)
+            if (auto* regions = vtkIntArray::SafeDownCast(picked->GetCellData()->GetArray("region"));
+                regions && result.cellId < regions->GetNumberOfTuples())
+                result.region = regions->GetValue(static_cast<vtkIdType>(result.cellId));
     }
     return result;
 }

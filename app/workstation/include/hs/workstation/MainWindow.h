@@ -35,6 +35,8 @@ class SurfaceHandles;
 class VariantsView;
 class MaterialsPanel;
 class MeshDisplay;
+class SceneParts;
+class SceneTree;
 class MeshPanel;
 class PathologyPanel;
 class PatientPanel;
@@ -100,6 +102,8 @@ public:
     widgets::VtkView* view() const { return m_view; }
     widgets::HysteroscopicPreview* preview() const { return m_preview; }
     const widgets::MeshDisplay& display() const { return *m_display; }
+    widgets::SceneParts& sceneParts() const { return *m_parts; }
+    widgets::SceneTree* sceneTree() const { return m_sceneTree; }
     /// The clip plane's handle in the 3-D view (shown while View > Clip is on).
     widgets::ClipPlaneWidget& clipPlane() { return *m_clipPlane; }
     /// The pathologies' growth while Grow runs.
@@ -145,6 +149,10 @@ private:
     /// A dock for `panel` on `area`, listed in View > Panels.
     QDockWidget* addPanel(QWidget* panel, const QString& title, const QString& name, Qt::DockWidgetArea area);
     void showResults();
+    /// Shows a mesh of its own in the view (a mesh file, a reviewed package): the results' parts leave it.
+    void showOwnMesh();
+    /// Marks the views an edit has outdated (their stage is no longer current) until the stage reruns.
+    void updateOutOfDateMarks();
     /// Shows the handles of the selected pathology when the view shows the organ it is seated on.
     void updateHandles();
     void readSettings();
@@ -175,7 +183,8 @@ private:
     QString openFilter() const;
 
     widgets::VtkView* m_view = nullptr;
-    std::unique_ptr<widgets::MeshDisplay> m_display;
+    std::unique_ptr<widgets::MeshDisplay> m_display; ///< the tetrahedral mesh (or the mesh file, the package's mesh)
+    std::unique_ptr<widgets::SceneParts> m_parts;    ///< every part of the results, m_display their mesh
     std::unique_ptr<widgets::GrowthDisplay> m_growth;
     std::unique_ptr<widgets::OrientationMarker> m_orientationMarker;
     std::unique_ptr<widgets::ClipPlaneWidget> m_clipPlane; ///< the clip plane's handle, shown while the clip is on
@@ -195,6 +204,9 @@ private:
     widgets::TexturePanel* m_texturePanel = nullptr;
     widgets::HysteroscopicPreview* m_preview = nullptr;
     widgets::ReviewPanel* m_reviewPanel = nullptr;
+    widgets::SceneTree* m_sceneTree = nullptr;
+    QLabel* m_viewOutOfDate = nullptr;    ///< over the 3-D view while its stage is out of date
+    QLabel* m_previewOutOfDate = nullptr; ///< over the hysteroscopic view while the scene is
     QDockWidget* m_reviewDock = nullptr;
     std::vector<QDockWidget*> m_authoringDocks; ///< disabled while a package is reviewed
     widgets::JobRunner m_reviewJobs;

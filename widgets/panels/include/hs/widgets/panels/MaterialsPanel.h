@@ -4,6 +4,10 @@
 /// allowed range (scene::defaultMaterial, youngsModulusRangeKpa, limits). A value the user sets is stored in the
 /// case as an override; Default clears the tissue's overrides. Also the hydrometra pressure of the scene.
 
+#include "hs/clinical/Tissue.h"
+#include "hs/scene/Scene.h"
+
+#include <QString>
 #include <QWidget>
 
 #include <array>
@@ -16,6 +20,11 @@ class QTableWidget;
 namespace hs::widgets {
 
 class CaseDocument;
+
+/// A tissue's name in the user's language.
+QString tissueName(clinical::Tissue tissue);
+/// A scene region's name for the user: its tissue's, or the case's pathology id for a pathology.
+QString regionName(const scene::SceneRegion& region);
 
 class MaterialsPanel : public QWidget {
     Q_OBJECT

@@ -40,6 +40,8 @@ public:
     /// The tets listed as the worst, by index in the mesh.
     const std::vector<std::size_t>& worstTets() const { return m_worst; }
     /// Applies the inspector's colouring and hidden regions to the display again (after it showed a new mesh).
+    /// Ticks each region's box as the display shows it (after the scene tree hid or showed a region).
+    void syncRegionChecks();
     void applyToDisplay();
     /// Outlines worst tet `row` and frames the camera on it.
     void showWorstTet(int row);

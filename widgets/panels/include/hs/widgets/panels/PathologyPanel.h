@@ -80,6 +80,7 @@ private:
     CaseDocument& m_document;
     GenerationSession& m_session;
     bool m_refreshing = false;
+    bool m_placingAnnounced = false; ///< the state placingChanged last told
 
     QListWidget* m_list = nullptr;
     QPushButton* m_addMyomaButton = nullptr;

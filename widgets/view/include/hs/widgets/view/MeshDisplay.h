@@ -84,6 +84,8 @@ public:
     Vec3 clipNormal() const;
     /// The whole mesh's bounds (xmin, xmax, ymin, ymax, zmin, zmax), whatever the clip shows; zeros when empty.
     std::array<double, 6> meshBounds() const;
+    /// Tet meshes: the bounds of region `region`'s tets; xmin > xmax when it has none.
+    std::array<double, 6> regionBounds(std::int32_t region) const;
     /// Tetrahedra drawn (all of them with the clip off) for a tet mesh; triangles for a surface.
     std::size_t visibleCellCount() const;
 
@@ -103,6 +105,15 @@ public:
     /// Outlines one tet (of the mesh shown) in a second actor; a negative index removes the outline. Returns the
     /// tet's bounds (xmin, xmax, ymin, ymax, zmin, zmax) for framing the camera.
     std::array<double, 6> highlightTet(std::int64_t tet);
+
+    /// Whether the mesh is drawn (the scene tree's check box); a hidden display keeps its mesh. Shown by default.
+    void setShown(bool shown);
+    bool isShown() const { return m_shown; }
+    /// 0 (invisible) to 1 (opaque); the highlight and the legends stay opaque.
+    void setOpacity(double opacity);
+    double opacity() const;
+    /// Draws the mesh's edges only (the simulation mesh beside the surface it carries).
+    void setWireframe(bool wireframe);
 
     vtkActor* actor() const;
 
@@ -136,6 +147,7 @@ private:
     std::set<std::int32_t> m_hiddenRegions;
     Kind m_kind = Kind::None;
     bool m_clipEnabled = false;
+    bool m_shown = true;
     MeshCounts m_counts;
 };
 

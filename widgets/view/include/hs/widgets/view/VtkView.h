@@ -9,6 +9,7 @@
 
 #include <vtkSmartPointer.h>
 
+#include <cstdint>
 #include <map>
 
 class QImage;
@@ -18,6 +19,7 @@ class vtkCellPicker;
 class vtkGenericOpenGLRenderWindow;
 class vtkGenericRenderWindowInteractor;
 class vtkObject;
+class vtkProp;
 class vtkRenderer;
 
 namespace hs::widgets {
@@ -25,8 +27,10 @@ namespace hs::widgets {
 /// Where a click landed: a point on a visible surface (world coordinates, mm) or nothing.
 struct PickResult {
     bool hit = false;
-    QVector3D point;    ///< world position of the hit; zero on a miss
-    qint64 cellId = -1; ///< cell of the picked actor's input; -1 on a miss
+    QVector3D point;          ///< world position of the hit; zero on a miss
+    qint64 cellId = -1;       ///< cell of the picked actor's input; -1 on a miss
+    vtkProp* prop = nullptr;  ///< the actor hit; nullptr on a miss
+    std::int32_t region = -1; ///< the "region" label of the cell hit; -1 on a miss or a mesh without labels
 };
 
 class VtkView : public QOpenGLWidget {
