@@ -1521,10 +1521,6 @@
         <translation>Maximum</translation>
     </message>
     <message>
-        <source>The review beside the package belongs to another version of it; saving replaces it.</source>
-        <translation>Die Begutachtung neben dem Paket gehört zu einer anderen Version des Pakets; Speichern ersetzt sie.</translation>
-    </message>
-    <message>
         <source>Reviewing %1 (read-only)</source>
         <translation>Begutachtung von %1 (schreibgeschützt)</translation>
     </message>
@@ -1555,6 +1551,18 @@
     <message>
         <source>Saved to %1.</source>
         <translation>Gespeichert unter %1.</translation>
+    </message>
+    <message>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The review %1 is of another package (manifest SHA-256 %2…, this package&apos;s %3…): it is not loaded. Saving keeps it as %4.&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#c0392b'&gt;Die Bewertung %1 gehört zu einem anderen Paket (Manifest-SHA-256 %2…, dieses Pakets %3…): Sie wird nicht geladen. Beim Speichern bleibt sie als %4 erhalten.&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The review %1 cannot be read: it is not loaded. Saving keeps it as %2.&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#c0392b'&gt;Die Bewertung %1 ist nicht lesbar: Sie wird nicht geladen. Beim Speichern bleibt sie als %2 erhalten.&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The review of another package, %1, could not be moved to %2: nothing was saved.&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#c0392b'&gt;Die Bewertung eines anderen Pakets, %1, konnte nicht nach %2 verschoben werden: Nichts wurde gespeichert.&lt;/span&gt;</translation>
     </message>
 </context>
 <context>
@@ -2294,6 +2302,54 @@
     <message>
         <source>Out of date (%1): the case has changed since this view was made. It is remade when its stage runs again.</source>
         <translation>Veraltet (%1): Der Fall wurde geändert, seit diese Ansicht erstellt wurde. Sie wird neu erstellt, wenn ihr Schritt erneut läuft.</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Öffnen</translation>
+    </message>
+    <message>
+        <source>A scene package is being reviewed, read-only: close the review (File &gt; Close Review) before opening %1.</source>
+        <translation>Ein Szenenpaket wird schreibgeschützt bewertet: Schließen Sie die Bewertung (Datei &gt; Bewertung schließen), bevor Sie %1 öffnen.</translation>
+    </message>
+    <message>
+        <source>The folder %1 holds no scene package (no manifest.json).</source>
+        <translation>Der Ordner %1 enthält kein Szenenpaket (keine manifest.json).</translation>
+    </message>
+    <message>
+        <source>%1 is not a file this program opens: it opens cases (.json), scene packages (a folder with a manifest.json) and meshes (%2).</source>
+        <translation>%1 ist keine Datei, die dieses Programm öffnet: Es öffnet Fälle (.json), Szenenpakete (ein Ordner mit einer manifest.json) und Netze (%2).</translation>
+    </message>
+    <message>
+        <source>Package Changed on Disk</source>
+        <translation>Paket auf der Festplatte geändert</translation>
+    </message>
+    <message>
+        <source>The scene package %1 has changed on disk since it was opened for review. Reload it? The ratings stay with the version you opened.</source>
+        <translation>Das Szenenpaket %1 wurde auf der Festplatte geändert, seit es zur Bewertung geöffnet wurde. Neu laden? Die Bewertungen bleiben bei der geöffneten Version.</translation>
+    </message>
+    <message>
+        <source>The package has changed on disk since it was opened: what is shown, and rated, is the version opened.</source>
+        <translation>Das Paket wurde seit dem Öffnen auf der Festplatte geändert: Gezeigt und bewertet wird die geöffnete Version.</translation>
+    </message>
+    <message>
+        <source>The case %1 has changed on disk, and you have unsaved changes. Reload it from disk? Your changes are lost.</source>
+        <translation>Der Fall %1 wurde auf der Festplatte geändert, und Sie haben ungespeicherte Änderungen. Von der Festplatte neu laden? Ihre Änderungen gehen verloren.</translation>
+    </message>
+    <message>
+        <source>The case %1 has changed on disk. Reload it?</source>
+        <translation>Der Fall %1 wurde auf der Festplatte geändert. Neu laden?</translation>
+    </message>
+    <message>
+        <source>Case Changed on Disk</source>
+        <translation>Fall auf der Festplatte geändert</translation>
+    </message>
+    <message>
+        <source>The case on disk differs from the one open; Save writes this one over it.</source>
+        <translation>Der Fall auf der Festplatte unterscheidet sich vom geöffneten; Speichern überschreibt ihn mit diesem.</translation>
+    </message>
+    <message>
+        <source>The case file %1 is gone from disk; Save writes it again.</source>
+        <translation>Die Falldatei %1 ist nicht mehr auf der Festplatte; Speichern schreibt sie erneut.</translation>
     </message>
 </context>
 <context>

@@ -1521,10 +1521,6 @@
         <translation>Maximum</translation>
     </message>
     <message>
-        <source>The review beside the package belongs to another version of it; saving replaces it.</source>
-        <translation>L&apos;évaluation à côté du paquet concerne une autre version de celui-ci ; l&apos;enregistrement la remplace.</translation>
-    </message>
-    <message>
         <source>Reviewing %1 (read-only)</source>
         <translation>Évaluation de %1 (lecture seule)</translation>
     </message>
@@ -1555,6 +1551,18 @@
     <message>
         <source>Saved to %1.</source>
         <translation>Enregistré dans %1.</translation>
+    </message>
+    <message>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The review %1 is of another package (manifest SHA-256 %2…, this package&apos;s %3…): it is not loaded. Saving keeps it as %4.&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#c0392b'&gt;L’évaluation %1 concerne un autre paquet (SHA-256 du manifeste %2…, celui de ce paquet %3…) : elle n’est pas chargée. L’enregistrement la conserve sous %4.&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The review %1 cannot be read: it is not loaded. Saving keeps it as %2.&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#c0392b'&gt;L’évaluation %1 est illisible : elle n’est pas chargée. L’enregistrement la conserve sous %2.&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The review of another package, %1, could not be moved to %2: nothing was saved.&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#c0392b'&gt;L’évaluation d’un autre paquet, %1, n’a pas pu être déplacée vers %2 : rien n’a été enregistré.&lt;/span&gt;</translation>
     </message>
 </context>
 <context>
@@ -2294,6 +2302,54 @@
     <message>
         <source>Out of date (%1): the case has changed since this view was made. It is remade when its stage runs again.</source>
         <translation>Périmé (%1) : le cas a changé depuis la création de cette vue. Elle sera refaite à la prochaine exécution de son étape.</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Ouvrir</translation>
+    </message>
+    <message>
+        <source>A scene package is being reviewed, read-only: close the review (File &gt; Close Review) before opening %1.</source>
+        <translation>Un paquet de scène est en cours d’évaluation, en lecture seule : fermez l’évaluation (Fichier &gt; Fermer l’évaluation) avant d’ouvrir %1.</translation>
+    </message>
+    <message>
+        <source>The folder %1 holds no scene package (no manifest.json).</source>
+        <translation>Le dossier %1 ne contient aucun paquet de scène (pas de manifest.json).</translation>
+    </message>
+    <message>
+        <source>%1 is not a file this program opens: it opens cases (.json), scene packages (a folder with a manifest.json) and meshes (%2).</source>
+        <translation>%1 n’est pas un fichier que ce programme ouvre : il ouvre des cas (.json), des paquets de scène (un dossier avec un manifest.json) et des maillages (%2).</translation>
+    </message>
+    <message>
+        <source>Package Changed on Disk</source>
+        <translation>Paquet modifié sur le disque</translation>
+    </message>
+    <message>
+        <source>The scene package %1 has changed on disk since it was opened for review. Reload it? The ratings stay with the version you opened.</source>
+        <translation>Le paquet de scène %1 a changé sur le disque depuis son ouverture pour évaluation. Le recharger ? Les évaluations restent attachées à la version ouverte.</translation>
+    </message>
+    <message>
+        <source>The package has changed on disk since it was opened: what is shown, and rated, is the version opened.</source>
+        <translation>Le paquet a changé sur le disque depuis son ouverture : ce qui est affiché et évalué est la version ouverte.</translation>
+    </message>
+    <message>
+        <source>The case %1 has changed on disk, and you have unsaved changes. Reload it from disk? Your changes are lost.</source>
+        <translation>Le cas %1 a changé sur le disque et vous avez des modifications non enregistrées. Le recharger depuis le disque ? Vos modifications seront perdues.</translation>
+    </message>
+    <message>
+        <source>The case %1 has changed on disk. Reload it?</source>
+        <translation>Le cas %1 a changé sur le disque. Le recharger ?</translation>
+    </message>
+    <message>
+        <source>Case Changed on Disk</source>
+        <translation>Cas modifié sur le disque</translation>
+    </message>
+    <message>
+        <source>The case on disk differs from the one open; Save writes this one over it.</source>
+        <translation>Le cas sur le disque diffère de celui ouvert ; Enregistrer écrit celui-ci par-dessus.</translation>
+    </message>
+    <message>
+        <source>The case file %1 is gone from disk; Save writes it again.</source>
+        <translation>Le fichier du cas %1 a disparu du disque ; Enregistrer le réécrit.</translation>
     </message>
 </context>
 <context>

@@ -1521,10 +1521,6 @@
         <translation>Massimo</translation>
     </message>
     <message>
-        <source>The review beside the package belongs to another version of it; saving replaces it.</source>
-        <translation>La valutazione accanto al pacchetto appartiene a un&apos;altra versione del pacchetto; salvando la si sostituisce.</translation>
-    </message>
-    <message>
         <source>Reviewing %1 (read-only)</source>
         <translation>Valutazione di %1 (sola lettura)</translation>
     </message>
@@ -1555,6 +1551,18 @@
     <message>
         <source>Saved to %1.</source>
         <translation>Salvato in %1.</translation>
+    </message>
+    <message>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The review %1 is of another package (manifest SHA-256 %2…, this package&apos;s %3…): it is not loaded. Saving keeps it as %4.&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#c0392b'&gt;La valutazione %1 riguarda un altro pacchetto (SHA-256 del manifest %2…, di questo pacchetto %3…): non viene caricata. Il salvataggio la conserva come %4.&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The review %1 cannot be read: it is not loaded. Saving keeps it as %2.&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#c0392b'&gt;La valutazione %1 non è leggibile: non viene caricata. Il salvataggio la conserva come %2.&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The review of another package, %1, could not be moved to %2: nothing was saved.&lt;/span&gt;</source>
+        <translation>&lt;span style='color:#c0392b'&gt;La valutazione di un altro pacchetto, %1, non ha potuto essere spostata in %2: nulla è stato salvato.&lt;/span&gt;</translation>
     </message>
 </context>
 <context>
@@ -2294,6 +2302,54 @@
     <message>
         <source>Out of date (%1): the case has changed since this view was made. It is remade when its stage runs again.</source>
         <translation>Non aggiornato (%1): il caso è cambiato da quando questa vista è stata creata. Verrà rifatta quando la sua fase verrà rieseguita.</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Apri</translation>
+    </message>
+    <message>
+        <source>A scene package is being reviewed, read-only: close the review (File &gt; Close Review) before opening %1.</source>
+        <translation>Un pacchetto di scena è in valutazione, in sola lettura: chiudi la valutazione (File &gt; Chiudi valutazione) prima di aprire %1.</translation>
+    </message>
+    <message>
+        <source>The folder %1 holds no scene package (no manifest.json).</source>
+        <translation>La cartella %1 non contiene alcun pacchetto di scena (nessun manifest.json).</translation>
+    </message>
+    <message>
+        <source>%1 is not a file this program opens: it opens cases (.json), scene packages (a folder with a manifest.json) and meshes (%2).</source>
+        <translation>%1 non è un file che questo programma apre: apre casi (.json), pacchetti di scena (una cartella con un manifest.json) e mesh (%2).</translation>
+    </message>
+    <message>
+        <source>Package Changed on Disk</source>
+        <translation>Pacchetto modificato sul disco</translation>
+    </message>
+    <message>
+        <source>The scene package %1 has changed on disk since it was opened for review. Reload it? The ratings stay with the version you opened.</source>
+        <translation>Il pacchetto di scena %1 è cambiato sul disco da quando è stato aperto per la valutazione. Ricaricarlo? Le valutazioni restano legate alla versione aperta.</translation>
+    </message>
+    <message>
+        <source>The package has changed on disk since it was opened: what is shown, and rated, is the version opened.</source>
+        <translation>Il pacchetto è cambiato sul disco da quando è stato aperto: ciò che è mostrato e valutato è la versione aperta.</translation>
+    </message>
+    <message>
+        <source>The case %1 has changed on disk, and you have unsaved changes. Reload it from disk? Your changes are lost.</source>
+        <translation>Il caso %1 è cambiato sul disco e hai modifiche non salvate. Ricaricarlo dal disco? Le tue modifiche andranno perse.</translation>
+    </message>
+    <message>
+        <source>The case %1 has changed on disk. Reload it?</source>
+        <translation>Il caso %1 è cambiato sul disco. Ricaricarlo?</translation>
+    </message>
+    <message>
+        <source>Case Changed on Disk</source>
+        <translation>Caso modificato sul disco</translation>
+    </message>
+    <message>
+        <source>The case on disk differs from the one open; Save writes this one over it.</source>
+        <translation>Il caso sul disco differisce da quello aperto; Salva scrive questo al suo posto.</translation>
+    </message>
+    <message>
+        <source>The case file %1 is gone from disk; Save writes it again.</source>
+        <translation>Il file del caso %1 non è più sul disco; Salva lo riscrive.</translation>
     </message>
 </context>
 <context>

@@ -28,11 +28,13 @@
 #include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QDropEvent>
 #include <QFile>
 #include <QFileInfo>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
+#include <QMimeData>
 #include <QMouseEvent>
 #include <QPushButton>
 #include <QSettings>
@@ -42,6 +44,7 @@
 #include <QTest>
 #include <QToolButton>
 #include <QTreeWidget>
+#include <QUrl>
 
 #include <vtkCamera.h>
 #include <vtkRenderer.h>
@@ -459,6 +462,21 @@ void TestAuthoringFlow::aClinicianReviewsTheExportedPackage() {
     QTest::keyClick(m_window.get(), Qt::Key_R, Qt::ControlModifier | Qt::ShiftModifier);
     QTest::qWait(200);
     FileDialog::setNextFileName(QString()); // whatever a dialog would have been asked, none was
+    // Nor a drop: a package or a case dropped on the window is refused, and the message says why.
+    MessageBox::takeRecorded();
+    for (const QString& dropped : {m_exported, m_dir.filePath("recovery")}) {
+        QMimeData data;
+        data.setUrls({QUrl::fromLocalFile(dropped)});
+        QDragEnterEvent enter(m_window->rect().center(), Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(m_window.get(), &enter);
+        QVERIFY(enter.isAccepted());
+        QDropEvent drop(QPointF(m_window->rect().center()), Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(m_window.get(), &drop);
+    }
+    QList<MessageBox::Message> refusals;
+    QTRY_VERIFY((refusals += MessageBox::takeRecorded(), refusals.size() == 2));
+    for (const MessageBox::Message& refusal : refusals)
+        QVERIFY2(refusal.text.contains("review"), qPrintable(refusal.text));
     QCOMPARE(hs::scene::toJson(m_window->document().spec()), caseBefore);
     QVERIFY(m_window->isReviewing());
     QCOMPARE(find<hs::widgets::ReviewPanel>("reviewPanel")->packageFolder(), QFileInfo(m_exported).absoluteFilePath());
@@ -506,6 +524,28 @@ void TestAuthoringFlow::aClinicianReviewsTheExportedPackage() {
     QCOMPARE(*review->pathologies[0].rating.score, 5);
     QVERIFY(hs::scene::verifyScenePackage(QFile::encodeName(m_exported).toStdString()).ok());
     shot("workstation-review", "reviewDock");
+    // The package changed on disk by another program (its manifest rewritten): the window asks; kept (No), the
+    // panel says the ratings are of the version opened. Put back, nothing is asked.
+    QFile manifest(QDir(m_exported).filePath("manifest.json"));
+    QVERIFY(manifest.open(QIODevice::ReadOnly));
+    const QByteArray manifestBytes = manifest.readAll();
+    manifest.close();
+    const auto rewrite = [&](const QByteArray& bytes) {
+        QVERIFY(manifest.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        manifest.write(bytes);
+        manifest.close();
+    };
+    MessageBox::takeRecorded();
+    MessageBox::setNextAnswer(MessageBox::Choice::No);
+    rewrite(manifestBytes + "\n");
+    QList<MessageBox::Message> asked;
+    QTRY_VERIFY_WITH_TIMEOUT((asked += MessageBox::takeRecorded(), !asked.isEmpty()), 5000);
+    QVERIFY2(asked.front().text.contains(QFileInfo(m_exported).fileName()), qPrintable(asked.front().text));
+    QVERIFY(find<QLabel>("reviewMessageLabel")->text().contains("changed on disk"));
+    QVERIFY(m_window->isReviewing());
+    rewrite(manifestBytes);
+    QTest::qWait(800);
+    QVERIFY(MessageBox::takeRecorded().isEmpty());
     find<QAction>("actionCloseReview")->trigger();
     QVERIFY(!m_window->isReviewing());
     QVERIFY(find<QPushButton>("meshButton")->isEnabled());

@@ -13,16 +13,19 @@
 #include <QApplication>
 #include <QDir>
 #include <QDoubleSpinBox>
+#include <QDropEvent>
 #include <QFile>
 #include <QFileInfo>
 #include <QLabel>
 #include <QLocale>
 #include <QMenu>
+#include <QMimeData>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QUrl>
 
 #include <vtkCamera.h>
 #include <vtkRenderer.h>
@@ -73,6 +76,8 @@ private slots:
     void closingWithUnsavedChangesAsks();
     void savingAnInvalidCaseShowsTheFieldAndKeepsTheFile();
     void autosaveIsOfferedBackAfterACrash();
+    void aDropOpensACaseOrAMeshAndSaysWhyItRefusesAnythingElse();
+    void aCaseChangedOnDiskIsOfferedToReloadAndOurOwnSaveIsNot();
 
 private:
     template <class T>
@@ -570,6 +575,90 @@ void TestMainWindow::autosaveIsOfferedBackAfterACrash() {
     QVERIFY(next->isWindowModified());
     QVERIFY(!hs::widgets::CaseDocument::findRecovery(next->recoveryFolder()).has_value());
     next->document().undoStack()->setClean();
+}
+
+/// Drags `path` over the window and drops it there, as a file manager does.
+bool dropOn(QWidget* window, const QString& path) {
+    QMimeData data;
+    data.setUrls({QUrl::fromLocalFile(path)});
+    const QPointF centre = QPointF(window->rect().center());
+    QDragEnterEvent enter(centre.toPoint(), Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(window, &enter);
+    if (!enter.isAccepted())
+        return false;
+    QDropEvent drop(centre, Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(window, &drop);
+    return drop.isAccepted();
+}
+
+void TestMainWindow::aDropOpensACaseOrAMeshAndSaysWhyItRefusesAnythingElse() {
+    // A case dropped opens as the case.
+    const QString path = fixture("dropped.json");
+    m_window->document().edit("Seed", [](hs::scene::CaseSpec& c) { c.seed = 11; });
+    FileDialog::setNextFileName(path);
+    find<QAction>("actionSaveCaseAs")->trigger();
+    m_window->document().edit("Seed", [](hs::scene::CaseSpec& c) { c.seed = 12; });
+    m_window->document().undoStack()->setClean();
+    QVERIFY(dropOn(m_window.get(), path));
+    QTRY_COMPARE(m_window->document().spec().seed, std::uint64_t{11});
+    // A mesh dropped opens as a mesh.
+    QSignalSpy loaded(m_window.get(), &MainWindow::fileLoaded);
+    QVERIFY(dropOn(m_window.get(), fixture("sphere.off")));
+    QVERIFY(loaded.wait(20000));
+    QCOMPARE(m_window->currentFile(), fixture("sphere.off"));
+    // Anything else is refused with the reason: what the program opens.
+    MessageBox::takeRecorded();
+    const QString text = fixture("notes.txt");
+    QFile notes(text);
+    QVERIFY(notes.open(QIODevice::WriteOnly));
+    notes.write("not a mesh");
+    notes.close();
+    QVERIFY(dropOn(m_window.get(), text));
+    QList<MessageBox::Message> messages;
+    QTRY_VERIFY((messages += MessageBox::takeRecorded(), !messages.isEmpty()));
+    QVERIFY2(messages.front().text.contains("notes.txt") && messages.front().text.contains(".json") &&
+                 messages.front().text.contains(".off"),
+             qPrintable(messages.front().text));
+    QCOMPARE(m_window->currentFile(), fixture("sphere.off"));
+    QVERIFY(!m_window->isLoading());
+    // A folder without a package is refused as one.
+    QVERIFY(dropOn(m_window.get(), m_dir.path()));
+    messages.clear();
+    QTRY_VERIFY((messages += MessageBox::takeRecorded(), !messages.isEmpty()));
+    QVERIFY2(messages.front().text.contains("manifest.json"), qPrintable(messages.front().text));
+}
+
+void TestMainWindow::aCaseChangedOnDiskIsOfferedToReloadAndOurOwnSaveIsNot() {
+    const QString path = fixture("watched.json");
+    m_window->document().edit("Seed", [](hs::scene::CaseSpec& c) { c.seed = 21; });
+    FileDialog::setNextFileName(path);
+    find<QAction>("actionSaveCaseAs")->trigger();
+    MessageBox::takeRecorded();
+    // Our own save changes the file and asks nothing.
+    m_window->document().edit("Seed", [](hs::scene::CaseSpec& c) { c.seed = 22; });
+    find<QAction>("actionSaveCase")->trigger();
+    QTest::qWait(800); // the watcher's delay (300 ms) and then some
+    QVERIFY(MessageBox::takeRecorded().isEmpty());
+    // Another program writes the case: the window asks, and Yes reloads it.
+    hs::scene::CaseSpec other = m_window->document().spec();
+    other.seed = 23;
+    QVERIFY(hs::scene::saveCase(other, QFile::encodeName(path).toStdString()).ok());
+    MessageBox::setNextAnswer(MessageBox::Choice::Yes);
+    QList<MessageBox::Message> asked;
+    QTRY_VERIFY_WITH_TIMEOUT((asked += MessageBox::takeRecorded(), !asked.isEmpty()), 5000);
+    QCOMPARE(asked.front().icon, MessageBox::Icon::Question);
+    QVERIFY2(asked.front().text.contains("watched.json"), qPrintable(asked.front().text));
+    QCOMPARE(m_window->document().spec().seed, std::uint64_t{23});
+    // Again, with unsaved changes, answered No: the case stays as it is in the window, never mixed.
+    m_window->document().edit("Seed", [](hs::scene::CaseSpec& c) { c.seed = 24; });
+    other.seed = 25;
+    QVERIFY(hs::scene::saveCase(other, QFile::encodeName(path).toStdString()).ok());
+    MessageBox::setNextAnswer(MessageBox::Choice::No);
+    asked.clear();
+    QTRY_VERIFY_WITH_TIMEOUT((asked += MessageBox::takeRecorded(), !asked.isEmpty()), 5000);
+    QVERIFY2(asked.front().text.contains("unsaved"), qPrintable(asked.front().text));
+    QCOMPARE(m_window->document().spec().seed, std::uint64_t{24});
+    QVERIFY(m_window->isWindowModified());
 }
 
 int main(int argc, char** argv) {

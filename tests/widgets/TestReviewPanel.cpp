@@ -6,7 +6,10 @@
 #include "hs/widgets/panels/ReviewPanel.h"
 #include "hs/widgets/view/HysteroscopicPreview.h"
 
+#include <QDir>
 #include <QFile>
+#include <QFileInfo>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSpinBox>
@@ -23,6 +26,7 @@ private slots:
     void initTestCase();
     void listsRatesSavesBesideThePackageAndReadsBack();
     void visitLooksAtThePathology();
+    void refusesTheReviewOfAnotherPackageByNameAndKeepsIt();
 
 private:
     QTemporaryDir m_dir;
@@ -92,6 +96,38 @@ void TestReviewPanel::visitLooksAtThePathology() {
     QVERIFY(panel.visitPathology(0));
     const QImage after = preview.grabImage();
     QVERIFY(before != after);
+}
+
+void TestReviewPanel::refusesTheReviewOfAnotherPackageByNameAndKeepsIt() {
+    QTemporaryDir dir;
+    const QString package = dir.filePath("other");
+    QVERIFY(QDir().mkpath(package));
+    const std::string reviewPath = hs::scene::reviewPathFor(QFile::encodeName(package).toStdString());
+    // A review of another package (another manifest checksum) stands where this package's review goes.
+    hs::scene::Review foreign = hs::scene::emptyReview(*m_scene, std::string(64, 'a'));
+    foreign.reviewer = "someone else";
+    foreign.pathologies[0].rating.score = 2;
+    QVERIFY(hs::scene::saveReview(foreign, reviewPath).ok());
+
+    ReviewPanel panel;
+    panel.open(m_scene, package, m_identity);
+    const QString message = panel.findChild<QLabel*>("reviewMessageLabel")->text();
+    QVERIFY2(message.contains(QFileInfo(QString::fromStdString(reviewPath)).fileName()) &&
+                 message.contains("another package") && message.contains("aaaaaaaaaaaa"),
+             qPrintable(message));
+    QCOMPARE(panel.findChild<QSpinBox*>("pathologyScore0")->value(), 0); // not loaded
+    QVERIFY(panel.findChild<QLineEdit*>("reviewerEdit")->text().isEmpty());
+
+    // Saving writes this package's review and keeps the other one beside it, unchanged.
+    panel.findChild<QSpinBox*>("pathologyScore0")->setValue(5);
+    QVERIFY(panel.save());
+    auto mine = hs::scene::loadReview(reviewPath);
+    QVERIFY(mine.ok());
+    QCOMPARE(QString::fromStdString(mine->packageSha256), m_identity);
+    auto kept = hs::scene::loadReview(reviewPath + ".other-1");
+    QVERIFY(kept.ok());
+    QCOMPARE(kept->reviewer, std::string("someone else"));
+    QCOMPARE(*kept->pathologies[0].rating.score, 2);
 }
 
 QTEST_MAIN(TestReviewPanel)

@@ -99,6 +99,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     updateStatus();
 
     connect(&m_loadWatcher, &QFutureWatcher<LoadedMesh>::finished, this, &MainWindow::onLoadFinished);
+    // Files another program changes: the case and the reviewed package, offered to reload, never mixed in.
+    setAcceptDrops(true);
+    m_diskTimer.setSingleShot(true);
+    m_diskTimer.setInterval(300);
+    connect(&m_diskWatcher, &QFileSystemWatcher::fileChanged, &m_diskTimer, qOverload<>(&QTimer::start));
+    connect(&m_diskTimer, &QTimer::timeout, this, &MainWindow::onChangedOnDisk);
+    connect(&m_document, &widgets::CaseDocument::filePathChanged, this, &MainWindow::watchFiles);
+    connect(this, &MainWindow::reviewOpened, this, &MainWindow::watchFiles);
     connect(m_document.undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     connect(&m_document, &widgets::CaseDocument::filePathChanged, this, &MainWindow::updateTitle);
     connect(&m_document, &widgets::CaseDocument::changed, this, &MainWindow::updateTitle);

@@ -2,20 +2,28 @@
 #include "hs/workstation/MainWindow.h"
 
 #include "MainWindowSettings.h"
+#include "hs/generate/Generate.h"
+#include "hs/scene/Review.h"
 #include "hs/scene/ScenePackage.h"
 #include "hs/widgets/common/FileDialog.h"
 #include "hs/widgets/common/MessageBox.h"
+#include "hs/widgets/panels/ReviewPanel.h"
 #include "hs/widgets/view/MeshDisplay.h"
 
 #include <QAction>
 #include <QDir>
+#include <QDragEnterEvent>
+#include <QDropEvent>
 #include <QFile>
 #include <QFileInfo>
 #include <QLabel>
 #include <QLocale>
 #include <QMenu>
+#include <QMimeData>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTimer>
+#include <QUrl>
 #include <QtConcurrent/QtConcurrentRun>
 
 #include <exception>
@@ -100,6 +108,123 @@ void MainWindow::openArgument(const QString& path) {
         openCase(path);
     else
         openFile(path);
+}
+
+bool MainWindow::openDropped(const QString& path) {
+    const QFileInfo info(path);
+    const QString name = QDir::toNativeSeparators(info.absoluteFilePath());
+    if (isReviewing()) {
+        MessageBox::information(this, tr("Open"),
+                                tr("A scene package is being reviewed, read-only: close the review (File > Close "
+                                   "Review) before opening %1.")
+                                    .arg(name));
+        return false;
+    }
+    const bool package =
+        info.isDir() ? QFileInfo::exists(QDir(path).filePath(
+                           QString::fromLatin1(scene::kManifestName.data(), int(scene::kManifestName.size()))))
+                     : info.fileName() == QLatin1String(scene::kManifestName.data(), int(scene::kManifestName.size()));
+    const bool caseFile = !info.isDir() && info.suffix().compare(QStringLiteral("json"), Qt::CaseInsensitive) == 0;
+    bool mesh = false;
+    for (const std::string& extension : io::supportedExtensions())
+        mesh =
+            mesh || (!info.isDir() && info.fileName().endsWith(QString::fromStdString(extension), Qt::CaseInsensitive));
+    if (!package && !caseFile && !mesh) {
+        QStringList meshes;
+        for (const std::string& extension : io::supportedExtensions())
+            meshes.append(QString::fromStdString(extension));
+        MessageBox::information(this, tr("Open"),
+                                info.isDir() ? tr("The folder %1 holds no scene package (no manifest.json).").arg(name)
+                                             : tr("%1 is not a file this program opens: it opens cases (.json), scene "
+                                                  "packages (a folder with a manifest.json) and meshes (%2).")
+                                                   .arg(name, meshes.join(QStringLiteral(", "))));
+        return false;
+    }
+    if (caseFile && !package && !maybeSave())
+        return false;
+    openArgument(path);
+    return true;
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+    // One local file or folder; what it is is decided (and explained) on the drop.
+    const QList<QUrl> urls = event->mimeData()->urls();
+    if (urls.size() == 1 && urls.front().isLocalFile())
+        event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+    const QList<QUrl> urls = event->mimeData()->urls();
+    if (urls.size() != 1 || !urls.front().isLocalFile())
+        return;
+    event->acceptProposedAction();
+    // After the drop has returned: a message box must not block the drag's own event loop.
+    const QString path = urls.front().toLocalFile();
+    QTimer::singleShot(0, this, [this, path] { openDropped(path); });
+}
+
+void MainWindow::watchFiles() {
+    if (!m_diskWatcher.files().isEmpty())
+        m_diskWatcher.removePaths(m_diskWatcher.files());
+    QStringList paths;
+    if (!m_document.filePath().isEmpty())
+        paths.append(m_document.filePath());
+    if (isReviewing())
+        paths.append(QDir(m_reviewPanel->packageFolder())
+                         .filePath(QString::fromLatin1(scene::kManifestName.data(), int(scene::kManifestName.size()))));
+    for (const QString& path : paths)
+        if (QFileInfo::exists(path))
+            m_diskWatcher.addPath(path);
+}
+
+void MainWindow::onChangedOnDisk() {
+    // A package under review: its manifest names its files and their checksums, so a changed manifest is a
+    // changed package. The ratings belong to the version opened; they are never attached to another.
+    if (isReviewing()) {
+        const QString folder = m_reviewPanel->packageFolder();
+        const auto identity = scene::packageIdentity(QFile::encodeName(folder).toStdString());
+        if (!identity || QString::fromStdString(*identity) != m_reviewPanel->packageSha256()) {
+            const QString name = QDir::toNativeSeparators(folder);
+            if (MessageBox::askYesNo(this, tr("Package Changed on Disk"),
+                                     tr("The scene package %1 has changed on disk since it was opened for review. "
+                                        "Reload it? The ratings stay with the version you opened.")
+                                         .arg(name)) == MessageBox::Choice::Yes &&
+                maybeSaveReview()) {
+                m_reviewPanel->close();
+                reviewPackage(folder);
+            } else {
+                m_reviewPanel->showNotice(tr("The package has changed on disk since it was opened: what is shown, "
+                                             "and rated, is the version opened."));
+            }
+        }
+    }
+    // The case: a save of our own leaves the file as the document is, and asks nothing.
+    const QString path = m_document.filePath();
+    if (!path.isEmpty() && QFileInfo::exists(path)) {
+        const auto onDisk = scene::loadCase(QFile::encodeName(path).toStdString());
+        const scene::CaseSpec& mine = m_document.spec();
+        const bool same = onDisk && !generate::firstChangedStage(mine, *onDisk) && onDisk->title == mine.title;
+        if (!same) {
+            const QString name = QDir::toNativeSeparators(path);
+            const QString question =
+                m_document.isModified()
+                    ? tr("The case %1 has changed on disk, and you have unsaved changes. Reload it from disk? Your "
+                         "changes are lost.")
+                          .arg(name)
+                    : tr("The case %1 has changed on disk. Reload it?").arg(name);
+            if (MessageBox::askYesNo(this, tr("Case Changed on Disk"), question) == MessageBox::Choice::Yes) {
+                if (const Status opened = m_document.open(path); !opened)
+                    showCaseError(tr("Open Case"), opened.error());
+            } else {
+                statusBar()->showMessage(
+                    tr("The case on disk differs from the one open; Save writes this one over it."), 10000);
+            }
+        }
+    } else if (!path.isEmpty()) {
+        statusBar()->showMessage(
+            tr("The case file %1 is gone from disk; Save writes it again.").arg(QDir::toNativeSeparators(path)), 10000);
+    }
+    watchFiles(); // a file replaced by a rename is a new file to watch
 }
 
 void MainWindow::openFile(const QString& path) {

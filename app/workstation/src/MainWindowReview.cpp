@@ -176,6 +176,7 @@ void MainWindow::onCloseReview() {
         dock->setEnabled(true);
     updateAuthoringActions();
     m_currentFile.clear();
+    watchFiles();
     showResults();
 }
 

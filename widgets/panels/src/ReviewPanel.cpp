@@ -115,15 +115,32 @@ void ReviewPanel::open(std::shared_ptr<const scene::Scene> scene, const QString&
     m_folder = packageFolder;
     m_review = scene::emptyReview(*m_scene, packageSha256.toStdString());
     m_messageLabel->clear();
-    // A review of this very package (same manifest) is read back; one of another package is left alone.
+    m_messageLabel->setToolTip(QString());
+    m_foreignReview.clear();
+    // A review of this very package (same manifest) is read back. One of another package, or one that cannot be
+    // read, is refused by name and kept: saving moves it aside (foreignReviewKeptAs) before writing this one.
     const std::string reviewPath = scene::reviewPathFor(QFile::encodeName(packageFolder).toStdString());
+    const QString reviewFile = QDir::toNativeSeparators(QString::fromStdString(reviewPath));
     if (QFileInfo::exists(QString::fromStdString(reviewPath))) {
         auto saved = scene::loadReview(reviewPath);
-        if (saved && saved->packageSha256 == m_review.packageSha256)
+        if (saved && saved->packageSha256 == m_review.packageSha256) {
             m_review = std::move(saved).value();
-        else
-            m_messageLabel->setText(
-                tr("The review beside the package belongs to another version of it; saving replaces it."));
+        } else {
+            m_foreignReview = QString::fromStdString(reviewPath);
+            const QString keptAs = QDir::toNativeSeparators(foreignReviewKeptAs());
+            if (saved)
+                m_messageLabel->setText(
+                    tr("<span style='color:#c0392b'>The review %1 is of another package (manifest SHA-256 %2…, this "
+                       "package's %3…): it is not loaded. Saving keeps it as %4.</span>")
+                        .arg(reviewFile.toHtmlEscaped(), QString::fromStdString(saved->packageSha256.substr(0, 12)),
+                             QString::fromStdString(m_review.packageSha256.substr(0, 12)), keptAs.toHtmlEscaped()));
+            else
+                m_messageLabel->setText(tr("<span style='color:#c0392b'>The review %1 cannot be read: it is not "
+                                           "loaded. Saving keeps it as %2.</span>")
+                                            .arg(reviewFile.toHtmlEscaped(), keptAs.toHtmlEscaped()));
+            if (!saved)
+                m_messageLabel->setToolTip(QString::fromStdString(saved.error().message()));
+        }
     }
     m_packageLabel->setText(tr("Reviewing %1 (read-only)").arg(QDir::toNativeSeparators(packageFolder)));
     m_reviewerEdit->setText(QString::fromStdString(m_review.reviewer));
@@ -133,7 +150,22 @@ void ReviewPanel::open(std::shared_ptr<const scene::Scene> scene, const QString&
     setModified(false);
 }
 
+QString ReviewPanel::foreignReviewKeptAs() const {
+    // "<folder>.review.json.other-N": out of the folder's summary (*.review.json), never over another kept one.
+    for (int n = 1;; ++n) {
+        const QString candidate = m_foreignReview + QStringLiteral(".other-%1").arg(n);
+        if (!QFileInfo::exists(candidate))
+            return candidate;
+    }
+}
+
+void ReviewPanel::showNotice(const QString& text) {
+    m_messageLabel->setText(
+        text.isEmpty() ? QString() : QStringLiteral("<span style='color:#c0392b'>%1</span>").arg(text.toHtmlEscaped()));
+}
+
 void ReviewPanel::close() {
+    m_foreignReview.clear();
     m_scene.reset();
     m_folder.clear();
     m_review = {};
@@ -222,6 +254,18 @@ bool ReviewPanel::save() {
     if (!m_scene)
         return false;
     const std::string path = scene::reviewPathFor(QFile::encodeName(m_folder).toStdString());
+    // The review of another package that stood here is kept, never overwritten.
+    if (!m_foreignReview.isEmpty() && QFileInfo::exists(m_foreignReview)) {
+        const QString keptAs = foreignReviewKeptAs();
+        if (!QFile::rename(m_foreignReview, keptAs)) {
+            m_messageLabel->setText(tr("<span style='color:#c0392b'>The review of another package, %1, could not "
+                                       "be moved to %2: nothing was saved.</span>")
+                                        .arg(QDir::toNativeSeparators(m_foreignReview).toHtmlEscaped(),
+                                             QDir::toNativeSeparators(keptAs).toHtmlEscaped()));
+            return false;
+        }
+    }
+    m_foreignReview.clear();
     if (const Status saved = scene::saveReview(m_review, path); !saved) {
         m_messageLabel->setText(tr("<span style='color:#c0392b'>The review could not be written beside the "
                                    "package (is the folder read-only?).</span>"));

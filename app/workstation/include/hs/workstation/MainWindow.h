@@ -13,6 +13,7 @@
 #include "hs/widgets/view/ResultsDisplay.h"
 #include "hs/widgets/view/VtkView.h"
 
+#include <QFileSystemWatcher>
 #include <QFutureWatcher>
 #include <QMainWindow>
 #include <QString>
@@ -66,6 +67,9 @@ public:
     /// What `hysteroscene PATH` opens: a case file (.json) as the case being authored, a scene package (a folder
     /// with a manifest.json, or that manifest.json itself) for review, anything else as a mesh (openFile).
     void openArgument(const QString& path);
+    /// Opens a dropped file or folder as openArgument does; while a package is reviewed, or for a file this program
+    /// does not open, says why instead. Returns whether it was opened.
+    bool openDropped(const QString& path);
     bool isLoading() const;
     /// The file shown now; empty before the first successful load.
     QString currentFile() const { return m_currentFile; }
@@ -119,6 +123,8 @@ signals:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
 
 private slots:
     void onNewCase();
@@ -181,6 +187,10 @@ private:
     void syncClipPlane();
     static QString layerName(widgets::ResultLayer layer);
     QString openFilter() const;
+    /// Watches the case's file and the reviewed package's manifest for changes by another program.
+    void watchFiles();
+    /// A watched file changed: offers to reload what changed (a save of our own changes nothing and asks nothing).
+    void onChangedOnDisk();
 
     widgets::VtkView* m_view = nullptr;
     std::unique_ptr<widgets::MeshDisplay> m_display; ///< the tetrahedral mesh (or the mesh file, the package's mesh)
@@ -190,6 +200,8 @@ private:
     std::unique_ptr<widgets::ClipPlaneWidget> m_clipPlane; ///< the clip plane's handle, shown while the clip is on
     widgets::SurfaceHandles* m_handles = nullptr;
     QFutureWatcher<LoadedMesh> m_loadWatcher;
+    QFileSystemWatcher m_diskWatcher;
+    QTimer m_diskTimer; ///< lets a writer finish (editors write in steps) before the file is read
     QString m_currentFile;
     QString m_lastFolder;
 

@@ -37,6 +37,10 @@ public:
     void close();
     bool isOpen() const { return m_scene != nullptr; }
     QString packageFolder() const { return m_folder; }
+    /// The SHA-256 of the manifest of the package opened (the review names it so).
+    QString packageSha256() const { return QString::fromStdString(m_review.packageSha256); }
+    /// A line under the package's name (e.g. that the package changed on disk); empty clears it.
+    void showNotice(const QString& text);
     const scene::Review& review() const { return m_review; }
     bool isModified() const { return m_modified; }
 
@@ -61,6 +65,8 @@ private:
 
     std::shared_ptr<const scene::Scene> m_scene;
     QString m_folder;
+    QString m_foreignReview; ///< a review of another package (or unreadable) beside this one, kept when saving
+    QString foreignReviewKeptAs() const;
     scene::Review m_review;
     bool m_modified = false;
     bool m_filling = false;
