@@ -570,6 +570,142 @@
         <source>Stop the running job (Esc)</source>
         <translation>Den laufenden Auftrag abbrechen (Esc)</translation>
     </message>
+    <message>
+        <source>organ from the shape model</source>
+        <translation>Organ aus dem Formmodell</translation>
+    </message>
+    <message>
+        <source>pathologies</source>
+        <translation>Pathologien</translation>
+    </message>
+    <message>
+        <source>growing the pathologies</source>
+        <translation>Pathologien wachsen</translation>
+    </message>
+    <message>
+        <source>measuring the pathologies</source>
+        <translation>Pathologien werden vermessen</translation>
+    </message>
+    <message>
+        <source>merging</source>
+        <translation>Vereinigung</translation>
+    </message>
+    <message>
+        <source>joining the organ and the pathologies</source>
+        <translation>Organ und Pathologien werden vereinigt</translation>
+    </message>
+    <message>
+        <source>labelling the contacts</source>
+        <translation>Kontakte werden markiert</translation>
+    </message>
+    <message>
+        <source>covering the pathologies</source>
+        <translation>Pathologien werden überzogen</translation>
+    </message>
+    <message>
+        <source>checking the merged body</source>
+        <translation>vereinigter Körper wird geprüft</translation>
+    </message>
+    <message>
+        <source>meshing the body</source>
+        <translation>Körper wird vernetzt</translation>
+    </message>
+    <message>
+        <source>voxelizing the body</source>
+        <translation>Körper wird voxelisiert</translation>
+    </message>
+    <message>
+        <source>seeding the particles</source>
+        <translation>Partikel werden gesetzt</translation>
+    </message>
+    <message>
+        <source>relaxing the particles</source>
+        <translation>Partikel werden relaxiert</translation>
+    </message>
+    <message>
+        <source>tetrahedralizing</source>
+        <translation>Tetraedrisierung</translation>
+    </message>
+    <message>
+        <source>removing slivers</source>
+        <translation>flache Tetraeder werden entfernt</translation>
+    </message>
+    <message>
+        <source>checking the region volumes</source>
+        <translation>Regionsvolumen werden geprüft</translation>
+    </message>
+    <message>
+        <source>measuring the mesh quality</source>
+        <translation>Netzqualität wird gemessen</translation>
+    </message>
+    <message>
+        <source>mesh done</source>
+        <translation>Netz fertig</translation>
+    </message>
+    <message>
+        <source>tissue layers</source>
+        <translation>Gewebeschichten</translation>
+    </message>
+    <message>
+        <source>texturing</source>
+        <translation>Texturierung</translation>
+    </message>
+    <message>
+        <source>synthesizing the texture</source>
+        <translation>Textur wird synthetisiert</translation>
+    </message>
+    <message>
+        <source>growing the vessels</source>
+        <translation>Gefäße wachsen</translation>
+    </message>
+    <message>
+        <source>unfolding the surface</source>
+        <translation>Oberfläche wird abgewickelt</translation>
+    </message>
+    <message>
+        <source>baking the maps</source>
+        <translation>Texturkarten werden gebacken</translation>
+    </message>
+    <message>
+        <source>refining the surface for close-ups</source>
+        <translation>Oberfläche wird für Nahaufnahmen verfeinert</translation>
+    </message>
+    <message>
+        <source>binding the surface to the mesh</source>
+        <translation>Oberfläche wird an das Netz gebunden</translation>
+    </message>
+    <message>
+        <source>assembling the scene</source>
+        <translation>Szene wird zusammengesetzt</translation>
+    </message>
+    <message>
+        <source>distending the cavity</source>
+        <translation>Cavum wird entfaltet</translation>
+    </message>
+    <message>
+        <source>writing the package</source>
+        <translation>Paket wird geschrieben</translation>
+    </message>
+    <message>
+        <source>voxelizing the cavity for the scope</source>
+        <translation>Cavum wird für das Hysteroskop voxelisiert</translation>
+    </message>
+    <message>
+        <source>measuring the room for the scope</source>
+        <translation>Platz für das Hysteroskop wird gemessen</translation>
+    </message>
+    <message>
+        <source>sweeping the scope&apos;s route</source>
+        <translation>Weg des Hysteroskops wird abgefahren</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation>fertig</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
 </context>
 <context>
     <name>hs::widgets::MaterialsPanel</name>
@@ -1554,15 +1690,27 @@
     </message>
     <message>
         <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The review %1 is of another package (manifest SHA-256 %2…, this package&apos;s %3…): it is not loaded. Saving keeps it as %4.&lt;/span&gt;</source>
-        <translation>&lt;span style='color:#c0392b'&gt;Die Bewertung %1 gehört zu einem anderen Paket (Manifest-SHA-256 %2…, dieses Pakets %3…): Sie wird nicht geladen. Beim Speichern bleibt sie als %4 erhalten.&lt;/span&gt;</translation>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;Die Bewertung %1 gehört zu einem anderen Paket (Manifest-SHA-256 %2…, dieses Pakets %3…): Sie wird nicht geladen. Beim Speichern bleibt sie als %4 erhalten.&lt;/span&gt;</translation>
     </message>
     <message>
         <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The review %1 cannot be read: it is not loaded. Saving keeps it as %2.&lt;/span&gt;</source>
-        <translation>&lt;span style='color:#c0392b'&gt;Die Bewertung %1 ist nicht lesbar: Sie wird nicht geladen. Beim Speichern bleibt sie als %2 erhalten.&lt;/span&gt;</translation>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;Die Bewertung %1 ist nicht lesbar: Sie wird nicht geladen. Beim Speichern bleibt sie als %2 erhalten.&lt;/span&gt;</translation>
     </message>
     <message>
         <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The review of another package, %1, could not be moved to %2: nothing was saved.&lt;/span&gt;</source>
-        <translation>&lt;span style='color:#c0392b'&gt;Die Bewertung eines anderen Pakets, %1, konnte nicht nach %2 verschoben werden: Nichts wurde gespeichert.&lt;/span&gt;</translation>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;Die Bewertung eines anderen Pakets, %1, konnte nicht nach %2 verschoben werden: Nichts wurde gespeichert.&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>endometrium</source>
+        <translation>Endometrium</translation>
+    </message>
+    <message>
+        <source>texture / %1</source>
+        <translation>Textur / %1</translation>
+    </message>
+    <message>
+        <source>%1 / %2</source>
+        <translation>%1 / %2</translation>
     </message>
 </context>
 <context>

@@ -570,6 +570,142 @@
         <source>Stop the running job (Esc)</source>
         <translation>Arrêter la tâche en cours (Esc)</translation>
     </message>
+    <message>
+        <source>organ from the shape model</source>
+        <translation>organe issu du modèle de forme</translation>
+    </message>
+    <message>
+        <source>pathologies</source>
+        <translation>pathologies</translation>
+    </message>
+    <message>
+        <source>growing the pathologies</source>
+        <translation>croissance des pathologies</translation>
+    </message>
+    <message>
+        <source>measuring the pathologies</source>
+        <translation>mesure des pathologies</translation>
+    </message>
+    <message>
+        <source>merging</source>
+        <translation>fusion</translation>
+    </message>
+    <message>
+        <source>joining the organ and the pathologies</source>
+        <translation>réunion de l’organe et des pathologies</translation>
+    </message>
+    <message>
+        <source>labelling the contacts</source>
+        <translation>étiquetage des contacts</translation>
+    </message>
+    <message>
+        <source>covering the pathologies</source>
+        <translation>recouvrement des pathologies</translation>
+    </message>
+    <message>
+        <source>checking the merged body</source>
+        <translation>vérification du corps fusionné</translation>
+    </message>
+    <message>
+        <source>meshing the body</source>
+        <translation>maillage du corps</translation>
+    </message>
+    <message>
+        <source>voxelizing the body</source>
+        <translation>voxélisation du corps</translation>
+    </message>
+    <message>
+        <source>seeding the particles</source>
+        <translation>semis des particules</translation>
+    </message>
+    <message>
+        <source>relaxing the particles</source>
+        <translation>relaxation des particules</translation>
+    </message>
+    <message>
+        <source>tetrahedralizing</source>
+        <translation>tétraédrisation</translation>
+    </message>
+    <message>
+        <source>removing slivers</source>
+        <translation>suppression des tétraèdres plats</translation>
+    </message>
+    <message>
+        <source>checking the region volumes</source>
+        <translation>vérification des volumes des régions</translation>
+    </message>
+    <message>
+        <source>measuring the mesh quality</source>
+        <translation>mesure de la qualité du maillage</translation>
+    </message>
+    <message>
+        <source>mesh done</source>
+        <translation>maillage terminé</translation>
+    </message>
+    <message>
+        <source>tissue layers</source>
+        <translation>couches de tissu</translation>
+    </message>
+    <message>
+        <source>texturing</source>
+        <translation>texturage</translation>
+    </message>
+    <message>
+        <source>synthesizing the texture</source>
+        <translation>synthèse de la texture</translation>
+    </message>
+    <message>
+        <source>growing the vessels</source>
+        <translation>croissance des vaisseaux</translation>
+    </message>
+    <message>
+        <source>unfolding the surface</source>
+        <translation>dépliage de la surface</translation>
+    </message>
+    <message>
+        <source>baking the maps</source>
+        <translation>calcul des cartes</translation>
+    </message>
+    <message>
+        <source>refining the surface for close-ups</source>
+        <translation>affinage de la surface pour les gros plans</translation>
+    </message>
+    <message>
+        <source>binding the surface to the mesh</source>
+        <translation>liaison de la surface au maillage</translation>
+    </message>
+    <message>
+        <source>assembling the scene</source>
+        <translation>assemblage de la scène</translation>
+    </message>
+    <message>
+        <source>distending the cavity</source>
+        <translation>distension de la cavité</translation>
+    </message>
+    <message>
+        <source>writing the package</source>
+        <translation>écriture du paquet</translation>
+    </message>
+    <message>
+        <source>voxelizing the cavity for the scope</source>
+        <translation>voxélisation de la cavité pour l’hystéroscope</translation>
+    </message>
+    <message>
+        <source>measuring the room for the scope</source>
+        <translation>mesure de l’espace pour l’hystéroscope</translation>
+    </message>
+    <message>
+        <source>sweeping the scope&apos;s route</source>
+        <translation>parcours de la trajectoire de l’hystéroscope</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation>terminé</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
 </context>
 <context>
     <name>hs::widgets::MaterialsPanel</name>
@@ -1554,15 +1690,27 @@
     </message>
     <message>
         <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The review %1 is of another package (manifest SHA-256 %2…, this package&apos;s %3…): it is not loaded. Saving keeps it as %4.&lt;/span&gt;</source>
-        <translation>&lt;span style='color:#c0392b'&gt;L’évaluation %1 concerne un autre paquet (SHA-256 du manifeste %2…, celui de ce paquet %3…) : elle n’est pas chargée. L’enregistrement la conserve sous %4.&lt;/span&gt;</translation>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;L’évaluation %1 concerne un autre paquet (SHA-256 du manifeste %2…, celui de ce paquet %3…) : elle n’est pas chargée. L’enregistrement la conserve sous %4.&lt;/span&gt;</translation>
     </message>
     <message>
         <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The review %1 cannot be read: it is not loaded. Saving keeps it as %2.&lt;/span&gt;</source>
-        <translation>&lt;span style='color:#c0392b'&gt;L’évaluation %1 est illisible : elle n’est pas chargée. L’enregistrement la conserve sous %2.&lt;/span&gt;</translation>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;L’évaluation %1 est illisible : elle n’est pas chargée. L’enregistrement la conserve sous %2.&lt;/span&gt;</translation>
     </message>
     <message>
         <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The review of another package, %1, could not be moved to %2: nothing was saved.&lt;/span&gt;</source>
-        <translation>&lt;span style='color:#c0392b'&gt;L’évaluation d’un autre paquet, %1, n’a pas pu être déplacée vers %2 : rien n’a été enregistré.&lt;/span&gt;</translation>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;L’évaluation d’un autre paquet, %1, n’a pas pu être déplacée vers %2 : rien n’a été enregistré.&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>endometrium</source>
+        <translation>endomètre</translation>
+    </message>
+    <message>
+        <source>texture / %1</source>
+        <translation>texture / %1</translation>
+    </message>
+    <message>
+        <source>%1 / %2</source>
+        <translation>%1 / %2</translation>
     </message>
 </context>
 <context>

@@ -570,6 +570,142 @@
         <source>Stop the running job (Esc)</source>
         <translation>Interrompi l&apos;operazione in corso (Esc)</translation>
     </message>
+    <message>
+        <source>organ from the shape model</source>
+        <translation>organo dal modello di forma</translation>
+    </message>
+    <message>
+        <source>pathologies</source>
+        <translation>patologie</translation>
+    </message>
+    <message>
+        <source>growing the pathologies</source>
+        <translation>crescita delle patologie</translation>
+    </message>
+    <message>
+        <source>measuring the pathologies</source>
+        <translation>misura delle patologie</translation>
+    </message>
+    <message>
+        <source>merging</source>
+        <translation>unione</translation>
+    </message>
+    <message>
+        <source>joining the organ and the pathologies</source>
+        <translation>unione dell’organo e delle patologie</translation>
+    </message>
+    <message>
+        <source>labelling the contacts</source>
+        <translation>etichettatura dei contatti</translation>
+    </message>
+    <message>
+        <source>covering the pathologies</source>
+        <translation>copertura delle patologie</translation>
+    </message>
+    <message>
+        <source>checking the merged body</source>
+        <translation>verifica del corpo unito</translation>
+    </message>
+    <message>
+        <source>meshing the body</source>
+        <translation>generazione della mesh del corpo</translation>
+    </message>
+    <message>
+        <source>voxelizing the body</source>
+        <translation>voxelizzazione del corpo</translation>
+    </message>
+    <message>
+        <source>seeding the particles</source>
+        <translation>semina delle particelle</translation>
+    </message>
+    <message>
+        <source>relaxing the particles</source>
+        <translation>rilassamento delle particelle</translation>
+    </message>
+    <message>
+        <source>tetrahedralizing</source>
+        <translation>tetraedrizzazione</translation>
+    </message>
+    <message>
+        <source>removing slivers</source>
+        <translation>rimozione dei tetraedri piatti</translation>
+    </message>
+    <message>
+        <source>checking the region volumes</source>
+        <translation>verifica dei volumi delle regioni</translation>
+    </message>
+    <message>
+        <source>measuring the mesh quality</source>
+        <translation>misura della qualità della mesh</translation>
+    </message>
+    <message>
+        <source>mesh done</source>
+        <translation>mesh completata</translation>
+    </message>
+    <message>
+        <source>tissue layers</source>
+        <translation>strati di tessuto</translation>
+    </message>
+    <message>
+        <source>texturing</source>
+        <translation>applicazione della texture</translation>
+    </message>
+    <message>
+        <source>synthesizing the texture</source>
+        <translation>sintesi della texture</translation>
+    </message>
+    <message>
+        <source>growing the vessels</source>
+        <translation>crescita dei vasi</translation>
+    </message>
+    <message>
+        <source>unfolding the surface</source>
+        <translation>svolgimento della superficie</translation>
+    </message>
+    <message>
+        <source>baking the maps</source>
+        <translation>calcolo delle mappe</translation>
+    </message>
+    <message>
+        <source>refining the surface for close-ups</source>
+        <translation>raffinamento della superficie per i primi piani</translation>
+    </message>
+    <message>
+        <source>binding the surface to the mesh</source>
+        <translation>collegamento della superficie alla mesh</translation>
+    </message>
+    <message>
+        <source>assembling the scene</source>
+        <translation>assemblaggio della scena</translation>
+    </message>
+    <message>
+        <source>distending the cavity</source>
+        <translation>distensione della cavità</translation>
+    </message>
+    <message>
+        <source>writing the package</source>
+        <translation>scrittura del pacchetto</translation>
+    </message>
+    <message>
+        <source>voxelizing the cavity for the scope</source>
+        <translation>voxelizzazione della cavità per l’isteroscopio</translation>
+    </message>
+    <message>
+        <source>measuring the room for the scope</source>
+        <translation>misura dello spazio per l’isteroscopio</translation>
+    </message>
+    <message>
+        <source>sweeping the scope&apos;s route</source>
+        <translation>percorso dell’isteroscopio</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation>fatto</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
 </context>
 <context>
     <name>hs::widgets::MaterialsPanel</name>
@@ -1554,15 +1690,27 @@
     </message>
     <message>
         <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The review %1 is of another package (manifest SHA-256 %2…, this package&apos;s %3…): it is not loaded. Saving keeps it as %4.&lt;/span&gt;</source>
-        <translation>&lt;span style='color:#c0392b'&gt;La valutazione %1 riguarda un altro pacchetto (SHA-256 del manifest %2…, di questo pacchetto %3…): non viene caricata. Il salvataggio la conserva come %4.&lt;/span&gt;</translation>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;La valutazione %1 riguarda un altro pacchetto (SHA-256 del manifest %2…, di questo pacchetto %3…): non viene caricata. Il salvataggio la conserva come %4.&lt;/span&gt;</translation>
     </message>
     <message>
         <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The review %1 cannot be read: it is not loaded. Saving keeps it as %2.&lt;/span&gt;</source>
-        <translation>&lt;span style='color:#c0392b'&gt;La valutazione %1 non è leggibile: non viene caricata. Il salvataggio la conserva come %2.&lt;/span&gt;</translation>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;La valutazione %1 non è leggibile: non viene caricata. Il salvataggio la conserva come %2.&lt;/span&gt;</translation>
     </message>
     <message>
         <source>&lt;span style=&apos;color:#c0392b&apos;&gt;The review of another package, %1, could not be moved to %2: nothing was saved.&lt;/span&gt;</source>
-        <translation>&lt;span style='color:#c0392b'&gt;La valutazione di un altro pacchetto, %1, non ha potuto essere spostata in %2: nulla è stato salvato.&lt;/span&gt;</translation>
+        <translation>&lt;span style=&apos;color:#c0392b&apos;&gt;La valutazione di un altro pacchetto, %1, non ha potuto essere spostata in %2: nulla è stato salvato.&lt;/span&gt;</translation>
+    </message>
+    <message>
+        <source>endometrium</source>
+        <translation>endometrio</translation>
+    </message>
+    <message>
+        <source>texture / %1</source>
+        <translation>texture / %1</translation>
+    </message>
+    <message>
+        <source>%1 / %2</source>
+        <translation>%1 / %2</translation>
     </message>
 </context>
 <context>

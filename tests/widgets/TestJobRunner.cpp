@@ -4,6 +4,7 @@
 #include "hs/widgets/document/CaseDocument.h"
 #include "hs/widgets/jobs/GenerationSession.h"
 #include "hs/widgets/jobs/JobRunner.h"
+#include "hs/widgets/jobs/JobStatusWidget.h"
 
 #include <QElapsedTimer>
 #include <QSignalSpy>
@@ -44,6 +45,7 @@ private slots:
     void aNewJobReplacesTheRunningOne();
     void sessionRebuildsTheOrganAfterAnEdit();
     void sessionCancelsARunningMeshJob();
+    void theStatusNamesEachPipelineStepInWords();
 };
 
 void TestJobRunner::appliesTheValueOnTheGuiThread() {
@@ -178,6 +180,27 @@ void TestJobRunner::sessionCancelsARunningMeshJob() {
     const double latencyMs = cancelled.at(0).at(1).toDouble();
     qInfo("mesh job cancel latency: %.1f ms", latencyMs);
     QVERIFY2(latencyMs < 2000.0, qPrintable(QString::number(latencyMs)));
+}
+
+void TestJobRunner::theStatusNamesEachPipelineStepInWords() {
+    using hs::widgets::JobStatusWidget;
+    QCOMPARE(JobStatusWidget::stepName("meshing.relax"), QString("relaxing the particles"));
+    QCOMPARE(JobStatusWidget::stepName("meshing.relax.sweep"), QString("relaxing the particles")); // its step's
+    QCOMPARE(JobStatusWidget::stepName("texture"), QString("texturing"));
+    QCOMPARE(JobStatusWidget::stepName("meshing.unknownStep"), QString("meshing the body")); // its stage's
+    QCOMPARE(JobStatusWidget::stepName("elsewhere.step"), QString("elsewhere.step"));
+    // Every step the pipeline reports while generating has a name (none falls back to its key).
+    QStringList unnamed;
+    hs::Progress progress([&](std::string_view key, double) {
+        const QString k = QString::fromUtf8(key.data(), int(key.size()));
+        if (JobStatusWidget::stepName(k) == k && !unnamed.contains(k))
+            unnamed.append(k);
+    });
+    hs::scene::CaseSpec spec = hs::scene::defaultCase();
+    spec.meshing.targetVertices = 3000;
+    spec.texture.sizePx = 128;
+    QVERIFY(hs::generate::generateScene(spec, {}, progress).ok());
+    QVERIFY2(unnamed.isEmpty(), qPrintable(unnamed.join(", ")));
 }
 
 QTEST_MAIN(TestJobRunner)

@@ -35,6 +35,36 @@ QString modelName(clinical::GrowthModel model) {
     return ReviewPanel::tr("particles");
 }
 
+/// A texture's appearance ("endometrium", "myoma", "polyp") in the user's language.
+QString appearanceName(const std::string& appearance) {
+    if (appearance == "endometrium")
+        return ReviewPanel::tr("endometrium");
+    if (appearance == "myoma")
+        return ReviewPanel::tr("myoma");
+    if (appearance == "polyp")
+        return ReviewPanel::tr("polyp");
+    return QString::fromStdString(appearance);
+}
+
+/// A summary group ("myoma / particles", "texture / endometrium"; scene::summarize) in the user's language.
+QString groupName(const std::string& group) {
+    const std::size_t slash = group.find(" / ");
+    if (slash == std::string::npos)
+        return QString::fromStdString(group);
+    const std::string head = group.substr(0, slash), tail = group.substr(slash + 3);
+    if (head == "texture")
+        return ReviewPanel::tr("texture / %1").arg(appearanceName(tail));
+    clinical::GrowthModel model = clinical::GrowthModel::Particles;
+    const QString kind = appearanceName(head);
+    if (tail == clinical::toString(clinical::GrowthModel::CellularAutomaton))
+        model = clinical::GrowthModel::CellularAutomaton;
+    else if (tail == clinical::toString(clinical::GrowthModel::Skeleton))
+        model = clinical::GrowthModel::Skeleton;
+    else if (tail != clinical::toString(clinical::GrowthModel::Particles))
+        return QString::fromStdString(group);
+    return ReviewPanel::tr("%1 / %2").arg(kind, modelName(model));
+}
+
 QSpinBox* scoreSpin(QWidget* parent, const QString& name) {
     auto* spin = new QSpinBox(parent);
     spin->setObjectName(name);
@@ -197,7 +227,7 @@ void ReviewPanel::fillTables() {
     m_textureTable->setRowCount(int(m_review.textures.size()));
     for (int row = 0; row < int(m_review.textures.size()); ++row) {
         const scene::TextureRating& t = m_review.textures[std::size_t(row)];
-        m_textureTable->setItem(row, kAppearanceColumn, new QTableWidgetItem(QString::fromStdString(t.appearance)));
+        m_textureTable->setItem(row, kAppearanceColumn, new QTableWidgetItem(appearanceName(t.appearance)));
         addRatingCells(m_textureTable, row, kTextureScoreColumn, QStringLiteral("texture"), t.rating,
                        [this, row](int score, const QString& comment) { rateTexture(row, score, comment); });
     }
@@ -292,7 +322,7 @@ void ReviewPanel::refreshSummary() {
     m_summaryTable->setRowCount(int(rows.size()));
     for (int i = 0; i < int(rows.size()); ++i) {
         const scene::RatingSummary& r = rows[std::size_t(i)];
-        m_summaryTable->setItem(i, 0, new QTableWidgetItem(QString::fromStdString(r.group)));
+        m_summaryTable->setItem(i, 0, new QTableWidgetItem(groupName(r.group)));
         m_summaryTable->setItem(i, 1, new QTableWidgetItem(QString::number(r.count)));
         m_summaryTable->setItem(i, 2, new QTableWidgetItem(locale.toString(r.mean, 'f', 2)));
         m_summaryTable->setItem(i, 3, new QTableWidgetItem(QString::number(r.lowest)));

@@ -17,6 +17,9 @@ class JobStatusWidget : public QWidget {
 
 public:
     explicit JobStatusWidget(JobRunner& runner, QWidget* parent = nullptr);
+    /// A progress step's key ("meshing.relax") in the user's language ("relaxing the particles"); an unknown step
+    /// reads as its stage, an unknown stage as the key itself.
+    static QString stepName(const QString& key);
 
 private:
     void onStarted(const QString& title);
@@ -24,6 +27,7 @@ private:
 
     JobRunner& m_runner;
     QLabel* m_titleLabel = nullptr;
+    QString m_title; ///< the job's, before its step
     QProgressBar* m_progressBar = nullptr;
     QToolButton* m_cancelButton = nullptr;
 };
