@@ -742,24 +742,8 @@
         <translation>Dichte (kg/m³)</translation>
     </message>
     <message>
-        <source>Heterogeneity</source>
-        <translation>Heterogenität</translation>
-    </message>
-    <message>
-        <source>Default %1; allowed %2</source>
-        <translation>Standard %1; zulässig %2</translation>
-    </message>
-    <message>
         <source>Material</source>
         <translation>Material</translation>
-    </message>
-    <message>
-        <source>Default</source>
-        <translation>Standard</translation>
-    </message>
-    <message>
-        <source>Use the literature values for this tissue</source>
-        <translation>Die Literaturwerte für dieses Gewebe verwenden</translation>
     </message>
     <message>
         <source>Default material</source>
@@ -784,6 +768,38 @@
     <message>
         <source>Defaults: myometrium 30 kPa, endometrium 26.2 kPa (proliferative), myoma 65 kPa, polyp 15 kPa; Poisson ratio 0.47; 1050 kg/m³ (see docs/scene-format.md).</source>
         <translation>Standardwerte: Myometrium 30 kPa, Endometrium 26,2 kPa (Proliferationsphase), Myom 65 kPa, Polyp 15 kPa; Poissonzahl 0,47; 1050 kg/m³ (siehe docs/scene-format.md).</translation>
+    </message>
+    <message>
+        <source>E (kPa)</source>
+        <translation>E (kPa)</translation>
+    </message>
+    <message>
+        <source>ν</source>
+        <translation>ν</translation>
+    </message>
+    <message>
+        <source>ρ (kg/m³)</source>
+        <translation>ρ (kg/m³)</translation>
+    </message>
+    <message>
+        <source>CV of E</source>
+        <translation>VK von E</translation>
+    </message>
+    <message>
+        <source>Heterogeneity: the coefficient of variation of Young&apos;s modulus per tetrahedron</source>
+        <translation>Heterogenität: der Variationskoeffizient des Elastizitätsmoduls je Tetraeder</translation>
+    </message>
+    <message>
+        <source>%1: default %2; allowed %3</source>
+        <translation>%1: Standard %2; zulässig %3</translation>
+    </message>
+    <message>
+        <source>Default: use the literature values for this tissue</source>
+        <translation>Standard: die Literaturwerte für dieses Gewebe verwenden</translation>
+    </message>
+    <message>
+        <source>Default values for %1</source>
+        <translation>Standardwerte für %1</translation>
     </message>
 </context>
 <context>

@@ -742,24 +742,8 @@
         <translation>Masse volumique (kg/m³)</translation>
     </message>
     <message>
-        <source>Heterogeneity</source>
-        <translation>Hétérogénéité</translation>
-    </message>
-    <message>
-        <source>Default %1; allowed %2</source>
-        <translation>Par défaut %1 ; autorisé %2</translation>
-    </message>
-    <message>
         <source>Material</source>
         <translation>Matériau</translation>
-    </message>
-    <message>
-        <source>Default</source>
-        <translation>Par défaut</translation>
-    </message>
-    <message>
-        <source>Use the literature values for this tissue</source>
-        <translation>Utiliser les valeurs de la littérature pour ce tissu</translation>
     </message>
     <message>
         <source>Default material</source>
@@ -784,6 +768,38 @@
     <message>
         <source>Defaults: myometrium 30 kPa, endometrium 26.2 kPa (proliferative), myoma 65 kPa, polyp 15 kPa; Poisson ratio 0.47; 1050 kg/m³ (see docs/scene-format.md).</source>
         <translation>Valeurs par défaut : myomètre 30 kPa, endomètre 26,2 kPa (phase proliférative), myome 65 kPa, polype 15 kPa ; coefficient de Poisson 0,47 ; 1050 kg/m³ (voir docs/scene-format.md).</translation>
+    </message>
+    <message>
+        <source>E (kPa)</source>
+        <translation>E (kPa)</translation>
+    </message>
+    <message>
+        <source>ν</source>
+        <translation>ν</translation>
+    </message>
+    <message>
+        <source>ρ (kg/m³)</source>
+        <translation>ρ (kg/m³)</translation>
+    </message>
+    <message>
+        <source>CV of E</source>
+        <translation>CV de E</translation>
+    </message>
+    <message>
+        <source>Heterogeneity: the coefficient of variation of Young&apos;s modulus per tetrahedron</source>
+        <translation>Hétérogénéité : le coefficient de variation du module de Young par tétraèdre</translation>
+    </message>
+    <message>
+        <source>%1: default %2; allowed %3</source>
+        <translation>%1 : défaut %2 ; autorisé %3</translation>
+    </message>
+    <message>
+        <source>Default: use the literature values for this tissue</source>
+        <translation>Défaut : utiliser les valeurs de la littérature pour ce tissu</translation>
+    </message>
+    <message>
+        <source>Default values for %1</source>
+        <translation>Valeurs par défaut pour %1</translation>
     </message>
 </context>
 <context>

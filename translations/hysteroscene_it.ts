@@ -742,24 +742,8 @@
         <translation>Densità (kg/m³)</translation>
     </message>
     <message>
-        <source>Heterogeneity</source>
-        <translation>Eterogeneità</translation>
-    </message>
-    <message>
-        <source>Default %1; allowed %2</source>
-        <translation>Predefinito %1; consentito %2</translation>
-    </message>
-    <message>
         <source>Material</source>
         <translation>Materiale</translation>
-    </message>
-    <message>
-        <source>Default</source>
-        <translation>Predefinito</translation>
-    </message>
-    <message>
-        <source>Use the literature values for this tissue</source>
-        <translation>Usa i valori della letteratura per questo tessuto</translation>
     </message>
     <message>
         <source>Default material</source>
@@ -784,6 +768,38 @@
     <message>
         <source>Defaults: myometrium 30 kPa, endometrium 26.2 kPa (proliferative), myoma 65 kPa, polyp 15 kPa; Poisson ratio 0.47; 1050 kg/m³ (see docs/scene-format.md).</source>
         <translation>Valori predefiniti: miometrio 30 kPa, endometrio 26,2 kPa (fase proliferativa), mioma 65 kPa, polipo 15 kPa; coefficiente di Poisson 0,47; 1050 kg/m³ (vedi docs/scene-format.md).</translation>
+    </message>
+    <message>
+        <source>E (kPa)</source>
+        <translation>E (kPa)</translation>
+    </message>
+    <message>
+        <source>ν</source>
+        <translation>ν</translation>
+    </message>
+    <message>
+        <source>ρ (kg/m³)</source>
+        <translation>ρ (kg/m³)</translation>
+    </message>
+    <message>
+        <source>CV of E</source>
+        <translation>CV di E</translation>
+    </message>
+    <message>
+        <source>Heterogeneity: the coefficient of variation of Young&apos;s modulus per tetrahedron</source>
+        <translation>Eterogeneità: il coefficiente di variazione del modulo di Young per tetraedro</translation>
+    </message>
+    <message>
+        <source>%1: default %2; allowed %3</source>
+        <translation>%1: predefinito %2; consentito %3</translation>
+    </message>
+    <message>
+        <source>Default: use the literature values for this tissue</source>
+        <translation>Predefinito: usare i valori della letteratura per questo tessuto</translation>
+    </message>
+    <message>
+        <source>Default values for %1</source>
+        <translation>Valori predefiniti per %1</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,7 @@
 // a new case, the patient's values, a myoma placed by a click on the organ's wall in the 3-D view, grow, merge,
 // mesh, the quality histogram, texture, export, the package validated; a running mesh job cancelled from the status
 // bar; a clinician's review written beside the package. Needs a display (xvfb-run -a).
+#include "LayoutCheck.h"
 #include "hs/scene/Review.h"
 #include "hs/scene/ScenePackage.h"
 #include "hs/widgets/common/FileDialog.h"
@@ -524,6 +525,12 @@ void TestAuthoringFlow::aClinicianReviewsTheExportedPackage() {
     QCOMPARE(*review->pathologies[0].rating.score, 5);
     QVERIFY(hs::scene::verifyScenePackage(QFile::encodeName(m_exported).toStdString()).ok());
     shot("workstation-review", "reviewDock");
+    // The review's tables, filled, fit a 1366 x 768 screen as every other panel does.
+    m_window->resize(1366, 768);
+    QTRY_COMPARE(m_window->size(), QSize(1366, 768));
+    const QStringList clipped = hs::test::clippedParts(m_window.get());
+    QVERIFY2(clipped.isEmpty(), qPrintable(clipped.join("; ")));
+    m_window->resize(1280, 1000);
     // The package changed on disk by another program (its manifest rewritten): the window asks; kept (No), the
     // panel says the ratings are of the version opened. Put back, nothing is asked.
     QFile manifest(QDir(m_exported).filePath("manifest.json"));

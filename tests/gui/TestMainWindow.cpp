@@ -1,6 +1,7 @@
 // Qt Test for the workstation's main window, driven like a user through its seams (file dialog, message boxes).
 // Needs a display (xvfb-run -a).
 #include "GuiTestMeshes.h"
+#include "LayoutCheck.h"
 #include "hs/io/MeshIO.h"
 #include "hs/widgets/common/FileDialog.h"
 #include "hs/widgets/common/MessageBox.h"
@@ -12,17 +13,21 @@
 #include <QAction>
 #include <QApplication>
 #include <QDir>
+#include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QDropEvent>
 #include <QFile>
 #include <QFileInfo>
+#include <QHeaderView>
 #include <QLabel>
 #include <QLocale>
 #include <QMenu>
 #include <QMimeData>
+#include <QScrollArea>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
+#include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUrl>
@@ -78,6 +83,7 @@ private slots:
     void autosaveIsOfferedBackAfterACrash();
     void aDropOpensACaseOrAMeshAndSaysWhyItRefusesAnythingElse();
     void aCaseChangedOnDiskIsOfferedToReloadAndOurOwnSaveIsNot();
+    void nothingIsCutOffAt1366By768();
 
 private:
     template <class T>
@@ -659,6 +665,18 @@ void TestMainWindow::aCaseChangedOnDiskIsOfferedToReloadAndOurOwnSaveIsNot() {
     QVERIFY2(asked.front().text.contains("unsaved"), qPrintable(asked.front().text));
     QCOMPARE(m_window->document().spec().seed, std::uint64_t{24});
     QVERIFY(m_window->isWindowModified());
+}
+
+void TestMainWindow::nothingIsCutOffAt1366By768() {
+    // The smallest common laptop screen: every panel raised in turn, no table column and no panel is cut off (no
+    // horizontal scrolling), and the 3-D view keeps a usable width.
+    m_window->resize(1366, 768);
+    QTRY_COMPARE(m_window->size(), QSize(1366, 768));
+    const QStringList clipped = hs::test::clippedParts(m_window.get());
+    if (!qEnvironmentVariableIsEmpty("HS_SCREENSHOT_DIR"))
+        m_window->grab().save(QDir(qEnvironmentVariable("HS_SCREENSHOT_DIR")).filePath("workstation-1366x768.png"));
+    QVERIFY2(clipped.isEmpty(), qPrintable(clipped.join("; ")));
+    QVERIFY2(m_window->view()->width() >= 400, qPrintable(QString::number(m_window->view()->width())));
 }
 
 int main(int argc, char** argv) {

@@ -34,6 +34,7 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -43,6 +44,7 @@
 #include <vtkCamera.h>
 #include <vtkRenderer.h>
 
+#include <algorithm>
 #include <exception>
 #include <string>
 #include <type_traits>
@@ -409,6 +411,20 @@ void MainWindow::createPanels() {
     tabifyDockWidget(texture, exportDock);
     tabifyDockWidget(exportDock, m_reviewDock);
     mesh->raise();
+    // The default split leaves the 3-D view its room on a 1366 x 768 screen: each side as wide as its widest panel
+    // needs, no wider (readSettings restores the user's own layout over it).
+    const auto widest = [](std::initializer_list<QDockWidget*> docks) {
+        int width = 0;
+        for (QDockWidget* dock : docks)
+            if (auto* scroll = qobject_cast<QScrollArea*>(dock->widget()))
+                width = std::max(width, scroll->widget()->minimumSizeHint().width() +
+                                            scroll->verticalScrollBar()->sizeHint().width());
+        return width;
+    };
+    resizeDocks({patient, mesh}, {widest({patient, pathologies, materials}), widest({mesh, texture, exportDock})},
+                Qt::Horizontal);
+    resizeDocks({patient, sceneDock}, {600, 200}, Qt::Vertical); // the panels first, the scene tree below
+
     m_authoringDocks = {patient, pathologies, materials, mesh, texture, exportDock};
     // The marks over the views an edit has outdated.
     const auto mark = [this](QWidget* over, const char* name) {

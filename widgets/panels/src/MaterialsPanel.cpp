@@ -77,9 +77,23 @@ MaterialsPanel::MaterialsPanel(CaseDocument& document, QWidget* parent) : QWidge
     auto* layout = new QVBoxLayout(this);
     m_table = new QTableWidget(static_cast<int>(clinical::kTissues.size()), kColumnCount, this);
     m_table->setObjectName("materialsTable");
-    m_table->setHorizontalHeaderLabels(
-        {tr("Young's modulus (kPa)"), tr("Poisson ratio"), tr("Density (kg/m³)"), tr("Heterogeneity"), QString()});
-    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    // Short headers (the symbols of the literature) with the full names in their tooltips, spin boxes without
+    // arrows (the keys and the wheel step them): the table fits a 1366 x 768 screen's side panel.
+    const std::array<std::pair<QString, QString>, kColumnCount> headers{{
+        {tr("E (kPa)"), tr("Young's modulus (kPa)")},
+        {tr("ν"), tr("Poisson ratio")},
+        {tr("ρ (kg/m³)"), tr("Density (kg/m³)")},
+        {tr("CV of E"), tr("Heterogeneity: the coefficient of variation of Young's modulus per tetrahedron")},
+        {QString(), QString()},
+    }};
+    for (int column = 0; column < kColumnCount; ++column) {
+        auto* header = new QTableWidgetItem(headers[static_cast<std::size_t>(column)].first);
+        header->setToolTip(headers[static_cast<std::size_t>(column)].second);
+        m_table->setHorizontalHeaderItem(column, header);
+    }
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    m_table->horizontalHeader()->setSectionResizeMode(kResetColumn, QHeaderView::ResizeToContents);
+    m_table->horizontalHeader()->setMinimumSectionSize(40);
     m_table->setMinimumHeight(200);
     const QLocale locale;
     for (std::size_t row = 0; row < clinical::kTissues.size(); ++row) {
@@ -94,9 +108,11 @@ MaterialsPanel::MaterialsPanel(CaseDocument& document, QWidget* parent) : QWidge
             spin->setRange(0.0, range.max * 4.0 + 1.0); // out-of-range values are typed, then refused with a reason
             spin->setSingleStep(column == kPoissonColumn ? 0.005 : column == kHeterogeneityColumn ? 0.05 : 1.0);
             spin->setKeyboardTracking(false);
-            spin->setToolTip(
-                tr("Default %1; allowed %2")
-                    .arg(locale.toString(value, 'f', spin->decimals()), rangeText(range, {}, spin->decimals())));
+            spin->setButtonSymbols(QAbstractSpinBox::NoButtons);
+            spin->setToolTip(tr("%1: default %2; allowed %3")
+                                 .arg(headers[static_cast<std::size_t>(column)].second)
+                                 .arg(locale.toString(value, 'f', spin->decimals()))
+                                 .arg(rangeText(range, {}, spin->decimals())));
             m_table->setCellWidget(static_cast<int>(row), column, spin);
             const auto member = overrideOf(column);
             connect(spin, &QDoubleSpinBox::valueChanged, this, [this, spin, row, member, column](double v) {
@@ -108,9 +124,11 @@ MaterialsPanel::MaterialsPanel(CaseDocument& document, QWidget* parent) : QWidge
                     kMergeBase + int(row) * kColumnCount + column);
             });
         }
-        auto* reset = new QPushButton(tr("Default"), m_table);
+        auto* reset = new QPushButton(QStringLiteral("↺"), m_table);
         reset->setObjectName(QStringLiteral("%1ResetButton").arg(key));
-        reset->setToolTip(tr("Use the literature values for this tissue"));
+        reset->setToolTip(tr("Default: use the literature values for this tissue"));
+        reset->setAccessibleName(tr("Default values for %1").arg(tissueName(tissue)));
+        reset->setMaximumWidth(reset->fontMetrics().horizontalAdvance(QStringLiteral("↺")) + 16);
         m_table->setCellWidget(static_cast<int>(row), kResetColumn, reset);
         connect(reset, &QPushButton::clicked, this, [this, row] {
             m_document.edit(tr("Default material"),

@@ -189,8 +189,12 @@ void PatientPanel::buildDimensionTable() {
         const DimensionInfo& info = kDimensions[static_cast<std::size_t>(i)];
         DimensionRow& row = m_dimensions[static_cast<std::size_t>(i)];
         const QString name = QString::fromLatin1(info.objectName);
-        grid->addWidget(new QLabel(tr(info.label), group), i + 1, 0);
+        // Names and flagged values wrap rather than widen the panel (a 1366 x 768 screen has room for 450 px).
+        auto* label = new QLabel(tr(info.label), group);
+        label->setWordWrap(true);
+        grid->addWidget(label, i + 1, 0);
         row.organLabel = new QLabel(QStringLiteral("–"), group);
+        row.organLabel->setWordWrap(true);
         row.organLabel->setObjectName(name + "OrganLabel");
         grid->addWidget(row.organLabel, i + 1, 1);
         row.expectedLabel = new QLabel(group);
