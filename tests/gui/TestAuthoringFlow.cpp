@@ -245,6 +245,33 @@ void TestAuthoringFlow::authorsTheDefaultCaseFromNewToAValidatedPackage() {
     QCOMPARE(m_window->document().undoStack()->count(), editsBefore + 1);
     const double resized = m_window->document().spec().pathologies.back().sizeMm;
     QVERIFY2(resized > 15.0 && resized <= 100.0, qPrintable(QString::number(resized)));
+    // Dragging the seat handle down the anterior wall (the view's up is +z) seats the myoma there: one edit, the
+    // seat lower on the wall, the handle with it, and placing goes on (as after a resize).
+    const hs::Vec3 seatBefore =
+        std::get<hs::clinical::SurfacePlacement>(m_window->document().spec().pathologies.back().placement).pointMm;
+    const int editsBeforeSeat = m_window->document().undoStack()->count();
+    drag(view, seatOnScreen, seatOnScreen + QPoint(0, 24));
+    QCOMPARE(m_window->document().undoStack()->count(), editsBeforeSeat + 1);
+    const auto& moved = m_window->document().spec().pathologies.back();
+    QVERIFY(std::holds_alternative<hs::clinical::SurfacePlacement>(moved.placement));
+    const hs::Vec3 seatAfter = std::get<hs::clinical::SurfacePlacement>(moved.placement).pointMm;
+    QVERIFY2(seatAfter.z < seatBefore.z - 1.0 && std::abs(seatAfter.x - seatBefore.x) < 1.0,
+             qPrintable(QStringLiteral("(%1, %2, %3) -> (%4, %5, %6)")
+                            .arg(seatBefore.x)
+                            .arg(seatBefore.y)
+                            .arg(seatBefore.z)
+                            .arg(seatAfter.x)
+                            .arg(seatAfter.y)
+                            .arg(seatAfter.z)));
+    QVERIFY(hs::distance(m_window->handles()->seatPosition(), seatAfter) < 1e-6);
+    QVERIFY(find<hs::widgets::PathologyPanel>("pathologyPanel")->isPlacing());
+    QVERIFY(m_window->handles()->isShown());
+    // Undone, the seat is where the click put it (lower down, the myoma would touch the case's first one).
+    find<QAction>("actionUndo")->trigger();
+    QVERIFY(
+        hs::distance(
+            std::get<hs::clinical::SurfacePlacement>(m_window->document().spec().pathologies.back().placement).pointMm,
+            seatBefore) < 1e-9);
     find<QToolButton>("placeButton")->click(); // done placing
     QVERIFY(!m_window->handles()->isShown());
     find<QDoubleSpinBox>("sizeSpin")->setValue(15.0);

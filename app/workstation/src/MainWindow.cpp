@@ -148,7 +148,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_pathologyPanel, &widgets::PathologyPanel::currentChanged, this, &MainWindow::updateHandles);
     // A handle dropped is one edit: the seat moves along the wall (seated as a click there is), or the size changes.
     connect(m_handles, &widgets::SurfaceHandles::seatMoved, this,
-            [this](const QVector3D& point) { m_pathologyPanel->placeAt(true, point); });
+            [this](const QVector3D& point) { m_pathologyPanel->moveSeat(point); });
     connect(m_handles, &widgets::SurfaceHandles::sizeChanged, this,
             [this](double sizeMm) { m_pathologyPanel->resizeCurrent(sizeMm); });
     // The organ of the case the window starts with.

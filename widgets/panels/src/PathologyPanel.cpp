@@ -405,19 +405,28 @@ void PathologyPanel::setPlacing(bool placing) {
 }
 
 void PathologyPanel::placeAt(bool hit, const QVector3D& point) {
+    if (seatAt(hit, point))
+        setPlacing(false);
+}
+
+void PathologyPanel::moveSeat(const QVector3D& point) {
+    seatAt(true, point);
+}
+
+bool PathologyPanel::seatAt(bool hit, const QVector3D& point) {
     if (!isPlacing())
-        return;
+        return false;
     const int index = currentIndex();
     const auto results = m_session.results();
     if (index < 0)
-        return;
+        return false;
     if (!results || !m_session.isCurrent(generate::Stage::Organ)) {
         showMessage(tr("The organ is still being built: click again once it is shown."));
-        return;
+        return false;
     }
     if (!hit) {
         showMessage(tr("Nothing placed: the click missed the organ. Click on its wall."));
-        return;
+        return false;
     }
     const PathologySpec& spec = m_document.spec().pathologies[static_cast<std::size_t>(index)];
     auto seat = pathology::seatAt(results->organ->mesh, Vec3{point.x(), point.y(), point.z()}, spec.kind);
@@ -433,11 +442,11 @@ void PathologyPanel::placeAt(bool hit, const QVector3D& point) {
                             : tr("Nothing placed: the click is not on the organ's wall."));
             break;
         }
-        return;
+        return false;
     }
     const clinical::SurfacePlacement placement = *seat;
     editCurrent(tr("Place on wall"), [placement](PathologySpec& p) { p.placement = placement; });
-    setPlacing(false);
+    return true;
 }
 
 void PathologyPanel::showMessage(const QString& text) {

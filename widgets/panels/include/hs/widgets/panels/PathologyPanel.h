@@ -49,8 +49,12 @@ public:
     void resizeCurrent(double sizeMm);
 
 public slots:
-    /// A click in the 3-D view while placing: `hit` false when it missed every surface; `point` in mm.
+    /// A click in the 3-D view while placing: `hit` false when it missed every surface; `point` in mm. Seats the
+    /// pathology there and ends placing.
     void placeAt(bool hit, const QVector3D& point);
+    /// The seat handle dropped at `point` (mm) while placing: seats the pathology there as a click does, and placing
+    /// goes on (the handles stay for the next adjustment, as after the size handle).
+    void moveSeat(const QVector3D& point);
 
 signals:
     /// Placing by a click starts (the view shows the organ to click on) or ends.
@@ -76,6 +80,8 @@ private:
     void duplicateCurrent();
     void removeCurrent();
     void showMessage(const QString& text);
+    /// Seats the current pathology where a click or a drop landed; false (with the reason shown) when it cannot.
+    bool seatAt(bool hit, const QVector3D& point);
 
     CaseDocument& m_document;
     GenerationSession& m_session;
