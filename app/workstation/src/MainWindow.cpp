@@ -385,6 +385,11 @@ void MainWindow::createPanels() {
     // Below them the scene tree: what the 3-D view shows, part by part.
     m_sceneTree = new widgets::SceneTree(this);
     m_sceneTree->setParts(m_parts.get());
+    // The tissue mesh is drawn when first shown: the Mesh panel then colours it and hides its regions as set.
+    m_parts->setOnBuilt([this](const std::string& key) {
+        if (key == "tissues")
+            m_meshPanel->applyToDisplay();
+    });
     m_sceneTree->setCurrentCheck([this](generate::Stage stage) { return m_session.isCurrent(stage); });
     QDockWidget* sceneDock = addPanel(m_sceneTree, tr("Scene"), "sceneDock", Qt::LeftDockWidgetArea);
     splitDockWidget(patient, sceneDock, Qt::Vertical); // before the tabs: a tabbed dock cannot be split

@@ -82,6 +82,10 @@ HysteroscopicPreview::HysteroscopicPreview(QWidget* parent) : QWidget(parent) {
 HysteroscopicPreview::~HysteroscopicPreview() = default;
 
 void HysteroscopicPreview::setScene(std::shared_ptr<const scene::Scene> scene) {
+    if (scene && scene.get() == m_scene.get()) {
+        m_scene = std::move(scene); // the same scene (its owner may differ): nothing to draw anew
+        return;
+    }
     m_scene = std::move(scene);
     m_landmarks.reset();
     if (!m_scene) {

@@ -14,9 +14,11 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -77,8 +79,11 @@ public:
     bool isShown(const std::string& key) const;
     void setOpacity(const std::string& key, double opacity);
     double opacity(const std::string& key) const;
-    /// The display of a part with an actor of its own (nullptr for groups and tissue regions).
+    /// The display of a part with an actor of its own (nullptr for groups, tissue regions and a part not shown yet:
+    /// a part is drawn when it is first shown).
     MeshDisplay* display(const std::string& key) const;
+    /// Called when a part has been drawn (the tissue mesh: the Mesh panel colours it).
+    void setOnBuilt(std::function<void(const std::string& key)> onBuilt) { m_onBuilt = std::move(onBuilt); }
 
     /// The pathology a pick landed on: `prop` the picked actor, `region` the "region" of its picked cell (-1: none).
     /// -1 when the pick is on no pathology.
@@ -96,21 +101,32 @@ public:
     MeshDisplay& reference() const;
 
 private:
-    MeshDisplay& addDisplay(const std::string& key);
     void build(const generate::Generated& results);
+    /// Draws part `key` when it has not been drawn from the current results.
+    void ensureBuilt(const std::string& key);
     ResultLayer showLayer(ResultLayer layer);
     void updateHighlight();
 
     vtkRenderer* m_renderer;
     MeshDisplay& m_tissues;
     std::vector<ScenePart> m_parts;
-    std::weak_ptr<const generate::Generated> m_built; ///< the results the parts were built from
+    std::shared_ptr<const generate::Generated> m_built; ///< the results the parts come from (drawn when shown)
+    struct Fill {
+        std::function<void(MeshDisplay&)> fill; ///< draws the part; null for groups and tissue regions
+        Bounds bounds;                          ///< of its mesh (a tissue region's tets), for the selection's box
+    };
+    std::map<std::string, Fill> m_fills;
+    std::set<std::string> m_builtKeys; ///< parts drawn from m_built
+    bool m_tissuesBuilt = false;
+    std::map<std::string, bool> m_shownState; ///< each part's visibility, kept while the same layer is shown
+    std::function<void(const std::string&)> m_onBuilt;
+    Vec3 m_clipOrigin;
+    Vec3 m_clipNormal{1.0, 0.0, 0.0};
+    bool m_clipPlaneSet = false;
     std::map<std::string, std::unique_ptr<MeshDisplay>> m_displays;
     std::map<std::string, double> m_opacity; ///< what the user set, by key
-    std::map<std::string, bool> m_userShown; ///< each part's visibility, kept while the same layer is shown
     ResultLayer m_layer = ResultLayer::None; ///< the layer last shown
     bool m_clipEnabled = false;
-    std::optional<std::pair<Vec3, Vec3>> m_clipPlane;
     int m_highlighted = -1;
     vtkSmartPointer<vtkActor> m_outline;
 };
