@@ -11,6 +11,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QGridLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -147,11 +148,12 @@ void PathologyPanel::buildList() {
     m_duplicateButton->setToolTip(tr("Copy the selected pathology to a free wall"));
     m_removeButton = new QPushButton(tr("&Remove"), this);
     m_removeButton->setObjectName("removeButton");
-    auto* buttons = new QHBoxLayout;
-    buttons->addWidget(m_addMyomaButton);
-    buttons->addWidget(m_addPolypButton);
-    buttons->addWidget(m_duplicateButton);
-    buttons->addWidget(m_removeButton);
+    // Two rows of two: the panel fits a side dock on a small screen in every language.
+    auto* buttons = new QGridLayout;
+    buttons->addWidget(m_addMyomaButton, 0, 0);
+    buttons->addWidget(m_addPolypButton, 0, 1);
+    buttons->addWidget(m_duplicateButton, 1, 0);
+    buttons->addWidget(m_removeButton, 1, 1);
     layout()->addWidget(m_list);
     static_cast<QVBoxLayout*>(layout())->addLayout(buttons);
 }
