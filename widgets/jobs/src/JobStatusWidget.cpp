@@ -70,6 +70,9 @@ JobStatusWidget::JobStatusWidget(JobRunner& runner, QWidget* parent) : QWidget(p
     setObjectName("jobStatus");
     m_titleLabel = new QLabel(this);
     m_titleLabel->setObjectName("jobTitleLabel");
+    // Its width does not follow the step's name: a new step relays out nothing but the label.
+    m_titleLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    m_titleLabel->setMinimumWidth(m_titleLabel->fontMetrics().averageCharWidth() * 40);
     m_progressBar = new QProgressBar(this);
     m_progressBar->setObjectName("jobProgressBar");
     m_progressBar->setRange(0, JobRunner::kProgressSteps);
@@ -105,7 +108,9 @@ void JobStatusWidget::onProgress(double fraction, const QString& stageKey) {
     m_progressBar->setValue(static_cast<int>(fraction * JobRunner::kProgressSteps));
     // The pipeline's step ("meshing.relax") in the user's words beside the job's title; the key in the tooltip.
     const QString step = stepName(stageKey);
-    m_titleLabel->setText(step.isEmpty() ? m_title : tr("%1: %2").arg(m_title, step));
+    const QString text = step.isEmpty() ? m_title : tr("%1: %2").arg(m_title, step);
+    if (text != m_titleLabel->text()) // a step's many reports change nothing on the screen
+        m_titleLabel->setText(text);
     m_progressBar->setToolTip(stageKey);
 }
 
