@@ -83,6 +83,7 @@ private slots:
     void autosaveIsOfferedBackAfterACrash();
     void aDropOpensACaseOrAMeshAndSaysWhyItRefusesAnythingElse();
     void aCaseChangedOnDiskIsOfferedToReloadAndOurOwnSaveIsNot();
+    void theHysteroscopicViewDetachesAndEnlarges();
     void nothingIsCutOffOnASmallScreen_data();
     void nothingIsCutOffOnASmallScreen();
 
@@ -666,6 +667,19 @@ void TestMainWindow::aCaseChangedOnDiskIsOfferedToReloadAndOurOwnSaveIsNot() {
     QVERIFY2(asked.front().text.contains("unsaved"), qPrintable(asked.front().text));
     QCOMPARE(m_window->document().spec().seed, std::uint64_t{24});
     QVERIFY(m_window->isWindowModified());
+}
+
+void TestMainWindow::theHysteroscopicViewDetachesAndEnlarges() {
+    // Its dock floats off the window (its title bar's button) and is then as large as the user makes it.
+    auto* dock = find<QDockWidget>("previewDock");
+    QVERIFY(dock->features().testFlag(QDockWidget::DockWidgetFloatable));
+    const int docked = dock->widget()->width();
+    dock->setFloating(true);
+    dock->resize(900, 800);
+    QTRY_VERIFY(dock->isFloating() && dock->isVisible());
+    QTRY_VERIFY2(dock->widget()->width() > std::max(docked, 800), qPrintable(QString::number(dock->widget()->width())));
+    dock->setFloating(false);
+    QTRY_VERIFY(!dock->isFloating());
 }
 
 void TestMainWindow::nothingIsCutOffOnASmallScreen_data() {
