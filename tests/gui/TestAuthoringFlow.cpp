@@ -41,6 +41,7 @@
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolButton>
@@ -379,6 +380,19 @@ void TestAuthoringFlow::authorsTheDefaultCaseFromNewToAValidatedPackage() {
     QVERIFY(runStage("textureButton"));
     QVERIFY(m_window->shownLayer() == hs::widgets::ResultLayer::Textured);
     QVERIFY(m_window->preview()->hasScene());
+    // The textured surface is shown (the status bar counts its triangles), the mesh not drawn; a worst tet chosen in
+    // the Mesh panel shows the mesh with it.
+    QVERIFY2(find<QLabel>("countsLabel")->text().contains("Triangles"),
+             qPrintable(find<QLabel>("countsLabel")->text()));
+    QVERIFY(!m_window->display().isShown());
+    auto* worst = find<QTableWidget>("worstTetTable");
+    QTRY_VERIFY_WITH_TIMEOUT(worst->rowCount() > 0, 20000);
+    worst->setCurrentCell(0, 0);
+    find<QPushButton>("showTetButton")->click();
+    QVERIFY(m_window->display().isShown() && m_window->display().isTetMesh());
+    QCOMPARE(tree->itemOf("tissues")->checkState(0), Qt::Checked);
+    tree->itemOf("tissues")->setCheckState(0, Qt::Unchecked);
+    find<QAction>("actionResetCamera")->trigger(); // the tet was framed: back to the whole organ
     m_window->preview()->setInsertion(25.0);
     shot("workstation-texture", "textureDock");
     shot("workstation-materials", "materialsDock");

@@ -20,6 +20,7 @@
 #include <QFileInfo>
 #include <QHeaderView>
 #include <QLabel>
+#include <QListWidget>
 #include <QLocale>
 #include <QMenu>
 #include <QMimeData>
@@ -694,6 +695,11 @@ void TestMainWindow::nothingIsCutOffOnASmallScreen() {
     // keeps a usable width.
     QFETCH(QSize, size);
     QFETCH(int, viewWidth);
+    // The widest content the panels get: a pathology seated at a point (its coordinates beside the radio button).
+    m_window->document().edit("Place", [](hs::scene::CaseSpec& c) {
+        c.pathologies.front().placement = hs::clinical::SurfacePlacement{{-10.8, 16.0, 39.6}, {0.0, 1.0, 0.0}};
+    });
+    find<QWidget>("pathologyPanel")->findChild<QListWidget*>()->setCurrentRow(0);
     m_window->resize(size);
     QTRY_COMPARE(m_window->size(), size);
     const QStringList clipped = hs::test::clippedParts(m_window.get());

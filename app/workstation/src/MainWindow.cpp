@@ -448,9 +448,14 @@ void MainWindow::createPanels() {
     connect(m_sceneTree, &widgets::SceneTree::visibilityChanged, this, [this] {
         m_meshPanel->syncRegionChecks();
         syncClipPlane();
+        updateStatus(); // the counts of what is shown now
     });
     connect(m_sceneTree, &widgets::SceneTree::displayChanged, m_view, &widgets::VtkView::requestRender);
     connect(m_meshPanel, &widgets::MeshPanel::displayChanged, m_sceneTree, &widgets::SceneTree::refreshChecks);
+    connect(m_meshPanel, &widgets::MeshPanel::meshWanted, this, [this] {
+        m_parts->setShown("tissues", true); // drawn now if it was not (the Mesh panel then colours it)
+        m_sceneTree->refreshChecks();
+    });
     connect(m_texturePanel, &widgets::TexturePanel::exemplarBrowseRequested, this, [this](int index) {
         const QString path = FileDialog::getOpenFileName(this, tr("Exemplar Image"), m_lastFolder,
                                                          tr("Images (*.png *.jpg *.jpeg *.exr *.tif *.tiff)") +

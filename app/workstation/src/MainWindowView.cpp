@@ -174,18 +174,20 @@ QString MainWindow::layerName(widgets::ResultLayer layer) {
 }
 
 void MainWindow::updateStatus() {
-    if (m_display->isEmpty()) {
+    // The counts of what the view shows: the first part shown of the results, else the mesh file or package.
+    const widgets::MeshDisplay& shown = m_parts->reference();
+    if (shown.isEmpty()) {
         m_countsLabel->setText(tr("No mesh"));
         m_fileLabel->clear();
         return;
     }
-    const widgets::MeshCounts& counts = m_display->counts();
+    const widgets::MeshCounts& counts = shown.counts();
     QString text;
-    if (m_display->isTetMesh()) {
+    if (shown.isTetMesh()) {
         text = tr("Vertices: %1   Tetrahedra: %2   Regions: %3")
                    .arg(formatCount(counts.vertices), formatCount(counts.tets), formatCount(counts.regions));
-        if (m_display->clipEnabled())
-            text += QStringLiteral("   ") + tr("Shown: %1").arg(formatCount(m_display->visibleCellCount()));
+        if (shown.clipEnabled())
+            text += QStringLiteral("   ") + tr("Shown: %1").arg(formatCount(shown.visibleCellCount()));
     } else {
         text = tr("Vertices: %1   Triangles: %2   Regions: %3")
                    .arg(formatCount(counts.vertices), formatCount(counts.triangles), formatCount(counts.regions));

@@ -409,6 +409,10 @@ void MeshPanel::applyToDisplay() {
 void MeshPanel::showWorstTet(int row) {
     if (!m_display || !m_view || row < 0 || row >= static_cast<int>(m_worst.size()))
         return;
+    // The tet is outlined in the mesh: the view shows the mesh first when it shows another part (the textured
+    // surface, after Texture).
+    if (!m_display->isTetMesh() || !m_display->isShown())
+        emit meshWanted();
     const std::array<double, 6> box =
         m_display->highlightTet(static_cast<std::int64_t>(m_worst[static_cast<std::size_t>(row)]));
     // Frame the tet with room around it: ten times its size, at least 5 mm.

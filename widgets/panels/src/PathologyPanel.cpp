@@ -231,6 +231,7 @@ void PathologyPanel::buildEditor() {
     m_pointRadio->setObjectName("pointRadio");
     m_pointLabel = new QLabel(group);
     m_pointLabel->setObjectName("pointLabel");
+    m_pointLabel->setWordWrap(true); // the seat's coordinates wrap rather than widen the panel
     m_placeButton = new QToolButton(group);
     m_placeButton->setObjectName("placeButton");
     m_placeButton->setText(tr("Click on Wall"));

@@ -51,6 +51,8 @@ public:
 signals:
     /// The inspector changed what the 3-D view shows (colours, hidden regions, outline).
     void displayChanged();
+    /// The inspector needs the mesh in the 3-D view (a worst tet to outline while another part is shown).
+    void meshWanted();
 
 private:
     void buildParameters();
