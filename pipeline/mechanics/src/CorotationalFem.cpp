@@ -111,6 +111,7 @@ Status CorotationalFem::build(const std::vector<Vec3>& pointsM, const std::vecto
     m_mass.assign(n, 0.0);
     m_dmInv.resize(tets.size());
     m_volume.resize(tets.size());
+    m_restDet.resize(tets.size());
     m_mu.resize(tets.size());
     m_lambda.resize(tets.size());
     m_rotation.assign(tets.size(), {1.0, 0.0, 0.0, 0.0});
@@ -131,6 +132,7 @@ Status CorotationalFem::build(const std::vector<Vec3>& pointsM, const std::vecto
         if (!invert(dm, m_dmInv[t], det) || std::abs(det) < 1e-24)
             return fail(ErrorCode::InvalidInput, "tissue solver: tet " + std::to_string(t) + " is flat");
         m_volume[t] = std::abs(det) / 6.0;
+        m_restDet[t] = det;
         m_mu[t] = m.youngsModulusPa / (2.0 * (1.0 + m.poissonRatio));
         m_lambda[t] = m.youngsModulusPa * m.poissonRatio / ((1.0 + m.poissonRatio) * (1.0 - 2.0 * m.poissonRatio));
         for (const std::int32_t p : tet)
@@ -763,20 +765,59 @@ void CorotationalFem::surfaceResponse(const std::vector<std::pair<std::int32_t, 
     }
 }
 
-void CorotationalFem::solveContacts(std::vector<FemConstraint>& rows, const ObstacleCompliance& obstacle,
-                                    const std::vector<double>& gap, std::vector<double>& lambda) {
+void CorotationalFem::solveContacts(std::vector<FemConstraint>& rows, std::size_t external,
+                                    const ObstacleCompliance& obstacle, const std::vector<double>& gap,
+                                    std::vector<double>& lambda) {
     const auto started = Clock::now();
     const std::size_t k = rows.size();
-    complianceBetween(rows, m_lastW);
-    std::vector<double> w = m_lastW;
-    if (obstacle.matrix.size() == k * k)
-        for (std::size_t i = 0; i < k * k; ++i)
-            w[i] += std::isfinite(obstacle.matrix[i]) ? obstacle.matrix[i] : 0.0;
+    std::vector<double> w;
+    complianceBetween(rows, w);
+    // The caller's rows' own block is what the haptics renders between steps.
+    m_lastW.assign(external * external, 0.0);
+    for (std::size_t i = 0; i < external; ++i)
+        for (std::size_t j = 0; j < external; ++j)
+            m_lastW[i * external + j] = w[i * k + j];
+    // The obstacles' compliance is between the caller's rows (the volume rows touch no obstacle).
+    if (obstacle.matrix.size() == external * external)
+        for (std::size_t i = 0; i < external; ++i)
+            for (std::size_t j = 0; j < external; ++j) {
+                const double o = obstacle.matrix[i * external + j];
+                w[i * k + j] += std::isfinite(o) ? o : 0.0;
+            }
     for (std::size_t i = 0; i < k; ++i)
         w[i * k + i] += std::max(0.0, rows[i].selfCompliance);
     lambda.assign(k, 0.0);
     solveComplementarity(w, gap, m_settings.maxConstraintForce, m_settings.contactSweeps, lambda);
     m_timings.contactsMs += msSince(started);
+}
+
+void CorotationalFem::volumeRows(const std::vector<Vec3>& x, std::vector<FemConstraint>& rows) const {
+    const double bound = m_settings.minVolumeRatio;
+    if (!(bound > 0.0))
+        return;
+    const double guard = bound + std::max(0.0, m_settings.volumeGuardBand);
+    for (std::size_t t = 0; t < m_tets.size(); ++t) {
+        if (m_removed[t])
+            continue;
+        const Tet& tet = m_tets[t];
+        const auto p = [&tet](std::size_t k) { return static_cast<std::size_t>(tet[k]); };
+        const Vec3 e1 = x[p(1)] - x[p(0)], e2 = x[p(2)] - x[p(0)], e3 = x[p(3)] - x[p(0)];
+        const double ratio = dot(e1, cross(e2, e3)) / m_restDet[t];
+        if (!(ratio < guard) || !std::isfinite(ratio))
+            continue;
+        // C = L (det / det0 - bound) >= 0, a length (L the tet's size), so its force is in newtons like a contact's.
+        const double length = std::cbrt(m_volume[t]);
+        const double scale = length / m_restDet[t];
+        FemConstraint row;
+        row.points = {tet[0], tet[1], tet[2], tet[3]};
+        const Vec3 g1 = cross(e2, e3) * scale, g2 = cross(e3, e1) * scale, g3 = cross(e1, e2) * scale;
+        row.gradient = {(g1 + g2 + g3) * -1.0, g1, g2, g3};
+        double offset = length * (ratio - bound);
+        for (std::size_t a = 0; a < 4; ++a)
+            offset -= dot(row.gradient[a], x[p(a)]);
+        row.offset = offset;
+        rows.push_back(std::move(row));
+    }
 }
 
 void solveComplementarity(const std::vector<double>& w, const std::vector<double>& gap, double maxForce, int sweeps,
@@ -831,6 +872,8 @@ void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector
                 x[i][d] = m_target[i][d];
     }
     std::vector<double> rhs(3 * n), lambda, gap;
+    std::vector<FemConstraint> rows;
+    m_lastVolumeRows = 0;
     std::vector<std::pair<std::int32_t, Vec3>> change;
     std::vector<Vec3> response;
     // The residual at positions y (into rhs as -r, free dofs), its norm.
@@ -874,10 +917,15 @@ void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector
         }
         m_stepLength = length;
         x = trial;
-        if (contacts.empty() && m_forcedPoints.empty())
+        // The caller's rows, then the volume rows of the tets near their bound after this free motion.
+        rows.resize(contacts.size());
+        std::copy(contacts.begin(), contacts.end(), rows.begin());
+        volumeRows(x, rows);
+        m_lastVolumeRows = rows.size() - contacts.size();
+        if (rows.empty() && m_forcedPoints.empty())
             continue;
         // The constraints' forces lambda (total): the gaps after the free motion, less what the last forces did in it.
-        const bool surface = onPrecomputedSurface(contacts);
+        const bool surface = onPrecomputedSurface(rows);
         std::vector<double> lastResponse; // full-path: H^-1 f_last on every dof
         if (surface) {
             change.clear();
@@ -892,9 +940,9 @@ void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector
                         m_constraintForce[static_cast<std::size_t>(p)][d];
             solveWarped(lastResponse);
         }
-        gap.assign(contacts.size(), 0.0);
-        for (std::size_t c = 0; c < contacts.size(); ++c) {
-            const FemConstraint& row = contacts[c];
+        gap.assign(rows.size(), 0.0);
+        for (std::size_t c = 0; c < rows.size(); ++c) {
+            const FemConstraint& row = rows[c];
             double g = row.offset;
             for (std::size_t a = 0; a < row.points.size(); ++a) {
                 const auto p = static_cast<std::size_t>(row.points[a]);
@@ -907,19 +955,19 @@ void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector
             }
             gap[c] = g;
         }
-        solveContacts(contacts, obstacle, gap, lambda);
+        solveContacts(rows, contacts.size(), obstacle, gap, lambda);
         // The correction: the new forces less the last, on the surface through the precomputed compliance (the
         // interior follows in the next step's free motion), or on every dof by a solve.
         std::vector<Vec3> next(n, Vec3{});
         std::vector<std::int32_t> nextPoints;
-        for (std::size_t c = 0; c < contacts.size(); ++c) {
+        for (std::size_t c = 0; c < rows.size(); ++c) {
             if (lambda[c] <= 0.0)
                 continue;
-            for (std::size_t a = 0; a < contacts[c].points.size(); ++a) {
-                const auto p = static_cast<std::size_t>(contacts[c].points[a]);
+            for (std::size_t a = 0; a < rows[c].points.size(); ++a) {
+                const auto p = static_cast<std::size_t>(rows[c].points[a]);
                 if (next[p] == Vec3{})
-                    nextPoints.push_back(contacts[c].points[a]);
-                next[p] += contacts[c].gradient[a] * lambda[c];
+                    nextPoints.push_back(rows[c].points[a]);
+                next[p] += rows[c].gradient[a] * lambda[c];
             }
         }
         change.clear();

@@ -284,6 +284,61 @@ TEST(Mechanics, StiffeningTissueIsLinearWhenBarelyStrainedAndStifferWhenPressedF
     EXPECT_NEAR(refactored, deepStiff, 0.01 * deepStiff);
 }
 
+/// One top point of the block pushed `depthMm` down by a contact with a plane, at the simulation's settings (5 ms
+/// steps, one chord iteration, no line search); the smallest volume ratio over the push (and the count of inverted
+/// tets at that moment), the contact's force at the end.
+struct PointPush {
+    double minRatio = 1.0;
+    std::size_t inverted = 0;
+    double forceN = 0.0;
+};
+
+PointPush pushPoint(const Block& block, double depthMm, double minVolumeRatio) {
+    const std::vector<FemMaterial> materials(block.tets.size(), FemMaterial{30e3, 0.47, 1050.0, 0.104});
+    FemSettings settings;
+    settings.iterations = 1;
+    settings.lineSearch = false;
+    settings.minVolumeRatio = minVolumeRatio;
+    CorotationalFem fem;
+    EXPECT_TRUE(fem.build(block.points, block.tets, materials, block.fixed, {}, settings));
+    const std::int32_t p = block.at(5, 5, 5);
+    PointPush out;
+    std::vector<FemConstraint> contacts;
+    for (int s = 0; s < 200; ++s) {
+        // In at 20 mm/s, then held.
+        const double depth = std::min(depthMm, 0.1 * (s + 1)) * 1e-3;
+        contacts = {contactRow({p, p, p}, {1.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, {0.0, 0.0, -depth})};
+        fem.step({}, contacts);
+        std::size_t inverted = 0;
+        const double ratio = fem.minVolumeRatio(inverted);
+        if (ratio < out.minRatio) {
+            out.minRatio = ratio;
+            out.inverted = inverted;
+        }
+    }
+    out.forceN = contacts[0].force;
+    return out;
+}
+
+TEST(Mechanics, APointPushedDeepLeavesNoTetBelowTheVolumeBound) {
+    // A scope's tip on one node of a coarse mesh: the node pushed 6 mm into a block of 2 mm tets. Without the bound the
+    // nodal-averaged pressure lets the tets under the node collapse and invert; with it no tet falls below the bound
+    // (within the linearization of a step), the push spreads to the neighbours and the force rises accordingly.
+    const Block block = makeBlock();
+    const PointPush free = pushPoint(block, 6.0, 0.0);
+    const PointPush bounded = pushPoint(block, 6.0, 0.2);
+    std::printf("6 mm on a node: no bound min ratio %.3f (%zu inverted), %.3f N; bound 0.2: min ratio %.3f (%zu "
+                "inverted), %.3f N\n",
+                free.minRatio, free.inverted, free.forceN, bounded.minRatio, bounded.inverted, bounded.forceN);
+    EXPECT_LT(free.minRatio, 0.0);
+    EXPECT_EQ(bounded.inverted, 0u);
+    EXPECT_GT(bounded.minRatio, 0.15);
+    EXPECT_GT(bounded.forceN, free.forceN);
+    // A small push never reaches the bound's band: the same force as without it.
+    const PointPush smallFree = pushPoint(block, 0.3, 0.0), smallBounded = pushPoint(block, 0.3, 0.2);
+    EXPECT_EQ(smallBounded.forceN, smallFree.forceN);
+}
+
 TEST(Mechanics, OneOrTwoThreadsGiveTheSameBits) {
     const Block block = makeBlock();
     const std::vector<FemMaterial> materials(block.tets.size(), FemMaterial{30e3, 0.47, 1050.0, 0.104});

@@ -79,6 +79,15 @@ struct FemSettings {
     int threads = 2;
     /// Evaluate the residual at the end of each step (reactionN, residualN): one more force evaluation per step.
     bool endResidual = true;
+    /// No tet's volume falls below this share of its rest volume (0: no such bound). Tissue is nearly incompressible
+    /// (Poisson ratio 0.45-0.49), but the nodal-averaged pressure above lets a single tet lose its volume at little
+    /// cost (the average nodal pressure tet's spurious modes), so a load concentrated on a point of a coarse mesh (a
+    /// scope's tip on a node) can push that point through the tets behind it. Each tet that comes within
+    /// `volumeGuardBand` of the bound is a unilateral constraint row (its volume ratio >= the bound), solved with the
+    /// contacts by the same complementarity problem: it carries what the collapsing tet cannot, so the load spreads
+    /// to its neighbours as an incompressible material's would. Rows on interior points cost a solve each.
+    double minVolumeRatio = 0.0;
+    double volumeGuardBand = 0.25;
 };
 
 /// A unilateral constraint, linear in the points: C(x) = offset + sum_k gradient[k] . x[points[k]] >= 0, with a
@@ -184,6 +193,8 @@ public:
     /// The compliance W = J H^-1 J^T of the last step's constraints (row-major k x k): the solver's own give at the
     /// contacts, which the haptics loop renders between steps.
     const std::vector<double>& lastContactCompliance() const { return m_lastW; }
+    /// The volume rows (FemSettings::minVolumeRatio) the last step's last iteration solved.
+    std::size_t lastVolumeRows() const { return m_lastVolumeRows; }
 
     /// Elastic energy of the corotated linear material (J), the smallest tet volume ratio (<= 0: inverted) with the
     /// count of inverted tets, the largest speed (m/s): the stability checks.
@@ -209,8 +220,10 @@ private:
     std::array<double, 9> corotatedStretch(std::size_t t, int iterations) const;
     /// H^-1 column for dof (cached when precomputed).
     void complianceBetween(const std::vector<FemConstraint>& rows, std::vector<double>& w);
-    void solveContacts(std::vector<FemConstraint>& rows, const ObstacleCompliance& obstacle,
+    void solveContacts(std::vector<FemConstraint>& rows, std::size_t external, const ObstacleCompliance& obstacle,
                        const std::vector<double>& gap, std::vector<double>& lambda);
+    /// The volume rows (settings.minVolumeRatio) of the tets within the guard band of the bound at positions x.
+    void volumeRows(const std::vector<Vec3>& x, std::vector<FemConstraint>& rows) const;
     bool onPrecomputedSurface(const std::vector<FemConstraint>& rows) const;
     bool held(std::size_t point) const;
     /// R S R^T f on the precomputed points for forces f on some of them.
@@ -230,6 +243,7 @@ private:
     std::vector<char> m_removed;
     std::vector<std::array<double, 9>> m_dmInv; ///< inverse rest shape matrix, row-major
     std::vector<double> m_volume;               ///< m^3 at rest
+    std::vector<double> m_restDet;              ///< det of the rest shape matrix (6 V, with the tet's orientation)
     std::vector<double> m_mu, m_lambda;         ///< Pa
     std::vector<double> m_pointVolume;          ///< m^3, a quarter of each tet round a point
     std::vector<double> m_pointBulk;            ///< Pa, the bulk modulus averaged over a point's tets by volume
@@ -252,6 +266,7 @@ private:
     std::vector<double> m_compliance;         ///< (3 m) x (3 m), row-major
     std::size_t m_compliantCount = 0;
     std::vector<double> m_lastW;
+    std::size_t m_lastVolumeRows = 0;
     double m_residualNorm = 0.0;
     double m_stepLength = 1.0; ///< the line search's last step length
     mutable FemStepTimings m_timings;
