@@ -136,9 +136,12 @@ int main(int argc, char** argv) {
             }
         }
         // The canal as an obstacle: entries along the canal's clearest line and off it, each on a fresh world.
-        std::printf("| entry | peak force N | held force N | scope tip off the device's mm | fundus moved mm | "
-                    "internal os moved mm | "
-                    "perforations | inverted tets max | energy max J |\n|---|---|---|---|---|---|---|---|---|\n");
+        std::printf(
+            "| entry | peak force N | held force N | scope tip off the device's mm | fundus moved mm | "
+            "internal os moved mm | fundus off the axial entry's mm | internal os off the axial entry's mm | "
+            "perforations | inverted tets max | energy max J |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+        // The axial entry's fundus and internal os, step by step: an entry off the axis deflects the uterus from them.
+        std::vector<hs::Vec3> axialFundus, axialOs;
         for (const auto& [off, toward] : std::vector<std::pair<double, double>>{
                  {0.0, 0.0}, {15.0, 0.0}, {30.0, 0.0}, {30.0, 90.0}, {30.0, 180.0}, {30.0, 270.0}}) {
             auto fresh = hs::sim::World::load(package, options);
@@ -159,7 +162,8 @@ int main(int argc, char** argv) {
                     hs::distance(e.simulationPointsMm()[os], e.landmarks().internalOsMm))
                     os = i;
             const hs::Vec3 osBefore = e.simulationPointsMm()[os];
-            double osMoved = 0.0;
+            double osMoved = 0.0, fundusOff = 0.0, osOff = 0.0;
+            const bool axial = off == 0.0;
             double peak = 0.0, held = 0.0, offTip = 0.0, moved = 0.0, energy = 0.0;
             std::size_t inverted = 0;
             const std::uint64_t ticks = entry.tickCount();
@@ -178,6 +182,13 @@ int main(int argc, char** argv) {
                     hs::distance(st.scope.tipMm, hs::sim::scopePose(e.frame(), options.scope, batch[tpb - 1]).tipMm);
                 moved = std::max(moved, hs::distance(e.simulationPointsMm()[nearest], fundusBefore));
                 osMoved = std::max(osMoved, hs::distance(e.simulationPointsMm()[os], osBefore));
+                if (axial) {
+                    axialFundus.push_back(e.simulationPointsMm()[nearest]);
+                    axialOs.push_back(e.simulationPointsMm()[os]);
+                } else if (s < axialFundus.size()) {
+                    fundusOff = std::max(fundusOff, hs::distance(e.simulationPointsMm()[nearest], axialFundus[s]));
+                    osOff = std::max(osOff, hs::distance(e.simulationPointsMm()[os], axialOs[s]));
+                }
                 const hs::sim::World::Health h = e.health();
                 inverted = std::max(inverted, h.invertedTets);
                 energy = std::max(energy, h.elasticEnergyJ);
@@ -188,8 +199,9 @@ int main(int argc, char** argv) {
                                 offTip, st.contact.forceN, st.contact.tipForceN, h.invertedTets, h.elasticEnergyJ);
             }
             std::printf(
-                "| %.0f deg off, towards %.0f deg | %.3f | %.3f | %.1f | %.2f | %.2f | %zu%s | %zu | %.4f |\n", off,
-                toward, peak, held, offTip, moved, osMoved, e.metrics().perforations.size(),
+                "| %.0f deg off, towards %.0f deg | %.3f | %.3f | %.1f | %.2f | %.2f | %.2f | %.2f | %zu%s | %zu | "
+                "%.4f |\n",
+                off, toward, peak, held, offTip, moved, osMoved, fundusOff, osOff, e.metrics().perforations.size(),
                 !e.metrics().perforations.empty() && e.metrics().perforations[0].falsePassage ? " (false passage)" : "",
                 inverted, energy);
         }

@@ -115,16 +115,23 @@ Status buildUterusModel(const scene::Scene& scene, const FemSettings& settings, 
     // The held cervix: its vaginal part (the portio, gripped by the vagina and the tenaculum) is fixed; the rest of it
     // up to the internal os hangs in the cardinal and uterosacral ligaments, stiff springs that let the corpus tilt
     // when the scope pushes it.
+    // The portio is held by its outer surface (the vagina's grip): its canal's lining and its stroma are free, so the
+    // sheath dilates the canal and an entry off the canal's axis meets the cervix's tissue.
+    std::vector<char> outer(n, 0);
+    for (std::size_t f = 0; f < out.boundary.size(); ++f)
+        if (!out.faceCavity[f])
+            for (const std::int32_t v : out.boundary[f])
+                outer[static_cast<std::size_t>(v)] = 1;
     std::vector<std::array<bool, 3>> fixed(n, {false, false, false});
     std::vector<bool> ligament(n, false);
     for (std::size_t t = 0; t < mesh.tetCount(); ++t)
         if (supportIds->second[t] == 1)
             for (const std::int32_t p : mesh.tets[t]) {
                 const auto pi = static_cast<std::size_t>(p);
-                if (dot(mesh.points[pi] - out.externalOsMm, axis) < kHeldPortioMm)
-                    fixed[pi] = {true, true, true};
-                else
+                if (dot(mesh.points[pi] - out.externalOsMm, axis) >= kHeldPortioMm)
                     ligament[pi] = true;
+                else if (outer[pi])
+                    fixed[pi] = {true, true, true};
             }
     out.pointHeld.assign(n, 0);
     for (std::size_t i = 0; i < n; ++i)

@@ -86,11 +86,6 @@ void World::Impl::physics(const DeviceSample& device, double pressureKpa) {
         // Through a perforation the scope meets no wall beyond the hole.
         if (perforation && dot(c - perforation->locationMm, poseFrom.shaft) > -2.0 * radius)
             continue;
-        // The cervical canal closes round the sheath (it is dilated to it): the shaft meets the wall only beyond the
-        // internal os, the tip everywhere. (The canal as an obstacle to the shaft needs a canal lining that dilates
-        // in the solver; docs/simulator.md, "What is not modelled yet".)
-        if (back > 0.0 && dot(c - landmarks.internalOsMm, frame.axis) < kCanalContactFreeMm)
-            continue;
         std::array<Vec3, 3> dc;
         for (std::size_t d = 0; d < 3; ++d)
             dc[d] = (nudged[d].tipMm - nudged[d].shaft * back - c) / kEpsilon;
@@ -131,6 +126,9 @@ void World::Impl::physics(const DeviceSample& device, double pressureKpa) {
                 k.scopeGradient[j] = dot(n, dc[j]) * kMm;
             k.row =
                 mechanics::contactRow({tri[0], tri[1], tri[2]}, {cp.wa, cp.wb, cp.wc}, n, (centre - n * radius) * kMm);
+            // Inside the wall already: out by at most kMaxDepenetrationMm this step.
+            if (gap < -kMaxDepenetrationMm)
+                k.row.offset += (-kMaxDepenetrationMm - gap) * kMm;
             candidates.push_back(std::move(k));
         }
     }

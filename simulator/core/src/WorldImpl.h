@@ -30,14 +30,20 @@ constexpr double kMm = 1e-3;
 constexpr double kPerforationForceN = 5.0;
 /// ... held this long, s: the wall gives way under a sustained push, not a tap.
 constexpr double kPerforationHoldS = 0.3;
-/// The shaft's spheres up to this far beyond the internal os (along the canal) do not collide: the canal wraps the
-/// sheath, mm.
+/// The scripts plan the shaft's clearance from the walls only beyond this far past the internal os (along the canal),
+/// mm: in the canal the sheath dilates a canal narrower than itself.
 constexpr double kCanalContactFreeMm = 2.0;
 /// The shaft is checked for contact from its tip back to this far behind the pivot, mm.
 constexpr double kShaftCheckBehindPivotMm = 10.0;
 /// Contact candidates are gathered this far beyond the scope's radius, mm; the physics' scope moves at most this far
 /// in a step (300 mm/s, beyond a hand's speed), so no wall is passed between two steps.
 constexpr double kContactMarginMm = 1.5;
+/// A sphere of the shaft found inside the wall where the physics' scope is (it entered the part of the shaft that
+/// collides while lying in the wall, or the wall moved onto it) is pushed out by at most this much a step, mm (50
+/// mm/s): a contact asked to undo millimetres at once is solved far beyond the linearization it was built on (the
+/// largest depenetration speed of game physics engines, e.g. PhysX's maxDepenetrationVelocity, and the error reduction
+/// of Baumgarte's stabilization).
+constexpr double kMaxDepenetrationMm = 0.25;
 /// At most this many contact rows per step (the nearest), so a scope lying along the canal costs a bounded time.
 constexpr std::size_t kMaxContacts = 48;
 /// The virtual coupling between the device and the physics' scope (Colgate, Stanley & Brown 1995): stiffer than the

@@ -17,6 +17,12 @@ namespace {
 /// A contact carries at most this force, N: four times what perforates the wall (the wall has given way before).
 constexpr double kMaxContactForceN = 4.0 * kPerforationForceN;
 
+/// No tet of the simulation mesh keeps less than this share of its volume (FemSettings::minVolumeRatio): the tissues'
+/// Poisson ratios of 0.45-0.49 allow a volume change of a few per cent under the pressures met here, and the
+/// scripted exploration's tets keep more than half their volume (docs/simulator.md, "Squeezing"); a fifth is far
+/// outside the material and inside what a step's linearization holds.
+constexpr double kMinTetVolumeRatio = 0.2;
+
 /// The solver's settings for a world: its step, its iterations, no end residual (the world reads the contacts'
 /// forces, not the supports').
 mechanics::FemSettings solverSettings(const WorldOptions& options) {
@@ -30,6 +36,7 @@ mechanics::FemSettings solverSettings(const WorldOptions& options) {
     // stiffening, FemSettings::maxStiffening: uncapped, with the matrix refactored every second, the 60 s exploration
     // diverged.)
     s.lineSearch = false;
+    s.minVolumeRatio = kMinTetVolumeRatio;
     return s;
 }
 
