@@ -305,7 +305,9 @@ void World::Impl::recordContact(const std::vector<mechanics::FemConstraint>& row
     } else if (inContact && state.timeS - lastTouchS > kContactGapS) {
         inContact = false;
     }
-    if (contact.touching)
+    // The time in contact is the cavity wall's, as the contacts counted above: the sheath always touches the canal it
+    // dilates.
+    if (cavityContact)
         metrics.contactTimeS += options.stepS;
     metrics.peakForceN = std::max(metrics.peakForceN, contact.forceN);
     seriesForceN = std::max(seriesForceN, contact.forceN);

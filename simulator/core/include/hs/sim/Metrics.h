@@ -65,7 +65,7 @@ struct TrialMetrics {
     double horizonErrorMaxDeg = 0.0;
     int wallContacts = 0; ///< contacts begun (tip or shaft against the cavity's wall)
     double peakForceN = 0.0;
-    double contactTimeS = 0.0;
+    double contactTimeS = 0.0; ///< s, the tip or shaft touching the cavity's wall (not the sheath in the canal)
     std::vector<Perforation> perforations;
     double timeAboveMeanArterialPressureS = 0.0;
     double maxPressureKpa = 0.0;
