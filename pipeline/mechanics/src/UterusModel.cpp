@@ -14,10 +14,11 @@ namespace {
 constexpr double kMm = 1e-3;
 /// A static solve's settle: steps this long (the inertia and the damping vanish against the stiffness), until the
 /// cavity's volume changes by less than kStaticToleranceMl in a step, at most kStaticSteps; the pressure is raised
-/// over kStaticRampSteps (the stiffening tissue is followed, not jumped to).
+/// over kStaticRampSteps (the stiffening tissue is followed, not jumped to; on the default scene a 5-step ramp ends
+/// each of the curve's pressures within 0.02 mL (0.12 %) of a 20-step one, in half the steps).
 constexpr double kStaticStepS = 1.0;
 constexpr int kStaticSteps = 60;
-constexpr int kStaticRampSteps = 20;
+constexpr int kStaticRampSteps = 5;
 constexpr int kStaticIterations = 4;
 constexpr double kStaticToleranceMl = 1e-4;
 

@@ -53,7 +53,7 @@ struct UterusModel {
 [[nodiscard]] Status buildUterusModel(const scene::Scene& scene, const FemSettings& settings, UterusModel& out);
 
 /// The cavity opened at `pressureKpa` (0-40) by a static solve of the model from rest (1 s steps, the pressure raised
-/// over 20 of them and following the faces as they open, until the cavity's volume settles): the points, mm.
+/// over 5 of them and following the faces as they open, until the cavity's volume settles): the points, mm.
 /// InvalidInput out of range or when the tissue finds no equilibrium; Cancelled on request (checked every step).
 [[nodiscard]] Status staticOpen(const UterusModel& model, double pressureKpa, std::vector<Vec3>& pts,
                                 Progress& progress = Progress::none());
