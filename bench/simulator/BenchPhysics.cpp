@@ -1,7 +1,12 @@
 // The simulator's physics on a scene package: the simulation mesh's size and quality, the step's cost (the bar:
 // >= 200 Hz on 2 cores) and a long scripted trial's stability (no inverted tets, bounded energy). A table, not a test.
 //
-//   bench_physics PACKAGE [--seconds 60] [--iterations 6] [--trace] [--rough SEED] [--canal]
+//   bench_physics PACKAGE [--seconds 60] [--iterations 6] [--trace] [--rough SEED] [--canal] [--press [--wall PKG2]]
+// --press: instead of a trial, presses of the device 0.5, 1, 2 and 3 mm into the cavity's wall and into each
+// pathology met head-on (pressScript), each on a fresh world, held 2 s: the tip's force, how far the physics' tip
+// stands off the device's (the coupling's share), the tissue's indentation (the rest), its secant stiffness, and each
+// pathology's force and stiffness against the wall's at the same depth. --wall PACKAGE2: the wall's presses on that
+// package instead (a scene whose pathologies leave a wall to press head-on).
 // --canal: instead of a trial, the entries through the cervical canal (entryScript: along its clearest line, and 15 and
 // 30 degrees off it), each on a fresh world: the peak and held force, how far the physics' scope stayed off the
 // device, how far the fundus and the internal os moved, perforations (false passages), the worst inverted-tet count.
@@ -38,8 +43,8 @@ double percentile(std::vector<double> v, double q) {
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        std::fprintf(
-            stderr, "usage: bench_physics PACKAGE [--seconds S] [--iterations N] [--trace] [--rough SEED] [--canal]\n");
+        std::fprintf(stderr, "usage: bench_physics PACKAGE [--seconds S] [--iterations N] [--trace] [--rough SEED] "
+                             "[--canal] [--press [--wall PACKAGE2]]\n");
         return 2;
     }
     const std::string package = argv[1];
@@ -48,11 +53,17 @@ int main(int argc, char** argv) {
     bool trace = false;
     unsigned long long rough = 0; // the rough trial's seed; 0: the exploration
     bool canal = false;
+    bool press = false;
+    std::string wallPackage;
     for (int i = 2; i < argc; ++i) {
         if (std::strcmp(argv[i], "--trace") == 0)
             trace = true;
         else if (std::strcmp(argv[i], "--canal") == 0)
             canal = true;
+        else if (std::strcmp(argv[i], "--press") == 0)
+            press = true;
+        else if (std::strcmp(argv[i], "--wall") == 0 && i + 1 < argc)
+            wallPackage = argv[++i];
         else if (std::strcmp(argv[i], "--seconds") == 0 && i + 1 < argc)
             seconds = std::atof(argv[++i]);
         else if (std::strcmp(argv[i], "--rough") == 0 && i + 1 < argc)
@@ -110,6 +121,71 @@ int main(int argc, char** argv) {
                     clearestYaw = yaw;
                 }
             }
+    }
+
+    if (press) {
+        // Presses into the wall and each pathology, at four depths, each on a fresh world.
+        struct Pressed {
+            double forceN = 0.0, couplingMm = 0.0, indentationMm = 0.0;
+        };
+        const auto run = [&](int pathology, double depthMm, std::string& label, double& modulus) -> Pressed {
+            auto fresh = hs::sim::World::load(pathology < 0 && !wallPackage.empty() ? wallPackage : package, options);
+            if (!fresh)
+                return {};
+            hs::sim::World& e = **fresh;
+            const auto plan = hs::sim::pressScript(e, pathology, depthMm, 2.0);
+            if (!plan) {
+                label = plan.error().detail;
+                return {};
+            }
+            label = plan->region;
+            modulus = plan->youngsModulusKpa;
+            const std::size_t tpb = e.ticksPerStep();
+            std::vector<hs::sim::DeviceSample> batch(tpb);
+            const std::uint64_t ticks = plan->script.tickCount();
+            for (std::uint64_t s = 0; s * tpb < ticks; ++s) {
+                for (std::size_t i = 0; i < tpb; ++i) {
+                    batch[i] = plan->script.sampleAt(s * tpb + i);
+                    batch[i].tick = s * tpb + i;
+                }
+                if (!e.step(batch.data(), tpb).ok())
+                    return {};
+            }
+            Pressed p;
+            p.forceN = e.state().contact.tipForceN;
+            p.couplingMm =
+                hs::distance(e.state().scope.tipMm, hs::sim::scopePose(e.frame(), options.scope, batch[tpb - 1]).tipMm);
+            p.indentationMm = depthMm - p.couplingMm;
+            return p;
+        };
+        std::printf("| target | E kPa | device depth mm | tip force N | coupling's share mm | tissue indentation mm | "
+                    "secant stiffness N/mm | force / wall's | stiffness / wall's | E / wall's |\n"
+                    "|---|---|---|---|---|---|---|---|---|---|\n");
+        const int pathologies = static_cast<int>(w.metrics().pathologies.size());
+        for (const double depth : {0.5, 1.0, 2.0, 3.0}) {
+            std::string wallLabel;
+            double wallE = 0.0;
+            const Pressed wall = run(-1, depth, wallLabel, wallE);
+            const double wallK = wall.indentationMm > 0.0 ? wall.forceN / wall.indentationMm : 0.0;
+            std::printf("| wall (%s) | %.0f | %.1f | %.3f | %.2f | %.2f | %.3f | - | - | - |\n", wallLabel.c_str(),
+                        wallE, depth, wall.forceN, wall.couplingMm, wall.indentationMm, wallK);
+            for (int p = 0; p < pathologies; ++p) {
+                std::string label;
+                double e = 0.0;
+                const Pressed hit = run(p, depth, label, e);
+                if (e == 0.0) {
+                    std::printf("| %s | - | %.1f | %s |\n",
+                                w.metrics().pathologies[static_cast<std::size_t>(p)].id.c_str(), depth, label.c_str());
+                    continue;
+                }
+                const double k = hit.indentationMm > 0.0 ? hit.forceN / hit.indentationMm : 0.0;
+                std::printf("| %s | %.0f | %.1f | %.3f | %.2f | %.2f | %.3f | %.2f | %.2f | %.2f |\n", label.c_str(), e,
+                            depth, hit.forceN, hit.couplingMm, hit.indentationMm, k,
+                            wall.forceN > 0.0 ? hit.forceN / wall.forceN : 0.0, wallK > 0.0 ? k / wallK : 0.0,
+                            wallE > 0.0 ? e / wallE : 0.0);
+            }
+        }
+        return 0;
     }
 
     if (canal) {
