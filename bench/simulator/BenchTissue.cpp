@@ -2,12 +2,17 @@
 // on a scene's simulation-mesh resolution, and on the scene's simulation mesh its cost and its convergence per
 // iteration. Tables, not tests (the bars are asserted by test_mechanics).
 //
-//   bench_tissue [PACKAGE]
+//   bench_tissue [PACKAGE [--package-only | --point-load]]
+// --point-load: on the package's uterus model, a force along the inward normal of one cavity point, solved statically
+// with the cavity at 0, 30 and 80 mmHg: the wall's point nearest the fundus and each pathology's cavity point nearest
+// the internal os (the one a scope from the canal meets first), its stiffness and its ratio to the wall's.
 // PACKAGE: a scene package with a simulation mesh (hysteroscene-cli generate resources/cases/default.json -o DIR).
 
 #include "hs/mechanics/CorotationalFem.h"
+#include "hs/mechanics/UterusModel.h"
 #include "hs/mechanics/Verification.h"
 #include "hs/scene/ScenePackage.h"
+#include "hs/scene/ScopePassage.h"
 
 #include <algorithm>
 #include <chrono>
@@ -193,8 +198,129 @@ void packageTables(const std::string& package) {
 
 } // namespace
 
+/// The static stiffness of one cavity point under a force along its inward normal, N/mm, with the cavity at
+/// `pressureKpa` (the static solver of generate's hydrometra curve: 1 s steps, 4 iterations, the line search); {at 0.02
+/// N, at 0.1 N}.
+std::pair<double, double> pointStiffness(const UterusModel& model, std::size_t point, const Vec3& inward,
+                                         double pressureKpa) {
+    CorotationalFem still;
+    FemSettings settings = model.fem.settings();
+    settings.stepS = 1.0;
+    settings.iterations = 4;
+    settings.lineSearch = true;
+    if (!still.buildLike(model.fem, settings).ok())
+        return {0.0, 0.0};
+    std::vector<Vec3> pts = model.restMm, forces;
+    std::vector<FemConstraint> none;
+    const auto settle = [&](double forceN) {
+        double last = 0.0;
+        for (int step = 0; step < 400; ++step) {
+            const double ramp = std::min(1.0, (step + 1) / 5.0);
+            model.pressureForces(pts, pressureKpa * ramp, forces);
+            forces[point] += inward * (forceN * 1.0);
+            still.step(forces, none);
+            for (std::size_t i = 0; i < pts.size(); ++i)
+                pts[i] = still.positionsM()[i] * 1e3;
+            const double along = dot(pts[point], inward);
+            if (step > 5 && std::abs(along - last) < 1e-7)
+                break;
+            last = along;
+        }
+    };
+    settle(0.0);
+    const Vec3 before = pts[point];
+    settle(0.02);
+    const double small = 0.02 / dot(pts[point] - before, inward);
+    settle(0.1);
+    return {small, 0.1 / dot(pts[point] - before, inward)};
+}
+
+void pointLoadTable(const std::string& package) {
+    auto scene = scene::readScenePackage(package);
+    UterusModel model;
+    if (!scene || !buildUterusModel(*scene, FemSettings{}, model).ok()) {
+        std::fprintf(stderr, "bench_tissue: %s: no uterus model\n", package.c_str());
+        return;
+    }
+    const auto landmarks = scene::findScopeLandmarks(*scene);
+    if (!landmarks)
+        return;
+    // Each cavity point's inward normal (area-weighted, the cavity's faces face into it) and the regions it bounds.
+    const std::size_t n = model.restMm.size();
+    std::vector<Vec3> normal(n);
+    std::vector<std::vector<std::int32_t>> regions(n);
+    for (std::size_t f = 0; f < model.boundary.size(); ++f) {
+        if (!model.faceCavity[f])
+            continue;
+        const Triangle& t = model.boundary[f];
+        const Vec3 a = model.restMm[static_cast<std::size_t>(t[0])], b = model.restMm[static_cast<std::size_t>(t[1])],
+                   c = model.restMm[static_cast<std::size_t>(t[2])];
+        for (const std::int32_t v : t) {
+            normal[static_cast<std::size_t>(v)] += cross(b - a, c - a);
+            regions[static_cast<std::size_t>(v)].push_back(model.region[f]);
+        }
+    }
+    struct Target {
+        std::string name;
+        std::int32_t region = -1;
+        Vec3 towards;
+        double youngsKpa = 0.0;
+    };
+    std::vector<Target> targets;
+    std::int32_t wallRegion = -1;
+    for (const auto& r : scene->regions)
+        if (r.name == "endometrium")
+            wallRegion = r.id;
+    targets.push_back({"wall (endometrium, nearest the fundus)", wallRegion, landmarks->fundusMm, 0.0});
+    for (const auto& r : scene->regions)
+        if (!r.pathologyId.empty())
+            targets.push_back({r.name + " (nearest the internal os)", r.id, landmarks->internalOsMm, 0.0});
+    for (Target& t : targets)
+        for (const auto& m : scene->materials)
+            if (m.regionId == t.region)
+                t.youngsKpa = m.material.youngsModulusKpa;
+    std::printf("\nA point load on the uterus model (static; the point's own region only, not held)\n");
+    std::printf(
+        "| point | E kPa | cavity mmHg | stiffness at 0.02 N, N/mm | at 0.1 N, N/mm | / the wall's | E / the wall's |\n"
+        "|---|---|---|---|---|---|---|\n");
+    std::vector<double> wallStiffness;
+    for (std::size_t k = 0; k < targets.size(); ++k) {
+        const Target& t = targets[k];
+        std::size_t best = n;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (model.pointHeld[i] || regions[i].empty())
+                continue;
+            bool own = true;
+            for (const std::int32_t r : regions[i])
+                own = own && r == t.region;
+            if (own && (best == n || distance(model.restMm[i], t.towards) < distance(model.restMm[best], t.towards)))
+                best = i;
+        }
+        if (best == n) {
+            std::printf("| %s | no cavity point of its own |\n", t.name.c_str());
+            continue;
+        }
+        const Vec3 inward = normalized(normal[best]) * -1.0;
+        std::size_t row = 0;
+        for (const double mmHg : {0.0, 30.0, 80.0}) {
+            const auto [small, large] = pointStiffness(model, best, inward, mmHg * 0.133322);
+            if (k == 0)
+                wallStiffness.push_back(small);
+            const double wall = row < wallStiffness.size() ? wallStiffness[row] : 0.0;
+            std::printf("| %s | %.0f | %.0f | %.3f | %.3f | %.2f | %.2f |\n", t.name.c_str(), t.youngsKpa, mmHg, small,
+                        large, wall > 0.0 ? small / wall : 0.0,
+                        targets[0].youngsKpa > 0.0 ? t.youngsKpa / targets[0].youngsKpa : 0.0);
+            ++row;
+        }
+    }
+}
+
 int main(int argc, char** argv) {
     std::setvbuf(stdout, nullptr, _IOLBF, 0);
+    if (argc > 2 && std::string(argv[2]) == "--point-load") {
+        pointLoadTable(argv[1]);
+        return 0;
+    }
     if (argc < 3 || std::string(argv[2]) != "--package-only")
         verificationTable();
     if (argc > 1)
