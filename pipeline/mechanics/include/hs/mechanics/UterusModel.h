@@ -28,8 +28,9 @@ inline constexpr double kHeldPortioMm = 12.0;
 /// Total stiffness of what holds the corpus besides the cervix (broad and round ligaments, the organs around it),
 /// N/m, spread over the serosa's free points by area (docs/simulator.md, "Boundary").
 inline constexpr double kSurroundStiffnessNPerM = 1000.0;
-/// Total stiffness of the cardinal and uterosacral ligaments on the supravaginal cervix, N/m, spread over its points.
-inline constexpr double kLigamentStiffnessNPerM = 3000.0;
+/// Total stiffness of the cardinal and uterosacral ligaments on the supravaginal cervix, N/m, spread over its points:
+/// the middle of 0.49-0.61 N/mm measured in vivo under cervical traction (docs/references.md [Luo2014]).
+inline constexpr double kLigamentStiffnessNPerM = 550.0;
 
 struct UterusModel {
     CorotationalFem fem;
