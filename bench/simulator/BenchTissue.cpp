@@ -8,6 +8,7 @@
 // the internal os (the one a scope from the canal meets first), its stiffness and its ratio to the wall's.
 // PACKAGE: a scene package with a simulation mesh (hysteroscene-cli generate resources/cases/default.json -o DIR).
 
+#include "hs/core/Units.h"
 #include "hs/mechanics/CorotationalFem.h"
 #include "hs/mechanics/UterusModel.h"
 #include "hs/mechanics/Verification.h"
@@ -217,7 +218,7 @@ std::pair<double, double> pointStiffness(const UterusModel& model, std::size_t p
         for (int step = 0; step < 400; ++step) {
             const double ramp = std::min(1.0, (step + 1) / 5.0);
             model.pressureForces(pts, pressureKpa * ramp, forces);
-            forces[point] += inward * (forceN * 1.0);
+            forces[point] += inward * forceN;
             still.step(forces, none);
             for (std::size_t i = 0; i < pts.size(); ++i)
                 pts[i] = still.positionsM()[i] * 1e3;
@@ -303,7 +304,7 @@ void pointLoadTable(const std::string& package) {
         const Vec3 inward = normalized(normal[best]) * -1.0;
         std::size_t row = 0;
         for (const double mmHg : {0.0, 30.0, 80.0}) {
-            const auto [small, large] = pointStiffness(model, best, inward, mmHg * 0.133322);
+            const auto [small, large] = pointStiffness(model, best, inward, mmHg * units::kKpaPerMmHg);
             if (k == 0)
                 wallStiffness.push_back(small);
             const double wall = row < wallStiffness.size() ? wallStiffness[row] : 0.0;
