@@ -3,7 +3,8 @@
 //
 //   bench_physics PACKAGE [--seconds 60] [--iterations 6] [--trace] [--rough SEED] [--canal] [--press [--wall PKG2]]
 // --press: instead of a trial, presses of the device 0.5, 1, 2 and 3 mm into the cavity's wall and into each
-// pathology met head-on (pressScript), each on a fresh world, held 2 s: the tip's force, how far the physics' tip
+// pathology met head-on (pressScript; the depth counted from the face as the cavity opened at the planning pressure,
+// 60 mmHg, has it), each on a fresh world, held 2 s: the tip's force, how far the physics' tip
 // stands off the device's (the coupling's share), the tissue's indentation (the rest), its secant stiffness, and each
 // pathology's force and stiffness against the wall's at the same depth. --wall PACKAGE2: the wall's presses on that
 // package instead (a scene whose pathologies leave a wall to press head-on).

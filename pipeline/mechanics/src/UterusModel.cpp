@@ -173,15 +173,6 @@ Status buildUterusModel(const scene::Scene& scene, const FemSettings& settings, 
 
 namespace {
 
-/// The static solver: the model's, with 1 s steps, a few iterations and the line search.
-Status staticSolver(const UterusModel& model, CorotationalFem& still) {
-    FemSettings settings = model.fem.settings();
-    settings.stepS = kStaticStepS;
-    settings.iterations = kStaticIterations;
-    settings.lineSearch = true; // long steps stiffen the tissue beyond what one chord step follows
-    return still.buildLike(model.fem, settings);
-}
-
 /// Raises the pressure on `still` from `fromKpa` to `toKpa` and lets the cavity settle; `pts` follows, mm.
 Status settle(const UterusModel& model, CorotationalFem& still, double fromKpa, double toKpa, std::vector<Vec3>& pts,
               Progress& progress) {
@@ -211,9 +202,17 @@ Status settle(const UterusModel& model, CorotationalFem& still, double fromKpa, 
 
 } // namespace
 
+Status buildStaticSolver(const UterusModel& model, CorotationalFem& still) {
+    FemSettings settings = model.fem.settings();
+    settings.stepS = kStaticStepS;
+    settings.iterations = kStaticIterations;
+    settings.lineSearch = true; // long steps stiffen the tissue beyond what one chord step follows
+    return still.buildLike(model.fem, settings);
+}
+
 Status staticOpen(const UterusModel& model, double pressureKpa, std::vector<Vec3>& pts, Progress& progress) {
     CorotationalFem still;
-    HS_TRY(staticSolver(model, still));
+    HS_TRY(buildStaticSolver(model, still));
     pts = model.restMm;
     return settle(model, still, 0.0, pressureKpa, pts, progress);
 }
@@ -221,7 +220,7 @@ Status staticOpen(const UterusModel& model, double pressureKpa, std::vector<Vec3
 Result<std::vector<double>> hydrometraCurve(const UterusModel& model, const std::vector<double>& pressuresKpa,
                                             Progress& progress) {
     CorotationalFem still;
-    HS_TRY(staticSolver(model, still));
+    HS_TRY(buildStaticSolver(model, still));
     HS_TRY(progress.check("hydrometra curve"));
     std::vector<Vec3> pts = model.restMm;
     std::vector<double> opening;

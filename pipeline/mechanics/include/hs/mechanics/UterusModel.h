@@ -53,6 +53,10 @@ struct UterusModel {
 /// InvalidInput for a scene without a simulation mesh or landmarks.
 [[nodiscard]] Status buildUterusModel(const scene::Scene& scene, const FemSettings& settings, UterusModel& out);
 
+/// `still` built as the static solver of the model (its tissue with 1 s steps, 4 iterations and the line search): what
+/// staticOpen and hydrometraCurve settle with, for callers that load the tissue otherwise.
+[[nodiscard]] Status buildStaticSolver(const UterusModel& model, CorotationalFem& still);
+
 /// The cavity opened at `pressureKpa` (0-40) by a static solve of the model from rest (1 s steps, the pressure raised
 /// over 5 of them and following the faces as they open, until the cavity's volume settles): the points, mm.
 /// InvalidInput out of range or when the tissue finds no equilibrium; Cancelled on request (checked every step).
