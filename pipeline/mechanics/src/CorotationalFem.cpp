@@ -27,8 +27,103 @@ struct CorotationalFem::Factor {
         partEnd{}; ///< the halves are [0, partEnd[0]) and [partEnd[0], partEnd[1]); the separator follows
     std::vector<int> colStart, row; ///< L's strictly lower part, by column
     std::vector<double> value, diag;
+    /// The elimination tree: per column of L its first row below the diagonal (-1: a root). The rows of a column
+    /// are its ancestors, so L^-1 b for a b of a few entries is non-zero only on their paths to the root (Gilbert &
+    /// Peierls 1988): a forward solve on that reach, not on every column.
+    std::vector<int> parent;
     mutable std::vector<double> work, buffer[2];
+
+    /// L^-1 b on its reach: the columns, ascending, and the values.
+    struct Sparse {
+        std::vector<int> index;
+        std::vector<double> value;
+    };
+    /// L^-1 b for b given by (dof in the factor's order, value) entries (repeats add), with scratch `s` (0 or 1: one
+    /// a thread).
+    void forward(const std::vector<std::pair<int, double>>& b, std::size_t s, Sparse& out) const;
+    /// Scratch `s` sized to the factor, its marks' next stamp.
+    std::uint32_t nextStamp(std::size_t s) const;
+    /// Scratch of `forward`, one a thread: a zeroed dense vector and the reach's marks.
+    mutable std::array<std::vector<double>, 2> dense;
+    mutable std::array<std::vector<std::uint32_t>, 2> mark;
+    mutable std::array<std::uint32_t, 2> stamp{};
+    /// y = sum c_k surfaceY[i_k] for (i_k, c_k) `terms`: L^-1 b for a b on the precomputed dofs, its index unsorted.
+    void combine(const std::vector<std::pair<int, double>>& terms, std::size_t s, Sparse& out) const;
+    /// L^-1 P e for each precomputed dof (3 compliant index + axis; empty for a held dof, or none precomputed).
+    std::vector<Sparse> surfaceY;
+    /// The last step's rows and the constraints' last forces through L^-1 (forwardRows, forwardForced); rowB a row's
+    /// entries: (dof in the factor's order, value), or (precomputed dof, value) where rowOnSurface.
+    mutable std::vector<Sparse> rowY;
+    mutable std::vector<std::vector<std::pair<int, double>>> rowB;
+    mutable std::vector<char> rowOnSurface;
+    mutable Sparse forcedY;
 };
+
+void CorotationalFem::Factor::combine(const std::vector<std::pair<int, double>>& terms, std::size_t s,
+                                      Sparse& out) const {
+    const std::uint32_t now = nextStamp(s);
+    std::vector<double>& y = dense[s];
+    std::vector<std::uint32_t>& marks = mark[s];
+    out.index.clear();
+    for (const auto& [column, c] : terms) {
+        const Sparse& u = surfaceY[static_cast<std::size_t>(column)];
+        for (std::size_t t = 0; t < u.index.size(); ++t) {
+            const auto j = static_cast<std::size_t>(u.index[t]);
+            if (marks[j] != now) {
+                marks[j] = now;
+                out.index.push_back(u.index[t]);
+            }
+            y[j] += c * u.value[t];
+        }
+    }
+    out.value.resize(out.index.size());
+    for (std::size_t k = 0; k < out.index.size(); ++k) {
+        out.value[k] = y[static_cast<std::size_t>(out.index[k])];
+        y[static_cast<std::size_t>(out.index[k])] = 0.0;
+    }
+}
+
+std::uint32_t CorotationalFem::Factor::nextStamp(std::size_t s) const {
+    const std::size_t dofs = diag.size();
+    if (dense[s].size() != dofs || mark[s].size() != dofs) {
+        dense[s].assign(dofs, 0.0);
+        mark[s].assign(dofs, 0);
+        stamp[s] = 0;
+    }
+    if (++stamp[s] == 0) { // wrapped: clear the marks once every 2^32 calls
+        std::fill(mark[s].begin(), mark[s].end(), 0);
+        stamp[s] = 1;
+    }
+    return stamp[s];
+}
+
+void CorotationalFem::Factor::forward(const std::vector<std::pair<int, double>>& b, std::size_t s, Sparse& out) const {
+    const std::uint32_t now = nextStamp(s);
+    std::vector<double>& y = dense[s];
+    std::vector<std::uint32_t>& marks = mark[s];
+    out.index.clear();
+    for (const auto& [dof, entry] : b) {
+        for (int j = dof; j >= 0 && marks[static_cast<std::size_t>(j)] != now;
+             j = parent[static_cast<std::size_t>(j)]) {
+            marks[static_cast<std::size_t>(j)] = now;
+            out.index.push_back(j);
+        }
+        y[static_cast<std::size_t>(dof)] += entry;
+    }
+    std::sort(out.index.begin(), out.index.end());
+    for (const int j : out.index) {
+        const double yj = y[static_cast<std::size_t>(j)];
+        if (yj == 0.0)
+            continue;
+        for (int k = colStart[static_cast<std::size_t>(j)]; k < colStart[static_cast<std::size_t>(j) + 1]; ++k)
+            y[static_cast<std::size_t>(row[static_cast<std::size_t>(k)])] -= value[static_cast<std::size_t>(k)] * yj;
+    }
+    out.value.resize(out.index.size());
+    for (std::size_t k = 0; k < out.index.size(); ++k) {
+        out.value[k] = y[static_cast<std::size_t>(out.index[k])];
+        y[static_cast<std::size_t>(out.index[k])] = 0.0;
+    }
+}
 
 namespace {
 
@@ -379,6 +474,14 @@ void CorotationalFem::assembleAndFactor() {
     }
     const Eigen::VectorXd d = f.ldlt.vectorD();
     f.diag.assign(d.data(), d.data() + d.size());
+    f.surfaceY.clear(); // precomputeCompliance makes them anew
+    f.parent.assign(3 * n, -1);
+    for (std::size_t c = 0; c < 3 * n; ++c)
+        for (int k = f.colStart[c]; k < f.colStart[c + 1]; ++k) {
+            int& first = f.parent[c];
+            const int r = f.row[static_cast<std::size_t>(k)];
+            first = first < 0 ? r : std::min(first, r);
+        }
     f.work.assign(3 * n, 0.0);
     if (!m_team || m_team->size() != std::max(1, m_settings.threads))
         m_team = std::make_unique<WorkerTeam>(std::max(1, m_settings.threads));
@@ -632,6 +735,15 @@ void CorotationalFem::precomputeCompliance(const std::vector<std::int32_t>& poin
                 for (std::size_t e = 0; e < 3; ++e)
                     m_compliance[(3 * j + e) * m3 + 3 * k + d] = column[3 * static_cast<std::size_t>(list[j]) + e];
         }
+    // And each of their dofs through L^-1 alone, so a row on them pairs with a row elsewhere at the cost of a sum.
+    Factor& f = *m_factor;
+    f.surfaceY.assign(m3, {});
+    for (std::size_t k = 0; k < list.size(); ++k)
+        for (std::size_t d = 0; d < 3; ++d) {
+            const std::size_t dof = 3 * static_cast<std::size_t>(list[k]) + d;
+            if (!m_fixed[dof / 3][d])
+                f.forward({{f.oldToNew[dof], 1.0}}, 0, f.surfaceY[3 * k + d]);
+        }
 }
 
 FemConstraint contactRow(const std::array<std::int32_t, 3>& points, const std::array<double, 3>& weights,
@@ -647,66 +759,166 @@ FemConstraint contactRow(const std::array<std::int32_t, 3>& points, const std::a
     return row;
 }
 
-void CorotationalFem::complianceBetween(const std::vector<FemConstraint>& rows, std::vector<double>& w) {
+namespace {
+
+/// R^T v for a point's rotation R (row-major): a vector of the tissue's frame in the rest frame the factor has.
+Vec3 toRestFrame(const std::array<double, 9>& r, const Vec3& v) {
+    return {r[0] * v.x + r[3] * v.y + r[6] * v.z, r[1] * v.x + r[4] * v.y + r[7] * v.z,
+            r[2] * v.x + r[5] * v.y + r[8] * v.z};
+}
+
+} // namespace
+
+void CorotationalFem::forwardEntries(const std::vector<std::pair<std::int32_t, Vec3>>& forces,
+                                     std::vector<std::pair<int, double>>& b) const {
+    // b = P R^T f in the factor's order, the held dofs left out (the solves zero them).
+    b.clear();
+    const bool warped = m_pointR.size() == m_x.size();
+    const Factor& f = *m_factor;
+    for (const auto& [point, force] : forces) {
+        const auto p = static_cast<std::size_t>(point);
+        const Vec3 g = warped ? toRestFrame(m_pointR[p], force) : force;
+        for (std::size_t d = 0; d < 3; ++d)
+            if (!m_fixed[p][d] && g[static_cast<int>(d)] != 0.0)
+                b.emplace_back(f.oldToNew[3 * p + d], g[static_cast<int>(d)]);
+    }
+}
+
+void CorotationalFem::forwardRows(const std::vector<FemConstraint>& rows) const {
+    const Factor& f = *m_factor;
+    const std::size_t k = rows.size();
+    f.rowY.resize(k);
+    f.rowB.resize(k);
+    f.rowOnSurface.assign(k, 0);
+    const bool warped = m_pointR.size() == m_x.size();
+    std::vector<std::pair<std::int32_t, Vec3>> gradient;
+    for (std::size_t i = 0; i < k; ++i) {
+        const FemConstraint& row = rows[i];
+        bool onSurface = !f.surfaceY.empty();
+        for (const std::int32_t p : row.points)
+            onSurface =
+                onSurface && (m_compliantIndex[static_cast<std::size_t>(p)] >= 0 || held(static_cast<std::size_t>(p)));
+        f.rowOnSurface[i] = onSurface ? 1 : 0;
+        if (onSurface) {
+            // A sum of the precomputed dofs' columns.
+            f.rowB[i].clear();
+            for (std::size_t a = 0; a < row.points.size(); ++a) {
+                const auto p = static_cast<std::size_t>(row.points[a]);
+                if (m_compliantIndex[p] < 0)
+                    continue; // a held point
+                const Vec3 g = warped ? toRestFrame(m_pointR[p], row.gradient[a]) : row.gradient[a];
+                for (std::size_t d = 0; d < 3; ++d)
+                    if (!m_fixed[p][d] && g[static_cast<int>(d)] != 0.0)
+                        f.rowB[i].emplace_back(3 * m_compliantIndex[p] + static_cast<int>(d), g[static_cast<int>(d)]);
+            }
+            continue;
+        }
+        gradient.clear();
+        for (std::size_t a = 0; a < row.points.size(); ++a)
+            gradient.emplace_back(row.points[a], row.gradient[a]);
+        forwardEntries(gradient, f.rowB[i]);
+    }
+    m_team->run(k, (k + 1) / 2, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+            if (f.rowOnSurface[i])
+                f.combine(f.rowB[i], chunk, f.rowY[i]);
+            else
+                f.forward(f.rowB[i], chunk, f.rowY[i]);
+    });
+}
+
+void CorotationalFem::forwardForced() const {
+    const Factor& f = *m_factor;
+    std::vector<std::pair<std::int32_t, Vec3>> forces;
+    for (const std::int32_t p : m_forcedPoints)
+        forces.emplace_back(p, m_constraintForce[static_cast<std::size_t>(p)]);
+    std::vector<std::pair<int, double>> b;
+    forwardEntries(forces, b);
+    f.forward(b, 0, f.forcedY);
+}
+
+void CorotationalFem::forwardProducts(std::vector<double>& out) const {
+    // y_row^T D^-1 y_forced: each row's gradient times R H^-1 R^T f, over the two reaches' common columns.
+    const Factor& f = *m_factor;
+    f.nextStamp(0);                           // sizes the scratch
+    std::vector<double>& scaled = f.dense[0]; // zero between uses
+    for (std::size_t t = 0; t < f.forcedY.index.size(); ++t) {
+        const auto j = static_cast<std::size_t>(f.forcedY.index[t]);
+        scaled[j] = f.forcedY.value[t] / f.diag[j];
+    }
+    out.assign(f.rowY.size(), 0.0);
+    for (std::size_t i = 0; i < f.rowY.size(); ++i) {
+        double s = 0.0;
+        for (std::size_t t = 0; t < f.rowY[i].index.size(); ++t)
+            s += f.rowY[i].value[t] * scaled[static_cast<std::size_t>(f.rowY[i].index[t])];
+        out[i] = s;
+    }
+    for (const int j : f.forcedY.index)
+        scaled[static_cast<std::size_t>(j)] = 0.0;
+}
+
+void CorotationalFem::complianceBetween(const std::vector<FemConstraint>& rows, bool forwarded,
+                                        std::vector<double>& w) {
     // Rows of a few points on the precomputed surface: W_ij = sum g_ia^T R_a S_ab R_b^T g_jb from the block S.
-    // Other rows: their column u_i = R H^-1 R^T g_i by one solve, W_ij = g_j . u_i.
+    // Otherwise W = G R H^-1 R^T G^T = Y^T D^-1 Y with Y = L^-1 P R^T G^T, each row's column of Y by a forward solve
+    // on its reach (forwardRows): the rows' own entries of H^-1 without a whole solve for each.
     constexpr std::size_t kPrecomputedRowPoints = 24;
     const std::size_t k = rows.size();
     w.assign(k * k, 0.0);
-    const auto toRest = [this](const Vec3& v, std::size_t point) {
-        if (m_pointR.size() != m_x.size())
-            return v;
-        const Mat3& r = m_pointR[point];
-        return Vec3{r[0] * v.x + r[3] * v.y + r[6] * v.z, r[1] * v.x + r[4] * v.y + r[7] * v.z,
-                    r[2] * v.x + r[5] * v.y + r[8] * v.z};
-    };
-    std::vector<char> solved(k, 0);
-    std::vector<std::vector<double>> column(k);
-    for (std::size_t i = 0; i < k; ++i) {
-        bool precomputed = m_compliantCount > 0 && rows[i].points.size() <= kPrecomputedRowPoints;
+    bool precomputed = m_compliantCount > 0;
+    for (std::size_t i = 0; i < k && precomputed; ++i) {
+        precomputed = rows[i].points.size() <= kPrecomputedRowPoints;
         for (const std::int32_t p : rows[i].points)
             precomputed = precomputed &&
                           (m_compliantIndex[static_cast<std::size_t>(p)] >= 0 || held(static_cast<std::size_t>(p)));
-        if (precomputed)
-            continue;
-        solved[i] = 1;
-        std::vector<double>& u = column[i];
-        u.assign(3 * m_x.size(), 0.0);
-        for (std::size_t a = 0; a < rows[i].points.size(); ++a)
-            for (int d = 0; d < 3; ++d)
-                u[3 * static_cast<std::size_t>(rows[i].points[a]) + static_cast<std::size_t>(d)] +=
-                    rows[i].gradient[a][d];
-        solveWarped(u);
+    }
+    if (!precomputed) {
+        if (!forwarded)
+            forwardRows(rows);
+        const Factor& f = *m_factor;
+        m_team->run(k, (k + 1) / 2, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+            f.nextStamp(chunk);                           // sizes the scratch
+            std::vector<double>& scaled = f.dense[chunk]; // zero between uses
+            for (std::size_t i = begin; i < end; ++i) {
+                const Factor::Sparse& yi = f.rowY[i];
+                for (std::size_t t = 0; t < yi.index.size(); ++t)
+                    scaled[static_cast<std::size_t>(yi.index[t])] =
+                        yi.value[t] / f.diag[static_cast<std::size_t>(yi.index[t])];
+                for (std::size_t j = i; j < k; ++j) {
+                    const Factor::Sparse& yj = f.rowY[j];
+                    double s = 0.0;
+                    for (std::size_t t = 0; t < yj.index.size(); ++t)
+                        s += yj.value[t] * scaled[static_cast<std::size_t>(yj.index[t])];
+                    w[i * k + j] = s;
+                    w[j * k + i] = s;
+                }
+                for (const int index : yi.index)
+                    scaled[static_cast<std::size_t>(index)] = 0.0;
+            }
+        });
+        return;
     }
     const std::size_t m3 = 3 * m_compliantCount;
+    const bool warped = m_pointR.size() == m_x.size();
     for (std::size_t i = 0; i < k; ++i)
         for (std::size_t j = i; j < k; ++j) {
             double s = 0.0;
-            if (solved[i] || solved[j]) {
-                const std::size_t from = solved[i] ? i : j, to = solved[i] ? j : i;
-                const std::vector<double>& u = column[from];
-                for (std::size_t b = 0; b < rows[to].points.size(); ++b)
-                    for (int d = 0; d < 3; ++d)
-                        s += rows[to].gradient[b][d] *
-                             u[3 * static_cast<std::size_t>(rows[to].points[b]) + static_cast<std::size_t>(d)];
-            } else {
-                for (std::size_t a = 0; a < rows[i].points.size(); ++a) {
-                    const auto pa = static_cast<std::size_t>(rows[i].points[a]);
-                    if (m_compliantIndex[pa] < 0)
-                        continue; // a held point: it does not move
-                    const Vec3 ga = toRest(rows[i].gradient[a], pa);
-                    const std::size_t ra = 3 * static_cast<std::size_t>(m_compliantIndex[pa]);
-                    for (std::size_t b = 0; b < rows[j].points.size(); ++b) {
-                        const auto pb = static_cast<std::size_t>(rows[j].points[b]);
-                        if (m_compliantIndex[pb] < 0)
-                            continue;
-                        const Vec3 gb = toRest(rows[j].gradient[b], pb);
-                        const std::size_t cb = 3 * static_cast<std::size_t>(m_compliantIndex[pb]);
-                        for (std::size_t r = 0; r < 3; ++r)
-                            for (std::size_t c = 0; c < 3; ++c)
-                                s += ga[static_cast<int>(r)] * m_compliance[(ra + r) * m3 + cb + c] *
-                                     gb[static_cast<int>(c)];
-                    }
+            for (std::size_t a = 0; a < rows[i].points.size(); ++a) {
+                const auto pa = static_cast<std::size_t>(rows[i].points[a]);
+                if (m_compliantIndex[pa] < 0)
+                    continue; // a held point: it does not move
+                const Vec3 ga = warped ? toRestFrame(m_pointR[pa], rows[i].gradient[a]) : rows[i].gradient[a];
+                const std::size_t ra = 3 * static_cast<std::size_t>(m_compliantIndex[pa]);
+                for (std::size_t b = 0; b < rows[j].points.size(); ++b) {
+                    const auto pb = static_cast<std::size_t>(rows[j].points[b]);
+                    if (m_compliantIndex[pb] < 0)
+                        continue;
+                    const Vec3 gb = warped ? toRestFrame(m_pointR[pb], rows[j].gradient[b]) : rows[j].gradient[b];
+                    const std::size_t cb = 3 * static_cast<std::size_t>(m_compliantIndex[pb]);
+                    for (std::size_t r = 0; r < 3; ++r)
+                        for (std::size_t c = 0; c < 3; ++c)
+                            s += ga[static_cast<int>(r)] * m_compliance[(ra + r) * m3 + cb + c] *
+                                 gb[static_cast<int>(c)];
                 }
             }
             w[i * k + j] = s;
@@ -766,12 +978,12 @@ void CorotationalFem::surfaceResponse(const std::vector<std::pair<std::int32_t, 
 }
 
 void CorotationalFem::solveContacts(std::vector<FemConstraint>& rows, std::size_t external,
-                                    const ObstacleCompliance& obstacle, const std::vector<double>& gap,
+                                    const ObstacleCompliance& obstacle, const std::vector<double>& gap, bool forwarded,
                                     std::vector<double>& lambda) {
     const auto started = Clock::now();
     const std::size_t k = rows.size();
     std::vector<double> w;
-    complianceBetween(rows, w);
+    complianceBetween(rows, forwarded, w);
     // The caller's rows' own block is what the haptics renders between steps.
     m_lastW.assign(external * external, 0.0);
     for (std::size_t i = 0; i < external; ++i)
@@ -876,6 +1088,7 @@ void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector
     m_lastVolumeRows = 0;
     std::vector<std::pair<std::int32_t, Vec3>> change;
     std::vector<Vec3> response;
+    std::vector<double> lastAlong; // off the surface: the last forces' motion along each row
     // The residual at positions y (into rhs as -r, free dofs), its norm.
     const auto residual = [&](const std::vector<Vec3>& y) {
         for (std::size_t i = 0; i < n; ++i)
@@ -926,19 +1139,22 @@ void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector
             continue;
         // The constraints' forces lambda (total): the gaps after the free motion, less what the last forces did in it.
         const bool surface = onPrecomputedSurface(rows);
-        std::vector<double> lastResponse; // full-path: H^-1 f_last on every dof
         if (surface) {
             change.clear();
             for (const std::int32_t p : m_forcedPoints)
                 change.emplace_back(p, m_constraintForce[static_cast<std::size_t>(p)]);
             surfaceResponse(change, response);
-        } else if (!m_forcedPoints.empty()) {
-            lastResponse.assign(3 * n, 0.0);
-            for (const std::int32_t p : m_forcedPoints)
-                for (int d = 0; d < 3; ++d)
-                    lastResponse[3 * static_cast<std::size_t>(p) + static_cast<std::size_t>(d)] =
-                        m_constraintForce[static_cast<std::size_t>(p)][d];
-            solveWarped(lastResponse);
+        } else {
+            // Off the precomputed surface (a volume row's interior points): each row's and the last forces' forward
+            // solve on its reach; the last forces' motion along a row is their product (forwardProduct).
+            const auto started = Clock::now();
+            forwardRows(rows);
+            if (!m_forcedPoints.empty()) {
+                forwardForced();
+                forwardProducts(lastAlong);
+            } else
+                lastAlong.assign(rows.size(), 0.0);
+            m_timings.contactsMs += msSince(started);
         }
         gap.assign(rows.size(), 0.0);
         for (std::size_t c = 0; c < rows.size(); ++c) {
@@ -949,13 +1165,13 @@ void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector
                 Vec3 last{};
                 if (surface && !m_forcedPoints.empty() && m_compliantIndex[p] >= 0)
                     last = response[static_cast<std::size_t>(m_compliantIndex[p])];
-                else if (!lastResponse.empty())
-                    last = {lastResponse[3 * p], lastResponse[3 * p + 1], lastResponse[3 * p + 2]};
                 g += dot(row.gradient[a], x[p] - last);
             }
+            if (!surface)
+                g -= lastAlong[c];
             gap[c] = g;
         }
-        solveContacts(rows, contacts.size(), obstacle, gap, lambda);
+        solveContacts(rows, contacts.size(), obstacle, gap, !surface, lambda);
         // The correction: the new forces less the last, on the surface through the precomputed compliance (the
         // interior follows in the next step's free motion), or on every dof by a solve.
         std::vector<Vec3> next(n, Vec3{});

@@ -257,7 +257,7 @@ const TrialMetrics& World::metrics() const {
 }
 
 std::string_view physicsEngine() {
-    return "corotational-fem/4";
+    return "corotational-fem/5";
 }
 
 Status checkReplay(const TrialHeader& trial, const WorldOptions& options) {

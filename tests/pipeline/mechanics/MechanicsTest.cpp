@@ -185,6 +185,63 @@ TEST(Mechanics, PrecomputedComplianceGivesTheSameContacts) {
         EXPECT_NEAR(distance(onDemand.positionsM()[i], precomputed.positionsM()[i]), 0.0, 1e-9);
 }
 
+void checkRowsOffTheSurface(bool precompute) {
+    SCOPED_TRACE(precompute ? "top precomputed" : "nothing precomputed");
+    const Block block = makeBlock();
+    const std::vector<FemMaterial> materials(block.tets.size(), FemMaterial{30e3, 0.47, 1050.0});
+    CorotationalFem fem;
+    ASSERT_TRUE(fem.build(block.points, block.tets, materials, block.fixed, {}, FemSettings{}));
+    if (precompute) {
+        std::vector<std::int32_t> top;
+        for (int j = 0; j < block.nx; ++j)
+            for (int i = 0; i < block.nx; ++i)
+                top.push_back(block.at(i, j, block.nz - 1));
+        fem.precomputeCompliance(top);
+    }
+    // Far from their planes: no row acts, the block stays at rest.
+    std::vector<FemConstraint> rows{contactRow({block.at(5, 5, 5), block.at(6, 5, 5), block.at(5, 6, 5)},
+                                               {0.5, 0.25, 0.25}, normalized(Vec3{0.1, 0.0, 1.0}), {0.0, 0.0, 1.0}),
+                                    contactRow({block.at(3, 4, 2), block.at(3, 5, 2), block.at(4, 4, 3)},
+                                               {0.2, 0.3, 0.5}, normalized(Vec3{1.0, -0.5, 0.2}), {1.0, 0.0, 0.0}),
+                                    contactRow({block.at(6, 5, 5), block.at(6, 6, 5), block.at(5, 6, 4)},
+                                               {0.6, 0.3, 0.1}, normalized(Vec3{0.0, 1.0, -0.3}), {0.0, 1.0, 0.0})};
+    const std::vector<FemConstraint> given = rows;
+    fem.step({}, rows);
+    const std::vector<double>& w = fem.lastContactCompliance();
+    ASSERT_EQ(w.size(), 9u);
+    const auto pattern = [&](std::size_t i, std::size_t j) {
+        std::vector<Vec3> f(block.points.size(), Vec3{});
+        for (const std::size_t r : {i, j})
+            for (std::size_t a = 0; a < given[r].points.size(); ++a)
+                f[static_cast<std::size_t>(given[r].points[a])] += given[r].gradient[a];
+        return f;
+    };
+    for (std::size_t i = 0; i < 3; ++i) {
+        const std::vector<Vec3> alone = pattern(i, i); // 2 g_i
+        EXPECT_GT(w[i * 3 + i], 0.0);
+        EXPECT_NEAR(w[i * 3 + i], fem.loadCompliance(alone) / 4.0, 1e-9 * w[i * 3 + i]);
+        for (std::size_t j = i + 1; j < 3; ++j) {
+            const double both = fem.loadCompliance(pattern(i, j));
+            const double expected =
+                0.5 * (both - 0.25 * fem.loadCompliance(alone) - 0.25 * fem.loadCompliance(pattern(j, j)));
+            EXPECT_NEAR(w[i * 3 + j], expected, 1e-9 * w[i * 3 + i]);
+            EXPECT_EQ(w[i * 3 + j], w[j * 3 + i]);
+        }
+    }
+}
+
+TEST(Mechanics, RowsOffTheSurfaceGetTheFactorsOwnCompliance) {
+    // Rows on interior points take their compliance W = G H^-1 G^T from forward solves on their reach (the
+    // elimination tree's paths), not from a whole solve each: W must be the factor's own, which loadCompliance gives
+    // by whole solves (W_ij from the patterns g_i, g_j and g_i + g_j).
+    // With the top precomputed, the first row (on the top) sums its dofs' precomputed columns instead.
+    for (const bool precompute : {false, true}) {
+        checkRowsOffTheSurface(precompute);
+        if (HasFailure())
+            return;
+    }
+}
+
 TEST(Mechanics, RemovingTetsKeepsTheSolverStable) {
     const Block block = makeBlock();
     const std::vector<FemMaterial> materials(block.tets.size(), FemMaterial{30e3, 0.47, 1050.0});

@@ -218,10 +218,21 @@ private:
     double stiffeningArgument(std::size_t tet, const std::array<double, 9>& s) const;
     /// R^T F of tet `t` at the current positions (its rotation found from the last one, which stays as it was).
     std::array<double, 9> corotatedStretch(std::size_t t, int iterations) const;
-    /// H^-1 column for dof (cached when precomputed).
-    void complianceBetween(const std::vector<FemConstraint>& rows, std::vector<double>& w);
+    /// W = J R H^-1 R^T J^T of the rows: from the precomputed surface block, or from the rows' forward solves
+    /// (forwardRows; `forwarded`: already done for these rows).
+    void complianceBetween(const std::vector<FemConstraint>& rows, bool forwarded, std::vector<double>& w);
     void solveContacts(std::vector<FemConstraint>& rows, std::size_t external, const ObstacleCompliance& obstacle,
-                       const std::vector<double>& gap, std::vector<double>& lambda);
+                       const std::vector<double>& gap, bool forwarded, std::vector<double>& lambda);
+    /// The (dof, value) entries of P R^T f in the factor's order, held dofs left out.
+    void forwardEntries(const std::vector<std::pair<std::int32_t, Vec3>>& forces,
+                        std::vector<std::pair<int, double>>& b) const;
+    /// L^-1 P R^T g for each row's gradient g, on its reach (the factor's rowY), on the team's threads.
+    void forwardRows(const std::vector<FemConstraint>& rows) const;
+    /// L^-1 P R^T f for the constraints' last forces (the factor's forcedY).
+    void forwardForced() const;
+    /// Each row's gradient times R H^-1 R^T f_last: the last forces' motion along the row (after forwardRows and
+    /// forwardForced).
+    void forwardProducts(std::vector<double>& out) const;
     /// The volume rows (settings.minVolumeRatio) of the tets within the guard band of the bound at positions x.
     void volumeRows(const std::vector<Vec3>& x, std::vector<FemConstraint>& rows) const;
     bool onPrecomputedSurface(const std::vector<FemConstraint>& rows) const;
