@@ -818,7 +818,7 @@ void CorotationalFem::forwardRows(const std::vector<FemConstraint>& rows) const 
             gradient.emplace_back(row.points[a], row.gradient[a]);
         forwardEntries(gradient, f.rowB[i]);
     }
-    m_team->run(k, (k + 1) / 2, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+    m_team->run(k, std::max<std::size_t>(1, (k + 1) / 2), [&](std::size_t chunk, std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
             if (f.rowOnSurface[i])
                 f.combine(f.rowB[i], chunk, f.rowY[i]);
@@ -876,26 +876,27 @@ void CorotationalFem::complianceBetween(const std::vector<FemConstraint>& rows, 
         if (!forwarded)
             forwardRows(rows);
         const Factor& f = *m_factor;
-        m_team->run(k, (k + 1) / 2, [&](std::size_t chunk, std::size_t begin, std::size_t end) {
-            f.nextStamp(chunk);                           // sizes the scratch
-            std::vector<double>& scaled = f.dense[chunk]; // zero between uses
-            for (std::size_t i = begin; i < end; ++i) {
-                const Factor::Sparse& yi = f.rowY[i];
-                for (std::size_t t = 0; t < yi.index.size(); ++t)
-                    scaled[static_cast<std::size_t>(yi.index[t])] =
-                        yi.value[t] / f.diag[static_cast<std::size_t>(yi.index[t])];
-                for (std::size_t j = i; j < k; ++j) {
-                    const Factor::Sparse& yj = f.rowY[j];
-                    double s = 0.0;
-                    for (std::size_t t = 0; t < yj.index.size(); ++t)
-                        s += yj.value[t] * scaled[static_cast<std::size_t>(yj.index[t])];
-                    w[i * k + j] = s;
-                    w[j * k + i] = s;
-                }
-                for (const int index : yi.index)
-                    scaled[static_cast<std::size_t>(index)] = 0.0;
-            }
-        });
+        m_team->run(k, std::max<std::size_t>(1, (k + 1) / 2),
+                    [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+                        f.nextStamp(chunk);                           // sizes the scratch
+                        std::vector<double>& scaled = f.dense[chunk]; // zero between uses
+                        for (std::size_t i = begin; i < end; ++i) {
+                            const Factor::Sparse& yi = f.rowY[i];
+                            for (std::size_t t = 0; t < yi.index.size(); ++t)
+                                scaled[static_cast<std::size_t>(yi.index[t])] =
+                                    yi.value[t] / f.diag[static_cast<std::size_t>(yi.index[t])];
+                            for (std::size_t j = i; j < k; ++j) {
+                                const Factor::Sparse& yj = f.rowY[j];
+                                double s = 0.0;
+                                for (std::size_t t = 0; t < yj.index.size(); ++t)
+                                    s += yj.value[t] * scaled[static_cast<std::size_t>(yj.index[t])];
+                                w[i * k + j] = s;
+                                w[j * k + i] = s;
+                            }
+                            for (const int index : yi.index)
+                                scaled[static_cast<std::size_t>(index)] = 0.0;
+                        }
+                    });
         return;
     }
     const std::size_t m3 = 3 * m_compliantCount;
