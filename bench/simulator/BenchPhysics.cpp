@@ -1,7 +1,8 @@
 // The simulator's physics on a scene package: the simulation mesh's size and quality, the step's cost (the bar:
 // >= 200 Hz on 2 cores) and a long scripted trial's stability (no inverted tets, bounded energy). A table, not a test.
 //
-//   bench_physics PACKAGE [--seconds 60] [--iterations 6] [--trace] [--rough SEED] [--canal] [--press [--wall PKG2]]
+//   bench_physics PACKAGE [--seconds 60] [--iterations 6] [--trace] [--rough SEED] [--canal [--introitus MM]]
+//                 [--press [--wall PKG2]]
 // --press: instead of a trial, presses of the device 0.5, 1, 2 and 3 mm into the cavity's wall and into each
 // pathology met head-on (pressScript; the depth counted from the face as the cavity opened at the planning pressure,
 // 60 mmHg, has it), each on a fresh world, held 2 s: the tip's force, how far the physics' tip
@@ -11,6 +12,8 @@
 // --canal: instead of a trial, the entries through the cervical canal (entryScript: along its clearest line, and 15 and
 // 30 degrees off it), each on a fresh world: the peak and held force, how far the physics' scope stayed off the
 // device, how far the fundus and the internal os moved, perforations (false passages), the worst inverted-tet count.
+// --introitus MM: the same entries with the scope pivoting at the introitus, MM behind the external os on each entry's
+// line, and the portio free on the cervix's supports (WorldOptions::introitusMm), not at the held external os.
 // --rough SEED: the rough trial (roughScript: random presses into the walls and the pathologies at a hand's speeds)
 // instead of the exploration, repeated every 60 s.
 // --trace: the script's keyframes, a line for every perforation, every 0.1 s with an inverted tet (the script's time,
@@ -45,7 +48,7 @@ double percentile(std::vector<double> v, double q) {
 int main(int argc, char** argv) {
     if (argc < 2) {
         std::fprintf(stderr, "usage: bench_physics PACKAGE [--seconds S] [--iterations N] [--trace] [--rough SEED] "
-                             "[--canal] [--press [--wall PACKAGE2]]\n");
+                             "[--canal [--introitus MM]] [--press [--wall PACKAGE2]]\n");
         return 2;
     }
     const std::string package = argv[1];
@@ -71,6 +74,8 @@ int main(int argc, char** argv) {
             rough = std::strtoull(argv[++i], nullptr, 10);
         else if (std::strcmp(argv[i], "--iterations") == 0 && i + 1 < argc)
             options.solverIterations = std::atoi(argv[++i]);
+        else if (std::strcmp(argv[i], "--introitus") == 0 && i + 1 < argc)
+            options.introitusMm = std::atof(argv[++i]);
     }
     const auto loadStart = std::chrono::steady_clock::now();
     auto world = hs::sim::World::load(package, options);
@@ -191,11 +196,23 @@ int main(int argc, char** argv) {
 
     if (canal) {
         const std::size_t tpb = w.ticksPerStep();
+        // The entries' lines through the external os, found with the scope pivoting there; with --introitus each
+        // entry's world pivots at the introitus on its line, the portio free.
+        hs::sim::WorldOptions atOs = options;
+        atOs.introitusMm = 0.0;
+        auto pivotAtOs = hs::sim::World::load(package, atOs);
+        if (!pivotAtOs)
+            return 3;
+        hs::sim::World& w0 = **pivotAtOs;
+        if (options.introitusMm > 0.0)
+            std::printf("the scope pivots at the introitus, %.0f mm behind the external os on each entry's line; the "
+                        "portio hangs on the cervix's supports\n",
+                        options.introitusMm);
         {
             // The clearance along the axial entry's line, every mm from the external os: the contact surface, the held
             // faces, the visual surface.
-            const hs::sim::Script entry = hs::sim::entryScript(w, 0.0, 0.0);
-            const hs::sim::ScopePose pose = hs::sim::scopePose(w.frame(), options.scope, entry.keyframes.back().sample);
+            const hs::sim::Script entry = hs::sim::entryScript(w0, 0.0, 0.0);
+            const hs::sim::ScopePose pose = hs::sim::scopePose(w0.frame(), atOs.scope, entry.keyframes.back().sample);
             const auto nearestOn = [](const hs::SurfaceMesh& m, const hs::Vec3& p) {
                 double d2 = 1e300;
                 for (const hs::Triangle& t : m.triangles)
@@ -206,10 +223,10 @@ int main(int argc, char** argv) {
                 return std::sqrt(d2);
             };
             std::printf("| along the entry line mm | wall mm (contact surface) | wall mm (visual surface) |\n");
-            for (double d = 0.0; d <= hs::distance(w.frame().pivotMm, pose.tipMm); d += 2.0) {
-                const hs::Vec3 p = w.frame().pivotMm + pose.shaft * d;
-                std::printf("| %.0f | %.2f | %.2f |\n", d, nearestOn(w.contactSurface(), p),
-                            nearestOn(w.scene().surface.mesh, p));
+            for (double d = 0.0; d <= hs::distance(w0.frame().pivotMm, pose.tipMm); d += 2.0) {
+                const hs::Vec3 p = w0.frame().pivotMm + pose.shaft * d;
+                std::printf("| %.0f | %.2f | %.2f |\n", d, nearestOn(w0.contactSurface(), p),
+                            nearestOn(w0.scene().surface.mesh, p));
             }
         }
         // The canal as an obstacle: entries along the canal's clearest line and off it, each on a fresh world.
@@ -225,7 +242,10 @@ int main(int argc, char** argv) {
             if (!fresh)
                 return 3;
             hs::sim::World& e = **fresh;
-            const hs::sim::Script entry = hs::sim::entryScript(e, off, toward);
+            const hs::Vec3 line = hs::sim::entryShaft(w0, off, toward);
+            if (options.introitusMm > 0.0 && !e.setApproach(line).ok())
+                return 3;
+            const hs::sim::Script entry = hs::sim::entryScriptAlong(e, line);
             const hs::Vec3 fundus = e.landmarks().fundusMm;
             std::size_t nearest = 0;
             for (std::size_t i = 0; i < e.simulationPointsMm().size(); ++i)

@@ -1,6 +1,9 @@
 // Scripts: key frames interpolated at 1 kHz; malformed scripts refused with the file and the field named.
 #include "hs/sim/Script.h"
+#include "hs/sim/Scope.h"
+#include "hs/sim/World.h"
 
+#include "TestFrames.h"
 #include "TestSupport.h"
 
 #include <gtest/gtest.h>
@@ -17,6 +20,33 @@ void expectRefused(const std::string& text, const std::string& field) {
     ASSERT_FALSE(result.ok()) << text;
     EXPECT_NE(result.error().detail.find("probe.json"), std::string::npos) << result.error().detail;
     EXPECT_NE(result.error().detail.find(field), std::string::npos) << result.error().detail;
+}
+
+TEST(Scope, APivotAtTheIntroitusKeepsTheInsertionCountedFromTheOs) {
+    // The external os at the origin, the introitus 63 mm behind it on the axis: the same insertion puts the tip at
+    // the same depth along the axis, and aiming at a tip gives back that tip.
+    ScopeFrame frame = test::testPivot();
+    frame.introitusMm = 63.0;
+    frame.pivotMm = frame.axis * -63.0;
+    const ScopeConfig config;
+    DeviceSample s;
+    s.insertionMm = 10.0;
+    const ScopePose axial = scopePose(frame, config, s);
+    EXPECT_NEAR(distance(axial.tipMm, Vec3{0.0, 0.0, 10.0}), 0.0, 1e-12);
+    for (const Vec3& tip : {Vec3{5.0, 3.0, 20.0}, Vec3{-4.0, 1.0, 35.0}, Vec3{0.0, 0.0, -5.0}}) {
+        const DeviceSample aimed = sampleAiming(frame, tip);
+        EXPECT_NEAR(distance(scopePose(frame, config, aimed).tipMm, tip), 0.0, 1e-9);
+    }
+    WorldOptions options;
+    EXPECT_TRUE(checkWorldOptions(options).ok());
+    options.introitusMm = 63.0;
+    EXPECT_TRUE(checkWorldOptions(options).ok());
+    for (const double bad : {20.0, 200.0, -1.0}) {
+        options.introitusMm = bad;
+        const Status refused = checkWorldOptions(options);
+        ASSERT_FALSE(refused.ok());
+        EXPECT_NE(refused.error().detail.find("introitusMm"), std::string::npos);
+    }
 }
 
 TEST(Script, InterpolatesBetweenKeyFramesAndHoldsButtons) {

@@ -60,7 +60,7 @@ void UterusModel::pressureForces(const std::vector<Vec3>& pts, double pressureKp
     }
 }
 
-Status buildUterusModel(const scene::Scene& scene, const FemSettings& settings, UterusModel& out) {
+Status buildUterusModel(const scene::Scene& scene, const FemSettings& settings, UterusModel& out, bool portioHeld) {
     if (!scene.simulation)
         return fail(ErrorCode::InvalidInput, "uterus model: the scene has no simulation mesh");
     const TetMesh& mesh = scene.simulation->tets;
@@ -131,8 +131,10 @@ Status buildUterusModel(const scene::Scene& scene, const FemSettings& settings, 
                 const auto pi = static_cast<std::size_t>(p);
                 if (dot(mesh.points[pi] - out.externalOsMm, axis) >= kHeldPortioMm)
                     ligament[pi] = true;
-                else if (outer[pi])
+                else if (outer[pi] && portioHeld)
                     fixed[pi] = {true, true, true};
+                else if (outer[pi])
+                    ligament[pi] = true;
             }
     out.pointHeld.assign(n, 0);
     for (std::size_t i = 0; i < n; ++i)

@@ -353,19 +353,25 @@ Result<PressPlan> pressScript(const World& world, int pathology, double depthMm,
     return plan;
 }
 
-Script entryScript(const World& world, double offAxisDeg, double towardDeg) {
+Vec3 entryShaft(const World& world, double offAxisDeg, double towardDeg) {
     const World::Impl& w = *world.impl_;
     detail::TriangleBvh open;
     open.build(*w.triangles, w.openPointsMm);
-    DeviceSample outside = w.canalEntry(open);
-    const ScopePose clearest = scopePose(w.frame, w.options.scope, outside);
+    const ScopePose clearest = scopePose(w.frame, w.options.scope, w.canalEntry(open));
     const double off = std::clamp(offAxisDeg, 0.0, 45.0) * kDeg, toward = towardDeg * kDeg;
     const Vec3 side = w.frame.anterior * std::cos(toward) + w.frame.left * std::sin(toward);
-    const Vec3 shaft =
-        normalized(clearest.shaft * std::cos(off) + perpendicularTo(clearest.shaft, side) * std::sin(off));
+    return normalized(clearest.shaft * std::cos(off) + perpendicularTo(clearest.shaft, side) * std::sin(off));
+}
+
+Script entryScript(const World& world, double offAxisDeg, double towardDeg) {
+    return entryScriptAlong(world, entryShaft(world, offAxisDeg, towardDeg));
+}
+
+Script entryScriptAlong(const World& world, const Vec3& shaft) {
+    const World::Impl& w = *world.impl_;
     const double canalMm = distance(w.landmarks.externalOsMm, w.landmarks.internalOsMm);
     const double inMm = canalMm + 5.0;
-    outside = sampleAiming(w.frame, w.frame.pivotMm + shaft * 10.0);
+    DeviceSample outside = sampleAiming(w.frame, w.frame.pivotMm + shaft * (10.0 + w.frame.introitusMm));
     outside.insertionMm = -5.0;
     DeviceSample in = outside;
     in.insertionMm = inMm / std::max(0.2, dot(shaft, w.frame.axis)); // its tip 5 mm beyond the internal os's plane

@@ -68,7 +68,7 @@ ScopePose scopePose(const ScopeFrame& frame, const ScopeConfig& config, const De
     ScopePose pose;
     pose.shaft =
         normalized(frame.axis + frame.anterior * std::tan(s.pitchDeg * kDeg) + frame.left * std::tan(s.yawDeg * kDeg));
-    pose.tipMm = frame.pivotMm + pose.shaft * s.insertionMm;
+    pose.tipMm = frame.pivotMm + pose.shaft * (s.insertionMm + frame.introitusMm);
     // Roll 0: the light post, hence an oblique optic's view, points towards anterior.
     const Vec3 anterior = perpendicularTo(pose.shaft, frame.anterior);
     const Vec3 post = rotatedAbout(anterior, pose.shaft, s.rollDeg * kDeg);
@@ -84,12 +84,12 @@ DeviceSample sampleAiming(const ScopeFrame& frame, const Vec3& tipMm, double rol
     DeviceSample s;
     const Vec3 d = tipMm - frame.pivotMm;
     const double along = dot(d, frame.axis);
-    s.insertionMm = norm(d);
+    s.insertionMm = norm(d) - frame.introitusMm;
     if (along > 1e-9) {
         s.pitchDeg = std::atan(dot(d, frame.anterior) / along) / kDeg;
         s.yawDeg = std::atan(dot(d, frame.left) / along) / kDeg;
     } else {
-        s.insertionMm = along; // behind the pivot: straight back along the axis
+        s.insertionMm = along - frame.introitusMm; // behind the pivot: straight back along the axis
     }
     s.rollDeg = rollDeg;
     s.cameraRollDeg = cameraRollDeg;

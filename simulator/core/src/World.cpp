@@ -22,6 +22,8 @@ Status checkWorldOptions(const WorldOptions& o) {
                     "world: stepS must be 0.001-0.02 s and a whole number of 1 ms device ticks");
     if (o.solverIterations < 1 || o.solverIterations > 50)
         return fail(ErrorCode::InvalidInput, "world: solverIterations must be 1-50");
+    if (!std::isfinite(o.introitusMm) || (o.introitusMm != 0.0 && (o.introitusMm < 40.0 || o.introitusMm > 120.0)))
+        return fail(ErrorCode::InvalidInput, "world: introitusMm must be 0 or 40-120 mm");
     return {};
 }
 
@@ -38,6 +40,10 @@ Status World::Impl::build(Progress& progress) {
     if (!f)
         return f.failure();
     frame = *f;
+    if (options.introitusMm > 0.0) {
+        frame.introitusMm = options.introitusMm;
+        frame.pivotMm = landmarks.externalOsMm - frame.axis * options.introitusMm;
+    }
     simRest = scene.simulation->tets;
     HS_TRY(progress.check("world"));
     HS_TRY(setupTissue());
@@ -199,6 +205,15 @@ const std::string& World::sceneSha256() const {
 }
 const ScopeFrame& World::frame() const {
     return impl_->frame;
+}
+
+Status World::setApproach(const Vec3& shaft) {
+    Impl& w = *impl_;
+    if (!(w.frame.introitusMm > 0.0) || w.state.step != 0 || !(norm(shaft) > 1e-9) || !isFinite(shaft))
+        return fail(ErrorCode::InvalidInput, "world: an approach needs introitusMm > 0, a finite direction and no step "
+                                             "taken yet");
+    w.frame.pivotMm = w.landmarks.externalOsMm - normalized(shaft) * w.frame.introitusMm;
+    return {};
 }
 const scene::ScopeLandmarks& World::landmarks() const {
     return impl_->landmarks;

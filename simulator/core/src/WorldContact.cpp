@@ -27,9 +27,12 @@ struct Candidate {
     Vec3 centreMm; ///< the sphere's centre at the target pose
 };
 
-/// The coupling's stiffness per scope dof (N/m, N m/rad, N m/rad).
-std::array<double, 3> couplingStiffness() {
-    return {kCouplingInsertionNPerMm * 1e3, kCouplingAngularNmmPerRad * 1e-3, kCouplingAngularNmmPerRad * 1e-3};
+/// The coupling's stiffness per scope dof (N/m, N m/rad, N m/rad): about a pivot at the introitus, `introitusMm`
+/// further from the tip, the angular spring grows with the lever's square so the tip feels the same 1 N/mm.
+std::array<double, 3> couplingStiffness(double introitusMm) {
+    const double lever = (kCouplingLeverMm + introitusMm) / kCouplingLeverMm;
+    const double angular = kCouplingAngularNmmPerRad * lever * lever * 1e-3;
+    return {kCouplingInsertionNPerMm * 1e3, angular, angular};
 }
 
 /// The sample with the scope dofs `q` (SI) in place of the sample's.
@@ -143,7 +146,7 @@ void World::Impl::physics(const DeviceSample& device, double pressureKpa) {
     for (const Candidate& k : candidates)
         rows.push_back(k.row);
     // The coupling gives way as G K^-1 G^T between the contacts.
-    const std::array<double, 3> stiffness = couplingStiffness();
+    const std::array<double, 3> stiffness = couplingStiffness(frame.introitusMm);
     const std::size_t count = rows.size();
     mechanics::ObstacleCompliance coupling;
     coupling.matrix.assign(count * count, 0.0);
@@ -320,7 +323,7 @@ void World::Impl::publishFrame() {
     f->pivot = frame;
     f->scope = options.scope;
     f->scopeDofs = scopeDofs;
-    f->couplingStiffness = couplingStiffness();
+    f->couplingStiffness = couplingStiffness(frame.introitusMm);
     f->contacts = hapticContacts;
     f->compliance = hapticCompliance;
     f->perforated = state.contact.perforated;

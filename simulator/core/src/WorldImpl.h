@@ -51,6 +51,7 @@ constexpr std::size_t kMaxContacts = 48;
 /// N/mm along the shaft; N mm per radian about the pivot (1 N/mm at the tip 60 mm beyond the pivot).
 constexpr double kCouplingInsertionNPerMm = 1.0;
 constexpr double kCouplingAngularNmmPerRad = 3600.0;
+constexpr double kCouplingLeverMm = 60.0;
 /// The exploration script: the tip's speed inside the cavity, mm/s of its plan (scaled to the duration asked for),
 /// the clearance from the walls it looks for, mm, and how far beside the cavity's axis it looks for it, mm.
 constexpr double kScriptSpeedMmPerS = 10.0;

@@ -48,7 +48,7 @@ mechanics::FemSettings solverSettings(const WorldOptions& options) {
 } // namespace
 
 Status World::Impl::setupTissue() {
-    HS_TRY(mechanics::buildUterusModel(scene, solverSettings(options), uterus));
+    HS_TRY(mechanics::buildUterusModel(scene, solverSettings(options), uterus, !(options.introitusMm > 0.0)));
     // The held portio is where the device pivots: a face with a held point gives no contact.
     faceHeld.assign(uterus.boundary.size(), 0);
     for (std::size_t f = 0; f < uterus.boundary.size(); ++f)

@@ -34,7 +34,11 @@ double scopeFocusFarMm(const ScopeConfig& config);
 
 /// The pivot and its axes.
 struct ScopeFrame {
-    Vec3 pivotMm;  ///< the external os
+    /// Where the shaft pivots: the external os (introitusMm 0), or the introitus that far behind it on the approach.
+    Vec3 pivotMm;
+    /// mm from the pivot to the external os along the shaft (0: the pivot is the os). The insertion counts from the
+    /// os either way: the tip stands at pivot + shaft (insertion + introitusMm).
+    double introitusMm = 0.0;
     Vec3 axis;     ///< unit, along the canal (external -> internal os)
     Vec3 anterior; ///< unit, perpendicular to axis, as close to +y as possible
     Vec3 left;     ///< unit, perpendicular to both, towards the patient's left (-x: the frame is RAS-like)

@@ -35,6 +35,11 @@ struct WorldOptions {
     std::uint64_t seed = 1;
     double stepS = 0.005;     ///< s, the fixed physics step (200 Hz); 0.001-0.02, a whole number of device ticks
     int solverIterations = 1; ///< the tissue solver's iterations per step, 1-50 (docs/simulator.md: the study)
+    /// mm; 0 (the default): the scope pivots at the external os and the portio is held. 40-120 (a bench option, not
+    /// recorded in a trial): it pivots at the introitus that far behind the os, on the canal's axis or on the approach
+    /// setApproach gives, and the portio hangs on the cervix's supports with the rest of it (docs/simulator.md, "What
+    /// is not modelled yet").
+    double introitusMm = 0.0;
 };
 /// InvalidInput naming the field and its range.
 [[nodiscard]] Status checkWorldOptions(const WorldOptions& options);
@@ -106,6 +111,9 @@ public:
     const scene::Scene& scene() const;
     const std::string& sceneSha256() const;
     const ScopeFrame& frame() const;
+    /// With options().introitusMm > 0 and before the first step: the introitus on the line through the external os
+    /// along `shaft` (unit, towards the os). InvalidInput otherwise.
+    [[nodiscard]] Status setApproach(const Vec3& shaft);
     const scene::ScopeLandmarks& landmarks() const;
     /// The simulation mesh at rest (scene region ids) and its boundary (the surface the scope touches).
     const TetMesh& simulationMesh() const;
@@ -165,6 +173,8 @@ private:
     friend Result<struct PressPlan> pressScript(const World& world, int pathology, double depthMm, double holdS);
     friend Script roughScript(const World& world, double durationS, std::uint64_t seed);
     friend Script entryScript(const World& world, double offAxisDeg, double towardDeg);
+    friend Vec3 entryShaft(const World& world, double offAxisDeg, double towardDeg);
+    friend Script entryScriptAlong(const World& world, const Vec3& shaft);
     World();
     struct Impl;
     std::unique_ptr<Impl> impl_;
@@ -200,6 +210,9 @@ Script roughScript(const World& world, double durationS = 60.0, std::uint64_t se
 /// canal's axis (0 anterior, 90 the patient's left), pushed in at 5 mm/s until its tip would stand 5 mm beyond the
 /// internal os, held there 1 s, with the inflow open.
 Script entryScript(const World& world, double offAxisDeg = 0.0, double towardDeg = 0.0);
+/// The shaft's direction of that entry (unit, towards the os), and the entry along a given direction through the os.
+Vec3 entryShaft(const World& world, double offAxisDeg = 0.0, double towardDeg = 0.0);
+Script entryScriptAlong(const World& world, const Vec3& shaft);
 
 /// A scripted press (the check that the device feels the tissue): in through the canal with the inflow open, the tip
 /// brought head-on to a face of the cavity as the fluid opens it (60 mmHg), then the device pushed `depthMm` beyond
