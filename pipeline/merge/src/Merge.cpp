@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 namespace hs::merge {
 namespace {
@@ -86,6 +88,47 @@ void labelPathology(SurfaceMesh& surface, const SurfaceMesh& organ) {
     surface.faceLabels[kContactLabel] = std::move(contact);
 }
 
+std::string mm(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f", v);
+    return text;
+}
+
+double nearest(const SurfaceMesh& mesh, const std::vector<Vec3>& points) {
+    std::vector<std::size_t> face;
+    std::vector<double> dist;
+    detail::nearestFaces(mesh, points, face, dist);
+    return dist.empty() ? 0.0 : *std::min_element(dist.begin(), dist.end());
+}
+
+/// Why the displaced organ crossed itself, for the refusal: where, and each pathology with its size and how far it
+/// lies from the crossings (the ones that pushed the wall there lie nearest), and the room between the pathologies.
+std::string crowdedWall(const SurfaceMesh& organ, const std::vector<std::pair<std::size_t, std::size_t>>& crossing,
+                        const std::vector<pathology::GrownPathology>& pathologies) {
+    const auto centres = faceCentres(organ);
+    std::vector<Vec3> at;
+    Vec3 mean;
+    for (const auto& [a, b] : crossing)
+        for (const auto f : {a, b}) {
+            at.push_back(centres[f]);
+            mean += centres[f];
+        }
+    mean = mean / static_cast<double>(std::max<std::size_t>(1, at.size()));
+    std::string text = "merge: the organ, displaced to make room for the pathologies, intersects itself (" +
+                       std::to_string(crossing.size()) + " triangle pairs about (" + mm(mean.x) + ", " + mm(mean.y) +
+                       ", " + mm(mean.z) + ") mm): the pathologies push the wall too far for the room there;";
+    for (std::size_t i = 0; i < pathologies.size(); ++i) {
+        const auto& p = pathologies[i];
+        text += std::string(i ? "," : "") + " " + std::string(clinical::toString(p.kind)) + " '" + p.id + "' (" +
+                mm(p.descriptors.sizeMm) + " mm) " + mm(nearest(p.surface, at)) + " mm from the crossings";
+    }
+    for (std::size_t i = 0; i < pathologies.size(); ++i)
+        for (std::size_t j = i + 1; j < pathologies.size(); ++j)
+            text += "; '" + pathologies[i].id + "' and '" + pathologies[j].id + "' lie " +
+                    mm(nearest(pathologies[j].surface, pathologies[i].surface.points)) + " mm apart";
+    return text;
+}
+
 } // namespace
 
 Result<MergeResult> mergeBody(const pathology::PathologyResult& grown, const MergeParams& params, Progress& progress) {
@@ -101,15 +144,13 @@ Result<MergeResult> mergeBody(const pathology::PathologyResult& grown, const Mer
         ScopedStepTimer timer(result.timings, "cover");
         if (!analyzeTopology(organ).isWatertight())
             return fail(ErrorCode::InvalidInput, "merge: the organ surface is not closed and manifold");
-        if (const std::size_t n = detail::selfIntersections(organ); n > 0)
-            return fail(ErrorCode::InvalidInput,
-                        "merge: the organ, displaced to make room for the pathologies, intersects itself (" +
-                            std::to_string(n) + " triangle pairs): the pathologies push the wall too far");
+        if (const auto crossing = detail::selfIntersections(organ); !crossing.empty())
+            return fail(ErrorCode::InvalidInput, crowdedWall(organ, crossing, grown.pathologies));
         for (const auto& p : grown.pathologies) {
             HS_TRY(progress.check("merge"));
             if (!analyzeTopology(p.surface).isWatertight())
                 return fail(ErrorCode::InvalidInput, "merge: pathology '" + p.id + "' is not closed and manifold");
-            if (const std::size_t n = detail::selfIntersections(p.surface); n > 0)
+            if (const std::size_t n = detail::selfIntersections(p.surface).size(); n > 0)
                 return fail(ErrorCode::InvalidInput, "merge: pathology '" + p.id + "' intersects itself (" +
                                                          std::to_string(n) + " triangle pairs)");
             SurfaceMesh cover = outwardOriented(coverOf(p.surface, params.coverMm));

@@ -98,11 +98,16 @@ SurfaceMesh offsetWrap(const SurfaceMesh& closed, double alpha, double offset) {
     return fromCgal(wrap);
 }
 
-std::size_t selfIntersections(const SurfaceMesh& mesh) {
-    const FastMesh m = toCgal<FastMesh>(mesh);
+std::vector<std::pair<std::size_t, std::size_t>> selfIntersections(const SurfaceMesh& mesh) {
+    const FastMesh m = toCgal<FastMesh>(mesh); // faces in the order of mesh.triangles
     std::vector<std::pair<FastMesh::Face_index, FastMesh::Face_index>> pairs;
     PMP::self_intersections(m, std::back_inserter(pairs));
-    return pairs.size();
+    std::vector<std::pair<std::size_t, std::size_t>> out;
+    out.reserve(pairs.size());
+    for (const auto& [a, b] : pairs)
+        out.emplace_back(std::min(a.idx(), b.idx()), std::max(a.idx(), b.idx()));
+    std::sort(out.begin(), out.end());
+    return out;
 }
 
 Result<SurfaceMesh> unite(const SurfaceMesh& first, const std::vector<const SurfaceMesh*>& others) {

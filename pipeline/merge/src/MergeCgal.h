@@ -4,6 +4,7 @@
 #include "hs/core/Result.h"
 #include "hs/core/SurfaceMesh.h"
 
+#include <utility>
 #include <vector>
 
 namespace hs::merge::detail {
@@ -13,8 +14,8 @@ namespace hs::merge::detail {
 /// Portaneri, Rouxel-Labbe, Hemmer, Cohen-Steiner, Alliez, SIGGRAPH 2022; CGAL alpha_wrap_3). Deterministic.
 SurfaceMesh offsetWrap(const SurfaceMesh& closed, double alpha, double offset);
 
-/// Number of intersecting triangle pairs of a surface with itself.
-std::size_t selfIntersections(const SurfaceMesh& mesh);
+/// The pairs of triangles (indices into mesh.triangles) of a surface that intersect each other.
+std::vector<std::pair<std::size_t, std::size_t>> selfIntersections(const SurfaceMesh& mesh);
 
 /// Union of closed, outward-oriented surfaces (exact-construction corefinement, CGAL PMP). BackendFailure when
 /// CGAL cannot compute it.

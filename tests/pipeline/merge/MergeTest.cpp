@@ -146,5 +146,29 @@ TEST(Merge, RefusesANonPositiveCover) {
     EXPECT_FALSE(mergeBody(empty, params).ok());
 }
 
+// A displaced organ that crosses itself is refused naming each pathology, its size and how far it lies from the
+// crossings, so a user knows which one to make smaller or move.
+TEST(Merge, ACrowdedWallNamesEachPathologyAndTheRoomAtTheCrossings) {
+    pathology::PathologyParams params;
+    params.pathologies.push_back(test::myoma("m", clinical::GrowthModel::Skeleton, {2, -1}, 20.0));
+    auto grown = pathology::growPathologies(test::testOrgan(1), params);
+    ASSERT_TRUE(grown.ok()) << grown.error().detail;
+    // The organ vertex nearest the myoma's anchor pulled 30 mm out of the wall, through the cavity and the far wall.
+    const auto& m = grown->pathologies[0];
+    std::size_t nearestVertex = 0;
+    for (std::size_t v = 0; v < grown->organ.points.size(); ++v)
+        if (norm2(grown->organ.points[v] - m.anchor) < norm2(grown->organ.points[nearestVertex] - m.anchor))
+            nearestVertex = v;
+    grown->organ.points[nearestVertex] -= m.intoWall * 30.0;
+    const auto merged = mergeBody(*grown);
+    ASSERT_FALSE(merged.ok());
+    const std::string& e = merged.error().detail;
+    EXPECT_NE(e.find("intersects itself ("), std::string::npos) << e;
+    char size[64];
+    std::snprintf(size, sizeof size, "myoma 'm' (%.1f mm) ", m.descriptors.sizeMm);
+    EXPECT_NE(e.find(size), std::string::npos) << e;
+    EXPECT_NE(e.find(" mm from the crossings"), std::string::npos) << e;
+}
+
 } // namespace
 } // namespace hs::merge
