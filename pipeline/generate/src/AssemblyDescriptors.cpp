@@ -154,6 +154,7 @@ struct RegionShape {
     double outside = 0.0;  ///< mm^3
     Vec3 centre;
     std::vector<Vec3> surface;
+    bool bordersEndometrium = false; ///< a face of it is shared with a tet of the endometrium's region
 };
 
 RegionShape regionShape(const TetMesh& tets, const std::vector<std::array<std::int32_t, 4>>& adjacent,
@@ -182,6 +183,8 @@ RegionShape regionShape(const TetMesh& tets, const std::vector<std::array<std::i
             const auto u = adjacent[t][k];
             if (u >= 0 && tets.regionOf(static_cast<std::size_t>(u)) == region)
                 continue;
+            if (u >= 0 && tets.regionOf(static_cast<std::size_t>(u)) == kEndometriumRegion)
+                r.bordersEndometrium = true;
             for (const int corner : kTetFacePoints[k])
                 onSurface[static_cast<std::size_t>(tet[static_cast<std::size_t>(corner)])] = 1;
         }
@@ -218,6 +221,8 @@ pathology::WallContact contactOf(const TetMesh& tets, const std::vector<std::arr
     constexpr double kReachMm = 30.0; // as far as the pathology stage looks for the surfaces
     f.endometriumDistanceMm = f.cavity > 0.0 ? 0.0 : distanceTo(c.points, boundary, cavityFaces, kReachMm);
     f.serosaDistanceMm = f.outside > 0.0 ? 0.0 : distanceTo(c.points, boundary, serosaFaces, kReachMm);
+    // FIGO 3 against 4 by the layer as the tets have it (laid after placement), not by a distance to the cavity.
+    f.bordersEndometrium = shape.bordersEndometrium;
     // The base lies on the side it stands out of, else on the nearer surface (as the pathology stage chooses it).
     c.serosalBase = !(f.cavity > 0.0 || (f.outside == 0.0 && f.endometriumDistanceMm <= f.serosaDistanceMm));
     const auto& rim = c.serosalBase ? serosaRim : cavityRim;

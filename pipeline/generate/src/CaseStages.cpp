@@ -3,6 +3,7 @@
 #include "hs/core/Resources.h"
 #include "hs/generate/Seeds.h"
 
+#include <algorithm>
 #include <filesystem>
 
 namespace hs::generate {
@@ -60,6 +61,7 @@ pathology::PathologyParams pathologyParamsFor(const scene::CaseSpec& spec,
                                               const std::optional<clinical::GrowthModel>& override) {
     pathology::PathologyParams params;
     params.seed = streamSeed(spec.seed, Stream::Pathology);
+    params.endometriumThicknessMm = placementLiningMm(spec);
     for (const auto& p : spec.pathologies) {
         pathology::PathologyRequest r;
         r.id = p.id;
@@ -134,6 +136,21 @@ texture::BakeParams bakeParamsFor(const scene::CaseSpec& spec, std::optional<int
     for (auto& c : p.vesselParams.perClass)
         c.attractorsPerMm2 *= spec.texture.vesselDensity;
     return p;
+}
+
+double placementLiningMm(const scene::CaseSpec& spec) {
+    if (spec.anatomy.endometrialThicknessMm)
+        return 0.5 * *spec.anatomy.endometrialThicknessMm;
+    // The thickest lining of the patient's cycle: a myoma's FIGO type does not change with the phase, so one kept
+    // off the endometrium stays off it in every phase, and a change of phase stays the tissue stage's alone.
+    double thickest = clinical::typicalEndometrialThicknessMm(spec.patient);
+    clinical::PatientParams p = spec.patient;
+    for (const auto phase :
+         {clinical::CyclePhase::Menstrual, clinical::CyclePhase::Proliferative, clinical::CyclePhase::Secretory}) {
+        p.cyclePhase = phase;
+        thickest = std::max(thickest, clinical::typicalEndometrialThicknessMm(p));
+    }
+    return 0.5 * thickest; // ultrasound measures across the cavity: two linings
 }
 
 TissueLayerParams tissueLayerParamsFor(const scene::CaseSpec& spec) {

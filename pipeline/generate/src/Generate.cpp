@@ -257,6 +257,9 @@ std::optional<CaseChange> firstChangedStage(const scene::CaseSpec& before, const
         return CaseChange{Stage::Organ, "/anatomy"};
     if (!(before.pathologies == after.pathologies))
         return CaseChange{Stage::Pathology, "/pathologies"};
+    // The lining a myoma is kept clear of (placementLiningMm) is the case's thickness when it gives one.
+    if (!after.pathologies.empty() && placementLiningMm(before) != placementLiningMm(after))
+        return CaseChange{Stage::Pathology, "/anatomy/endometrialThicknessMm"};
     scene::MeshingParams meshingBefore = before.meshing;
     meshingBefore.threads = after.meshing.threads; // the thread count never changes a result
     if (!(meshingBefore == after.meshing))

@@ -12,7 +12,7 @@ namespace hs::pathology {
 clinical::FigoType classifyFigo(const WallFractions& f, double tol) {
     const bool cavity = f.cavity > 0.01;
     const bool serosal = f.outside > 0.02;
-    const bool touchesEndometrium = cavity || f.endometriumDistanceMm <= tol;
+    const bool touchesEndometrium = cavity || f.bordersEndometrium.value_or(f.endometriumDistanceMm <= tol);
     if (cavity && serosal)
         return clinical::FigoType{f.cavity >= 0.5 ? 1 : 2, f.outside >= 0.5 ? 6 : 5};
     if (cavity)

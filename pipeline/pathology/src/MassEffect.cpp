@@ -252,7 +252,12 @@ std::vector<Push> planPushes(const Planned& p, const OrganInfo& info, const Path
                          // wall between the myoma's top and the endometrium, or just under the endometrium
         const double hi = std::min(-0.3, -shallowest + 0.2 + std::clamp(0.5 * std::max(shallowest, 0.0), 0.3, 3.0));
         const double lo = std::max(-0.6 * w, std::min(-shallowest + 0.2, hi - 0.3));
-        pushes.push_back(Push{e, -u, lo, std::max(hi, lo + 0.3), lateral + c, windowRamp, 0.0});
+        // The lining the scene lays over the cavity after placement belongs to the cavity's side: the myoma keeps
+        // the clearance from its inner face, so the layer ends in myometrium before it (FIGO 4, not 3).
+        const double keep = c + params.endometriumThicknessMm;
+        Push clear{e, -u, lo, std::max(hi, lo + 0.3), lateral + keep, windowRamp, 0.0};
+        clear.clearance = keep;
+        pushes.push_back(clear);
     }
     if (clearOfSerosa) { // the serosa bulges over the myoma; the ramp lies in the wall below the serosa
         const double lo = std::max(1.0, std::min(deepest + 0.2, 0.5 * w));

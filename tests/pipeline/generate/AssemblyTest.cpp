@@ -176,8 +176,9 @@ scene::CaseSpec cubeMyomaCase(int figo) {
 }
 
 /// The body with an 8 mm cube of myoma tets sunk `depthMm` (its centre) below the posterior endometrium; the
-/// cavity faces above it are draped over it (pathology label 1) when `draped`.
-MeasuredDescriptors cubeMyoma(double depthMm, bool draped, int askedFigo) {
+/// cavity faces above it are draped over it (pathology label 1) when `draped`. The cube's top `liningMm` (whole 1 mm
+/// cells) is a tet layer of the endometrium's region over the myoma, as the scene's tissue layers lay it.
+MeasuredDescriptors cubeMyoma(double depthMm, bool draped, int askedFigo, double liningMm = 0.0) {
     SyntheticBody b = syntheticBody();
     const auto [seat, normal] = posteriorSeat(b);
     const Vec3 centre = seat - normal * depthMm;
@@ -196,7 +197,14 @@ MeasuredDescriptors cubeMyoma(double depthMm, bool draped, int askedFigo) {
                 over[f] = 1;
         }
     }
-    const TetMesh tets = tetCube(centre, normal, 8.0, 8, pathologyRegion(0));
+    TetMesh tets = tetCube(centre, normal, 8.0, 8, pathologyRegion(0));
+    for (std::size_t t = 0; t < tets.tets.size(); ++t) {
+        Vec3 c;
+        for (const auto v : tets.tets[t])
+            c += tets.points[static_cast<std::size_t>(v)] * 0.25;
+        if (dot(c - centre, normal) > 4.0 - liningMm)
+            tets.regions[t] = kEndometriumRegion;
+    }
     return clinicalDescriptors(cubeMyomaCase(askedFigo), b.organ.mesh, b.organ.layout, tets, b.boundary);
 }
 
@@ -330,11 +338,26 @@ TEST(Assembly, AMyomaMostlyInTheCavityMeasuresFigo1) {
 }
 
 TEST(Assembly, AMyomaUnderTheEndometriumMeasuresFigo3AndIsReported) {
-    const auto m = cubeMyoma(4.5, false, 2); // its top 0.5 mm under the endometrium, nothing draped
+    // Its top 0.5 mm under the cavity's surface, nothing draped; the cube's top millimetre is the lining.
+    const auto m = cubeMyoma(4.5, false, 2, 1.0);
     const auto& p = m.clinical.pathologies.at(0);
     ASSERT_TRUE(p.figo);
     EXPECT_EQ(p.figo->toString(), "3");
     EXPECT_TRUE(hasWarning(m, "myoma-1: asked FIGO 2, the final body measures FIGO 3"));
+}
+
+// FIGO 3 against 4 is contact with the endometrium as the tets have it (the layer is laid after placement), not a
+// distance to the cavity's surface: a myoma 2.5 mm deep (beyond the 1 mm tolerance) that borders the lining's tets is
+// FIGO 3; one 0.5 mm deep with no lining tet against it is FIGO 4.
+TEST(Assembly, Figo3Against4IsContactWithTheEndometriumsTets) {
+    const auto bordered = cubeMyoma(4.5, false, 4, 2.0); // its top 2.5 mm deep under a 2 mm lining of tets
+    ASSERT_TRUE(bordered.clinical.pathologies.at(0).figo);
+    EXPECT_EQ(bordered.clinical.pathologies[0].figo->toString(), "3");
+    EXPECT_TRUE(hasWarning(bordered, "myoma-1: asked FIGO 4, the final body measures FIGO 3"));
+    const auto clear = cubeMyoma(4.5, false, 4); // its top 0.5 mm deep, no lining tet
+    ASSERT_TRUE(clear.clinical.pathologies.at(0).figo);
+    EXPECT_EQ(clear.clinical.pathologies[0].figo->toString(), "4");
+    EXPECT_FALSE(hasWarning(clear, "FIGO"));
 }
 
 TEST(Assembly, AMyomaDeepInTheWallMeasuresFigo4) {

@@ -230,6 +230,29 @@ TEST(Generate, FirstChangedStageNamesTheEarliestStageAndField) {
     EXPECT_EQ(firstChangedStage(a, b)->field, "/patient");
 }
 
+// A myoma of FIGO 4-7 is placed clear of the lining the tissue stage lays later: the case's thickness, when it gives
+// one, is then the pathology stage's input; the cycle phase is not (placement clears the cycle's thickest lining).
+TEST(Generate, TheEndometrialThicknessReachesBackToThePathologies) {
+    scene::CaseSpec a = lightCase();
+    a.patient.menopausal = false;
+    a.patient.cyclePhase = clinical::CyclePhase::Proliferative;
+    a.anatomy.endometrialThicknessMm.reset();
+    scene::CaseSpec b = a;
+    b.patient.cyclePhase = clinical::CyclePhase::Secretory;
+    ASSERT_TRUE(firstChangedStage(a, b));
+    EXPECT_EQ(firstChangedStage(a, b)->stage, Stage::Tissue);
+    EXPECT_EQ(placementLiningMm(a), placementLiningMm(b));
+    EXPECT_GE(placementLiningMm(a), tissueLayerParamsFor(b).endometriumThicknessMm);
+    EXPECT_EQ(pathologyParamsFor(a).endometriumThicknessMm, placementLiningMm(a));
+    b.anatomy.endometrialThicknessMm = 14.0;
+    EXPECT_EQ(firstChangedStage(a, b)->stage, Stage::Pathology);
+    EXPECT_EQ(firstChangedStage(a, b)->field, "/anatomy/endometrialThicknessMm");
+    EXPECT_EQ(placementLiningMm(b), 7.0);
+    b.pathologies.clear();
+    a.pathologies.clear();
+    EXPECT_EQ(firstChangedStage(a, b)->stage, Stage::Tissue); // nothing to place
+}
+
 TEST(Generate, RefusesAnInvalidCaseNamingTheField) {
     scene::CaseSpec bad = lightCase();
     bad.pathologies[0].figo = clinical::FigoType{9, -1};

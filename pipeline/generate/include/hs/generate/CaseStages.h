@@ -51,6 +51,11 @@ meshing::MeshMethod meshMethodFor(const scene::CaseSpec& spec);
 /// The meshing stage's parameters; `threads` replaces the case's thread count (never changes the mesh).
 meshing::MeshParams meshParamsFor(const scene::CaseSpec& spec, std::optional<int> threads = std::nullopt);
 
+/// mm, the single endometrial layer the pathology stage keeps a myoma of FIGO 4-7 clear of: the case's thickness, or
+/// else the thickest of the patient's cycle (so the phase does not move a myoma). The tissue stage lays the lining
+/// the phase has, never thicker than this.
+double placementLiningMm(const scene::CaseSpec& spec);
+
 /// The wall's tissue layers the case asks for (the endometrium's thickness follows the patient).
 TissueLayerParams tissueLayerParamsFor(const scene::CaseSpec& spec);
 

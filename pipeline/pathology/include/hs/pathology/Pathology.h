@@ -52,6 +52,9 @@ struct PathologyParams {
     /// the model's cavity has its distended depth (8 mm, docs/anatomy.md), 4 mm on either side of its midplane, and
     /// a 2.9 mm office scope passes in front of the mass (docs/pathology.md, "The organ adapts").
     double distendedGapMm = 4.0;
+    /// mm, the endometrium the scene lays over the cavity's surface after placement (one layer, generate's tissue
+    /// layers): a myoma that must not reach it (FIGO 4) keeps clearanceMm from its inner face. 0: a surface only.
+    double endometriumThicknessMm = 0.0;
     double contactToleranceMm = 1.0;          ///< mm; closer than this to the endometrium counts as contact (FIGO 3)
     double minimumGapMm = 1.0;                ///< mm; two pathologies closer than this overlap (an error)
     double measureVoxelFraction = 1.0 / 40.0; ///< voxel edge for volume fractions, fraction of the size
@@ -146,12 +149,16 @@ struct WallFractions {
     double endometriumDistanceMm = 1e9;
     double serosaDistanceMm = 1e9;
     bool pedunculated = false;
+    /// Whether it borders the endometrium, where a measurement sees the layer itself (a scene's tets, whose lining is
+    /// a region of its own); unset, contact is closer than the tolerance to the cavity's surface.
+    std::optional<bool> bordersEndometrium;
 };
 
 /// FIGO type from fractions and contacts (docs/references.md [Munro2011]: 0 pedunculated intracavitary,
 /// 1 < 50 % intramural, 2 >= 50 %, 3 contacts the endometrium, 4 intramural, 5 subserosal >= 50 % intramural,
 /// 6 < 50 %, 7 pedunculated subserosal; hybrids X-Y when it reaches both sides). In the cavity means more than 0.01
-/// of the volume, outside more than 0.02.
+/// of the volume, outside more than 0.02. Contact with the endometrium (3 against 4, 3-5 against 5) is
+/// `bordersEndometrium` where set, else a distance to the cavity's surface within `contactToleranceMm`.
 clinical::FigoType classifyFigo(const WallFractions& f, double contactToleranceMm);
 
 /// A pathology against the wall it grows from, as some measurement found it.
