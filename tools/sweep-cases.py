@@ -77,9 +77,9 @@ def sweep_case(i, base):
 
 
 def main():
-    if len(sys.argv) != 2:
+    if len(sys.argv) != 2 or sys.argv[1] in ("-h", "--help"):
         sys.stderr.write(__doc__)
-        return 2
+        return 0 if len(sys.argv) == 2 else 2
     out = sys.argv[1]
     os.makedirs(out, exist_ok=True)
     with open(DEFAULT, encoding="utf-8") as f:
