@@ -8,6 +8,7 @@
 // --repeat measures each row N times and keeps the run with the least CPU time (on a machine busy with other work);
 // --rows keeps the full-detail rows with the maps (m), with the albedo (a), the light-detail rows (l);
 // --light-reduction R decimates the light detail's surface by R (EndoscopicLook::lightReduction).
+// --edge-magnification M sets the optic's barrel distortion in every mode (EndoscopicLook::edgeMagnification; 1: none).
 //   bench_render SCENE_DIR --still FRACTION ROLL_DEG --png OUT.png [--sizes WxH] [--full | --light]
 // --still draws one picture of the surface at rest in clear saline: the 30 degree optic's tip FRACTION of the way
 // from the internal os to the fundus, aimed about the pivot, rolled by ROLL_DEG (the docs' picture), with the detail
@@ -43,6 +44,9 @@
 #include <vector>
 
 namespace {
+
+/// The optic's barrel distortion every view of this run draws with (--edge-magnification).
+double edgeMagnification = hs::simrender::EndoscopicLook{}.edgeMagnification;
 
 struct Size {
     int width = 0, height = 0;
@@ -81,6 +85,7 @@ Row measure(const hs::scene::Scene& scene, const hs::scene::ScopeLandmarks& land
     vtkNew<vtkRenderer> renderer;
     window->AddRenderer(renderer);
     hs::simrender::EndoscopicLook look;
+    look.edgeMagnification = edgeMagnification;
     look.materialMaps = kind.maps;
     look.detail = kind.detail;
     look.lightReduction = lightReduction;
@@ -159,6 +164,7 @@ int still(const hs::scene::Scene& scene, const hs::scene::ScopeLandmarks& landma
     vtkNew<vtkRenderer> renderer;
     window->AddRenderer(renderer);
     hs::simrender::EndoscopicLook look;
+    look.edgeMagnification = edgeMagnification;
     look.detail = detail;
     hs::simrender::EndoscopicView view(renderer, look);
     view.setSurface(scene.surface);
@@ -244,6 +250,7 @@ int exploration(const std::string& folder, Size size, double fps, const std::str
         l.window->SetSize(size.width, size.height);
         l.window->AddRenderer(l.renderer);
         hs::simrender::EndoscopicLook look;
+        look.edgeMagnification = edgeMagnification;
         look.hud = false; // the circle's statistics of the picture alone
         if (k == 1) {     // as the view drew before the camera head
             look.autoExposure = false;
@@ -380,6 +387,8 @@ int main(int argc, char** argv) {
             repeat = std::max(1, std::atoi(argv[++i]));
         else if (a == "--light-reduction" && i + 1 < argc)
             lightReduction = std::atof(argv[++i]);
+        else if (a == "--edge-magnification" && i + 1 < argc)
+            edgeMagnification = std::atof(argv[++i]);
         else if (a == "--rows" && i + 1 < argc)
             only = argv[++i];
         else if (a == "--sizes" && i + 1 < argc)

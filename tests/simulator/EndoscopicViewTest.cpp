@@ -18,6 +18,7 @@
 #include <vtkUnsignedCharArray.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 namespace hs::simrender {
@@ -201,6 +202,70 @@ TEST_F(EndoscopicViewTest, DrawsTheMapsWithTheScenesUvOriginAtTheTopLeft) {
         draw(view); // looking along +x, +z up
         EXPECT_GT(channel(80, 85, 0), channel(80, 85, 2) + 20) << "the upper half is red";
         EXPECT_GT(channel(80, 35, 2), channel(80, 35, 0) + 20) << "the lower half is blue";
+    }
+}
+
+/// Column of the first pixel right of the middle row's centre whose blue outweighs its red, on a picture of a flat
+/// wall 10 mm ahead that is red left of y = -`edgeMm` (image right: looking along +x with +z up) and blue beyond.
+int boundaryColumn(vtkRenderWindow* window, vtkRenderer* renderer, double edgeMm, double edgeMagnification) {
+    // A 1 mm grid of vertices, the colour boundary on a grid line: the lens model moves vertices.
+    scene::VisualSurface surface;
+    const int n = 40;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) {
+            surface.mesh.points.push_back({10.0, 20.0 - i, 20.0 - j});
+            surface.uvs.push_back({static_cast<float>(i) / n, static_cast<float>(j) / n});
+        }
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const std::int32_t a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+            surface.mesh.triangles.push_back({a, b, d});
+            surface.mesh.triangles.push_back({a, d, c});
+        }
+    const int texels = 400; // 10 per millimetre
+    surface.albedo = ImageU8::create(texels, 8, 3).value();
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < texels; ++x) {
+            const bool beyond = 20.0 - 40.0 * (x + 0.5) / texels < -edgeMm;
+            surface.albedo.at(x, y, 0) = beyond ? 20 : 230;
+            surface.albedo.at(x, y, 2) = beyond ? 230 : 20;
+        }
+    EndoscopicLook look;
+    look.detail = ViewDetail::Light;
+    look.hud = false;
+    look.autoExposure = false;
+    look.exposure = 40.0;
+    look.edgeMagnification = edgeMagnification;
+    look.lightReduction = 0.0; // every grid vertex drawn
+    EndoscopicView view(renderer, look);
+    view.setSurface(surface);
+    view.setPose({{0, 0, 0}, {1, 0, 0}, {0, 0, 1}, 90.0});
+    window->Render();
+    vtkNew<vtkUnsignedCharArray> row;
+    window->GetRGBACharPixelData(0, 60, 159, 60, 0, row);
+    for (int x = 80; x < 160; ++x)
+        if (row->GetValue(4 * x + 2) > row->GetValue(4 * x))
+            return x;
+    return -1;
+}
+
+// The optic's barrel distortion: a point the rectilinear camera puts at rho of the field's radius shows at
+// atan(a rho) / atan(a) with 1 / (1 + a^2) = 0.52 (the relative size at the periphery of rigid endoscopes): a wall edge
+// 5 mm off the axis at 10 mm (rho 0.5 of a 90-degree field) moves from 30 to 35.1 px of the 60 px radius, one at 8 mm
+// (rho 0.8) from 48 to 51.4 px. With the magnification at 1 it stays where the rectilinear camera puts it.
+TEST_F(EndoscopicViewTest, TheOpticsBarrelDistortionMovesThePictureOutwardsAsARodLensDoes) {
+    const double a = std::sqrt(1.0 / 0.52 - 1.0);
+    for (const double rho : {0.5, 0.8}) {
+        const double centre = 79.5; // between the middle two of 160 columns
+        const double distorted = centre + 60.0 * std::atan(a * rho) / std::atan(a);
+        const double rectilinear = centre + 60.0 * rho;
+        const int seen = boundaryColumn(m_window, m_renderer, 10.0 * rho, 0.52);
+        const int straight = boundaryColumn(m_window, m_renderer, 10.0 * rho, 1.0);
+        std::printf("rho %.1f: the edge at column %d (the lens model %.1f), %d without distortion (rectilinear %.1f)\n",
+                    rho, seen, distorted, straight, rectilinear);
+        EXPECT_NEAR(seen, distorted, 1.5) << "rho " << rho;
+        EXPECT_GT(seen, rectilinear + 2.0) << "rho " << rho;
+        EXPECT_NEAR(straight, rectilinear, 1.5) << "rho " << rho;
     }
 }
 

@@ -64,6 +64,35 @@ constexpr const char* kFluidShader = R"(//VTK::TCoord::Impl
   }
 )";
 
+/// The optic's barrel distortion, applied to the tissue's vertices after VTK's projection (a vertex-shader lens
+/// model: the visual surface is refined to about a millimetre where the scope sees it, so its triangles stay small
+/// against the curvature of the map). In units of the optic's circle (rho = 1 at its edge; hsFieldScale turns the
+/// viewport's normalized coordinates into them), a point the rectilinear camera puts at rho goes to
+/// atan(a rho) / atan(a): monotone for every rho, so nothing outside the field folds into it, the edge stays at the
+/// field's angle, and the radial magnification at the edge is 1 / (1 + a^2) of the centre's. The clipper cuts a
+/// triangle that crosses the near plane after this shader, at points it does not move: so that those and their
+/// neighbours agree, the map fades in over the first hsFadeMm of depth (a wall that close fills the field anyway).
+/// Otherwise a sliver of the background showed at the field's edge with the lens against the canal.
+constexpr const char* kOpticVertexShader = R"(//VTK::PositionVC::Impl
+  if (hsBarrel > 0.0 && gl_Position.w > hsNear) {
+    float hsRho = length(gl_Position.xy / gl_Position.w * hsFieldScale);
+    float hsFade = smoothstep(hsNear, hsFadeMm, gl_Position.w);
+    if (hsRho > 1.0e-6)
+      gl_Position.xy *= mix(1.0, atan(hsBarrel * hsRho) / (atan(hsBarrel) * hsRho), hsFade);
+  }
+)";
+
+/// mm of depth over which the optic's distortion fades in from the near plane (kOpticVertexShader).
+constexpr double kDistortionFadeMm = 2.0;
+
+/// a of the optic's map atan(a rho) / atan(a), whose radial magnification at the field's edge is `edgeMagnification`
+/// of the centre's, 1 / (1 + a^2); 0 (a rectilinear image) at 1 or above.
+double barrelCoefficient(double edgeMagnification) {
+    if (!std::isfinite(edgeMagnification) || edgeMagnification >= 1.0)
+        return 0.0;
+    return std::sqrt(1.0 / std::max(edgeMagnification, 0.05) - 1.0);
+}
+
 /// The optic's vignetting: opacity of the mask at fractions of the field's radius (a rod-lens optic's relative
 /// illumination: even over most of the field, falling in its outer tenth; black beyond it).
 constexpr std::array<std::array<double, 2>, 7> kVignette{
@@ -202,7 +231,8 @@ struct EndoscopicView::Impl {
     std::vector<Vec3> drawnPoints, scratch;
     int maskWidth = -1, maskHeight = -1;
     double fieldOfViewDeg = 90.0;
-    double occluderFieldOfViewDeg = -1.0; ///< degrees; the field the occluder was built for
+    std::array<double, 2> fieldScale{1.0, 1.0}; ///< the viewport's normalized coordinates per radius of the circle
+    double occluderFieldOfViewDeg = -1.0;       ///< degrees; the field the occluder was built for
     double turbidity = 0.0, redOut = 0.0;
     AutoExposure autoExposure;
     std::array<double, 3> white{1.0, 1.0, 1.0};
@@ -275,6 +305,7 @@ EndoscopicView::EndoscopicView(vtkRenderer* renderer, const EndoscopicLook& look
     d.actor->GetProperty()->BackfaceCullingOff(); // inside the organ the scope sees the backs of surfaces too
     vtkShaderProperty* shader = d.actor->GetShaderProperty();
     shader->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true, kFluidShader, false);
+    shader->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true, kOpticVertexShader, false);
     renderer->AddActor(d.actor);
 
     d.maskGeometry = vtkSmartPointer<vtkPolyData>::New();
@@ -654,6 +685,12 @@ void EndoscopicView::Impl::updateBackground() {
 }
 
 void EndoscopicView::Impl::updateUniforms() {
+    vtkUniforms* v = actor->GetShaderProperty()->GetVertexCustomUniforms();
+    v->SetUniformf("hsBarrel", static_cast<float>(barrelCoefficient(look.edgeMagnification)));
+    v->SetUniformf("hsNear", static_cast<float>(look.nearClipMm));
+    v->SetUniformf("hsFadeMm", static_cast<float>(std::max(kDistortionFadeMm, 2.0 * look.nearClipMm)));
+    const float scale[2] = {static_cast<float>(fieldScale[0]), static_cast<float>(fieldScale[1])};
+    v->SetUniform2f("hsFieldScale", scale);
     vtkUniforms* u = actor->GetShaderProperty()->GetFragmentCustomUniforms();
     u->SetUniformf("hsNear", static_cast<float>(look.nearClipMm));
     u->SetUniformf("hsFar", static_cast<float>(look.farClipMm));
@@ -759,6 +796,11 @@ void EndoscopicView::Impl::fitOverlays() {
     vtkCamera* camera = renderer->GetActiveCamera();
     camera->SetUseHorizontalViewAngle(width < height);
     camera->SetViewAngle(fieldOfViewDeg);
+    const double shorter = std::min(width, height);
+    if (fieldScale[0] != width / shorter || fieldScale[1] != height / shorter) {
+        fieldScale = {width / shorter, height / shorter};
+        updateUniforms();
+    }
     if (width != maskWidth || height != maskHeight || fieldOfViewDeg != occluderFieldOfViewDeg)
         buildOccluder(width, height);
     fitOccluder();

@@ -6,7 +6,8 @@
 /// whose light falls as the inverse square of the distance); the distension fluid as haze that thickens with
 /// turbidity and depth; red-out as the picture turning red; the camera head (automatic exposure metered in the
 /// optic's circle, white balance, a tone curve with a soft shoulder: Exposure.h); the optic's circular field with its
-/// vignetting as a 2-D mask over the image; and a heads-up text (docs/simulator.md, "Endoscopic view").
+/// vignetting as a 2-D mask over the image, its barrel distortion on the tissue's vertices; and a heads-up text
+/// (docs/simulator.md, "Endoscopic view").
 ///
 /// No Qt: the host calls the setters on its render thread, then renders. VTK types stay out of the interface except
 /// the renderer the view draws into.
@@ -71,6 +72,10 @@ struct EndoscopicLook {
     ViewDetail detail = ViewDetail::Automatic;
     /// Share of the triangles the light detail leaves out (decimateForView); 0: none.
     double lightReduction = 0.5;
+    /// The optic's barrel distortion: the radial magnification at the edge of the field relative to its centre. Rigid
+    /// rod-lens endoscopes show an image at the periphery at 52 % of its size in the middle (docs/references.md
+    /// [RigidEndoscopeDistortion2015]); 1: a rectilinear image. The field's angle stays at the circle's edge.
+    double edgeMagnification = 0.52;
     bool opticMask = true;        ///< the circular field and its vignetting
     bool hud = true;              ///< the heads-up text
     double clearFogPerMm = 0.004; ///< 1/mm, extinction of clear saline (a faint haze at the cavity's far end)
