@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <initializer_list>
@@ -67,6 +68,61 @@ std::string sniffFormat(const std::string& path) {
     return {};
 }
 
+std::uint32_t bigEndian32(const std::uint8_t* p) {
+    return (std::uint32_t{p[0]} << 24) | (std::uint32_t{p[1]} << 16) | (std::uint32_t{p[2]} << 8) | std::uint32_t{p[3]};
+}
+
+/// The description of an ICC profile (its 'desc' tag: ICC.1:2001 'desc' text or ICC.1:2010 'mluc', the first
+/// record's ASCII characters), empty when it has none or the bytes do not hold one.
+std::string iccDescription(const std::uint8_t* icc, std::size_t size) {
+    if (size < 132)
+        return {};
+    const std::uint32_t tags = bigEndian32(icc + 128);
+    for (std::uint32_t i = 0; i < tags && 132 + 12 * (std::size_t{i} + 1) <= size; ++i) {
+        const std::uint8_t* entry = icc + 132 + 12 * std::size_t{i};
+        if (std::string(reinterpret_cast<const char*>(entry), 4) != "desc")
+            continue;
+        const std::size_t offset = bigEndian32(entry + 4), length = bigEndian32(entry + 8);
+        if (offset > size || length > size - offset || length < 12)
+            return {};
+        const std::uint8_t* tag = icc + offset;
+        const std::string type(reinterpret_cast<const char*>(tag), 4);
+        std::string text;
+        if (type == "desc") {
+            const std::size_t count = std::min<std::size_t>(bigEndian32(tag + 8), length - 12);
+            for (std::size_t k = 0; k < count && tag[12 + k] != 0; ++k)
+                text += static_cast<char>(tag[12 + k]);
+        } else if (type == "mluc" && length >= 28) {
+            const std::size_t bytes = bigEndian32(tag + 20), at = bigEndian32(tag + 24);
+            if (at > length || bytes > length - at)
+                return {};
+            for (std::size_t k = 0; k + 1 < bytes; k += 2) // UTF-16BE: keep the ASCII ones
+                if (tag[at + k] == 0 && tag[at + k + 1] != 0)
+                    text += static_cast<char>(tag[at + k + 1]);
+        }
+        for (auto& c : text)
+            if (!std::isprint(static_cast<unsigned char>(c)))
+                c = '?';
+        return text;
+    }
+    return {};
+}
+
+/// Refuses an embedded colour profile other than sRGB (the textures are sRGB, and nothing here converts): empty
+/// when there is none or it describes itself as sRGB.
+std::string foreignProfile(const OIIO::ImageSpec& spec) {
+    const OIIO::ParamValue* icc = spec.find_attribute("ICCProfile");
+    if (!icc || icc->type().basetype != OIIO::TypeDesc::UINT8 || icc->datasize() == 0)
+        return {};
+    const std::string description = iccDescription(static_cast<const std::uint8_t*>(icc->data()), icc->datasize());
+    std::string lower = description;
+    for (auto& c : lower)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (lower.find("srgb") != std::string::npos)
+        return {};
+    return description.empty() ? std::string("(no description)") : "'" + description + "'";
+}
+
 std::string sideRange(const ImageReadLimits& limits) {
     return std::to_string(limits.minSide) + ".." + std::to_string(limits.maxSide);
 }
@@ -102,25 +158,53 @@ Result<ImageU8> readImageRgb8(const std::string& path, const ImageReadLimits& li
         return fail(ErrorCode::LimitExceeded, path + ": image of " + std::to_string(spec.width) + " x " +
                                                   std::to_string(spec.height) + " pixels; each side must be " +
                                                   sideRange(limits));
-    if (spec.nchannels < 1 || spec.nchannels > 64)
-        return fail(ErrorCode::InvalidInput,
-                    path + ": " + std::to_string(spec.nchannels) + " channels; expected 1 to 4 (grey, RGB, RGBA)");
-    const int inChannels = std::min(spec.nchannels, 3);
-    std::vector<std::uint8_t> pixels(static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height) *
-                                     static_cast<std::size_t>(inChannels));
-    if (!input->read_image(0, 0, 0, inChannels, OIIO::TypeDesc::UINT8, pixels.data())) {
+    if (spec.nchannels < 1 || spec.nchannels > 4)
+        return fail(ErrorCode::InvalidInput, path + ": " + std::to_string(spec.nchannels) +
+                                                 " channels; expected 1 to 4 (grey, grey and alpha, RGB, RGBA)");
+    if (const std::string profile = foreignProfile(spec); !profile.empty())
+        return fail(ErrorCode::Unsupported, path + ": colour profile " + profile +
+                                                " is not sRGB; the textures are sRGB and nothing here converts: "
+                                                "save the image in sRGB (or without a profile, read as sRGB)");
+    // Grey and alpha, or RGBA: the colour is the channels before the alpha (OpenImageIO names it; otherwise the
+    // last of 2 or 4).
+    const int channels = spec.nchannels;
+    const int alpha =
+        spec.alpha_channel >= 0 ? spec.alpha_channel : (channels == 2 || channels == 4 ? channels - 1 : -1);
+    const int colours = alpha >= 0 ? channels - 1 : channels;
+    if (alpha >= 0 && alpha != channels - 1)
+        return fail(ErrorCode::Unsupported, path + ": the alpha channel is channel " + std::to_string(alpha) + " of " +
+                                                std::to_string(channels) + "; expected the last");
+    const std::size_t count = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height);
+    std::vector<std::uint8_t> pixels(count * static_cast<std::size_t>(channels));
+    if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, pixels.data())) {
         return fail(ErrorCode::InvalidInput, path + ": cannot decode the image: " + input->geterror());
     }
     input->close();
+    // Transparent pixels have no colour of their own (often black or white): as texture they would be drawn, so an
+    // image with any is refused rather than read; an opaque alpha is dropped.
+    if (alpha >= 0) {
+        std::size_t transparent = 0, first = count;
+        for (std::size_t i = 0; i < count; ++i)
+            if (pixels[i * static_cast<std::size_t>(channels) + static_cast<std::size_t>(alpha)] < 255) {
+                ++transparent;
+                first = std::min(first, i);
+            }
+        if (transparent > 0)
+            return fail(ErrorCode::InvalidInput,
+                        path + ": " + std::to_string(transparent) + " of " + std::to_string(count) +
+                            " pixels are transparent (alpha below 1; the first at x " +
+                            std::to_string(first % static_cast<std::size_t>(spec.width)) + ", y " +
+                            std::to_string(first / static_cast<std::size_t>(spec.width)) +
+                            "): crop to the opaque part or flatten the image onto the tissue's colour");
+    }
     auto image = ImageU8::create(spec.width, spec.height, 3);
     if (!image.ok())
         return fail(image.error().code, path + ": " + image.error().detail);
     auto& out = image->data();
-    const std::size_t count = static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height);
     for (std::size_t i = 0; i < count; ++i)
         for (std::size_t c = 0; c < 3; ++c)
-            out[i * 3 + c] = pixels[i * static_cast<std::size_t>(inChannels) +
-                                    std::min(c, static_cast<std::size_t>(inChannels - 1))];
+            out[i * 3 + c] =
+                pixels[i * static_cast<std::size_t>(channels) + std::min(c, static_cast<std::size_t>(colours - 1))];
     return image;
 }
 

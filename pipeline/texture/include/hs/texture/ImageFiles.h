@@ -17,8 +17,10 @@ struct ImageReadLimits {
     int minSide = 1;    ///< pixels per side
 };
 
-/// Reads an image as 8-bit RGB: grey is replicated, alpha dropped, 16-bit and float samples are clamped to [0, 1]
-/// and scaled to 0..255 (no colour-space conversion: an EXR is taken as display-referred).
+/// Reads an image as 8-bit RGB: grey is replicated, an opaque alpha dropped, 16-bit and float samples are clamped to
+/// [0, 1] and scaled to 0..255 (no colour-space conversion: an EXR is taken as display-referred). Refused by name: an
+/// image with any transparent pixel (alpha below 1: it has no colour there), an embedded colour profile that is not
+/// sRGB (nothing converts it; no profile is read as sRGB), more than 4 channels.
 Result<ImageU8> readImageRgb8(const std::string& path, const ImageReadLimits& limits = {});
 
 /// Writes an 8-bit image (1, 3 or 4 channels) in the format of the file's extension (.png, .jpg/.jpeg, .exr, .tif),
