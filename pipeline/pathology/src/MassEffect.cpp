@@ -257,6 +257,7 @@ std::vector<Push> planPushes(const Planned& p, const OrganInfo& info, const Path
         const double keep = c + params.endometriumThicknessMm;
         Push clear{e, -u, lo, std::max(hi, lo + 0.3), lateral + keep, windowRamp, 0.0};
         clear.clearance = keep;
+        clear.stretch = kOpenStretch; // a larger push over a wider ramp: the mesh follows a smooth map
         pushes.push_back(clear);
     }
     if (clearOfSerosa) { // the serosa bulges over the myoma; the ramp lies in the wall below the serosa
