@@ -17,12 +17,10 @@ double smallest(const std::array<double, 4>& w) {
 
 } // namespace
 
-std::array<double, 4> barycentricIn(const TetMesh& mesh, std::size_t tet, const Vec3& p) {
-    const Tet& t = mesh.tets[tet];
-    const Vec3& q0 = mesh.points[static_cast<std::size_t>(t[0])];
-    const Vec3 a = mesh.points[static_cast<std::size_t>(t[1])] - q0;
-    const Vec3 b = mesh.points[static_cast<std::size_t>(t[2])] - q0;
-    const Vec3 c = mesh.points[static_cast<std::size_t>(t[3])] - q0;
+std::array<double, 4> barycentric(const Vec3& q0, const Vec3& q1, const Vec3& q2, const Vec3& q3, const Vec3& p) {
+    const Vec3 a = q1 - q0;
+    const Vec3 b = q2 - q0;
+    const Vec3 c = q3 - q0;
     const Vec3 d = p - q0;
     const double volume = dot(a, cross(b, c));
     if (volume == 0.0)
@@ -31,6 +29,12 @@ std::array<double, 4> barycentricIn(const TetMesh& mesh, std::size_t tet, const 
     const double w2 = dot(a, cross(d, c)) / volume;
     const double w3 = dot(a, cross(b, d)) / volume;
     return {1.0 - w1 - w2 - w3, w1, w2, w3};
+}
+
+std::array<double, 4> barycentricIn(const TetMesh& mesh, std::size_t tet, const Vec3& p) {
+    const Tet& t = mesh.tets[tet];
+    return barycentric(mesh.points[static_cast<std::size_t>(t[0])], mesh.points[static_cast<std::size_t>(t[1])],
+                       mesh.points[static_cast<std::size_t>(t[2])], mesh.points[static_cast<std::size_t>(t[3])], p);
 }
 
 Vec3 embeddedPoint(const TetMesh& mesh, const TetEmbedding& e) {

@@ -11,6 +11,12 @@
 #include <chrono>
 #include <cmath>
 #include <string>
+#include <thread>
+
+#if defined(__linux__)
+#include <pthread.h>
+#include <sched.h>
+#endif
 #include <type_traits>
 
 namespace hs::mechanics {
@@ -171,6 +177,47 @@ Mat3 linearStress(const Mat3& s, double identity, double mu, double lambda) {
 
 } // namespace
 
+/// A factor rebuilt on its own thread from a copy of what it is built from (startRefactor).
+struct CorotationalFem::Rebuild {
+    FemSettings settings;
+    std::vector<Vec3> rest;
+    std::vector<Tet> tets;
+    std::vector<std::array<double, 9>> dmInv;
+    std::vector<double> volume, mu, lambda;
+    std::vector<char> removed;
+    std::vector<std::array<bool, 3>> fixed;
+    std::vector<double> mass, pointVolume, pointBulk, matrixStiffening, tetherStiffness;
+    std::vector<int> partition;
+    std::vector<std::int32_t> list;
+    std::size_t liveTets = 0;
+    std::unique_ptr<Factor> factor;
+    std::vector<double> compliance;
+    std::thread thread;
+
+    ~Rebuild() {
+        if (thread.joinable())
+            thread.join();
+    }
+    void run() {
+#if defined(__linux__)
+        // The lowest class of the scheduler: the rebuild takes only the time the steps (and the haptics) leave idle,
+        // so a step on the shared cores is not held up by it (sched(7), SCHED_IDLE).
+        sched_param idle{};
+        idle.sched_priority = 0;
+        pthread_setschedparam(pthread_self(), SCHED_IDLE, &idle);
+#endif
+        const FactorInputs in{settings,         rest,           tets,  dmInv, volume,      mu,
+                              lambda,           removed,        fixed, mass,  pointVolume, pointBulk,
+                              matrixStiffening, tetherStiffness};
+        factor = std::make_unique<Factor>();
+        buildFactor(in, partition, *factor);
+        if (!list.empty()) {
+            WorkerTeam team(1);
+            precomputeInto(*factor, list, fixed, team, compliance);
+        }
+    }
+};
+
 CorotationalFem::CorotationalFem() = default;
 CorotationalFem::~CorotationalFem() = default;
 CorotationalFem::CorotationalFem(CorotationalFem&&) noexcept = default;
@@ -189,6 +236,7 @@ Status CorotationalFem::build(const std::vector<Vec3>& pointsM, const std::vecto
     const std::size_t n = pointsM.size();
     if (materials.size() != tets.size() || fixedDof.size() != n)
         return fail(ErrorCode::InvalidInput, "tissue solver: one material per tet and one fixed flag per point");
+    m_rebuild.reset(); // a rebuild of the old mesh
     m_settings = settings;
     m_partition.clear(); // a new mesh: the factor's halves are cut anew
     m_rest = pointsM;
@@ -256,6 +304,26 @@ Status CorotationalFem::build(const std::vector<Vec3>& pointsM, const std::vecto
     m_compliance.clear();
     m_compliantCount = 0;
     buildIncidence();
+    m_neighbours.assign(tets.size(), {-1, -1, -1, -1});
+    {
+        std::vector<std::pair<std::array<std::int32_t, 3>, std::uint32_t>> faces; // (sorted face, 4 tet + face)
+        faces.reserve(4 * tets.size());
+        for (std::size_t t = 0; t < tets.size(); ++t)
+            for (std::uint32_t k = 0; k < 4; ++k)
+                faces.push_back({sortedFace(tets[t][static_cast<std::size_t>(kTetFacePoints[k][0])],
+                                            tets[t][static_cast<std::size_t>(kTetFacePoints[k][1])],
+                                            tets[t][static_cast<std::size_t>(kTetFacePoints[k][2])]),
+                                 static_cast<std::uint32_t>(4 * t + k)});
+        std::sort(faces.begin(), faces.end());
+        for (std::size_t i = 1; i < faces.size(); ++i)
+            if (faces[i].first == faces[i - 1].first) {
+                const std::uint32_t a = faces[i - 1].second, b = faces[i].second;
+                m_neighbours[a / 4][a % 4] = static_cast<std::int32_t>(b / 4);
+                m_neighbours[b / 4][b % 4] = static_cast<std::int32_t>(a / 4);
+            }
+    }
+    m_liveTets = tets.size();
+    m_factorStale = false;
     assembleAndFactor();
     return {};
 }
@@ -265,37 +333,40 @@ Status CorotationalFem::buildLike(const CorotationalFem& other, const FemSetting
         return fail(ErrorCode::InvalidInput, "tissue solver: a model cannot be built like itself");
     HS_TRY(build(other.m_rest, other.m_tets, other.m_materials, other.m_fixed, other.m_tethers, settings));
     m_removed = other.m_removed;
+    m_liveTets = other.m_liveTets;
+    if (m_liveTets != m_tets.size())
+        updatePointMeasures();
     assembleAndFactor();
     return {};
 }
 
-void CorotationalFem::assembleAndFactor() {
-    const std::size_t n = m_x.size();
-    const double h = m_settings.stepS;
-    const double stiffnessScale = 1.0 + m_settings.rayleighStiffnessS / h;
-    const double massScale = 1.0 / (h * h) + m_settings.rayleighMassPerS / h;
-    const auto heldDof = [this](std::size_t dof) { return m_fixed[dof / 3][dof % 3]; };
+void CorotationalFem::buildFactor(const FactorInputs& in, std::vector<int>& partition, Factor& f) {
+    const std::size_t n = in.rest.size();
+    const double h = in.settings.stepS;
+    const double stiffnessScale = 1.0 + in.settings.rayleighStiffnessS / h;
+    const double massScale = 1.0 / (h * h) + in.settings.rayleighMassPerS / h;
+    const auto heldDof = [&in](std::size_t dof) { return in.fixed[dof / 3][dof % 3]; };
     std::vector<Eigen::Triplet<double>> triplets;
-    triplets.reserve(m_tets.size() * 144 + 3 * n);
-    const bool nodal = m_settings.nodalPressure && m_settings.nodalPressureMatrix;
-    for (std::size_t t = 0; t < m_tets.size(); ++t) {
-        if (m_removed[t])
+    triplets.reserve(in.tets.size() * 144 + 3 * n);
+    const bool nodal = in.settings.nodalPressure && in.settings.nodalPressureMatrix;
+    for (std::size_t t = 0; t < in.tets.size(); ++t) {
+        if (in.removed[t])
             continue;
-        const std::array<Vec3, 4> g = shapeGradients(m_dmInv[t]);
+        const std::array<Vec3, 4> g = shapeGradients(in.dmInv[t]);
         // With nodal pressure the tet keeps only its deviatoric part (lambda -> -2 mu / 3); the volumetric part is
         // assembled per point below.
         // The deviatoric part at the tet's tangent stiffening (1 at rest: refactorStiffened() sets it).
-        const double share = m_settings.tetPressureShare, bulk = m_lambda[t] + 2.0 * m_mu[t] / 3.0;
-        const double v = m_volume[t] * stiffnessScale;
-        const double mu = m_mu[t] * (m_matrixStiffening.empty() ? 1.0 : m_matrixStiffening[t]);
+        const double share = in.settings.tetPressureShare, bulk = in.lambda[t] + 2.0 * in.mu[t] / 3.0;
+        const double v = in.volume[t] * stiffnessScale;
+        const double mu = in.mu[t] * (in.matrixStiffening.empty() ? 1.0 : in.matrixStiffening[t]);
         const double la = -2.0 * mu / 3.0 + (nodal ? share * bulk : bulk);
         for (std::size_t a = 0; a < 4; ++a)
             for (std::size_t b = 0; b < 4; ++b) {
                 const double gg = dot(g[a], g[b]);
                 for (int i = 0; i < 3; ++i)
                     for (int j = 0; j < 3; ++j) {
-                        const auto row = static_cast<std::size_t>(3 * m_tets[t][a] + i);
-                        const auto col = static_cast<std::size_t>(3 * m_tets[t][b] + j);
+                        const auto row = static_cast<std::size_t>(3 * in.tets[t][a] + i);
+                        const auto col = static_cast<std::size_t>(3 * in.tets[t][b] + j);
                         if (heldDof(row) || heldDof(col))
                             continue;
                         const double k =
@@ -308,20 +379,20 @@ void CorotationalFem::assembleAndFactor() {
         // Per point n: kappa_n V_n b_n b_n^T, with b_n the gradient of its averaged dilatation
         // theta_n = sum over its tets of (V_t / 4 V_n) theta_t.
         std::vector<std::vector<std::size_t>> tetsOf(n);
-        for (std::size_t t = 0; t < m_tets.size(); ++t)
-            if (!m_removed[t])
-                for (const std::int32_t p : m_tets[t])
+        for (std::size_t t = 0; t < in.tets.size(); ++t)
+            if (!in.removed[t])
+                for (const std::int32_t p : in.tets[t])
                     tetsOf[static_cast<std::size_t>(p)].push_back(t);
         std::vector<std::pair<std::size_t, Vec3>> gradient; // (point, d theta_n / d x_point)
         for (std::size_t p = 0; p < n; ++p) {
-            if (tetsOf[p].empty() || !(m_pointVolume[p] > 0.0))
+            if (tetsOf[p].empty() || !(in.pointVolume[p] > 0.0))
                 continue;
             gradient.clear();
             for (const std::size_t t : tetsOf[p]) {
-                const std::array<Vec3, 4> g = shapeGradients(m_dmInv[t]);
+                const std::array<Vec3, 4> g = shapeGradients(in.dmInv[t]);
                 for (std::size_t a = 0; a < 4; ++a) {
-                    const auto q = static_cast<std::size_t>(m_tets[t][a]);
-                    const Vec3 add = g[a] * (m_volume[t] / (4.0 * m_pointVolume[p]));
+                    const auto q = static_cast<std::size_t>(in.tets[t][a]);
+                    const Vec3 add = g[a] * (in.volume[t] / (4.0 * in.pointVolume[p]));
                     auto it = std::find_if(gradient.begin(), gradient.end(),
                                            [q](const std::pair<std::size_t, Vec3>& e) { return e.first == q; });
                     if (it == gradient.end())
@@ -331,7 +402,7 @@ void CorotationalFem::assembleAndFactor() {
                 }
             }
             const double scale =
-                (1.0 - m_settings.tetPressureShare) * m_pointBulk[p] * m_pointVolume[p] * stiffnessScale;
+                (1.0 - in.settings.tetPressureShare) * in.pointBulk[p] * in.pointVolume[p] * stiffnessScale;
             for (const auto& [qa, ga] : gradient)
                 for (const auto& [qb, gb] : gradient)
                     for (int i = 0; i < 3; ++i)
@@ -345,14 +416,11 @@ void CorotationalFem::assembleAndFactor() {
         }
     }
     for (std::size_t dof = 0; dof < 3 * n; ++dof) {
-        const double d = heldDof(dof) ? 1.0 : m_mass[dof / 3] * massScale + m_tetherStiffness[dof / 3];
+        const double d = heldDof(dof) ? 1.0 : in.mass[dof / 3] * massScale + in.tetherStiffness[dof / 3];
         triplets.emplace_back(static_cast<int>(dof), static_cast<int>(dof), d);
     }
     Eigen::SparseMatrix<double> h3(static_cast<Eigen::Index>(3 * n), static_cast<Eigen::Index>(3 * n));
     h3.setFromTriplets(triplets.begin(), triplets.end());
-    if (!m_factor)
-        m_factor = std::make_unique<Factor>();
-    Factor& f = *m_factor;
     // The points' neighbours in the matrix.
     std::vector<std::vector<std::int32_t>> neighbours(n);
     for (Eigen::Index c = 0; c < h3.outerSize(); ++c)
@@ -364,8 +432,8 @@ void CorotationalFem::assembleAndFactor() {
     // The two halves: the points by their rest place along the longest side of the mesh's box, cut where the halves'
     // factors hold about as many entries (bisected on the cut's place); the separator: the first half's points next
     // to the second's.
-    Vec3 lo = n > 0 ? m_rest[0] : Vec3{}, hi = lo;
-    for (const Vec3& p : m_rest)
+    Vec3 lo = n > 0 ? in.rest[0] : Vec3{}, hi = lo;
+    for (const Vec3& p : in.rest)
         for (int d = 0; d < 3; ++d) {
             lo[d] = std::min(lo[d], p[d]);
             hi[d] = std::max(hi[d], p[d]);
@@ -377,8 +445,8 @@ void CorotationalFem::assembleAndFactor() {
     std::vector<std::int32_t> byPlace(n);
     for (std::size_t i = 0; i < n; ++i)
         byPlace[i] = static_cast<std::int32_t>(i);
-    std::sort(byPlace.begin(), byPlace.end(), [this, axis](std::int32_t a, std::int32_t b) {
-        const double pa = m_rest[static_cast<std::size_t>(a)][axis], pb = m_rest[static_cast<std::size_t>(b)][axis];
+    std::sort(byPlace.begin(), byPlace.end(), [&in, axis](std::int32_t a, std::int32_t b) {
+        const double pa = in.rest[static_cast<std::size_t>(a)][axis], pb = in.rest[static_cast<std::size_t>(b)][axis];
         return pa < pb || (pa == pb && a < b);
     });
     const auto cutAt = [&](std::size_t first) {
@@ -427,7 +495,7 @@ void CorotationalFem::assembleAndFactor() {
         }
         return order;
     };
-    if (m_partition.size() != n) {
+    if (partition.size() != n) {
         std::size_t low = 3 * n / 10, high = 7 * n / 10;
         for (int step = 0; step < 8 && low + 1 < high; ++step) {
             const std::size_t mid = (low + high) / 2;
@@ -437,12 +505,12 @@ void CorotationalFem::assembleAndFactor() {
             partOrder(part, 1, &fillB);
             (fillA < fillB ? low : high) = mid;
         }
-        m_partition = cutAt((low + high) / 2);
+        partition = cutAt((low + high) / 2);
     }
     std::vector<int> newToOld;
     newToOld.reserve(3 * n);
     for (int which = 0; which < 3; ++which) {
-        const std::vector<int> order = partOrder(m_partition, which, nullptr);
+        const std::vector<int> order = partOrder(partition, which, nullptr);
         newToOld.insert(newToOld.end(), order.begin(), order.end());
         if (which < 2)
             f.partEnd[static_cast<std::size_t>(which)] = newToOld.size();
@@ -483,6 +551,19 @@ void CorotationalFem::assembleAndFactor() {
             first = first < 0 ? r : std::min(first, r);
         }
     f.work.assign(3 * n, 0.0);
+}
+
+CorotationalFem::FactorInputs CorotationalFem::factorInputs() const {
+    return {m_settings,         m_rest,           m_tets,  m_dmInv, m_volume,      m_mu,
+            m_lambda,           m_removed,        m_fixed, m_mass,  m_pointVolume, m_pointBulk,
+            m_matrixStiffening, m_tetherStiffness};
+}
+
+void CorotationalFem::assembleAndFactor() {
+    auto factor = std::make_unique<Factor>();
+    buildFactor(factorInputs(), m_partition, *factor);
+    m_factor = std::move(factor);
+    m_factorPointVolume = m_pointVolume;
     if (!m_team || m_team->size() != std::max(1, m_settings.threads))
         m_team = std::make_unique<WorkerTeam>(std::max(1, m_settings.threads));
 }
@@ -638,12 +719,11 @@ void CorotationalFem::internalForces(const std::vector<Vec3>& x, const std::vect
     m_timings.forcesMs += msSince(started);
 }
 
-void CorotationalFem::solveInPlace(std::vector<double>& b) const {
-    const auto started = Clock::now();
+void CorotationalFem::solveWith(const Factor& f, const std::vector<std::array<bool, 3>>& fixed, WorkerTeam& team,
+                                std::vector<double>& b) {
     for (std::size_t dof = 0; dof < b.size(); ++dof)
-        if (m_fixed[dof / 3][dof % 3])
+        if (fixed[dof / 3][dof % 3])
             b[dof] = 0.0;
-    const Factor& f = *m_factor;
     const std::size_t dofs = f.oldToNew.size();
     std::vector<double>& y = f.work;
     for (std::size_t i = 0; i < dofs; ++i)
@@ -652,7 +732,7 @@ void CorotationalFem::solveInPlace(std::vector<double>& b) const {
     const std::array<std::size_t, 3> begin{0, f.partEnd[0], f.partEnd[1]};
     const std::array<std::size_t, 3> end{f.partEnd[0], f.partEnd[1], dofs};
     // L y = b: the halves side by side, the separator's rows gathered per half.
-    m_team->run(2, 1, [&](std::size_t half, std::size_t, std::size_t) {
+    team.run(2, 1, [&](std::size_t half, std::size_t, std::size_t) {
         std::vector<double>& buffer = f.buffer[half];
         buffer.assign(dofs - sep, 0.0);
         for (std::size_t j = begin[half]; j < end[half]; ++j) {
@@ -679,7 +759,7 @@ void CorotationalFem::solveInPlace(std::vector<double>& b) const {
         for (int k = f.colStart[j]; k < f.colStart[j + 1]; ++k)
             y[j] -=
                 f.value[static_cast<std::size_t>(k)] * y[static_cast<std::size_t>(f.row[static_cast<std::size_t>(k)])];
-    m_team->run(2, 1, [&](std::size_t half, std::size_t, std::size_t) {
+    team.run(2, 1, [&](std::size_t half, std::size_t, std::size_t) {
         for (std::size_t j = end[half]; j-- > begin[half];)
             for (int k = f.colStart[j]; k < f.colStart[j + 1]; ++k)
                 y[j] -= f.value[static_cast<std::size_t>(k)] *
@@ -687,6 +767,16 @@ void CorotationalFem::solveInPlace(std::vector<double>& b) const {
     });
     for (std::size_t i = 0; i < dofs; ++i)
         b[i] = y[static_cast<std::size_t>(f.oldToNew[i])];
+}
+
+void CorotationalFem::solveInPlace(std::vector<double>& b) const {
+    const auto started = Clock::now();
+    solveWith(*m_factor, m_fixed, *m_team, b);
+    // A dof held since the factor (a point a removal left without a tet) is held still.
+    if (m_factorStale)
+        for (std::size_t dof = 0; dof < b.size(); ++dof)
+            if (m_fixed[dof / 3][dof % 3])
+                b[dof] = 0.0;
     m_timings.solveMs += msSince(started);
 }
 
@@ -713,6 +803,7 @@ void CorotationalFem::solveWarped(std::vector<double>& b) const {
 }
 
 void CorotationalFem::precomputeCompliance(const std::vector<std::int32_t>& points) {
+    m_rebuild.reset(); // it would bring back the surface it began with
     const std::size_t n = m_x.size();
     m_compliantIndex.assign(n, -1);
     std::vector<std::int32_t> list;
@@ -723,25 +814,31 @@ void CorotationalFem::precomputeCompliance(const std::vector<std::int32_t>& poin
         }
     m_compliantCount = list.size();
     m_compliantList = list;
-    const std::size_t m3 = 3 * m_compliantCount;
-    m_compliance.assign(m3 * m3, 0.0);
+    precomputeInto(*m_factor, m_compliantList, m_fixed, *m_team, m_compliance);
+}
+
+void CorotationalFem::precomputeInto(Factor& f, const std::vector<std::int32_t>& list,
+                                     const std::vector<std::array<bool, 3>>& fixed, WorkerTeam& team,
+                                     std::vector<double>& compliance) {
+    const std::size_t n = fixed.size();
+    const std::size_t m3 = 3 * list.size();
+    compliance.assign(m3 * m3, 0.0);
     std::vector<double> column(3 * n);
     for (std::size_t k = 0; k < list.size(); ++k)
         for (std::size_t d = 0; d < 3; ++d) {
             std::fill(column.begin(), column.end(), 0.0);
             column[3 * static_cast<std::size_t>(list[k]) + d] = 1.0;
-            solveInPlace(column);
+            solveWith(f, fixed, team, column);
             for (std::size_t j = 0; j < list.size(); ++j)
                 for (std::size_t e = 0; e < 3; ++e)
-                    m_compliance[(3 * j + e) * m3 + 3 * k + d] = column[3 * static_cast<std::size_t>(list[j]) + e];
+                    compliance[(3 * j + e) * m3 + 3 * k + d] = column[3 * static_cast<std::size_t>(list[j]) + e];
         }
     // And each of their dofs through L^-1 alone, so a row on them pairs with a row elsewhere at the cost of a sum.
-    Factor& f = *m_factor;
     f.surfaceY.assign(m3, {});
     for (std::size_t k = 0; k < list.size(); ++k)
         for (std::size_t d = 0; d < 3; ++d) {
             const std::size_t dof = 3 * static_cast<std::size_t>(list[k]) + d;
-            if (!m_fixed[dof / 3][d])
+            if (!fixed[dof / 3][d])
                 f.forward({{f.oldToNew[dof], 1.0}}, 0, f.surfaceY[3 * k + d]);
         }
 }
@@ -1255,75 +1352,332 @@ void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector
     m_residualNorm = std::sqrt(sum2);
 }
 
-std::vector<std::vector<std::size_t>> CorotationalFem::removeTets(const std::vector<std::size_t>& tets) {
-    std::vector<std::vector<std::size_t>> pieces;
-    bool changed = false;
-    for (const std::size_t t : tets)
-        if (t < m_removed.size() && !m_removed[t]) {
-            m_removed[t] = 1;
-            changed = true;
-        }
-    if (!changed)
-        return pieces;
-    // The live tets' pieces: union-find over shared faces (a face is its sorted point triple).
-    const std::size_t count = m_tets.size();
-    std::vector<std::size_t> parent(count);
-    for (std::size_t t = 0; t < count; ++t)
-        parent[t] = t;
-    const auto root = [&parent](std::size_t t) {
-        while (parent[t] != t)
-            t = parent[t] = parent[parent[t]];
-        return t;
-    };
-    std::vector<std::pair<std::array<std::int32_t, 3>, std::size_t>> faces;
-    faces.reserve(4 * count);
-    for (std::size_t t = 0; t < count; ++t) {
+void CorotationalFem::updatePointMeasures() {
+    const std::size_t n = m_x.size();
+    m_mass.assign(n, 0.0);
+    m_pointVolume.assign(n, 0.0);
+    m_pointBulk.assign(n, 0.0);
+    for (std::size_t t = 0; t < m_tets.size(); ++t) {
         if (m_removed[t])
             continue;
-        const Tet& k = m_tets[t];
-        for (std::size_t skip = 0; skip < 4; ++skip) {
-            std::array<std::int32_t, 3> f{};
-            for (std::size_t i = 0, j = 0; i < 4; ++i)
-                if (i != skip)
-                    f[j++] = k[i];
-            std::sort(f.begin(), f.end());
-            faces.emplace_back(f, t);
+        for (const std::int32_t p : m_tets[t]) {
+            const auto i = static_cast<std::size_t>(p);
+            m_mass[i] += m_materials[t].densityKgPerM3 * m_volume[t] / 4.0;
+            m_pointVolume[i] += m_volume[t] / 4.0;
+            m_pointBulk[i] += (m_lambda[t] + 2.0 * m_mu[t] / 3.0) * m_volume[t] / 4.0;
         }
     }
-    std::sort(faces.begin(), faces.end());
-    for (std::size_t i = 1; i < faces.size(); ++i)
-        if (faces[i].first == faces[i - 1].first) {
-            const std::size_t a = root(faces[i].second), b = root(faces[i - 1].second);
-            if (a != b)
-                parent[std::max(a, b)] = std::min(a, b);
-        }
-    std::vector<char> anchored(count, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (m_pointVolume[i] > 0.0)
+            m_pointBulk[i] /= m_pointVolume[i];
+        if (!(m_mass[i] > 0.0))
+            m_mass[i] = 1e-12; // a point of no tet: it keeps the matrix definite and never moves
+    }
+}
+
+std::vector<std::vector<std::size_t>> CorotationalFem::loosePieces() const {
+    // Breadth first from every live tet with a held or tethered point, through shared faces; what is not reached
+    // falls into pieces the same way.
+    const std::size_t count = m_tets.size();
+    std::vector<char> reached(count, 0);
+    std::vector<std::size_t> stack;
     for (std::size_t t = 0; t < count; ++t) {
         if (m_removed[t])
             continue;
         for (const std::int32_t p : m_tets[t]) {
-            const auto pi = static_cast<std::size_t>(p);
-            if (m_fixed[pi][0] || m_fixed[pi][1] || m_fixed[pi][2] || m_tetherStiffness[pi] > 0.0)
-                anchored[root(t)] = 1;
+            const auto i = static_cast<std::size_t>(p);
+            if (m_fixed[i][0] || m_fixed[i][1] || m_fixed[i][2] || m_tetherStiffness[i] > 0.0) {
+                reached[t] = 1;
+                stack.push_back(t);
+                break;
+            }
         }
     }
-    std::vector<std::int64_t> pieceOf(count, -1);
-    for (std::size_t t = 0; t < count; ++t) {
-        if (m_removed[t] || anchored[root(t)])
-            continue;
-        const std::size_t r = root(t);
-        if (pieceOf[r] < 0) {
-            pieceOf[r] = static_cast<std::int64_t>(pieces.size());
+    const auto spread = [&](std::vector<std::size_t>* piece) {
+        while (!stack.empty()) {
+            const std::size_t t = stack.back();
+            stack.pop_back();
+            if (piece)
+                piece->push_back(t);
+            for (const std::int32_t k : m_neighbours[t]) {
+                if (k < 0)
+                    continue;
+                const auto u = static_cast<std::size_t>(k);
+                if (!m_removed[u] && !reached[u]) {
+                    reached[u] = 1;
+                    stack.push_back(u);
+                }
+            }
+        }
+    };
+    spread(nullptr);
+    std::vector<std::vector<std::size_t>> pieces;
+    for (std::size_t t = 0; t < count; ++t)
+        if (!m_removed[t] && !reached[t]) {
+            reached[t] = 1;
+            stack.push_back(t);
             pieces.emplace_back();
+            spread(&pieces.back());
+            std::sort(pieces.back().begin(), pieces.back().end());
         }
-        pieces[static_cast<std::size_t>(pieceOf[r])].push_back(t);
+    return pieces;
+}
+
+bool CorotationalFem::pointIsManifold(std::size_t point, std::vector<std::size_t>* keep) const {
+    // The point's link: the faces opposite it in its live tets. The live tets meet the point as a manifold when
+    // their link faces are joined through edges into one disk (one simple border cycle) or a whole sphere.
+    std::vector<std::size_t> tets;
+    std::vector<std::array<std::int32_t, 3>> link;
+    for (std::size_t k = m_incidenceStart[point]; k < m_incidenceStart[point + 1]; ++k) {
+        const auto [t, corner] = m_incidence[k];
+        if (m_removed[t])
+            continue;
+        tets.push_back(t);
+        const Tet& tet = m_tets[t];
+        link.push_back({tet[static_cast<std::size_t>(kTetFacePoints[corner][0])],
+                        tet[static_cast<std::size_t>(kTetFacePoints[corner][1])],
+                        tet[static_cast<std::size_t>(kTetFacePoints[corner][2])]});
     }
-    for (const auto& piece : pieces)
-        for (const std::size_t t : piece)
-            m_removed[t] = 1;
+    if (keep)
+        keep->clear();
+    const std::size_t m = link.size();
+    if (m == 0)
+        return true;
+    // Link edges (sorted pair, triangle); triangles sharing an edge are one part.
+    std::vector<std::pair<std::pair<std::int32_t, std::int32_t>, std::size_t>> edges;
+    for (std::size_t i = 0; i < m; ++i)
+        for (int e = 0; e < 3; ++e) {
+            std::int32_t a = link[i][static_cast<std::size_t>(e)], b = link[i][static_cast<std::size_t>((e + 1) % 3)];
+            if (a > b)
+                std::swap(a, b);
+            edges.push_back({{a, b}, i});
+        }
+    std::sort(edges.begin(), edges.end());
+    std::vector<std::size_t> parent(m);
+    for (std::size_t i = 0; i < m; ++i)
+        parent[i] = i;
+    const auto root = [&parent](std::size_t i) {
+        while (parent[i] != i)
+            i = parent[i] = parent[parent[i]];
+        return i;
+    };
+    for (std::size_t i = 1; i < edges.size(); ++i)
+        if (edges[i].first == edges[i - 1].first) {
+            const std::size_t a = root(edges[i].second), b = root(edges[i - 1].second);
+            if (a != b)
+                parent[std::max(a, b)] = std::min(a, b);
+        }
+    // Per part: its border edges (an edge of one of its triangles only) must form one simple cycle, or none.
+    // `cycle`: with every border point on two border edges but more than one cycle, the edges of the first.
+    std::vector<std::pair<std::int32_t, std::int32_t>> cycle;
+    const auto closesIntoDisk = [&](std::size_t part, std::int32_t* pinch) {
+        cycle.clear();
+        std::vector<std::pair<std::int32_t, std::int32_t>> border;
+        for (std::size_t i = 0; i < edges.size();) {
+            std::size_t j = i, inPart = 0;
+            while (j < edges.size() && edges[j].first == edges[i].first) {
+                if (root(edges[j].second) == part)
+                    ++inPart;
+                ++j;
+            }
+            if (inPart == 1)
+                border.push_back(edges[i].first);
+            i = j;
+        }
+        if (border.empty())
+            return true;
+        std::vector<std::pair<std::int32_t, std::size_t>> ends; // (point, border edge)
+        for (std::size_t e = 0; e < border.size(); ++e) {
+            ends.push_back({border[e].first, e});
+            ends.push_back({border[e].second, e});
+        }
+        std::sort(ends.begin(), ends.end());
+        for (std::size_t i = 0; i < ends.size(); i += 2)
+            if (i + 1 >= ends.size() || ends[i + 1].first != ends[i].first ||
+                (i + 2 < ends.size() && ends[i + 2].first == ends[i].first)) {
+                // A border point of other than two border edges: the edge from the point to it is singular.
+                if (pinch)
+                    *pinch = ends[i].first;
+                return false;
+            }
+        // Walk the cycle from the first edge: it must take every border edge.
+        std::size_t walked = 1, edge = 0;
+        std::int32_t at = border[0].second;
+        cycle.push_back(border[0]);
+        while (at != border[0].first) {
+            const auto it = std::lower_bound(ends.begin(), ends.end(), std::make_pair(at, std::size_t{0}));
+            const std::size_t next = it->second == edge ? (it + 1)->second : it->second;
+            edge = next;
+            cycle.push_back(border[edge]);
+            at = border[edge].first == at ? border[edge].second : border[edge].first;
+            if (++walked > border.size())
+                return false;
+        }
+        return walked == border.size();
+    };
+    std::vector<std::size_t> parts;
+    for (std::size_t i = 0; i < m; ++i)
+        if (root(i) == i)
+            parts.push_back(i);
+    if (parts.size() == 1 && closesIntoDisk(parts[0], nullptr))
+        return true;
+    if (keep) {
+        // The part of most volume (the first on a tie), if it closes into a disk.
+        std::size_t best = parts[0];
+        double bestVolume = -1.0;
+        for (const std::size_t part : parts) {
+            double volume = 0.0;
+            for (std::size_t i = 0; i < m; ++i)
+                if (root(i) == part)
+                    volume += m_volume[tets[i]];
+            if (volume > bestVolume) {
+                bestVolume = volume;
+                best = part;
+            }
+        }
+        std::int32_t pinch = -1;
+        const bool disk = closesIntoDisk(best, &pinch);
+        // A singular edge from the point to `pinch`: its tets fall into fans joined through faces round the edge; the
+        // fan of most volume stays (the next round looks at the point again).
+        std::vector<char> drop(m, 0);
+        if (!disk && pinch >= 0) {
+            std::vector<std::size_t> fan;
+            for (std::size_t i = 0; i < m; ++i)
+                if (root(i) == best && std::find(link[i].begin(), link[i].end(), pinch) != link[i].end())
+                    fan.push_back(i);
+            std::vector<std::size_t> group(fan.size());
+            for (std::size_t a = 0; a < fan.size(); ++a)
+                group[a] = a;
+            const auto top = [&group](std::size_t a) {
+                while (group[a] != a)
+                    a = group[a] = group[group[a]];
+                return a;
+            };
+            for (std::size_t a = 0; a < fan.size(); ++a)
+                for (std::size_t b = a + 1; b < fan.size(); ++b) {
+                    std::size_t shared = 0; // points in common besides the pinch: one is an edge through it
+                    for (const std::int32_t p : link[fan[a]])
+                        if (p != pinch && std::find(link[fan[b]].begin(), link[fan[b]].end(), p) != link[fan[b]].end())
+                            ++shared;
+                    if (shared > 0) {
+                        const std::size_t ra = top(a), rb = top(b);
+                        if (ra != rb)
+                            group[std::max(ra, rb)] = std::min(ra, rb);
+                    }
+                }
+            std::vector<double> volume(fan.size(), 0.0);
+            for (std::size_t a = 0; a < fan.size(); ++a)
+                volume[top(a)] += m_volume[tets[fan[a]]];
+            std::size_t largest = 0;
+            for (std::size_t a = 0; a < fan.size(); ++a)
+                if (top(a) == a && volume[a] > volume[largest])
+                    largest = a;
+            for (std::size_t a = 0; a < fan.size(); ++a)
+                if (top(a) != largest)
+                    drop[fan[a]] = 1;
+        }
+        if (!disk && pinch < 0 && !cycle.empty()) {
+            // More than one border cycle (the live tets a ring round the point, its boundary two cones meeting at it):
+            // the shortest chain of triangles, joined through edges, from the first cycle to another goes, which
+            // joins the two cycles into one.
+            std::sort(cycle.begin(), cycle.end());
+            const auto edgeOf = [&link](std::size_t i, int e) {
+                std::int32_t a = link[i][static_cast<std::size_t>(e)],
+                             b = link[i][static_cast<std::size_t>((e + 1) % 3)];
+                return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
+            };
+            std::vector<int> kind(m, 0); // 1: on the first cycle, 2: on another border edge
+            for (std::size_t k = 0; k < edges.size(); ++k) {
+                const std::size_t i = edges[k].second;
+                if (root(i) != best)
+                    continue;
+                const bool single =
+                    (k == 0 || edges[k - 1].first != edges[k].first || root(edges[k - 1].second) != best) &&
+                    (k + 1 == edges.size() || edges[k + 1].first != edges[k].first ||
+                     root(edges[k + 1].second) != best);
+                if (!single)
+                    continue;
+                const bool first = std::binary_search(cycle.begin(), cycle.end(), edges[k].first);
+                kind[i] |= first ? 1 : 2;
+            }
+            std::vector<std::int64_t> from(m, -2);
+            std::vector<std::size_t> queue;
+            for (std::size_t i = 0; i < m; ++i)
+                if (root(i) == best && (kind[i] & 1)) {
+                    from[i] = -1;
+                    queue.push_back(i);
+                }
+            for (std::size_t q = 0; q < queue.size(); ++q) {
+                const std::size_t i = queue[q];
+                if (kind[i] & 2) {
+                    for (std::int64_t k = static_cast<std::int64_t>(i); k >= 0; k = from[static_cast<std::size_t>(k)])
+                        drop[static_cast<std::size_t>(k)] = 1;
+                    break;
+                }
+                for (int e = 0; e < 3; ++e) {
+                    const auto key = edgeOf(i, e);
+                    for (auto it = std::lower_bound(edges.begin(), edges.end(), std::make_pair(key, std::size_t{0}));
+                         it != edges.end() && it->first == key; ++it)
+                        if (it->second != i && root(it->second) == best && from[it->second] == -2) {
+                            from[it->second] = static_cast<std::int64_t>(i);
+                            queue.push_back(it->second);
+                        }
+                }
+            }
+        }
+        if (disk || pinch >= 0 || std::find(drop.begin(), drop.end(), 1) != drop.end())
+            for (std::size_t i = 0; i < m; ++i)
+                if (root(i) == best && !drop[i])
+                    keep->push_back(tets[i]);
+    }
+    return false;
+}
+
+CorotationalFem::Removal CorotationalFem::removeTets(const std::vector<std::size_t>& tets, Refactor refactorMode) {
+    Removal out;
+    std::vector<std::int32_t> touched;
+    const auto take = [&](std::size_t t) {
+        m_removed[t] = 1;
+        out.removed.push_back(t);
+        touched.insert(touched.end(), m_tets[t].begin(), m_tets[t].end());
+    };
+    for (const std::size_t t : tets)
+        if (t < m_removed.size() && !m_removed[t])
+            take(t);
+    if (out.removed.empty())
+        return out;
+    // Chips, then the points the removal touched, until neither takes a tet (each round takes at least one).
+    std::vector<std::size_t> keep;
+    while (!touched.empty()) {
+        for (std::vector<std::size_t>& piece : loosePieces()) {
+            for (const std::size_t t : piece)
+                take(t);
+            out.chips.push_back(std::move(piece));
+        }
+        std::sort(touched.begin(), touched.end());
+        touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+        std::vector<std::int32_t> points;
+        points.swap(touched);
+        for (const std::int32_t p : points) {
+            const auto i = static_cast<std::size_t>(p);
+            if (pointIsManifold(i, &keep))
+                continue;
+            std::sort(keep.begin(), keep.end());
+            for (std::size_t k = m_incidenceStart[i]; k < m_incidenceStart[i + 1]; ++k) {
+                const std::size_t t = m_incidence[k].first;
+                if (!m_removed[t] && !std::binary_search(keep.begin(), keep.end(), t)) {
+                    take(t);
+                    ++out.manifoldTets;
+                }
+            }
+        }
+    }
+    std::sort(out.removed.begin(), out.removed.end());
+    std::sort(out.chips.begin(), out.chips.end());
+    m_liveTets -= out.removed.size();
     // Points of no live tet are held where they are.
     std::vector<char> live(m_x.size(), 0);
-    for (std::size_t t = 0; t < count; ++t)
+    for (std::size_t t = 0; t < m_tets.size(); ++t)
         if (!m_removed[t])
             for (const std::int32_t p : m_tets[t])
                 live[static_cast<std::size_t>(p)] = 1;
@@ -1333,6 +1687,63 @@ std::vector<std::vector<std::size_t>> CorotationalFem::removeTets(const std::vec
             m_target[i] = m_x[i];
             m_v[i] = Vec3{};
         }
+    updatePointMeasures();
+    m_factorStale = true;
+    if (refactorMode == Refactor::Now)
+        refactor();
+    return out;
+}
+
+bool CorotationalFem::startRefactor() {
+    if (m_rebuild || !m_factor)
+        return false;
+    auto r = std::make_unique<Rebuild>();
+    r->settings = m_settings;
+    r->rest = m_rest;
+    r->tets = m_tets;
+    r->dmInv = m_dmInv;
+    r->volume = m_volume;
+    r->mu = m_mu;
+    r->lambda = m_lambda;
+    r->removed = m_removed;
+    r->fixed = m_fixed;
+    r->mass = m_mass;
+    r->pointVolume = m_pointVolume;
+    r->pointBulk = m_pointBulk;
+    r->matrixStiffening = m_matrixStiffening;
+    r->tetherStiffness = m_tetherStiffness;
+    r->partition = m_partition;
+    if (m_compliantCount > 0)
+        r->list = m_compliantList;
+    r->liveTets = m_liveTets;
+    Rebuild* job = r.get();
+    r->thread = std::thread([job] { job->run(); });
+    m_rebuild = std::move(r);
+    return true;
+}
+
+void CorotationalFem::finishRefactor() {
+    if (!m_rebuild)
+        return;
+    m_rebuild->thread.join();
+    m_factor = std::move(m_rebuild->factor);
+    if (!m_rebuild->list.empty())
+        m_compliance = std::move(m_rebuild->compliance);
+    m_factorStale = m_rebuild->liveTets != m_liveTets;
+    m_factorPointVolume = std::move(m_rebuild->pointVolume);
+    m_rebuild.reset();
+}
+
+double CorotationalFem::factorStaleness() const {
+    double stale = 0.0;
+    for (std::size_t i = 0; i < m_pointVolume.size() && i < m_factorPointVolume.size(); ++i)
+        if (m_pointVolume[i] > 0.0 && m_factorPointVolume[i] > 0.0)
+            stale = std::max(stale, 1.0 - m_pointVolume[i] / m_factorPointVolume[i]);
+    return stale;
+}
+
+void CorotationalFem::refactor() {
+    m_rebuild.reset(); // a rebuild begun before would bring back an older factor
     assembleAndFactor();
     if (m_compliantCount > 0) {
         std::vector<std::int32_t> points;
@@ -1341,7 +1752,19 @@ std::vector<std::vector<std::size_t>> CorotationalFem::removeTets(const std::vec
                 points.push_back(static_cast<std::int32_t>(i));
         precomputeCompliance(points);
     }
-    return pieces;
+    m_factorStale = false;
+}
+
+std::vector<std::int32_t> CorotationalFem::singularPoints() const {
+    std::vector<std::int32_t> out;
+    for (std::size_t i = 0; i < m_x.size(); ++i)
+        if (!pointIsManifold(i, nullptr))
+            out.push_back(static_cast<std::int32_t>(i));
+    return out;
+}
+
+std::size_t CorotationalFem::looseLivePieces() const {
+    return loosePieces().size();
 }
 
 double CorotationalFem::loadCompliance(const std::vector<Vec3>& forces) const {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <string>
 
 namespace hs::mechanics {
@@ -50,7 +51,7 @@ void UterusModel::pressureForces(const std::vector<Vec3>& pts, double pressureKp
         return;
     const double pa = pressureKpa * 1e3;
     for (std::size_t f = 0; f < boundary.size(); ++f) {
-        if (!faceCavity[f])
+        if (!faceCavity[f] || (f < faceTet.size() && fem.tetRemoved(static_cast<std::size_t>(faceTet[f]))))
             continue;
         // Area vector in m^2 (half the cross product), pointing into the cavity; the fluid pushes the wall back. Per
         // pascal this is also the gradient of the cavity's volume (m^3 per m) at the face's points.
@@ -94,6 +95,20 @@ Status buildUterusModel(const scene::Scene& scene, const FemSettings& settings, 
         out.boundary.push_back({source[static_cast<std::size_t>(t[0])], source[static_cast<std::size_t>(t[1])],
                                 source[static_cast<std::size_t>(t[2])]});
     out.region = b.faceLabels.at("region");
+    {
+        std::map<std::array<std::int32_t, 3>, std::int32_t> tetOfFace;
+        for (std::size_t t = 0; t < mesh.tetCount(); ++t)
+            for (const auto& k : kTetFacePoints)
+                tetOfFace[sortedFace(mesh.tets[t][static_cast<std::size_t>(k[0])],
+                                     mesh.tets[t][static_cast<std::size_t>(k[1])],
+                                     mesh.tets[t][static_cast<std::size_t>(k[2])])] = static_cast<std::int32_t>(t);
+        out.faceTet.assign(out.boundary.size(), -1);
+        for (std::size_t f = 0; f < out.boundary.size(); ++f) {
+            const auto it = tetOfFace.find(sortedFace(out.boundary[f][0], out.boundary[f][1], out.boundary[f][2]));
+            if (it != tetOfFace.end())
+                out.faceTet[f] = it->second;
+        }
+    }
     const auto& cavityPoints = cavityIds->second;
     out.faceCavity.assign(out.boundary.size(), 0);
     for (std::size_t f = 0; f < out.boundary.size(); ++f) {

@@ -4,6 +4,7 @@
 #include "WorldImpl.h"
 
 #include "hs/scene/Scene.h"
+#include "hs/sim/TissueSetup.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,9 +28,10 @@ constexpr double kMinTetVolumeRatio = 0.2;
 /// (ratio -0.497) over its 10 minutes, where 0.25 kept every tet above 0.19 (docs/simulator.md, "The volume bound").
 constexpr double kVolumeGuardBand = 0.25;
 
-/// The solver's settings for a world: its step, its iterations, no end residual (the world reads the contacts'
-/// forces, not the supports').
-mechanics::FemSettings solverSettings(const WorldOptions& options) {
+} // namespace
+
+/// No end residual: the world reads the contacts' forces, not the supports'.
+mechanics::FemSettings tissueSolverSettings(const WorldOptions& options) {
     mechanics::FemSettings s;
     s.stepS = options.stepS;
     s.iterations = options.solverIterations;
@@ -45,10 +47,22 @@ mechanics::FemSettings solverSettings(const WorldOptions& options) {
     return s;
 }
 
-} // namespace
+std::vector<std::int32_t> touchablePoints(const mechanics::UterusModel& model) {
+    std::vector<std::int32_t> touchable;
+    std::vector<char> seen(model.restMm.size(), 0);
+    for (std::size_t f = 0; f < model.boundary.size(); ++f)
+        if (model.faceCavity[f])
+            for (const std::int32_t v : model.boundary[f])
+                if (!seen[static_cast<std::size_t>(v)]) {
+                    seen[static_cast<std::size_t>(v)] = 1;
+                    touchable.push_back(v);
+                }
+    std::sort(touchable.begin(), touchable.end());
+    return touchable;
+}
 
 Status World::Impl::setupTissue() {
-    HS_TRY(mechanics::buildUterusModel(scene, solverSettings(options), uterus, !(options.introitusMm > 0.0)));
+    HS_TRY(mechanics::buildUterusModel(scene, tissueSolverSettings(options), uterus, !(options.introitusMm > 0.0)));
     // The held portio is where the device pivots: a face with a held point gives no contact.
     faceHeld.assign(uterus.boundary.size(), 0);
     for (std::size_t f = 0; f < uterus.boundary.size(); ++f)
@@ -57,17 +71,7 @@ Status World::Impl::setupTissue() {
                 faceHeld[f] = 1;
     // The surface the scope touches (the cavity and the canal): its compliance precomputed, so a step's contacts cost
     // no solve.
-    std::vector<std::int32_t> touchable;
-    std::vector<char> seen(uterus.restMm.size(), 0);
-    for (std::size_t f = 0; f < uterus.boundary.size(); ++f)
-        if (uterus.faceCavity[f])
-            for (const std::int32_t v : uterus.boundary[f])
-                if (!seen[static_cast<std::size_t>(v)]) {
-                    seen[static_cast<std::size_t>(v)] = 1;
-                    touchable.push_back(v);
-                }
-    std::sort(touchable.begin(), touchable.end());
-    tissue.precomputeCompliance(touchable);
+    tissue.precomputeCompliance(touchablePoints(uterus));
     return {};
 }
 

@@ -18,6 +18,8 @@ struct TetEmbedding {
 
 /// Barycentric coordinates of p in tet `tet` (zero weights for a flat tet).
 std::array<double, 4> barycentricIn(const TetMesh& mesh, std::size_t tet, const Vec3& p);
+/// The same for the tet (q0, q1, q2, q3), either orientation (all zero for a flat one).
+std::array<double, 4> barycentric(const Vec3& q0, const Vec3& q1, const Vec3& q2, const Vec3& q3, const Vec3& p);
 
 /// The point an embedding stands for in `mesh` (with the mesh's current points).
 Vec3 embeddedPoint(const TetMesh& mesh, const TetEmbedding& e);

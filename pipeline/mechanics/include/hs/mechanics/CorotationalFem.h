@@ -154,12 +154,56 @@ public:
     void step(const std::vector<Vec3>& externalForcesN, std::vector<FemConstraint>& constraints,
               const ObstacleCompliance& obstacle = {});
 
-    /// Removes tets (they carry no force; the matrix is rebuilt and factored again) and with them every piece they
-    /// cut free: the live tets fall into pieces joined through shared faces, and a piece with no held or tethered point
-    /// (one that hangs on by an edge or a point, or floats) is removed too and returned, one list of tets per piece
-    /// (the chips). Points left without a tet are held where they are. Out-of-range and removed tets are ignored.
-    std::vector<std::vector<std::size_t>> removeTets(const std::vector<std::size_t>& tets);
+    /// Removes tets (they carry no force from then on) and keeps what is left a valid solid
+    /// (docs/simulator.md, "Cutting"; Forest, Delingette & Ayache, Med Image Anal 9(2):113-122, 2005):
+    /// - every piece the removal cuts free goes too: the live tets fall into pieces joined through shared faces, and
+    ///   a piece with no held or tethered point (one that hangs on by an edge or a point, or floats) is removed and
+    ///   returned as a chip;
+    /// - the boundary stays a manifold: a point the removal touches whose live tets no longer meet it as one disk (two
+    ///   parts touching at the point, or along an edge through it) keeps the part of most volume, the others are
+    ///   removed (with the chips they make); where one part still does not close into a disk, every live tet of the
+    ///   point goes.
+    /// Points left without a tet are held where they are; the points' masses and volumes are the live tets'.
+    /// `refactor` Now rebuilds the iteration's matrix and factors it again (about 100 ms on a simulation mesh of 9k
+    /// tets); Later keeps the factor, which is then stiffer than the tissue: the chord iteration still converges to
+    /// the live tets' equilibrium (its matrix bounds their stiffness from above), only more slowly near the cut, until
+    /// refactor() is called. Out-of-range and removed tets are ignored.
+    enum class Refactor { Now, Later };
+    struct Removal {
+        std::vector<std::size_t> removed;            ///< every tet this call removed, ascending
+        std::vector<std::vector<std::size_t>> chips; ///< the pieces cut free, each ascending, by their first tet
+        std::size_t manifoldTets = 0;                ///< of `removed`, the tets taken to keep the boundary a manifold
+    };
+    Removal removeTets(const std::vector<std::size_t>& tets, Refactor refactor = Refactor::Now);
     bool tetRemoved(std::size_t tet) const { return tet < m_removed.size() && m_removed[tet] != 0; }
+    std::size_t liveTetCount() const { return m_liveTets; }
+    /// Whether tets were removed since the matrix was factored (removeTets with Refactor::Later).
+    bool factorStale() const { return m_factorStale; }
+    /// How stale the factor is: the largest share of its volume a point of live tets has lost since the factor was
+    /// built (0: fresh; near 1: a point hangs on a sliver of what the factor holds it by). The chord steps converge
+    /// for any staleness, but a constraint row's compliance comes from the factor, so a row on such a point is solved
+    /// as far stiffer than it is and overshoots (beyond a factor of two it diverges): rebuild before that.
+    double factorStaleness() const;
+    /// Rebuilds the matrix from the live tets, factors it and precomputes the surface compliance again (about 1.5 s
+    /// with the surface of a simulation mesh of 9k tets precomputed). Drops a rebuild startRefactor began.
+    void refactor();
+    /// The same on a thread of its own from the live tets as they are now, while the steps go on with the factor
+    /// they have (the caller's cores are shared with it). False (nothing started) while one runs.
+    bool startRefactor();
+    bool refactorRunning() const { return m_rebuild != nullptr; }
+    /// Waits for the rebuild startRefactor began and takes its factor and surface compliance in (nothing without
+    /// one). Call it at a fixed step (e.g. a fixed number of steps after the start) and a replay takes the same
+    /// factor at the same step: the result does not depend on when the thread finished. Tets removed since the start
+    /// leave the factor stale again.
+    void finishRefactor();
+    /// Points the live tets meet as more than one disk (a singular point of the boundary) or whose live tets' faces
+    /// opposite them do not close into one disk or sphere: 0 in a valid solid.
+    std::vector<std::int32_t> singularPoints() const;
+    /// Live pieces (joined through faces) with no held or tethered point: 0 after every removeTets.
+    std::size_t looseLivePieces() const;
+    /// The rest volume of tet `t`, m^3.
+    double restVolumeM3(std::size_t t) const { return t < m_volume.size() ? m_volume[t] : 0.0; }
+    const std::vector<Tet>& tets() const { return m_tets; }
 
     /// The give of the tissue over one step under the load pattern `forces` (N per point): f^T R H^-1 R^T f, in m per
     /// N times the pattern's units squared (one solve). For the cavity's pressure pattern (m^2 per point) it is the
@@ -204,6 +248,36 @@ public:
     double kineticEnergyJ() const;
 
 private:
+    struct Factor;
+    /// What the iteration's matrix is built from.
+    struct FactorInputs {
+        const FemSettings& settings;
+        const std::vector<Vec3>& rest;
+        const std::vector<Tet>& tets;
+        const std::vector<std::array<double, 9>>& dmInv;
+        const std::vector<double>& volume;
+        const std::vector<double>& mu;
+        const std::vector<double>& lambda;
+        const std::vector<char>& removed;
+        const std::vector<std::array<bool, 3>>& fixed;
+        const std::vector<double>& mass;
+        const std::vector<double>& pointVolume;
+        const std::vector<double>& pointBulk;
+        const std::vector<double>& matrixStiffening;
+        const std::vector<double>& tetherStiffness;
+    };
+    FactorInputs factorInputs() const;
+    /// Assembles the matrix of `in` and factors it into `f` (`partition`: the factor's halves, cut when empty).
+    static void buildFactor(const FactorInputs& in, std::vector<int>& partition, Factor& f);
+    /// H^-1 b by the factor `f` (the held dofs of `fixed` zero).
+    static void solveWith(const Factor& f, const std::vector<std::array<bool, 3>>& fixed, WorkerTeam& team,
+                          std::vector<double>& b);
+    /// The dense compliance between the dofs of `list`'s points and their columns of L^-1 (f.surfaceY).
+    static void precomputeInto(Factor& f, const std::vector<std::int32_t>& list,
+                               const std::vector<std::array<bool, 3>>& fixed, WorkerTeam& team,
+                               std::vector<double>& compliance);
+    struct Rebuild;
+    std::unique_ptr<Rebuild> m_rebuild; ///< a factor being rebuilt on its own thread (startRefactor)
     void assembleAndFactor();
     /// Internal elastic plus damping forces at positions x with velocity v (N per point), updating the rotations.
     void internalForces(const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& out);
@@ -213,6 +287,14 @@ private:
     /// turn far (the corpus tilting, a flap left by a cut) converge as fast as at rest.
     void solveWarped(std::vector<double>& b) const;
     void buildIncidence();
+    /// Each point's mass, volume and bulk modulus from its live tets (after a removal).
+    void updatePointMeasures();
+    /// Whether the live tets of `point` meet it as one disk or sphere (their faces opposite it edge-connected, their
+    /// border one simple cycle); otherwise `keep` gets the live tets of its part of most volume (empty when that part
+    /// alone does not close into a disk either).
+    bool pointIsManifold(std::size_t point, std::vector<std::size_t>* keep) const;
+    /// The live tets' pieces with no held or tethered point, each ascending, by their first tet.
+    std::vector<std::vector<std::size_t>> loosePieces() const;
     /// The exponential stiffening's secant factor sinh(x)/x, x = |dev e| / c, for a tet's corotated stretch `s`.
     double stiffening(std::size_t tet, const std::array<double, 9>& s) const;
     double stiffeningArgument(std::size_t tet, const std::array<double, 9>& s) const;
@@ -240,7 +322,6 @@ private:
     /// R S R^T f on the precomputed points for forces f on some of them.
     void surfaceResponse(const std::vector<std::pair<std::int32_t, Vec3>>& forces, std::vector<Vec3>& out) const;
 
-    struct Factor;
     std::unique_ptr<Factor> m_factor;
     std::vector<int> m_partition; ///< per point, the factor's half (0, 1) or the separator (2); kept while tets go
     std::unique_ptr<WorkerTeam> m_team; ///< the force evaluation's threads (settings.threads, kept between steps)
@@ -252,12 +333,16 @@ private:
     std::vector<FemMaterial> m_materials;
     std::vector<double> m_matrixStiffening; ///< per tet, the deviatoric stiffness factor the matrix was built with
     std::vector<char> m_removed;
-    std::vector<std::array<double, 9>> m_dmInv; ///< inverse rest shape matrix, row-major
-    std::vector<double> m_volume;               ///< m^3 at rest
-    std::vector<double> m_restDet;              ///< det of the rest shape matrix (6 V, with the tet's orientation)
-    std::vector<double> m_mu, m_lambda;         ///< Pa
-    std::vector<double> m_pointVolume;          ///< m^3, a quarter of each tet round a point
-    std::vector<double> m_pointBulk;            ///< Pa, the bulk modulus averaged over a point's tets by volume
+    std::size_t m_liveTets = 0;
+    bool m_factorStale = false;
+    std::vector<std::array<std::int32_t, 4>> m_neighbours; ///< the tet across each face (kTetFacePoints), -1: none
+    std::vector<std::array<double, 9>> m_dmInv;            ///< inverse rest shape matrix, row-major
+    std::vector<double> m_volume;                          ///< m^3 at rest
+    std::vector<double> m_restDet;           ///< det of the rest shape matrix (6 V, with the tet's orientation)
+    std::vector<double> m_mu, m_lambda;      ///< Pa
+    std::vector<double> m_pointVolume;       ///< m^3, a quarter of each tet round a point
+    std::vector<double> m_factorPointVolume; ///< m_pointVolume when the factor was built
+    std::vector<double> m_pointBulk;         ///< Pa, the bulk modulus averaged over a point's tets by volume
     std::vector<double> m_tetDilatation, m_tetRate, m_pointDilatation, m_pointRate; ///< scratch of internalForces
     std::vector<std::array<double, 9>> m_tetR;
     std::vector<std::array<double, 9>> m_tetStrain, m_tetStrainRate;  ///< scratch: sym parts' sources per tet

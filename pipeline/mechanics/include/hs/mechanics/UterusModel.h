@@ -34,18 +34,20 @@ inline constexpr double kLigamentStiffnessNPerM = 550.0;
 
 struct UterusModel {
     CorotationalFem fem;
-    std::vector<Vec3> restMm;         ///< the simulation mesh's points at rest
-    std::vector<Triangle> boundary;   ///< the simulation mesh's boundary faces, in its point indices
-    std::vector<std::int32_t> region; ///< per boundary face, the scene region of its tet
-    std::vector<char> faceCavity;     ///< a face of the cavity and the canal (the fluid presses on it)
-    std::vector<char> pointHeld;      ///< per point: fixed (the portio)
+    std::vector<Vec3> restMm;          ///< the simulation mesh's points at rest
+    std::vector<Triangle> boundary;    ///< the simulation mesh's boundary faces, in its point indices
+    std::vector<std::int32_t> region;  ///< per boundary face, the scene region of its tet
+    std::vector<std::int32_t> faceTet; ///< per boundary face, its tet
+    std::vector<char> faceCavity;      ///< a face of the cavity and the canal (the fluid presses on it)
+    std::vector<char> pointHeld;       ///< per point: fixed (the portio)
     Vec3 externalOsMm, internalOsMm;
     double restCavityMl = 0.0;
 
     /// The cavity's volume with the points at `pts` (mm): between its faces and the external os (the canal's open
     /// end), mL.
     double cavityVolumeMl(const std::vector<Vec3>& pts) const;
-    /// The fluid's pressure `pressureKpa` on the cavity's faces as they lie in `pts` (mm), N per point.
+    /// The fluid's pressure `pressureKpa` on the cavity's faces as they lie in `pts` (mm), N per point. A face whose
+    /// tet a cut removed carries none (the cut surface it opened is not loaded yet: docs/simulator.md, "Cutting").
     void pressureForces(const std::vector<Vec3>& pts, double pressureKpa, std::vector<Vec3>& forces) const;
 };
 
