@@ -3,6 +3,7 @@
 #include "hs/core/Parallel.h"
 #include "hs/mechanics/TetMath.h"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 
@@ -564,6 +565,7 @@ void CorotationalFem::assembleAndFactor() {
     buildFactor(factorInputs(), m_partition, *factor);
     m_factor = std::move(factor);
     m_factorPointVolume = m_pointVolume;
+    m_factorFixed = m_fixed;
     if (!m_team || m_team->size() != std::max(1, m_settings.threads))
         m_team = std::make_unique<WorkerTeam>(std::max(1, m_settings.threads));
 }
@@ -1689,6 +1691,23 @@ CorotationalFem::Removal CorotationalFem::removeTets(const std::vector<std::size
         }
     updatePointMeasures();
     m_factorStale = true;
+    if (refactorMode == Refactor::Downdate) {
+        bool exact = !(m_settings.nodalPressure && m_settings.nodalPressureMatrix) && !m_rebuild;
+        for (const std::size_t t : out.removed)
+            if (exact && !downdateTet(t))
+                exact = false;
+        if (exact) {
+            // The surface's precomputed compliance was the old factor's.
+            m_compliantIndex.assign(m_x.size(), -1);
+            m_compliantCount = 0;
+            m_compliance.clear();
+            m_factor->surfaceY.clear();
+            m_factorPointVolume = m_pointVolume;
+            m_factorStale = false;
+        } else {
+            refactorMode = Refactor::Now;
+        }
+    }
     if (refactorMode == Refactor::Now)
         refactor();
     return out;
@@ -1731,6 +1750,7 @@ void CorotationalFem::finishRefactor() {
         m_compliance = std::move(m_rebuild->compliance);
     m_factorStale = m_rebuild->liveTets != m_liveTets;
     m_factorPointVolume = std::move(m_rebuild->pointVolume);
+    m_factorFixed = std::move(m_rebuild->fixed);
     m_rebuild.reset();
 }
 
@@ -1745,14 +1765,89 @@ double CorotationalFem::factorStaleness() const {
 void CorotationalFem::refactor() {
     m_rebuild.reset(); // a rebuild begun before would bring back an older factor
     assembleAndFactor();
-    if (m_compliantCount > 0) {
-        std::vector<std::int32_t> points;
-        for (std::size_t i = 0; i < m_compliantIndex.size(); ++i)
-            if (m_compliantIndex[i] >= 0)
-                points.push_back(static_cast<std::int32_t>(i));
+    if (!m_compliantList.empty()) {
+        const std::vector<std::int32_t> points = m_compliantList;
         precomputeCompliance(points);
     }
     m_factorStale = false;
+}
+
+bool CorotationalFem::downdateTet(std::size_t t) {
+    // The tet's block of the matrix as buildFactor assembles it (per-tet pressure), on the dofs free in the factor.
+    Factor& f = *m_factor;
+    const double stiffnessScale = 1.0 + m_settings.rayleighStiffnessS / m_settings.stepS;
+    const std::array<Vec3, 4> g = shapeGradients(m_dmInv[t]);
+    const double bulk = m_lambda[t] + 2.0 * m_mu[t] / 3.0;
+    const double v = m_volume[t] * stiffnessScale;
+    const double mu = m_mu[t] * (m_matrixStiffening.empty() ? 1.0 : m_matrixStiffening[t]);
+    const double la = -2.0 * mu / 3.0 + bulk;
+    const Tet& tet = m_tets[t];
+    const auto held = [&](std::size_t corner, int axis) {
+        return m_factorFixed[static_cast<std::size_t>(tet[corner])][static_cast<std::size_t>(axis)];
+    };
+    Eigen::Matrix<double, 12, 12> k = Eigen::Matrix<double, 12, 12>::Zero();
+    for (std::size_t a = 0; a < 4; ++a)
+        for (std::size_t b = 0; b < 4; ++b) {
+            const double gg = dot(g[a], g[b]);
+            for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 3; ++j)
+                    if (!held(a, i) && !held(b, j))
+                        k(static_cast<Eigen::Index>(3 * a) + i, static_cast<Eigen::Index>(3 * b) + j) =
+                            v * (la * g[a][i] * g[b][j] + mu * g[a][j] * g[b][i] + (i == j ? mu * gg : 0.0));
+        }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 12, 12>> eigen(k);
+    const double top = eigen.eigenvalues().maxCoeff();
+    std::vector<int> reach;
+    for (Eigen::Index e = 0; e < 12; ++e) {
+        const double lambda = eigen.eigenvalues()[e];
+        if (!(lambda > 1e-12 * top))
+            continue; // the rigid motions
+        // L D L^T - w w^T, w = sqrt(lambda) times the eigenvector, by Gill, Golub, Murray & Saunders' method C1 on
+        // the columns of w's reach (its entries' paths to the root), ascending.
+        const std::uint32_t now = f.nextStamp(0);
+        std::vector<double>& w = f.dense[0];
+        std::vector<std::uint32_t>& marks = f.mark[0];
+        reach.clear();
+        for (Eigen::Index r = 0; r < 12; ++r) {
+            const std::size_t corner = static_cast<std::size_t>(r) / 3;
+            const int axis = static_cast<int>(r % 3);
+            if (held(corner, axis))
+                continue;
+            int j = f.oldToNew[3 * static_cast<std::size_t>(tet[corner]) + static_cast<std::size_t>(axis)];
+            w[static_cast<std::size_t>(j)] += std::sqrt(lambda) * eigen.eigenvectors()(r, e);
+            for (; j >= 0 && marks[static_cast<std::size_t>(j)] != now; j = f.parent[static_cast<std::size_t>(j)]) {
+                marks[static_cast<std::size_t>(j)] = now;
+                reach.push_back(j);
+            }
+        }
+        std::sort(reach.begin(), reach.end());
+        double alpha = -1.0;
+        bool ok = true;
+        for (const int column : reach) {
+            const auto j = static_cast<std::size_t>(column);
+            const double p = w[j];
+            if (p == 0.0)
+                continue;
+            const double dj = f.diag[j], dNew = dj + alpha * p * p;
+            if (!(dNew > 1e-12 * dj) || !std::isfinite(dNew)) {
+                ok = false;
+                break;
+            }
+            const double beta = p * alpha / dNew;
+            alpha *= dj / dNew;
+            f.diag[j] = dNew;
+            for (int q = f.colStart[j]; q < f.colStart[j + 1]; ++q) {
+                const auto r = static_cast<std::size_t>(f.row[static_cast<std::size_t>(q)]);
+                w[r] -= p * f.value[static_cast<std::size_t>(q)];
+                f.value[static_cast<std::size_t>(q)] += beta * w[r];
+            }
+        }
+        for (const int column : reach)
+            w[static_cast<std::size_t>(column)] = 0.0;
+        if (!ok)
+            return false;
+    }
+    return true;
 }
 
 std::vector<std::int32_t> CorotationalFem::singularPoints() const {

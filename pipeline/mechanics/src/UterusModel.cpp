@@ -59,6 +59,31 @@ void UterusModel::pressureForces(const std::vector<Vec3>& pts, double pressureKp
         for (const std::int32_t v : boundary[f])
             forces[static_cast<std::size_t>(v)] += force;
     }
+    // The faces a cut opened: a removed tet's face against a live one is wet; the fluid in the removed tet's place
+    // pushes the live tet's face in (without it the tissue round a cut would carry the pressure's whole load on
+    // the faces left, unbalanced).
+    if (fem.liveTetCount() == fem.tetCount())
+        return;
+    const std::vector<Tet>& tets = fem.tets();
+    const auto& across = fem.neighbours();
+    for (std::size_t t = 0; t < tets.size(); ++t) {
+        if (!fem.tetRemoved(t))
+            continue;
+        for (std::size_t k = 0; k < 4; ++k) {
+            const std::int32_t u = across[t][k];
+            if (u < 0 || fem.tetRemoved(static_cast<std::size_t>(u)))
+                continue;
+            const Triangle face{tets[t][static_cast<std::size_t>(kTetFacePoints[k][0])],
+                                tets[t][static_cast<std::size_t>(kTetFacePoints[k][1])],
+                                tets[t][static_cast<std::size_t>(kTetFacePoints[k][2])]};
+            Vec3 n = areaNormal(pts, face); // out of the removed tet, into the live one, for a positive tet
+            if (dot(n, pts[static_cast<std::size_t>(face[0])] - pts[static_cast<std::size_t>(tets[t][k])]) < 0.0)
+                n = n * -1.0;
+            const Vec3 force = n * (0.5 * kMm * kMm) * (pa / 3.0);
+            for (const std::int32_t v : face)
+                forces[static_cast<std::size_t>(v)] += force;
+        }
+    }
 }
 
 Status buildUterusModel(const scene::Scene& scene, const FemSettings& settings, UterusModel& out, bool portioHeld) {

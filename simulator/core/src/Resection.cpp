@@ -212,7 +212,7 @@ CutEvent Resection::cut(mechanics::CorotationalFem& fem, const LoopElectrode& lo
         return event;
     }
     event.sweptTets = hit.size();
-    mechanics::CorotationalFem::Removal removal = fem.removeTets(hit, mechanics::CorotationalFem::Refactor::Later);
+    mechanics::CorotationalFem::Removal removal = fem.removeTets(hit, mechanics::CorotationalFem::Refactor::Downdate);
     event.removed = std::move(removal.removed);
     event.chips = std::move(removal.chips);
     for (const std::size_t t : event.removed) {

@@ -168,7 +168,12 @@ public:
     /// tets); Later keeps the factor, which is then stiffer than the tissue: the chord iteration still converges to
     /// the live tets' equilibrium (its matrix bounds their stiffness from above), only more slowly near the cut, until
     /// refactor() is called. Out-of-range and removed tets are ignored.
-    enum class Refactor { Now, Later };
+    /// Downdate: each removed tet's stiffness is taken out of the factor by rank-one downdates along the elimination
+    /// tree's paths (Davis & Hager, SIAM J Matrix Anal Appl 20(3):606-627, 1999): the factor stays the live tets'
+    /// (their masses kept: the matrix a little heavier than the tissue), and the precomputed surface compliance is
+    /// dropped (contact rows take the forward solves on their reach) until refactor(). With the nodal pressure in the
+    /// matrix, or a pivot that would not stay positive, it rebuilds instead.
+    enum class Refactor { Now, Later, Downdate };
     struct Removal {
         std::vector<std::size_t> removed;            ///< every tet this call removed, ascending
         std::vector<std::vector<std::size_t>> chips; ///< the pieces cut free, each ascending, by their first tet
@@ -204,6 +209,8 @@ public:
     /// The rest volume of tet `t`, m^3.
     double restVolumeM3(std::size_t t) const { return t < m_volume.size() ? m_volume[t] : 0.0; }
     const std::vector<Tet>& tets() const { return m_tets; }
+    /// Per tet, the tet across each of its faces (face k opposite its point k), -1 on the mesh's boundary.
+    const std::vector<std::array<std::int32_t, 4>>& neighbours() const { return m_neighbours; }
 
     /// The give of the tissue over one step under the load pattern `forces` (N per point): f^T R H^-1 R^T f, in m per
     /// N times the pattern's units squared (one solve). For the cavity's pressure pattern (m^2 per point) it is the
@@ -276,6 +283,9 @@ private:
     static void precomputeInto(Factor& f, const std::vector<std::int32_t>& list,
                                const std::vector<std::array<bool, 3>>& fixed, WorkerTeam& team,
                                std::vector<double>& compliance);
+    /// Takes tet `t`'s stiffness out of the factor (Refactor::Downdate); false when a pivot would not stay positive
+    /// (the factor is then half modified: the caller rebuilds it).
+    bool downdateTet(std::size_t t);
     struct Rebuild;
     std::unique_ptr<Rebuild> m_rebuild; ///< a factor being rebuilt on its own thread (startRefactor)
     void assembleAndFactor();
@@ -338,11 +348,12 @@ private:
     std::vector<std::array<std::int32_t, 4>> m_neighbours; ///< the tet across each face (kTetFacePoints), -1: none
     std::vector<std::array<double, 9>> m_dmInv;            ///< inverse rest shape matrix, row-major
     std::vector<double> m_volume;                          ///< m^3 at rest
-    std::vector<double> m_restDet;           ///< det of the rest shape matrix (6 V, with the tet's orientation)
-    std::vector<double> m_mu, m_lambda;      ///< Pa
-    std::vector<double> m_pointVolume;       ///< m^3, a quarter of each tet round a point
-    std::vector<double> m_factorPointVolume; ///< m_pointVolume when the factor was built
-    std::vector<double> m_pointBulk;         ///< Pa, the bulk modulus averaged over a point's tets by volume
+    std::vector<double> m_restDet;                  ///< det of the rest shape matrix (6 V, with the tet's orientation)
+    std::vector<double> m_mu, m_lambda;             ///< Pa
+    std::vector<double> m_pointVolume;              ///< m^3, a quarter of each tet round a point
+    std::vector<double> m_factorPointVolume;        ///< m_pointVolume when the factor was built
+    std::vector<std::array<bool, 3>> m_factorFixed; ///< m_fixed when the factor was built
+    std::vector<double> m_pointBulk;                ///< Pa, the bulk modulus averaged over a point's tets by volume
     std::vector<double> m_tetDilatation, m_tetRate, m_pointDilatation, m_pointRate; ///< scratch of internalForces
     std::vector<std::array<double, 9>> m_tetR;
     std::vector<std::array<double, 9>> m_tetStrain, m_tetStrainRate;  ///< scratch: sym parts' sources per tet
