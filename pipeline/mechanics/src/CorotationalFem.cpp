@@ -1638,10 +1638,14 @@ bool CorotationalFem::pointIsManifold(std::size_t point, std::vector<std::size_t
 CorotationalFem::Removal CorotationalFem::removeTets(const std::vector<std::size_t>& tets, Refactor refactorMode) {
     Removal out;
     std::vector<std::int32_t> touched;
+    std::vector<std::size_t> exposed; // live tets across a face of a removed one
     const auto take = [&](std::size_t t) {
         m_removed[t] = 1;
         out.removed.push_back(t);
         touched.insert(touched.end(), m_tets[t].begin(), m_tets[t].end());
+        for (const std::int32_t u : m_neighbours[t])
+            if (u >= 0 && !m_removed[static_cast<std::size_t>(u)])
+                exposed.push_back(static_cast<std::size_t>(u));
     };
     for (const std::size_t t : tets)
         if (t < m_removed.size() && !m_removed[t])
@@ -1671,6 +1675,23 @@ CorotationalFem::Removal CorotationalFem::removeTets(const std::vector<std::size
                     take(t);
                     ++out.manifoldTets;
                 }
+            }
+        }
+        // Dangling tets: a tet the cut left held by one face or none (its other faces open to the fluid or the
+        // outside) is a sliver of the mesh's resolution that no loop leaves in tissue; it goes with the cut.
+        std::vector<std::size_t> candidates;
+        candidates.swap(exposed);
+        std::sort(candidates.begin(), candidates.end());
+        candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+        for (const std::size_t t : candidates) {
+            if (m_removed[t])
+                continue;
+            int held = 0;
+            for (const std::int32_t u : m_neighbours[t])
+                held += u >= 0 && !m_removed[static_cast<std::size_t>(u)] ? 1 : 0;
+            if (held <= 1) {
+                take(t);
+                ++out.danglingTets;
             }
         }
     }

@@ -76,8 +76,16 @@ void UterusModel::pressureForces(const std::vector<Vec3>& pts, double pressureKp
             const Triangle face{tets[t][static_cast<std::size_t>(kTetFacePoints[k][0])],
                                 tets[t][static_cast<std::size_t>(kTetFacePoints[k][1])],
                                 tets[t][static_cast<std::size_t>(kTetFacePoints[k][2])]};
-            Vec3 n = areaNormal(pts, face); // out of the removed tet, into the live one, for a positive tet
-            if (dot(n, pts[static_cast<std::size_t>(face[0])] - pts[static_cast<std::size_t>(tets[t][k])]) < 0.0)
+            // Oriented into the live tet by the live tet's own fourth point: the removed tet's points are carried by
+            // nothing once a cut has left them (a point of removed tets only drifts), so its fourth point may lie
+            // across the face and would turn the fluid's push into a pull.
+            const Tet& live = tets[static_cast<std::size_t>(u)];
+            std::int32_t inside = live[0];
+            for (const std::int32_t q : live)
+                if (q != face[0] && q != face[1] && q != face[2])
+                    inside = q;
+            Vec3 n = areaNormal(pts, face);
+            if (dot(n, pts[static_cast<std::size_t>(inside)] - pts[static_cast<std::size_t>(face[0])]) < 0.0)
                 n = n * -1.0;
             const Vec3 force = n * (0.5 * kMm * kMm) * (pa / 3.0);
             for (const std::int32_t v : face)

@@ -4,6 +4,7 @@
 // tets removed at run time.
 #include "hs/core/Rng.h"
 #include "hs/mechanics/CorotationalFem.h"
+#include "hs/mechanics/UterusModel.h"
 #include "hs/mechanics/Verification.h"
 
 #include <gtest/gtest.h>
@@ -336,7 +337,7 @@ TEST(Mechanics, TwoPartsLeftTouchingAlongAnEdgeAreMadeManifold) {
     ASSERT_TRUE(fem.singularPoints().empty());
     const CorotationalFem::Removal removal = fem.removeTets(cut, CorotationalFem::Refactor::Later);
     EXPECT_GT(removal.manifoldTets, 0u);
-    EXPECT_EQ(removal.removed.size(), cut.size() + removal.manifoldTets);
+    EXPECT_EQ(removal.removed.size(), cut.size() + removal.manifoldTets + removal.danglingTets);
     EXPECT_TRUE(removal.chips.empty());
     EXPECT_TRUE(fem.singularPoints().empty());
     EXPECT_EQ(fem.looseLivePieces(), 0u);
@@ -353,10 +354,25 @@ TEST(Mechanics, TwoPartsLeftTouchingAlongAnEdgeAreMadeManifold) {
     EXPECT_EQ(fem.factorStaleness(), 0.0);
 }
 
+/// Live tets a cut left held by one face or none (a face against a removed tet, at most one against a live one).
+std::size_t danglingLiveTets(const CorotationalFem& fem) {
+    std::size_t count = 0;
+    for (std::size_t t = 0; t < fem.tets().size(); ++t) {
+        if (fem.tetRemoved(t))
+            continue;
+        int live = 0, cut = 0;
+        for (const std::int32_t u : fem.neighbours()[t])
+            if (u >= 0)
+                (fem.tetRemoved(static_cast<std::size_t>(u)) ? cut : live) += 1;
+        count += cut > 0 && live <= 1 ? 1 : 0;
+    }
+    return count;
+}
+
 TEST(Mechanics, AThousandCutEventsLeaveAValidSolid) {
     // Cut events at random points of the block above its held base (the live tet nearest the point within 0.6 mm, as
     // a loop's wire takes them), every tenth followed by a step under a load: after every event the boundary is a
-    // manifold and nothing hangs free; at the end no tet is inverted.
+    // manifold, nothing hangs free and no tet hangs by one face; at the end no tet is inverted.
     const Block block = makeBlock(17, 9); // 32 x 32 x 16 mm, 12 288 tets
     const std::vector<FemMaterial> materials(block.tets.size(), FemMaterial{30e3, 0.47, 1050.0});
     CorotationalFem fem;
@@ -364,7 +380,7 @@ TEST(Mechanics, AThousandCutEventsLeaveAValidSolid) {
     std::vector<Vec3> load(block.points.size(), Vec3{0.0, 0.0, -2e-4});
     std::vector<FemConstraint> none;
     Rng rng(11);
-    std::size_t events = 0, removed = 0, chips = 0, repairs = 0;
+    std::size_t events = 0, removed = 0, chips = 0, repairs = 0, dangling = 0;
     for (int attempt = 0; attempt < 200000 && events < 1000; ++attempt) {
         const Vec3 p{rng.uniform(-10e-3, 22e-3), rng.uniform(-10e-3, 22e-3), rng.uniform(-14e-3, 0.0)};
         std::vector<std::size_t> near;
@@ -389,11 +405,14 @@ TEST(Mechanics, AThousandCutEventsLeaveAValidSolid) {
         repairs += removal.manifoldTets;
         ASSERT_TRUE(fem.singularPoints().empty()) << "after event " << events;
         ASSERT_EQ(fem.looseLivePieces(), 0u) << "after event " << events;
+        ASSERT_EQ(danglingLiveTets(fem), 0u) << "after event " << events;
+        dangling += removal.danglingTets;
         if (events % 10 == 0)
             fem.step(load, none);
     }
     ASSERT_EQ(events, 1000u) << removed << " removed, " << repairs << " for the manifold, " << chips << " chips";
     EXPECT_GT(repairs, 0u);
+    EXPECT_GT(dangling, 0u); // the rule was needed, not only held by chance
     EXPECT_TRUE(fem.factorStale());
     fem.refactor();
     for (int s = 0; s < 50; ++s)
@@ -403,6 +422,58 @@ TEST(Mechanics, AThousandCutEventsLeaveAValidSolid) {
     EXPECT_GT(fem.minVolumeRatio(inverted), 0.5);
     EXPECT_EQ(inverted, 0u);
     EXPECT_TRUE(std::isfinite(fem.elasticEnergyJ()));
+}
+
+TEST(Mechanics, TheFluidPushesACutFaceIntoItsLiveTetWhereverTheRemovedTetsPointsAre) {
+    // A top-layer tet removed: the fluid in its place presses each face it shared with a live tet into that tet. The
+    // removed tet's point opposite the face is not the live tet's: moved across the face (as a point a cut left
+    // drifts), it must not turn the push into a pull; the orientation comes from the live tet.
+    const Block block = makeBlock();
+    const std::vector<FemMaterial> materials(block.tets.size(), FemMaterial{30e3, 0.47, 1050.0});
+    UterusModel model;
+    ASSERT_TRUE(model.fem.build(block.points, block.tets, materials, block.fixed, {}, FemSettings{}));
+    const auto first = static_cast<std::size_t>(6 * ((4 * (block.nx - 1) + 4) * (block.nx - 1) + 4));
+    const std::size_t cut = first + 3; // {0, 7, 4, 6} of the cube (4, 4, 4): its top face on the boundary
+    model.fem.removeTets({cut}, CorotationalFem::Refactor::Later);
+    ASSERT_TRUE(model.fem.tetRemoved(cut));
+    const Tet& removed = model.fem.tets()[cut];
+    const auto corner = [&removed](std::size_t k, int c) {
+        return static_cast<std::size_t>(removed[static_cast<std::size_t>(kTetFacePoints[k][c])]);
+    };
+    std::vector<Vec3> pts(block.points.size());
+    for (std::size_t i = 0; i < pts.size(); ++i)
+        pts[i] = block.points[i] * 1e3;
+    // Whether the fluid's forces on face k's points push them towards the live tet's centre.
+    const auto pushesIn = [&](const std::vector<Vec3>& at, std::size_t k) {
+        std::vector<Vec3> forces;
+        model.pressureForces(at, 8.0, forces);
+        const auto u = static_cast<std::size_t>(model.fem.neighbours()[cut][k]);
+        Vec3 centre, face;
+        for (const std::int32_t q : model.fem.tets()[u])
+            centre += at[static_cast<std::size_t>(q)] * 0.25;
+        for (int c = 0; c < 3; ++c)
+            face += at[corner(k, c)] / 3.0;
+        double along = 0.0;
+        for (int c = 0; c < 3; ++c)
+            along += dot(forces[corner(k, c)], centre - face);
+        return along > 0.0;
+    };
+    std::size_t faces = 0;
+    for (std::size_t k = 0; k < 4; ++k) {
+        const std::int32_t u = model.fem.neighbours()[cut][k];
+        if (u < 0 || model.fem.tetRemoved(static_cast<std::size_t>(u)))
+            continue;
+        ++faces;
+        EXPECT_TRUE(pushesIn(pts, k)) << "face " << k;
+        // The removed tet's point opposite face k reflected through the face's plane.
+        const Vec3 a = pts[corner(k, 0)], b = pts[corner(k, 1)], c = pts[corner(k, 2)];
+        const Vec3 n = normalized(cross(b - a, c - a));
+        std::vector<Vec3> across = pts;
+        Vec3& p = across[static_cast<std::size_t>(removed[k])];
+        p = p - n * (2.0 * dot(p - a, n));
+        EXPECT_TRUE(pushesIn(across, k)) << "face " << k << ", the removed tet's fourth point across it";
+    }
+    EXPECT_GE(faces, 2u);
 }
 
 TEST(Mechanics, AStaleFactorSettlesWhereAFreshOneDoes) {

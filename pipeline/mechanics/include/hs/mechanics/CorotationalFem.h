@@ -178,6 +178,7 @@ public:
         std::vector<std::size_t> removed;            ///< every tet this call removed, ascending
         std::vector<std::vector<std::size_t>> chips; ///< the pieces cut free, each ascending, by their first tet
         std::size_t manifoldTets = 0;                ///< of `removed`, the tets taken to keep the boundary a manifold
+        std::size_t danglingTets = 0;                ///< of `removed`, tets the cut left held by one face or none
     };
     Removal removeTets(const std::vector<std::size_t>& tets, Refactor refactor = Refactor::Now);
     bool tetRemoved(std::size_t tet) const { return tet < m_removed.size() && m_removed[tet] != 0; }
