@@ -39,7 +39,9 @@ Trial sampleTrial(std::size_t count, std::uint64_t seed = 7) {
         s.cameraRollDeg = i == 3 ? -0.0 : 5e-320; // signed zero and a subnormal survive too
         s.inflow = unit(rng);
         s.outflow = unit(rng);
-        s.buttons = static_cast<std::uint32_t>(i % 4);
+        s.buttons = static_cast<std::uint32_t>(i % 16);
+        s.workingElementMm = unit(rng) * kMaxWorkingElementMm;
+        s.instrument = static_cast<std::uint32_t>(i % 2);
         trial.samples.push_back(s);
     }
     return trial;
@@ -112,9 +114,10 @@ TEST_F(TrialFile, ReadsBackBitForBit) {
         EXPECT_TRUE(sameBits(a.insertionMm, b.insertionMm) && sameBits(a.pitchDeg, b.pitchDeg) &&
                     sameBits(a.yawDeg, b.yawDeg) && sameBits(a.rollDeg, b.rollDeg) &&
                     sameBits(a.cameraRollDeg, b.cameraRollDeg) && sameBits(a.inflow, b.inflow) &&
-                    sameBits(a.outflow, b.outflow))
+                    sameBits(a.outflow, b.outflow) && sameBits(a.workingElementMm, b.workingElementMm))
             << "sample " << i;
         EXPECT_EQ(a.buttons, b.buttons);
+        EXPECT_EQ(a.instrument, b.instrument);
     }
     // Writing what was read gives the same bytes.
     const std::string again = dir.file("again.hstrial");
@@ -123,12 +126,49 @@ TEST_F(TrialFile, ReadsBackBitForBit) {
 }
 
 TEST_F(TrialFile, HasTheDocumentedLayout) {
-    EXPECT_EQ(bytes.substr(0, 8), "HSTRIAL1");
+    EXPECT_EQ(bytes.substr(0, 8), "HSTRIAL2");
     const std::size_t records = samplesOffset(bytes);
-    EXPECT_EQ(bytes.size(), records + 50 * 72);
+    EXPECT_EQ(bytes.size(), records + 50 * 80);
     std::uint64_t tick = 0;
-    std::memcpy(&tick, &bytes[records + 72], 8);
+    std::memcpy(&tick, &bytes[records + 80], 8);
     EXPECT_EQ(tick, 1u);
+    std::uint32_t instrument = 0;
+    std::memcpy(&instrument, &bytes[records + 80 + 76], 4);
+    EXPECT_EQ(instrument, 1u);
+}
+
+TEST_F(TrialFile, ReadsAnOlderTrialAsTheDiagnosticScopes) {
+    // An HSTRIAL1 file (72-byte samples: no working element, buttons, a zero word) made from the same samples.
+    Trial trial = sampleTrial(20);
+    for (DeviceSample& s : trial.samples) {
+        s.buttons &= kButtonMark | kButtonCapture;
+        s.workingElementMm = 0.0;
+        s.instrument = kInstrumentNone;
+    }
+    const std::string v2 = dir.file("v2.hstrial");
+    ASSERT_TRUE(writeTrial(trial, v2).ok());
+    const std::string written = fileBytes(v2);
+    const std::size_t records = samplesOffset(written);
+    std::string v1 = written.substr(0, records);
+    v1[7] = '1';
+    for (std::size_t i = 0; i < trial.samples.size(); ++i) {
+        v1 += written.substr(records + 80 * i, 64);     // tick and the seven doubles
+        v1 += written.substr(records + 80 * i + 72, 4); // buttons
+        v1 += std::string(4, '\0');
+    }
+    auto read = parseTrial(v1, "old.hstrial");
+    ASSERT_TRUE(read.ok()) << read.error().detail;
+    ASSERT_EQ(read->samples.size(), trial.samples.size());
+    for (std::size_t i = 0; i < trial.samples.size(); ++i) {
+        EXPECT_TRUE(sameBits(read->samples[i].insertionMm, trial.samples[i].insertionMm));
+        EXPECT_EQ(read->samples[i].buttons, trial.samples[i].buttons);
+        EXPECT_EQ(read->samples[i].workingElementMm, 0.0);
+        EXPECT_EQ(read->samples[i].instrument, kInstrumentNone);
+    }
+    // Its reserved word must stay zero.
+    std::string reserved = v1;
+    reserved[records + 72 + 68] = 1;
+    EXPECT_TRUE(refusedNaming(parseTrial(reserved, "old.hstrial"), "old.hstrial", "samples[1].reserved"));
 }
 
 TEST_F(TrialFile, RefusesATruncatedFile) {
@@ -141,8 +181,8 @@ TEST_F(TrialFile, RefusesATruncatedFile) {
 
 TEST_F(TrialFile, RefusesAWrongMagic) {
     std::string wrong = bytes;
-    wrong[7] = '2';
-    EXPECT_TRUE(refusedNaming(parseTrial(wrong, "v2.hstrial"), "v2.hstrial", "magic"));
+    wrong[7] = '3';
+    EXPECT_TRUE(refusedNaming(parseTrial(wrong, "v3.hstrial"), "v3.hstrial", "magic"));
 }
 
 TEST_F(TrialFile, RefusesHugeCountsBeforeAllocating) {
@@ -168,23 +208,29 @@ TEST_F(TrialFile, RefusesHugeCountsBeforeAllocating) {
 TEST_F(TrialFile, RefusesNaNAndOutOfRangeSamples) {
     const std::size_t records = samplesOffset(bytes);
     std::string nan = bytes;
-    putDouble(nan, records + 3 * 72 + 8, std::nan(""));
+    putDouble(nan, records + 3 * 80 + 8, std::nan(""));
     EXPECT_TRUE(refusedNaming(parseTrial(nan, "nan.hstrial"), "nan.hstrial", "samples[3].insertionMm"));
     std::string pitch = bytes;
-    putDouble(pitch, records + 10 * 72 + 16, 61.0);
+    putDouble(pitch, records + 10 * 80 + 16, 61.0);
     EXPECT_TRUE(refusedNaming(parseTrial(pitch, "p.hstrial"), "p.hstrial", "samples[10].pitchDeg"));
     std::string valve = bytes;
-    putDouble(valve, records + 10 * 72 + 56, 1.5);
+    putDouble(valve, records + 10 * 80 + 56, 1.5);
     EXPECT_TRUE(refusedNaming(parseTrial(valve, "v.hstrial"), "v.hstrial", "samples[10].outflow"));
     std::string buttons = bytes;
-    buttons[records + 72 + 64] = 8;
+    buttons[records + 80 + 72] = 16;
     EXPECT_TRUE(refusedNaming(parseTrial(buttons, "b.hstrial"), "b.hstrial", "samples[1].buttons"));
+    std::string loop = bytes;
+    putDouble(loop, records + 10 * 80 + 64, kMaxWorkingElementMm + 1.0);
+    EXPECT_TRUE(refusedNaming(parseTrial(loop, "w.hstrial"), "w.hstrial", "samples[10].workingElementMm"));
+    std::string instrument = bytes;
+    instrument[records + 80 + 76] = 9;
+    EXPECT_TRUE(refusedNaming(parseTrial(instrument, "i.hstrial"), "i.hstrial", "samples[1].instrument"));
 }
 
 TEST_F(TrialFile, RefusesTicksThatAreNotConsecutive) {
     std::string gap = bytes;
     const std::uint64_t tick = 7;
-    std::memcpy(&gap[samplesOffset(bytes) + 5 * 72], &tick, 8);
+    std::memcpy(&gap[samplesOffset(bytes) + 5 * 80], &tick, 8);
     EXPECT_TRUE(refusedNaming(parseTrial(gap, "gap.hstrial"), "gap.hstrial", "samples[5].tick"));
 
     Trial trial = sampleTrial(10);

@@ -21,7 +21,8 @@ bool isValid(const DeviceSample& s) {
     return within(s.insertionMm, kMinInsertionMm, kMaxInsertionMm) && within(s.pitchDeg, -kMaxPivotDeg, kMaxPivotDeg) &&
            within(s.yawDeg, -kMaxPivotDeg, kMaxPivotDeg) && within(s.rollDeg, -kMaxRollDeg, kMaxRollDeg) &&
            within(s.cameraRollDeg, -kMaxRollDeg, kMaxRollDeg) && within(s.inflow, 0.0, 1.0) &&
-           within(s.outflow, 0.0, 1.0);
+           within(s.outflow, 0.0, 1.0) && within(s.workingElementMm, 0.0, kMaxWorkingElementMm) &&
+           (s.buttons & ~kKnownButtons) == 0 && s.instrument <= kMaxInstrument;
 }
 
 DeviceSample clamped(const DeviceSample& s) {
@@ -33,6 +34,9 @@ DeviceSample clamped(const DeviceSample& s) {
     c.cameraRollDeg = clampedValue(s.cameraRollDeg, -kMaxRollDeg, kMaxRollDeg);
     c.inflow = clampedValue(s.inflow, 0.0, 1.0);
     c.outflow = clampedValue(s.outflow, 0.0, 1.0);
+    c.workingElementMm = clampedValue(s.workingElementMm, 0.0, kMaxWorkingElementMm);
+    c.buttons = s.buttons & kKnownButtons;
+    c.instrument = s.instrument <= kMaxInstrument ? s.instrument : kInstrumentNone;
     return c;
 }
 

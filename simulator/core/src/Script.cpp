@@ -20,7 +20,6 @@ constexpr std::string_view kScriptFormat = "hysteroscene-script";
 constexpr int kScriptVersion = 1;
 /// A key frame with every member written takes ~200 bytes: the text limit follows from kMaxKeyFrames.
 constexpr std::int64_t kMaxScriptBytes = static_cast<std::int64_t>(kMaxKeyFrames) * 400 + 4096;
-constexpr std::uint32_t kKnownButtons = kButtonMark | kButtonCapture;
 
 std::uint64_t tickOf(double timeS) {
     return static_cast<std::uint64_t>(std::llround(timeS * kDeviceRateHz));
@@ -44,6 +43,7 @@ const FieldRange kFields[] = {
     {"cameraRollDeg", &DeviceSample::cameraRollDeg, -kMaxRollDeg, kMaxRollDeg},
     {"inflow", &DeviceSample::inflow, 0.0, 1.0},
     {"outflow", &DeviceSample::outflow, 0.0, 1.0},
+    {"workingElementMm", &DeviceSample::workingElementMm, 0.0, kMaxWorkingElementMm},
 };
 
 void readKeyFrame(const json& item, const std::string& path, const KeyFrame* previous, KeyFrame& out,
@@ -79,9 +79,19 @@ void readKeyFrame(const json& item, const std::string& path, const KeyFrame* pre
         reader.read("buttons", buttons);
         if (buttons & ~std::uint64_t{kKnownButtons})
             issues.push_back({reader.pathOf("buttons"), std::to_string(buttons) + " has bits other than " +
-                                                            std::to_string(kKnownButtons) + " (1 mark, 2 capture)"});
+                                                            std::to_string(kKnownButtons) +
+                                                            " (1 mark, 2 capture, 4 cut, 8 coagulate)"});
         else
             out.sample.buttons = static_cast<std::uint32_t>(buttons);
+    }
+    if (reader.member("instrument")) {
+        std::uint64_t instrument = out.sample.instrument;
+        reader.read("instrument", instrument);
+        if (instrument > kMaxInstrument)
+            issues.push_back({reader.pathOf("instrument"), std::to_string(instrument) + " is outside 0.." +
+                                                               std::to_string(kMaxInstrument) + " (0 none, 1 loop)"});
+        else
+            out.sample.instrument = static_cast<std::uint32_t>(instrument);
     }
     reader.finish();
 }
@@ -263,6 +273,7 @@ std::string scriptJson(const Script& script) {
         for (const FieldRange& field : kFields)
             f[field.name] = k.sample.*field.member;
         f["buttons"] = k.sample.buttons;
+        f["instrument"] = k.sample.instrument;
         j["keyframes"].push_back(std::move(f));
     }
     return j.dump(1) + "\n";

@@ -21,12 +21,15 @@ namespace {
 using nlohmann::json;
 using nlohmann::ordered_json;
 
-constexpr char kMagic[8] = {'H', 'S', 'T', 'R', 'I', 'A', 'L', '1'};
+// HSTRIAL2 (written): 80-byte records with the working element and the instrument; HSTRIAL1 (read): 72-byte records of
+// the diagnostic scope (working element 0, no instrument).
+constexpr char kMagic[8] = {'H', 'S', 'T', 'R', 'I', 'A', 'L', '2'};
+constexpr char kMagicV1[8] = {'H', 'S', 'T', 'R', 'I', 'A', 'L', '1'};
 constexpr std::string_view kHeaderFormat = "hysteroscene-trial";
 constexpr int kHeaderVersion = 2; // 2: the physics that recorded it (engine, step, iterations)
-constexpr std::size_t kRecordBytes = 72;
+constexpr std::size_t kRecordBytes = 80;
+constexpr std::size_t kRecordBytesV1 = 72;
 constexpr std::size_t kMaxTextField = 256;
-constexpr std::uint32_t kKnownButtons = kButtonMark | kButtonCapture;
 constexpr std::size_t kChunkRecords = 4096; ///< records read or written per chunk (288 kB)
 
 std::string numberText(double v) {
@@ -76,11 +79,12 @@ void encodeRecord(const DeviceSample& s, std::uint8_t* p) {
     const double values[7] = {s.insertionMm, s.pitchDeg, s.yawDeg, s.rollDeg, s.cameraRollDeg, s.inflow, s.outflow};
     for (int i = 0; i < 7; ++i)
         putF64(p + 8 + 8 * i, values[i]);
-    putU32(p + 64, s.buttons);
-    putU32(p + 68, 0u);
+    putF64(p + 64, s.workingElementMm);
+    putU32(p + 72, s.buttons);
+    putU32(p + 76, s.instrument);
 }
 
-DeviceSample decodeRecord(const std::uint8_t* p) {
+DeviceSample decodeRecord(const std::uint8_t* p, bool v1) {
     DeviceSample s;
     s.tick = getU64(p);
     s.insertionMm = getF64(p + 8);
@@ -90,7 +94,13 @@ DeviceSample decodeRecord(const std::uint8_t* p) {
     s.cameraRollDeg = getF64(p + 40);
     s.inflow = getF64(p + 48);
     s.outflow = getF64(p + 56);
-    s.buttons = getU32(p + 64);
+    if (v1) {
+        s.buttons = getU32(p + 64);
+        return s;
+    }
+    s.workingElementMm = getF64(p + 64);
+    s.buttons = getU32(p + 72);
+    s.instrument = getU32(p + 76);
     return s;
 }
 
@@ -109,6 +119,7 @@ std::string sampleProblem(const DeviceSample& s) {
         {"cameraRollDeg", s.cameraRollDeg, -kMaxRollDeg, kMaxRollDeg, " degrees"},
         {"inflow", s.inflow, 0.0, 1.0, ""},
         {"outflow", s.outflow, 0.0, 1.0, ""},
+        {"workingElementMm", s.workingElementMm, 0.0, kMaxWorkingElementMm, " mm"},
     };
     for (const Field& f : fields)
         if (!(std::isfinite(f.value) && f.value >= f.lo && f.value <= f.hi))
@@ -116,7 +127,10 @@ std::string sampleProblem(const DeviceSample& s) {
                    numberText(f.hi) + f.unit;
     if (s.buttons & ~kKnownButtons)
         return "buttons " + std::to_string(s.buttons) + " has bits other than " + std::to_string(kKnownButtons) +
-               " (mark, capture)";
+               " (mark, capture, cut, coagulate)";
+    if (s.instrument > kMaxInstrument)
+        return "instrument " + std::to_string(s.instrument) + " is outside 0.." + std::to_string(kMaxInstrument) +
+               " (0 none, 1 loop)";
     return {};
 }
 
@@ -292,8 +306,10 @@ Result<Trial> parseFrom(ByteSource& in, const std::string& name, const TrialRead
     char magic[8] = {};
     if (!in.read(magic, sizeof magic))
         return truncated("magic");
-    if (std::memcmp(magic, kMagic, sizeof magic) != 0)
-        return invalid(name, "magic", "is not \"HSTRIAL1\" (not a trial file, or another version)");
+    const bool v1 = std::memcmp(magic, kMagicV1, sizeof magic) == 0;
+    if (!v1 && std::memcmp(magic, kMagic, sizeof magic) != 0)
+        return invalid(name, "magic", "is not \"HSTRIAL2\" or \"HSTRIAL1\" (not a trial file, or another version)");
+    const std::size_t recordBytes = v1 ? kRecordBytesV1 : kRecordBytes;
     std::uint8_t word[8] = {};
     if (!in.read(word, 4))
         return truncated("headerLength");
@@ -319,28 +335,28 @@ Result<Trial> parseFrom(ByteSource& in, const std::string& name, const TrialRead
                                                    " is above the limit of " + std::to_string(limits.maxSamples) +
                                                    " samples"};
     const std::uint64_t left = in.remaining();
-    if (left / kRecordBytes < count)
+    if (left / recordBytes < count)
         return invalid(name, "sampleCount",
-                       std::to_string(count) + " samples need " + std::to_string(count * kRecordBytes) +
+                       std::to_string(count) + " samples need " + std::to_string(count * recordBytes) +
                            " bytes but the file has " + std::to_string(left) + " left (truncated)");
-    if (left != count * kRecordBytes)
+    if (left != count * recordBytes)
         return invalid(name, "sampleCount",
-                       std::to_string(left - count * kRecordBytes) + " bytes after the last of " +
+                       std::to_string(left - count * recordBytes) + " bytes after the last of " +
                            std::to_string(count) + " samples");
 
     Trial trial;
     trial.header = std::move(header).value();
     trial.samples.reserve(static_cast<std::size_t>(count));
-    std::vector<std::uint8_t> chunk(kChunkRecords * kRecordBytes);
+    std::vector<std::uint8_t> chunk(kChunkRecords * recordBytes);
     for (std::uint64_t done = 0; done < count;) {
         const std::size_t n = static_cast<std::size_t>(std::min<std::uint64_t>(kChunkRecords, count - done));
-        if (!in.read(chunk.data(), n * kRecordBytes))
+        if (!in.read(chunk.data(), n * recordBytes))
             return Error{ErrorCode::IoError, name + ": samples: read failed at sample " + std::to_string(done)};
         for (std::size_t i = 0; i < n; ++i, ++done) {
-            const std::uint8_t* record = chunk.data() + i * kRecordBytes;
-            const DeviceSample s = decodeRecord(record);
+            const std::uint8_t* record = chunk.data() + i * recordBytes;
+            const DeviceSample s = decodeRecord(record, v1);
             HS_TRY(checkSample(s, done, name));
-            if (getU32(record + 68) != 0)
+            if (v1 && getU32(record + 68) != 0)
                 return invalid(name, "samples[" + std::to_string(done) + "].reserved", "must be 0");
             trial.samples.push_back(s);
         }

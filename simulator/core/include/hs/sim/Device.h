@@ -13,15 +13,28 @@ inline constexpr int kDeviceRateHz = 1000;
 
 /// Button bits of DeviceSample::buttons.
 enum DeviceButton : std::uint32_t {
-    kButtonMark = 1u << 0,    ///< diagnosis: mark the pathology at the centre of the view
-    kButtonCapture = 1u << 1, ///< take a still (recorded as an event; no effect on the world)
+    kButtonMark = 1u << 0,      ///< diagnosis: mark the pathology at the centre of the view
+    kButtonCapture = 1u << 1,   ///< take a still (recorded as an event; no effect on the world)
+    kButtonCut = 1u << 2,       ///< the resectoscope's cutting pedal: the loop carries cutting current
+    kButtonCoagulate = 1u << 3, ///< the coagulating pedal: the loop seals the vessels it touches
 };
+/// Every button bit a sample may carry.
+inline constexpr std::uint32_t kKnownButtons = kButtonMark | kButtonCapture | kButtonCut | kButtonCoagulate;
+
+/// The instrument in use (DeviceSample::instrument).
+enum Instrument : std::uint32_t {
+    kInstrumentNone = 0, ///< the diagnostic scope alone (a protocol-v1 device, the exploration)
+    kInstrumentLoop = 1, ///< the bipolar resectoscope's loop electrode on its working element
+};
+inline constexpr std::uint32_t kMaxInstrument = kInstrumentLoop;
 
 /// The allowed range of every field (the HID codec clamps to these; a sample outside them is refused).
 inline constexpr double kMinInsertionMm = -50.0; ///< mm, the tip this far outside the pivot (external os)
 inline constexpr double kMaxInsertionMm = 150.0; ///< mm, longer than any uterus (docs/references.md [Verguts2013])
 inline constexpr double kMaxPivotDeg = 60.0;     ///< degrees, |pitch| and |yaw| about the cervical pivot
 inline constexpr double kMaxRollDeg = 180.0;     ///< degrees, |roll| and |camera roll|
+/// mm, the loop's travel beyond the sheath's tip on the working element (docs/simulator.md, "Instruments").
+inline constexpr double kMaxWorkingElementMm = 20.0;
 
 struct DeviceSample {
     std::uint64_t tick = 0;     ///< device ticks since the trial started (1 kHz)
@@ -33,6 +46,8 @@ struct DeviceSample {
     double inflow = 0.0;        ///< inflow valve opening, 0 (closed) to 1 (open)
     double outflow = 0.0;       ///< outflow valve opening, 0 to 1
     std::uint32_t buttons = 0;  ///< DeviceButton bits held down
+    double workingElementMm = 0.0; ///< mm, the loop beyond the sheath's tip, 0 (drawn in) to kMaxWorkingElementMm
+    std::uint32_t instrument = kInstrumentNone; ///< Instrument
 };
 
 /// Whether every field is finite and inside its range.

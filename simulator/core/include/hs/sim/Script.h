@@ -3,9 +3,10 @@
 /// (tests, demonstrations, batch assessment: `hysteroscene-sim SCENE --device scripted:FILE --headless`).
 ///
 /// JSON: {"format": "hysteroscene-script", "version": 1, "keyframes": [{"t": 0.0, "insertionMm": -5, "pitchDeg": 0,
-/// "yawDeg": 0, "rollDeg": 0, "cameraRollDeg": 0, "inflow": 1, "outflow": 0.3, "buttons": 0}, ...]}. Times in s,
-/// strictly increasing, from 0; between key frames every value is interpolated linearly, the buttons held from a
-/// key frame to the next. Missing members keep the previous key frame's value (0 for the first).
+/// "yawDeg": 0, "rollDeg": 0, "cameraRollDeg": 0, "inflow": 1, "outflow": 0.3, "workingElementMm": 0, "buttons": 0,
+/// "instrument": 0}, ...]}. Times in s, strictly increasing, from 0; between key frames every value is interpolated
+/// linearly, the buttons and the instrument held from a key frame to the next. Missing members keep the previous key
+/// frame's value (0 for the first).
 
 #include "hs/core/Result.h"
 #include "hs/sim/Device.h"

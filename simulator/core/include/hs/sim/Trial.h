@@ -4,9 +4,10 @@
 /// settings gives the same metrics, bit for bit (docs/simulator.md, "Record and replay"; the file layout is in
 /// docs/file-formats.md, "Trial files").
 ///
-/// On disk (little-endian): the 8 bytes "HSTRIAL1", a uint32 header length, the header as UTF-8 JSON, a uint64
-/// sample count, then that many 72-byte records: uint64 tick, seven float64 (insertionMm, pitchDeg, yawDeg, rollDeg,
-/// cameraRollDeg, inflow, outflow), uint32 buttons, uint32 zero.
+/// On disk (little-endian): the 8 bytes "HSTRIAL2", a uint32 header length, the header as UTF-8 JSON, a uint64
+/// sample count, then that many 80-byte records: uint64 tick, eight float64 (insertionMm, pitchDeg, yawDeg, rollDeg,
+/// cameraRollDeg, inflow, outflow, workingElementMm), uint32 buttons, uint32 instrument. "HSTRIAL1" files (72-byte
+/// records without the working element, uint32 buttons, uint32 zero) are read as the diagnostic scope's.
 
 #include "hs/core/Result.h"
 #include "hs/sim/Device.h"
