@@ -137,7 +137,7 @@ struct Run {
                 continue;
             }
             ++pedalSteps;
-            const sim::CutEvent event = resection.cut(model.fem, loop, before, after);
+            const sim::CutEvent event = resection.cut(model, loop, before, after);
             if (refactorAt < 1.0 && model.fem.factorStaleness() > refactorAt) {
                 const auto t = Clock::now();
                 model.fem.refactor();

@@ -1,4 +1,5 @@
 // The resectoscope's loop (hs::sim::Resection) on a block of tissue built for it: what the wire takes, what is counted.
+#include "hs/mechanics/UterusModel.h"
 #include "hs/sim/Resection.h"
 
 #include <gtest/gtest.h>
@@ -17,7 +18,8 @@ struct TestTissue {
     TetMesh mesh; ///< mm
     std::vector<Triangle> boundary;
     std::vector<char> faceCavity;
-    mechanics::CorotationalFem fem;
+    mechanics::UterusModel model; ///< its solver; the fluid's faces are not set (no volume is measured here)
+    mechanics::CorotationalFem& fem = model.fem;
 };
 
 void makeTissue(TestTissue& out) {
@@ -124,7 +126,7 @@ TEST(Resection, TheLoopTakesTheTetsItsWirePassesThroughAndCountsThem) {
     for (int s = 1; s <= 28; ++s) {
         const double x = 7.0 - 0.5 * s;
         const std::vector<Vec3> to = sim::loopWire(loop, Vec3{x, 1.0, 0.5}, axis, down);
-        const sim::CutEvent event = resection.cut(tissue.fem, loop, from, to);
+        const sim::CutEvent event = resection.cut(tissue.model, loop, from, to);
         taken.insert(event.removed.begin(), event.removed.end());
         pathologyMl += event.pathologyMl;
         healthyMl += event.healthyMl;
@@ -176,7 +178,7 @@ TEST(Resection, ACutThroughTheOuterWallIsAPerforation) {
     sim::Resection resection = std::move(*made);
     const Vec3 axis{0.0, 0.0, -1.0}, down{1.0, 0.0, 0.0};
     sim::LoopElectrode loop;
-    const sim::CutEvent event = resection.cut(tissue.fem, loop, sim::loopWire(loop, Vec3{-11.0, 0.0, 1.0}, axis, down),
+    const sim::CutEvent event = resection.cut(tissue.model, loop, sim::loopWire(loop, Vec3{-11.0, 0.0, 1.0}, axis, down),
                                               sim::loopWire(loop, Vec3{-11.0, 0.0, -3.0}, axis, down));
     EXPECT_FALSE(event.removed.empty());
     EXPECT_TRUE(event.perforation);

@@ -34,15 +34,28 @@ double UterusModel::cavityVolumeMl(const std::vector<Vec3>& pts) const {
     // The cavity's faces face into it: the volume between them and the external os.
     const Vec3 o = externalOsMm;
     double v = 0.0;
-    for (std::size_t f = 0; f < boundary.size(); ++f) {
-        if (!faceCavity[f])
-            continue;
-        const Triangle& t = boundary[f];
+    const auto add = [&](const Triangle& t) {
         const Vec3 a = pts[static_cast<std::size_t>(t[0])] - o, b = pts[static_cast<std::size_t>(t[1])] - o,
                    c = pts[static_cast<std::size_t>(t[2])] - o;
         v -= dot(a, cross(b, c)) / 6.0;
-    }
-    return v / 1000.0;
+    };
+    const bool cut = fem.liveTetCount() < fem.tetCount();
+    for (std::size_t f = 0; f < boundary.size(); ++f)
+        if (faceCavity[f] && !(cut && f < faceTet.size() && fem.tetRemoved(static_cast<std::size_t>(faceTet[f]))))
+            add(boundary[f]);
+    if (!cut)
+        return v / 1000.0;
+    forEachCutFace(pts, add);
+    return v / 1000.0 - cutSpaceMl;
+}
+
+CorotationalFem::Removal UterusModel::cutTets(const std::vector<std::size_t>& tets, const std::vector<Vec3>& pts,
+                                              CorotationalFem::Refactor refactor) {
+    const double before = cavityVolumeMl(pts);
+    CorotationalFem::Removal removal = fem.removeTets(tets, refactor);
+    if (!removal.removed.empty())
+        cutSpaceMl += cavityVolumeMl(pts) - before;
+    return removal;
 }
 
 void UterusModel::pressureForces(const std::vector<Vec3>& pts, double pressureKpa, std::vector<Vec3>& forces) const {
@@ -50,48 +63,19 @@ void UterusModel::pressureForces(const std::vector<Vec3>& pts, double pressureKp
     if (!(pressureKpa > 0.0))
         return;
     const double pa = pressureKpa * 1e3;
-    for (std::size_t f = 0; f < boundary.size(); ++f) {
-        if (!faceCavity[f] || (f < faceTet.size() && fem.tetRemoved(static_cast<std::size_t>(faceTet[f]))))
-            continue;
-        // Area vector in m^2 (half the cross product), pointing into the cavity; the fluid pushes the wall back. Per
-        // pascal this is also the gradient of the cavity's volume (m^3 per m) at the face's points.
-        const Vec3 force = areaNormal(pts, boundary[f]) * (0.5 * kMm * kMm) * (-pa / 3.0);
-        for (const std::int32_t v : boundary[f])
+    // Area vector in m^2 (half the cross product), pointing into the fluid; the fluid pushes the wall back. Per pascal
+    // this is also the gradient of the cavity's volume (m^3 per m) at the face's points.
+    const auto load = [&](const Triangle& face) {
+        const Vec3 force = areaNormal(pts, face) * (0.5 * kMm * kMm) * (-pa / 3.0);
+        for (const std::int32_t v : face)
             forces[static_cast<std::size_t>(v)] += force;
-    }
-    // The faces a cut opened: a removed tet's face against a live one is wet; the fluid in the removed tet's place
-    // pushes the live tet's face in (without it the tissue round a cut would carry the pressure's whole load on
-    // the faces left, unbalanced).
-    if (fem.liveTetCount() == fem.tetCount())
-        return;
-    const std::vector<Tet>& tets = fem.tets();
-    const auto& across = fem.neighbours();
-    for (std::size_t t = 0; t < tets.size(); ++t) {
-        if (!fem.tetRemoved(t))
-            continue;
-        for (std::size_t k = 0; k < 4; ++k) {
-            const std::int32_t u = across[t][k];
-            if (u < 0 || fem.tetRemoved(static_cast<std::size_t>(u)))
-                continue;
-            const Triangle face{tets[t][static_cast<std::size_t>(kTetFacePoints[k][0])],
-                                tets[t][static_cast<std::size_t>(kTetFacePoints[k][1])],
-                                tets[t][static_cast<std::size_t>(kTetFacePoints[k][2])]};
-            // Oriented into the live tet by the live tet's own fourth point: the removed tet's points are carried by
-            // nothing once a cut has left them (a point of removed tets only drifts), so its fourth point may lie
-            // across the face and would turn the fluid's push into a pull.
-            const Tet& live = tets[static_cast<std::size_t>(u)];
-            std::int32_t inside = live[0];
-            for (const std::int32_t q : live)
-                if (q != face[0] && q != face[1] && q != face[2])
-                    inside = q;
-            Vec3 n = areaNormal(pts, face);
-            if (dot(n, pts[static_cast<std::size_t>(inside)] - pts[static_cast<std::size_t>(face[0])]) < 0.0)
-                n = n * -1.0;
-            const Vec3 force = n * (0.5 * kMm * kMm) * (pa / 3.0);
-            for (const std::int32_t v : face)
-                forces[static_cast<std::size_t>(v)] += force;
-        }
-    }
+    };
+    for (std::size_t f = 0; f < boundary.size(); ++f)
+        if (faceCavity[f] && !(f < faceTet.size() && fem.tetRemoved(static_cast<std::size_t>(faceTet[f]))))
+            load(boundary[f]);
+    // The faces a cut opened: the fluid in the removed tets' place pushes them in (without it the tissue round a cut
+    // would carry the pressure's whole load on the faces left, unbalanced).
+    forEachCutFace(pts, load);
 }
 
 Status buildUterusModel(const scene::Scene& scene, const FemSettings& settings, UterusModel& out, bool portioHeld) {

@@ -43,21 +43,24 @@ bool rayHitsBox(const Vec3& o, const Vec3& inv, const Vec3& lo, const Vec3& hi, 
 
 } // namespace
 
-void TriangleBvh::build(const std::vector<Triangle>& triangles, const std::vector<Vec3>& points) {
+void TriangleBvh::build(const std::vector<Triangle>& triangles, const std::vector<Vec3>& points,
+                        const std::vector<char>& skip) {
     own_ = triangles;
     triangles_ = &own_;
     nodes_.clear();
-    order_.resize(triangles.size());
+    order_.clear();
+    order_.reserve(triangles.size());
     std::vector<Vec3> centres(triangles.size());
     for (std::size_t i = 0; i < triangles.size(); ++i) {
-        order_[i] = static_cast<std::int32_t>(i);
         const Triangle& t = triangles[i];
         centres[i] = (points[static_cast<std::size_t>(t[0])] + points[static_cast<std::size_t>(t[1])] +
                       points[static_cast<std::size_t>(t[2])]) /
                      3.0;
+        if (skip.size() != triangles.size() || !skip[i])
+            order_.push_back(static_cast<std::int32_t>(i));
     }
-    if (!triangles.empty())
-        buildNode(0, static_cast<std::int32_t>(triangles.size()), centres);
+    if (!order_.empty())
+        buildNode(0, static_cast<std::int32_t>(order_.size()), centres);
     refit(points);
 }
 

@@ -14,7 +14,10 @@ namespace hs::sim::detail {
 class TriangleBvh {
 public:
     /// Builds the tree over `triangles` with the positions `points` (median splits; deterministic).
-    void build(const std::vector<Triangle>& triangles, const std::vector<Vec3>& points);
+    /// `skip` (empty, or one flag per triangle): triangles left out of the tree (faces a cut removed); their indices
+    /// are never returned.
+    void build(const std::vector<Triangle>& triangles, const std::vector<Vec3>& points,
+               const std::vector<char>& skip = {});
     /// Recomputes every box for new positions of the same points.
     void refit(const std::vector<Vec3>& points);
     /// Appends to `out` the triangles whose box comes within `radius` of `centre`.

@@ -202,17 +202,21 @@ std::vector<std::size_t> Resection::sweptTets(const mechanics::CorotationalFem& 
     return hit;
 }
 
-CutEvent Resection::cut(mechanics::CorotationalFem& fem, const LoopElectrode& loop, const std::vector<Vec3>& wireFromMm,
+CutEvent Resection::cut(mechanics::UterusModel& model, const LoopElectrode& loop, const std::vector<Vec3>& wireFromMm,
                         const std::vector<Vec3>& wireToMm) {
     const auto started = Clock::now();
     CutEvent event;
-    const std::vector<std::size_t> hit = sweptTets(fem, loop, wireFromMm, wireToMm);
+    const std::vector<std::size_t> hit = sweptTets(model.fem, loop, wireFromMm, wireToMm);
     if (hit.empty()) {
         event.topologyMs = std::chrono::duration<double, std::milli>(Clock::now() - started).count();
         return event;
     }
     event.sweptTets = hit.size();
-    mechanics::CorotationalFem::Removal removal = fem.removeTets(hit, mechanics::CorotationalFem::Refactor::Downdate);
+    std::vector<Vec3> pointsMm(model.fem.positionsM().size());
+    for (std::size_t i = 0; i < pointsMm.size(); ++i)
+        pointsMm[i] = model.fem.positionsM()[i] * 1e3;
+    mechanics::CorotationalFem::Removal removal =
+        model.cutTets(hit, pointsMm, mechanics::CorotationalFem::Refactor::Downdate);
     event.removed = std::move(removal.removed);
     event.chips = std::move(removal.chips);
     for (const std::size_t t : event.removed) {

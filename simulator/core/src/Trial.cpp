@@ -400,6 +400,10 @@ std::string_view toString(Exercise exercise) {
         return "exploration";
     case Exercise::Diagnosis:
         return "diagnosis";
+    case Exercise::Polypectomy:
+        return "polypectomy";
+    case Exercise::Myomectomy:
+        return "myomectomy";
     }
     return "exploration";
 }
@@ -409,6 +413,10 @@ bool fromString(std::string_view key, Exercise& out) {
         out = Exercise::Exploration;
     else if (key == "diagnosis")
         out = Exercise::Diagnosis;
+    else if (key == "polypectomy")
+        out = Exercise::Polypectomy;
+    else if (key == "myomectomy")
+        out = Exercise::Myomectomy;
     else
         return false;
     return true;

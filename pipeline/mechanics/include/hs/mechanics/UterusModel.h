@@ -42,14 +42,56 @@ struct UterusModel {
     std::vector<char> pointHeld;       ///< per point: fixed (the portio)
     Vec3 externalOsMm, internalOsMm;
     double restCavityMl = 0.0;
+    /// mL: the space the cuts opened, as it was when each was cut (cutTets adds to it). The tissue cut away stays in
+    /// the cavity as chips, so the fluid's volume does not jump at a cut; cavityVolumeMl leaves it out.
+    double cutSpaceMl = 0.0;
 
-    /// The cavity's volume with the points at `pts` (mm): between its faces and the external os (the canal's open
-    /// end), mL.
+    /// The fluid's volume with the points at `pts` (mm), mL: between the cavity's faces, and the faces the cuts
+    /// opened, and the external os (the canal's open end), less cutSpaceMl.
     double cavityVolumeMl(const std::vector<Vec3>& pts) const;
-    /// The fluid's pressure `pressureKpa` on the cavity's faces as they lie in `pts` (mm), N per point. A face whose
-    /// tet a cut removed carries none (the cut surface it opened is not loaded yet: docs/simulator.md, "Cutting").
+    /// The fluid's pressure `pressureKpa` on the cavity's faces as they lie in `pts` (mm), N per point: the cavity's
+    /// faces of live tets and the faces the cuts opened (a removed tet's face against a live one; docs/simulator.md,
+    /// "Cutting").
     void pressureForces(const std::vector<Vec3>& pts, double pressureKpa, std::vector<Vec3>& forces) const;
+    /// Calls `visit(face)` for each face a cut opened, its points ordered so its normal points into the fluid (out of
+    /// its live tet, judged by that tet's fourth point in `pts`).
+    template <typename Visit> void forEachCutFace(const std::vector<Vec3>& pts, Visit&& visit) const;
+    /// Removes `tets` from the solver (CorotationalFem::removeTets with `refactor`) with the points at `pts` (mm),
+    /// and keeps the fluid's volume continuous across the cut (cutSpaceMl).
+    CorotationalFem::Removal cutTets(const std::vector<std::size_t>& tets, const std::vector<Vec3>& pts,
+                                     CorotationalFem::Refactor refactor);
 };
+
+template <typename Visit> void UterusModel::forEachCutFace(const std::vector<Vec3>& pts, Visit&& visit) const {
+    if (fem.liveTetCount() == fem.tetCount())
+        return;
+    const std::vector<Tet>& tets = fem.tets();
+    const auto& across = fem.neighbours();
+    for (std::size_t t = 0; t < tets.size(); ++t) {
+        if (!fem.tetRemoved(t))
+            continue;
+        for (std::size_t k = 0; k < 4; ++k) {
+            const std::int32_t u = across[t][k];
+            if (u < 0 || fem.tetRemoved(static_cast<std::size_t>(u)))
+                continue;
+            Triangle face{tets[t][static_cast<std::size_t>(kTetFacePoints[k][0])],
+                          tets[t][static_cast<std::size_t>(kTetFacePoints[k][1])],
+                          tets[t][static_cast<std::size_t>(kTetFacePoints[k][2])]};
+            // Oriented by the live tet's own fourth point: the removed tet's points are carried by nothing once a
+            // cut has left them, so its fourth point may lie across the face.
+            const Tet& live = tets[static_cast<std::size_t>(u)];
+            std::int32_t inside = live[0];
+            for (const std::int32_t q : live)
+                if (q != face[0] && q != face[1] && q != face[2])
+                    inside = q;
+            const Vec3 a = pts[static_cast<std::size_t>(face[0])];
+            const Vec3 n = cross(pts[static_cast<std::size_t>(face[1])] - a, pts[static_cast<std::size_t>(face[2])] - a);
+            if (dot(n, pts[static_cast<std::size_t>(inside)] - a) > 0.0)
+                std::swap(face[1], face[2]);
+            visit(face);
+        }
+    }
+}
 
 /// Builds the model of `scene` (its simulation mesh, materials and scope landmarks) with the solver's `settings`.
 /// `portioHeld` false: the portio's outer surface hangs on the ligaments' springs with the supravaginal cervix

@@ -5,8 +5,8 @@
 ///
 /// The tissue is the solver's (hs::mechanics::CorotationalFem): a cut removes whole tets from it, which keeps the
 /// tissue a valid solid (no piece hanging by an edge or a point, a manifold boundary; Forest, Delingette & Ayache,
-/// Med Image Anal 9(2):113-122, 2005) and needs no new points, so the solver's factor stays usable until it is rebuilt
-/// (CorotationalFem::Refactor::Later). Lengths mm, volumes mL (cm^3), time ms.
+/// Med Image Anal 9(2):113-122, 2005) and needs no new points, so the solver's factor follows it by downdates
+/// (CorotationalFem::Refactor::Downdate). Lengths mm, volumes mL (cm^3), time ms.
 
 #include "hs/clinical/Tissue.h"
 #include "hs/core/Result.h"
@@ -14,6 +14,7 @@
 #include "hs/core/TetMesh.h"
 #include "hs/core/Vec3.h"
 #include "hs/mechanics/CorotationalFem.h"
+#include "hs/mechanics/UterusModel.h"
 #include "hs/scene/Scene.h"
 
 #include <cstdint>
@@ -73,8 +74,9 @@ public:
     /// ascending; none for wires of no points or not finite.
     std::vector<std::size_t> sweptTets(const mechanics::CorotationalFem& fem, const LoopElectrode& loop,
                                        const std::vector<Vec3>& wireFromMm, const std::vector<Vec3>& wireToMm) const;
-    /// Those tets removed (Refactor::Later) and accounted. An event with no tet swept changes nothing.
-    CutEvent cut(mechanics::CorotationalFem& fem, const LoopElectrode& loop, const std::vector<Vec3>& wireFromMm,
+    /// Those tets removed from `model`'s solver (UterusModel::cutTets with Refactor::Downdate: the factor follows the
+    /// cut, the fluid's volume stays continuous) and accounted. An event with no tet swept changes nothing.
+    CutEvent cut(mechanics::UterusModel& model, const LoopElectrode& loop, const std::vector<Vec3>& wireFromMm,
                  const std::vector<Vec3>& wireToMm);
 
     const ResectionTotals& totals() const { return m_totals; }

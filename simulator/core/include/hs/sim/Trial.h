@@ -23,7 +23,13 @@ namespace hs::sim {
 enum class Exercise {
     Exploration, ///< "exploration": see the fundus, both tubal ostia and every wall
     Diagnosis,   ///< "diagnosis": mark each pathology seen
+    Polypectomy, ///< "polypectomy": resect the polyps with the loop
+    Myomectomy,  ///< "myomectomy": resect the submucous (FIGO 0-2) myomas with the loop
 };
+/// Whether the exercise cuts (the resectoscope's loop is live).
+inline bool isOperative(Exercise exercise) {
+    return exercise == Exercise::Polypectomy || exercise == Exercise::Myomectomy;
+}
 std::string_view toString(Exercise exercise);
 bool fromString(std::string_view key, Exercise& out);
 
