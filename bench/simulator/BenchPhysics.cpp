@@ -2,7 +2,7 @@
 // >= 200 Hz on 2 cores) and a long scripted trial's stability (no inverted tets, bounded energy). A table, not a test.
 //
 //   bench_physics PACKAGE [--seconds 60] [--iterations 6] [--trace] [--rough SEED] [--canal [--introitus MM]]
-//                 [--press [--wall PKG2]]
+//                 [--press [--wall PKG2]] [--demo polypectomy|myomectomy]
 // --press: instead of a trial, presses of the device 0.5, 1, 2 and 3 mm into the cavity's wall and into each
 // pathology met head-on (pressScript; the depth counted from the face as the cavity opened at the planning pressure,
 // 60 mmHg, has it), each on a fresh world, held 2 s: the tip's force, how far the physics' tip
@@ -19,6 +19,8 @@
 // --trace: the script's keyframes, a line for every perforation, every 0.1 s with an inverted tet (the script's time,
 // the tip's place, and each inverted tet with its region and its distance from the tip) or an elastic energy above
 // 0.5 J, and every 50 ms with a contact above 2 N: to find which move of the script is at fault.
+// --demo polypectomy|myomectomy: instead of the exploration, that exercise's demonstration (demonstrationScript), once:
+// what it removed, the healthy tissue it took, and the physics step from the first cut on.
 // PACKAGE: a scene package with a simulation mesh (hysteroscene-cli generate resources/cases/default.json -o DIR).
 
 #include "hs/core/TriangleGeometry.h"
@@ -47,8 +49,9 @@ double percentile(std::vector<double> v, double q) {
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        std::fprintf(stderr, "usage: bench_physics PACKAGE [--seconds S] [--iterations N] [--trace] [--rough SEED] "
-                             "[--canal [--introitus MM]] [--press [--wall PACKAGE2]]\n");
+        std::fprintf(stderr,
+                     "usage: bench_physics PACKAGE [--seconds S] [--iterations N] [--trace] [--rough SEED] "
+                     "[--canal [--introitus MM]] [--press [--wall PACKAGE2]] [--demo polypectomy|myomectomy]\n");
         return 2;
     }
     const std::string package = argv[1];
@@ -76,6 +79,12 @@ int main(int argc, char** argv) {
             options.solverIterations = std::atoi(argv[++i]);
         else if (std::strcmp(argv[i], "--introitus") == 0 && i + 1 < argc)
             options.introitusMm = std::atof(argv[++i]);
+        else if (std::strcmp(argv[i], "--demo") == 0 && i + 1 < argc) {
+            if (!hs::sim::fromString(argv[++i], options.exercise) || !hs::sim::isOperative(options.exercise)) {
+                std::fprintf(stderr, "bench_physics: --demo takes polypectomy or myomectomy\n");
+                return 2;
+            }
+        }
     }
     const auto loadStart = std::chrono::steady_clock::now();
     auto world = hs::sim::World::load(package, options);
@@ -305,9 +314,20 @@ int main(int argc, char** argv) {
         return 0;
     }
 
-    // The exploration script, repeated to fill `seconds` of simulated time.
-    const hs::sim::Script script =
-        rough > 0 ? hs::sim::roughScript(w, 60.0, rough) : hs::sim::explorationScript(w, 60.0);
+    // The exploration script, repeated to fill `seconds` of simulated time; or the exercise's demonstration, once.
+    hs::sim::Script script;
+    const bool operative = hs::sim::isOperative(options.exercise);
+    if (operative) {
+        auto planned = hs::sim::demonstrationScript(w);
+        if (!planned) {
+            std::fprintf(stderr, "bench_physics: %s\n", planned.error().detail.c_str());
+            return 3;
+        }
+        script = std::move(*planned);
+        seconds = static_cast<double>(script.tickCount()) / hs::sim::kDeviceRateHz;
+    } else {
+        script = rough > 0 ? hs::sim::roughScript(w, 60.0, rough) : hs::sim::explorationScript(w, 60.0);
+    }
     const std::size_t per = w.ticksPerStep();
     if (trace)
         for (const hs::sim::KeyFrame& k : script.keyframes) {
@@ -318,7 +338,7 @@ int main(int argc, char** argv) {
     const auto steps = static_cast<std::uint64_t>(seconds / options.stepS);
     const std::uint64_t scriptTicks = script.tickCount();
     std::vector<hs::sim::DeviceSample> samples(per);
-    std::vector<double> stepMs;
+    std::vector<double> stepMs, cuttingStepMs;
     stepMs.reserve(steps);
     std::size_t maxInverted = 0, perforationsSeen = 0;
     double minRatio = 1e300, maxEnergy = 0.0, maxSpeed = 0.0;
@@ -334,6 +354,8 @@ int main(int argc, char** argv) {
             return 4;
         }
         stepMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+        if (operative && w.metrics().resection.firstCutS >= 0.0)
+            cuttingStepMs.push_back(stepMs.back()); // from the first cut on
         if (trace && w.state().contact.forceN > 2.0 && w.state().step % 10 == 0) {
             const hs::sim::WorldState& st = w.state();
             const double along = hs::dot(st.scope.tipMm - w.landmarks().internalOsMm, w.frame().axis);
@@ -431,5 +453,28 @@ int main(int argc, char** argv) {
                 maxInverted, minRatio, maxEnergy, maxSpeed);
     std::printf("| trial metrics | surface %.1f %%, contacts %d, peak force %.2f N, perforations %zu |\n",
                 m.cavitySurfaceVisualizedPercent, m.wallContacts, m.peakForceN, m.perforations.size());
+    if (operative) {
+        const hs::sim::ResectionMetrics& r = m.resection;
+        double cutTotal = 0.0;
+        for (double v : cuttingStepMs)
+            cutTotal += v;
+        const double cutMean = cuttingStepMs.empty() ? 0.0 : cutTotal / static_cast<double>(cuttingStepMs.size());
+        std::printf("| demonstration | %s, %.1f s simulated |\n",
+                    std::string(hs::sim::toString(options.exercise)).c_str(), m.timeS);
+        for (const hs::sim::PathologyResection& p : r.pathologies)
+            std::printf("| %s (%s) | %.3f of %.3f mL removed (%.1f %%) |\n", p.id.c_str(), p.kind.c_str(), p.removedMl,
+                        p.volumeMl, p.removedPercent);
+        std::printf("| healthy tissue | %.3f mL removed, deepest %.1f mm into the myometrium, %d perforating cuts |\n",
+                    r.healthyRemovedMl, r.deepestMyometriumMm, r.perforatingCuts);
+        std::printf("| cutting | %llu events, %llu tets, %llu chips; pedal down %.1f s, first to last cut %.1f s, "
+                    "loop path %.0f mm |\n",
+                    static_cast<unsigned long long>(r.cutEvents), static_cast<unsigned long long>(r.removedTets),
+                    static_cast<unsigned long long>(r.chips), r.cuttingTimeS, r.resectionTimeS, r.loopPathMm);
+        std::printf(
+            "| physics step from the first cut on | mean %.2f ms (%.0f Hz), p99 %.2f ms (%.0f Hz), %zu steps |\n",
+            cutMean, cutMean > 0.0 ? 1e3 / cutMean : 0.0, percentile(cuttingStepMs, 0.99),
+            percentile(cuttingStepMs, 0.99) > 0.0 ? 1e3 / percentile(cuttingStepMs, 0.99) : 0.0, cuttingStepMs.size());
+        std::printf("| fluid | deficit %.0f mL, highest pressure %.1f kPa |\n", m.deficitMl, m.maxPressureKpa);
+    }
     return 0;
 }

@@ -410,6 +410,64 @@ TEST(World, PushingThroughTheFundusIsAPerforation) {
     EXPECT_NE(refused.error().detail.find("not on"), std::string::npos) << refused.error().detail;
 }
 
+TEST(World, TheLoopCutsThePolypAndTheContactSurfaceFollowsTheCut) {
+    // The polypectomy's demonstration for its first 25 s (the entry and the first strips): the loop takes polyp and
+    // little else, the contact surface gains the faces the cuts bared, the tissue stays sound, and the trial replays
+    // bit for bit.
+    WorldOptions options;
+    options.exercise = Exercise::Polypectomy;
+    auto world = loadWorld(options);
+    ASSERT_TRUE(world);
+    int polyp = -1;
+    const auto& pathologies = world->scene().clinical.pathologies;
+    for (std::size_t k = 0; k < pathologies.size() && polyp < 0; ++k)
+        if (pathologies[k].kind == clinical::PathologyKind::Polyp)
+            polyp = static_cast<int>(k);
+    ASSERT_GE(polyp, 0);
+    auto script = resectionScript(*world, polyp);
+    ASSERT_TRUE(script) << script.error().detail;
+    auto demo = demonstrationScript(*world);
+    ASSERT_TRUE(demo);
+    EXPECT_EQ(demo->keyframes.size(), script->keyframes.size());
+    const std::size_t facesBefore = world->contactSurface().triangles.size();
+    std::vector<DeviceSample> samples;
+    Worst worst;
+    run(*world, *script, 25.0, &samples, &worst);
+    const ResectionMetrics& cut = world->metrics().resection;
+    ASSERT_EQ(cut.pathologies.size(), pathologies.size());
+    const PathologyResection& p = cut.pathologies[static_cast<std::size_t>(polyp)];
+    std::printf("after 25 s: %.3f of %.3f mL of %s removed (%.1f %%), %.3f mL healthy, %llu cut events, %zu faces "
+                "-> %zu\n",
+                p.removedMl, p.volumeMl, p.id.c_str(), p.removedPercent, cut.healthyRemovedMl,
+                static_cast<unsigned long long>(cut.cutEvents), facesBefore, world->contactSurface().triangles.size());
+    EXPECT_GT(cut.cutEvents, 0u);
+    EXPECT_GT(p.removedMl, 0.0);
+    EXPECT_LT(cut.healthyRemovedMl, p.removedMl); // the plan keeps the pedal off where the wire meets other tissue
+    EXPECT_GT(cut.cuttingTimeS, 0.0);
+    EXPECT_GT(cut.loopPathMm, 0.0);
+    EXPECT_GT(world->contactSurface().triangles.size(), facesBefore);
+    EXPECT_EQ(worst.invertedTets, 0u);
+    EXPECT_EQ(world->health().invertedTets, 0u);
+
+    Trial trial;
+    trial.header = world->trialHeader();
+    trial.samples = samples;
+    auto replayed = replayTrial(test::SimPackage::folder(), trial);
+    ASSERT_TRUE(replayed) << replayed.error().detail;
+    EXPECT_EQ(reportJson(*replayed), reportJson(world->report()));
+    EXPECT_NE(reportJson(*replayed).find("\"resection\""), std::string::npos);
+
+    // The diagnostic exercises do not cut: no resection is planned, and a loop sent by a device takes nothing.
+    auto exploring = loadWorld();
+    ASSERT_TRUE(exploring);
+    auto refused = resectionScript(*exploring, polyp);
+    ASSERT_FALSE(refused);
+    EXPECT_NE(refused.error().detail.find("exploration"), std::string::npos) << refused.error().detail;
+    run(*exploring, *script, 25.0);
+    EXPECT_EQ(exploring->metrics().resection.cutEvents, 0u);
+    EXPECT_EQ(exploring->contactSurface().triangles.size(), facesBefore);
+}
+
 TEST(World, RefusesSamplesOutOfSequenceOrRange) {
     auto world = loadWorld();
     ASSERT_TRUE(world);

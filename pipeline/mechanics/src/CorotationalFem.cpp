@@ -1713,7 +1713,8 @@ CorotationalFem::Removal CorotationalFem::removeTets(const std::vector<std::size
     updatePointMeasures();
     m_factorStale = true;
     if (refactorMode == Refactor::Downdate) {
-        bool exact = !(m_settings.nodalPressure && m_settings.nodalPressureMatrix) && !m_rebuild;
+        // A rebuild running meanwhile works on its own copy; it is dropped when it ends (finishRefactor).
+        bool exact = !(m_settings.nodalPressure && m_settings.nodalPressureMatrix);
         for (const std::size_t t : out.removed)
             if (exact && !downdateTet(t))
                 exact = false;
@@ -1753,7 +1754,7 @@ bool CorotationalFem::startRefactor() {
     r->matrixStiffening = m_matrixStiffening;
     r->tetherStiffness = m_tetherStiffness;
     r->partition = m_partition;
-    if (m_compliantCount > 0)
+    if (!m_compliantList.empty()) // the surface precomputed before (a downdate may have dropped it since)
         r->list = m_compliantList;
     r->liveTets = m_liveTets;
     Rebuild* job = r.get();
@@ -1762,17 +1763,30 @@ bool CorotationalFem::startRefactor() {
     return true;
 }
 
-void CorotationalFem::finishRefactor() {
+bool CorotationalFem::finishRefactor() {
     if (!m_rebuild)
-        return;
+        return false;
     m_rebuild->thread.join();
+    if (m_rebuild->liveTets != m_liveTets && !m_factorStale) {
+        // Cuts since the start were downdated into the factor in use: it is the newer one.
+        m_rebuild.reset();
+        return false;
+    }
     m_factor = std::move(m_rebuild->factor);
-    if (!m_rebuild->list.empty())
+    if (!m_rebuild->list.empty()) {
+        // The surface as precomputed with it (a downdate since the start had dropped the old one's).
         m_compliance = std::move(m_rebuild->compliance);
+        m_compliantIndex.assign(m_x.size(), -1);
+        for (std::size_t k = 0; k < m_rebuild->list.size(); ++k)
+            m_compliantIndex[static_cast<std::size_t>(m_rebuild->list[k])] = static_cast<std::int32_t>(k);
+        m_compliantCount = m_rebuild->list.size();
+        m_compliantList = m_rebuild->list;
+    }
     m_factorStale = m_rebuild->liveTets != m_liveTets;
     m_factorPointVolume = std::move(m_rebuild->pointVolume);
     m_factorFixed = std::move(m_rebuild->fixed);
     m_rebuild.reset();
+    return true;
 }
 
 double CorotationalFem::factorStaleness() const {

@@ -17,8 +17,12 @@ Result<ScriptedRun> runScripted(const SimOptions& options, const std::string& st
     auto world = sim::World::load(options.scene, options.world);
     if (!world)
         return world.failure();
-    if (demo)
-        *script = sim::explorationScript(**world); // the world's own exploration, planned on its scene
+    if (demo) {
+        auto planned = sim::demonstrationScript(**world); // the world's own demonstration, planned on its scene
+        if (!planned)
+            return planned.failure();
+        *script = std::move(*planned);
+    }
     ScriptedRun run;
     run.trial.header = (*world)->trialHeader();
     run.trial.header.device = options.device.text();

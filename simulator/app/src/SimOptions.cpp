@@ -118,7 +118,7 @@ ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
         ->check(CLI::IsMember({2.9, 4.0, 5.0}))
         ->capture_default_str();
     app.add_option("--exercise", exercise, "the exercise")
-        ->check(CLI::IsMember({"exploration", "diagnosis"}))
+        ->check(CLI::IsMember({"exploration", "diagnosis", "polypectomy", "myomectomy"}))
         ->capture_default_str();
     // Without the options the settings stay the world's defaults in kPa (no round trip through mmHg).
     CLI::Option* pumpOption = app.add_option("--pump-mmhg", pumpMmHg, "the pump's set pressure, mmHg (20-150)")
@@ -129,9 +129,10 @@ ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
     app.add_option("--seed", o.world.seed, "the world's seed")->capture_default_str();
     app.add_option("--device", device, "keyboard, hid, hid:VID:PID, scripted:FILE or demo")->capture_default_str();
     bool demo = false;
-    app.add_flag("--demo", demo,
-                 "play the built-in exploration of the scene (the same as --device demo): a supervisor watches it, a "
-                 "check runs it headless");
+    app.add_flag(
+        "--demo", demo,
+        "play the built-in demonstration of the exercise (the same as --device demo): a supervisor watches it, a "
+        "check runs it headless");
     app.add_option("--record", o.recordPath, "write the trial (every device sample) to this file");
     app.add_option("--replay", o.replayPath, "play a recorded trial back");
     app.add_flag("--headless", o.headless, "no window: step as fast as possible (with --replay or a scripted device)");
@@ -157,7 +158,7 @@ ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
     }
     if (demo && device != "keyboard" && device != "demo") {
         parsed.exitCode = kExitUsage;
-        parsed.message = "--demo plays the built-in exploration: it takes no --device " + device + "\n";
+        parsed.message = "--demo plays the built-in demonstration: it takes no --device " + device + "\n";
         return parsed;
     }
     auto spec = parseDeviceSpec(demo ? std::string("demo") : device);

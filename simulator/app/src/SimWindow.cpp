@@ -209,7 +209,14 @@ void SimWindow::startSession(std::unique_ptr<sim::World> world) {
         m_replay = std::move(*trial);
         m_source = std::make_unique<TrialSource>(m_replay);
     } else if (m_options.device.kind == DeviceSpec::Kind::Demo) {
-        m_source = std::make_unique<ScriptSource>(sim::explorationScript(*m_world));
+        auto script = sim::demonstrationScript(*m_world);
+        if (!script) {
+            MessageBox::critical(this, tr("Demonstration"), tr("The demonstration could not be planned."),
+                                 fromUtf8(script.error().message()));
+            emit loadFailed(fromUtf8(script.error().message()));
+            return;
+        }
+        m_source = std::make_unique<ScriptSource>(std::move(*script));
     } else if (m_options.device.kind == DeviceSpec::Kind::Scripted) {
         auto script = sim::readScript(m_options.device.scriptPath);
         if (!script) {

@@ -433,4 +433,207 @@ Script roughScript(const World& world, double durationS, std::uint64_t seed) {
     return toScript(plan.keys, 0.0);
 }
 
+namespace {
+
+/// A resection's strokes: the loop drawn back at this speed (mm/s; strip by strip, a few millimetres a second is
+/// the pace of loop resection), pushed out and moved between strokes at these.
+constexpr double kCutSpeedMmPerS = 15.0;
+constexpr double kLoopOutSpeedMmPerS = 30.0;
+constexpr double kStrokeMoveSpeedMmPerS = 15.0;
+/// The working element's positions a stroke's plan checks, mm apart, and the margin the strokes reach beyond the
+/// pathology, mm.
+constexpr double kStrokeCheckMm = 0.5;
+constexpr double kStrokeMarginMm = 2.0;
+/// The plan keeps the pedal off where the wire, or the wire moved this far towards the pathology's base or to either
+/// side, would pass through myometrium or cervix, mm (the trial's tissue lies a little off the plan's).
+constexpr double kPlanMarginMm = 1.5;
+constexpr std::size_t kPlanOffsets = 4;
+
+} // namespace
+
+Result<Script> resectionScript(const World& world, int pathology) {
+    const World::Impl& w = *world.impl_;
+    if (!w.resection)
+        return fail(ErrorCode::InvalidInput, "resection script: the world's exercise (" +
+                                                 std::string(toString(w.options.exercise)) + ") does not cut");
+    const auto& pathologies = w.scene.clinical.pathologies;
+    if (pathology < 0 || static_cast<std::size_t>(pathology) >= pathologies.size())
+        return fail(ErrorCode::InvalidInput, "resection script: pathology " + std::to_string(pathology) +
+                                                 " is outside 0.." + std::to_string(pathologies.size()) + "-1");
+    const scene::ScopeLandmarks& lm = w.landmarks;
+    const ScopeConfig& scope = w.options.scope;
+    const std::vector<Vec3>& open = w.openPointsMm;
+    const auto& tetPathology = w.resection->tetPathology();
+    const auto& tets = w.simRest.tets;
+    // The pathology in the opened cavity: its centre, its reach from it, and its base (its points on other tissue).
+    std::vector<char> inside(open.size(), 0), outside(open.size(), 0);
+    for (std::size_t t = 0; t < tets.size(); ++t)
+        for (const std::int32_t p : tets[t])
+            (tetPathology[t] == pathology ? inside : outside)[static_cast<std::size_t>(p)] = 1;
+    Vec3 centre, base;
+    double count = 0.0, baseCount = 0.0;
+    for (std::size_t i = 0; i < open.size(); ++i)
+        if (inside[i]) {
+            centre += open[i];
+            count += 1.0;
+            if (outside[i]) {
+                base += open[i];
+                baseCount += 1.0;
+            }
+        }
+    if (count == 0.0)
+        return fail(ErrorCode::InvalidInput, "resection script: pathology " +
+                                                 pathologies[static_cast<std::size_t>(pathology)].id +
+                                                 " has no tets in the simulation mesh");
+    centre = centre / count;
+    double radius = 0.0;
+    for (std::size_t i = 0; i < open.size(); ++i)
+        if (inside[i])
+            radius = std::max(radius, distance(open[i], centre));
+    const Vec3 axis = normalized(centre - w.frame.pivotMm);
+    Vec3 down = baseCount > 0.0 ? base / baseCount - centre : Vec3{};
+    down = down - axis * dot(down, axis);
+    down = norm(down) > 1e-6 ? normalized(down) : perpendicularTo(axis, w.frame.anterior);
+    const Vec3 side = normalized(cross(axis, down));
+
+    // Where the wire would be, as planned: located in the opened mesh. A position is safe when no wire point lies in
+    // a tet of another tissue.
+    TetMesh openMesh = w.simRest;
+    openMesh.points = open;
+    struct Stroke {
+        DeviceSample at; ///< the tip where the stroke ends, the loop drawn in
+        double lengthMm = 0.0;
+        std::size_t firstPoint = 0, wirePoints = 0, positions = 0;
+    };
+    std::vector<Stroke> strokes;
+    std::vector<Vec3> located;
+    const double r = 0.5 * w.loop.widthMm;
+    const double reach = std::min(kMaxWorkingElementMm, 2.0 * (radius + kStrokeMarginMm));
+    for (double d = -radius - r; d <= radius + 1e-9; d += 0.5 * r)
+        for (double s = -radius; s <= radius + 1e-9; s += 0.8 * w.loop.widthMm) {
+            const Vec3 middle = centre + down * d + side * s;
+            const Vec3 shaft = normalized(middle - w.frame.pivotMm);
+            // The tip stands half the loop's travel in front of the strip's middle, but at least 2 mm beyond the
+            // internal os (the loop is not drawn back into the canal): a pathology near the os gets shorter strokes.
+            const double beyond =
+                dot(middle - lm.internalOsMm, w.frame.axis) / std::max(1e-9, dot(shaft, w.frame.axis));
+            const double back = std::min(0.5 * reach, beyond - 2.0);
+            if (back < 1.0)
+                continue;
+            const Vec3 tip = middle - shaft * back;
+            // The scope rolled so the loop hangs towards the pathology's base.
+            const Vec3 want = perpendicularTo(shaft, down);
+            Stroke stroke;
+            double best = -2.0;
+            for (int rollDeg = -180; rollDeg < 180; rollDeg += 5) {
+                DeviceSample sample = sampleAiming(w.frame, tip, rollDeg);
+                sample.instrument = kInstrumentLoop;
+                Vec3 m;
+                const std::vector<Vec3> wire = loopWireOf(w.frame, scope, w.loop, sample, m);
+                const double fit = dot(normalized(wire[wire.size() / 2] - m), want);
+                if (fit > best) {
+                    best = fit;
+                    stroke.at = sample;
+                }
+            }
+            stroke.lengthMm = std::min(reach, 2.0 * back);
+            stroke.firstPoint = located.size();
+            for (double we = 0.0; we <= stroke.lengthMm + 1e-9; we += kStrokeCheckMm) {
+                DeviceSample sample = stroke.at;
+                sample.workingElementMm = we;
+                Vec3 m;
+                const std::vector<Vec3> wire = loopWireOf(w.frame, scope, w.loop, sample, m);
+                // The wire where planned, and moved kPlanMarginMm towards the base and to either side: the tissue
+                // the trial meets lies a little off the plan (the pump's pressure, the sheath's contacts).
+                const Vec3 offsets[kPlanOffsets] = {Vec3{}, down * kPlanMarginMm, side * kPlanMarginMm,
+                                                    side * -kPlanMarginMm};
+                for (const Vec3& offset : offsets)
+                    for (std::size_t k = 0; k < wire.size(); k += 2)
+                        located.push_back(wire[k] + offset);
+                stroke.wirePoints = (wire.size() + 1) / 2;
+                ++stroke.positions;
+            }
+            strokes.push_back(stroke);
+        }
+    const std::vector<TetEmbedding> where = embedPoints(openMesh, located);
+    // The endometrium the pathology stands on (its tets that share a point with the pathology's) may be shaved with
+    // the base; nothing else that is not the pathology is cut.
+    const auto& tetTissue = w.resection->tetTissue();
+    std::vector<char> allowed(tets.size(), 0);
+    for (std::size_t t = 0; t < tets.size(); ++t) {
+        if (tetPathology[t] == pathology) {
+            allowed[t] = 1;
+            continue;
+        }
+        if (tetTissue[t] != clinical::Tissue::Endometrium)
+            continue;
+        for (const std::int32_t p : tets[t])
+            allowed[t] = allowed[t] || inside[static_cast<std::size_t>(p)];
+    }
+    const auto safe = [&](const Stroke& stroke, std::size_t position) {
+        for (std::size_t o = 0; o < kPlanOffsets; ++o)
+            for (std::size_t k = 0; k < stroke.wirePoints; ++k) {
+                const std::int32_t t =
+                    where[stroke.firstPoint + (position * kPlanOffsets + o) * stroke.wirePoints + k].tet;
+                if (t >= 0 && !allowed[static_cast<std::size_t>(t)])
+                    return false;
+            }
+        return true;
+    };
+
+    Plan plan;
+    detail::TriangleBvh openTree;
+    openTree.build(*w.triangles, open);
+    DeviceSample out = w.canalEntry(openTree);
+    out.instrument = kInstrumentLoop;
+    const double canalMm = distance(lm.externalOsMm, lm.internalOsMm);
+    DeviceSample inOs = out;
+    inOs.insertionMm = canalMm + 2.0;
+    plan.add(0.0, out);
+    plan.add(2.0, out);
+    plan.add(4.0, inOs);
+    Vec3 tipNow = scopePose(w.frame, scope, inOs).tipMm;
+    for (const Stroke& stroke : strokes) {
+        const Vec3 tip = scopePose(w.frame, scope, stroke.at).tipMm;
+        plan.add(std::max(0.2, distance(tipNow, tip) / kStrokeMoveSpeedMmPerS), stroke.at);
+        tipNow = tip;
+        DeviceSample s = stroke.at;
+        s.workingElementMm = stroke.lengthMm;
+        plan.add(stroke.lengthMm / kLoopOutSpeedMmPerS, s);
+        // Drawn back position by position, the pedal down over each step between two safe positions.
+        for (std::size_t i = stroke.positions - 1; i > 0; --i) {
+            const bool pedal = safe(stroke, i) && safe(stroke, i - 1);
+            // The buttons of a key frame hold until the next: the frame at position i carries the pedal for the way
+            // to position i - 1.
+            plan.keys.back().second.buttons = pedal ? kButtonCut : 0u;
+            s.workingElementMm = static_cast<double>(i - 1) * kStrokeCheckMm;
+            s.buttons = 0;
+            plan.add(kStrokeCheckMm / kCutSpeedMmPerS, s);
+        }
+    }
+    DeviceSample back = inOs;
+    plan.add(std::max(0.3, distance(tipNow, scopePose(w.frame, scope, inOs).tipMm) / kStrokeMoveSpeedMmPerS), back);
+    plan.add(2.0, out);
+    return toScript(plan.keys, 0.0);
+}
+
+Result<Script> demonstrationScript(const World& world) {
+    const Exercise exercise = world.options().exercise;
+    if (!isOperative(exercise))
+        return explorationScript(world);
+    const auto& pathologies = world.scene().clinical.pathologies;
+    for (std::size_t k = 0; k < pathologies.size(); ++k) {
+        const auto& p = pathologies[k];
+        const bool fits = exercise == Exercise::Polypectomy ? p.kind == clinical::PathologyKind::Polyp
+                                                            : p.kind == clinical::PathologyKind::Myoma && p.figo &&
+                                                                  p.figo->isHysteroscopicallyResectable();
+        if (fits)
+            return resectionScript(world, static_cast<int>(k));
+    }
+    return fail(ErrorCode::InvalidInput,
+                "demonstration: the scene has no " +
+                    std::string(exercise == Exercise::Polypectomy ? "polyp" : "myoma of FIGO type 0-2") + " for the " +
+                    std::string(toString(exercise)) + " exercise");
+}
+
 } // namespace hs::sim

@@ -188,6 +188,35 @@ void writeMetrics(JsonWriter& w, const TrialMetrics& m) {
     }
     w.close(']');
     w.field("falseMarks", m.falseMarks);
+    const ResectionMetrics& r = m.resection;
+    if (!r.pathologies.empty()) {
+        // The operative exercises' (docs/simulator.md, "Cutting").
+        w.key("resection");
+        w.open('{');
+        w.key("pathologies");
+        w.open('[');
+        for (const PathologyResection& p : r.pathologies) {
+            w.open('{');
+            w.field("id", p.id);
+            w.field("kind", p.kind);
+            w.field("volumeMl", p.volumeMl);
+            w.field("removedMl", p.removedMl);
+            w.field("removedPercent", p.removedPercent);
+            w.close('}');
+        }
+        w.close(']');
+        w.field("healthyRemovedMl", r.healthyRemovedMl);
+        w.field("deepestMyometriumMm", r.deepestMyometriumMm);
+        w.field("perforatingCuts", r.perforatingCuts);
+        w.field("cutEvents", r.cutEvents);
+        w.field("removedTets", r.removedTets);
+        w.field("chips", r.chips);
+        w.field("cuttingTimeS", r.cuttingTimeS);
+        w.field("resectionTimeS", r.resectionTimeS);
+        w.field("firstCutS", r.firstCutS);
+        w.field("loopPathMm", r.loopPathMm);
+        w.close('}');
+    }
     w.close('}');
 }
 
@@ -273,6 +302,21 @@ std::string sectionsHtml(const TrialReport& r) {
         findings.push_back({p.id, p.kind, yesNo(p.seen), yesNo(p.found), seconds(p.foundS)});
     h += "<h2>Diagnosis</h2>\n" + table({"pathology", "kind", "seen", "marked", "marked at"}, findings) +
          "<p>Marks on no pathology: " + std::to_string(m.falseMarks) + "</p>\n";
+    const ResectionMetrics& cut = m.resection;
+    if (!cut.pathologies.empty()) {
+        std::vector<std::vector<std::string>> removed;
+        for (const PathologyResection& p : cut.pathologies)
+            removed.push_back({p.id, p.kind, fixedText(p.volumeMl, 3) + " mL", fixedText(p.removedMl, 3) + " mL",
+                               fixedText(p.removedPercent, 1) + " %"});
+        h += "<h2>Resection</h2>\n" + table({"pathology", "kind", "volume", "removed", "removed (%)"}, removed) +
+             keyValueTable({{"healthy tissue removed", fixedText(cut.healthyRemovedMl, 3) + " mL"},
+                            {"deepest cut into the myometrium", fixedText(cut.deepestMyometriumMm, 1) + " mm"},
+                            {"cuts through the serosa", std::to_string(cut.perforatingCuts)},
+                            {"resection time (first to last cut)", seconds(cut.resectionTimeS)},
+                            {"cutting time (pedal down)", seconds(cut.cuttingTimeS)},
+                            {"loop path with the pedal down", fixedText(cut.loopPathMm, 0) + " mm"},
+                            {"cut events / chips", std::to_string(cut.cutEvents) + " / " + std::to_string(cut.chips)}});
+    }
     return h;
 }
 

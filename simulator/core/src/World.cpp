@@ -50,6 +50,17 @@ Status World::Impl::build(Progress& progress) {
     setupSurfaceData();
     pointsMm = simRest.points;
     bvh.build(*triangles, pointsMm);
+    if (isOperative(options.exercise)) {
+        auto made = Resection::make(scene, simRest, uterus.boundary, uterus.faceCavity);
+        if (!made)
+            return fail(made.error().code, "resection: " + made.error().detail);
+        resection = std::make_unique<Resection>(std::move(*made));
+        const auto& pathologies = scene.clinical.pathologies;
+        for (std::size_t k = 0; k < pathologies.size(); ++k)
+            metrics.resection.pathologies.push_back({pathologies[k].id,
+                                                     std::string(clinical::toString(pathologies[k].kind)),
+                                                     resection->totals().pathologyMl[k], 0.0, 0.0});
+    }
     fluid.reset(options.fluid);
     progress.report("world", 0.3);
     HS_TRY(measureCavity());
@@ -143,6 +154,8 @@ Status World::step(const DeviceSample* samples, std::size_t count) {
     w.physics(last, pressureKpa);
     w.state.step += 1;
     w.state.timeS = static_cast<double>(w.state.step) * dt;
+    if (w.resection)
+        w.cut(last);
     // The lens against the tissue closes the view too.
     double t = 0.0, a = 0.0, b = 0.0;
     const std::int32_t hit = w.bvh.raycast(w.pointsMm, w.state.scope.tipMm, w.state.scope.direction, 1.0, t, a, b);

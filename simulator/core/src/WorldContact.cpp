@@ -247,7 +247,7 @@ void World::Impl::recordContact(const std::vector<mechanics::FemConstraint>& row
             strongest = rows[i].force;
             where = faceCentre(rowFace[i]);
         }
-        cavityContact = cavityContact || faceInCavity[face];
+        cavityContact = cavityContact || faceInCavity[face] || faceCut[face];
     }
     ContactState& contact = state.contact;
     contact.forceN = norm(total);

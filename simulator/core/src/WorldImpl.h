@@ -9,6 +9,7 @@
 #include "hs/core/TetEmbedding.h"
 #include "hs/mechanics/CorotationalFem.h"
 #include "hs/mechanics/UterusModel.h"
+#include "hs/sim/Resection.h"
 #include "hs/sim/World.h"
 
 #include <array>
@@ -81,6 +82,16 @@ constexpr double kOstiumSeparationMm = 15.0;
 /// behind the contact surface and still be seen, mm.
 constexpr double kOstiumOcclusionSlackMm = 2.5;
 
+/// The loop's wire (mm) on the scope in the pose of `body` (the scope's body: its camera head's roll is ignored, the
+/// loop is fixed to the sheath), and its middle: the half circle hangs on the side of the image's bottom with the
+/// camera upright, the working element's travel beyond the sheath's tip.
+std::vector<Vec3> loopWireOf(const ScopeFrame& frame, const ScopeConfig& scope, const LoopElectrode& loop,
+                             DeviceSample body, Vec3& middleMm);
+
+/// Steps between the start of the factor's rebuild after a cut and its taking in (3 s at 5 ms: the rebuild of the
+/// default scene's factor and surface compliance takes 1-1.5 s on a core of its own; bench_cutting).
+constexpr std::uint64_t kRebuildSteps = 600;
+
 struct Zone {
     std::string name;
     std::vector<std::int32_t> faces;
@@ -115,6 +126,9 @@ struct World::Impl {
     std::vector<int> facePathology; ///< index into scene.clinical.pathologies, -1 none
     std::vector<char> faceHeld;     ///< a point of the face is held (the portio: the canal the sheath pivots in)
     std::vector<SurfaceSample> faceUnrolled;
+    std::vector<std::int32_t> faceTet; ///< the simulation tet the face bounds
+    std::vector<char> faceDead;        ///< a cut removed the face's tet: no contact, no sight (kept for its index)
+    std::vector<char> faceCut;         ///< a face a cut opened (appended after the mesh's boundary)
     std::vector<detail::Zone> zones;
     std::vector<detail::Ostium> ostia;
     Vec3 cavityAxis, cavityAnterior, cavityLeft;
@@ -129,6 +143,15 @@ struct World::Impl {
     double cavityComplianceMlPerKpa = 0.0;
     /// The points with the cavity opened at the planning pressure by a static solve (scripts plan with them).
     std::vector<Vec3> openPointsMm;
+
+    // The resectoscope's loop (WorldCut.cpp): live in the operative exercises.
+    std::unique_ptr<Resection> resection;
+    LoopElectrode loop;
+    std::vector<Vec3> lastWireMm; ///< the wire where the last step left it (empty: not out)
+    Vec3 lastLoopMm;
+    /// The solver's factor rebuilt on its own thread once the pedal is up after a cut (the downdates drop the
+    /// surface's precomputed compliance, which the contacts need to stay fast), taken in at this step.
+    std::uint64_t rebuildDueStep = 0;
 
     // The scope (WorldContact.cpp): the physics' scope's dofs (insertion m, pitch rad, yaw rad), coupled to the device.
     std::array<double, 3> scopeDofs{};
@@ -188,6 +211,13 @@ struct World::Impl {
     void updateVisibility();
     void mark();
     void publishFrame();
+    /// The loop after the step's physics: with the cutting pedal down it cuts what its wire swept since the last
+    /// step, and the contact surface follows the cut.
+    void cut(const DeviceSample& device);
+    /// The contact surface after `removed` left the tissue: their faces die, the faces they bared are appended.
+    void surfaceAfterCut(const std::vector<std::size_t>& removed);
+    /// The loop's wire for the device's working element on the physics' scope, and its middle.
+    std::vector<Vec3> loopWireMm(const DeviceSample& device, Vec3& middleMm) const;
     Vec3 faceNormal(std::int32_t f) const;
     Vec3 faceCentre(std::int32_t f) const;
     /// The device outside the external os (insertion -5 mm), aimed along the straight line from the external os that

@@ -45,6 +45,9 @@ void World::Impl::setupSurfaceData() {
     faceRegion = uterus.region;
     facePathology.assign(faces, -1);
     faceUnrolled.assign(faces, {});
+    faceTet = uterus.faceTet;
+    faceDead.assign(faces, 0);
+    faceCut.assign(faces, 0);
     cavityAxis = normalized(landmarks.fundusMm - landmarks.internalOsMm);
     cavityAnterior = perpendicularTo(cavityAxis, frame.anterior);
     cavityLeft = cross(cavityAxis, cavityAnterior);

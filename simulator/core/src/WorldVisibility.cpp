@@ -75,7 +75,7 @@ void World::Impl::updateVisibility() {
     // A tenth of the faces each time, in turn (an even load per step): each face is checked every ten updates.
     const std::size_t slice = visibilityRound++ % kVisibilitySlices;
     for (std::size_t f = slice; f < triangles->size(); f += kVisibilitySlices) {
-        if (!faceInCavity[f] || faceSeen[f])
+        if (!faceInCavity[f] || faceSeen[f] || faceDead[f])
             continue;
         const auto fi = static_cast<std::int32_t>(f);
         if (visible(faceCentre(fi), faceNormal(fi), fi)) {
@@ -123,7 +123,8 @@ void World::Impl::mark() {
         // Near a pathology's faces counts too (the marked point lies on its edge).
         const Vec3 q = pose.tipMm + pose.direction * t;
         for (std::size_t f = 0; f < triangles->size() && p < 0; ++f)
-            if (facePathology[f] >= 0 && distance(faceCentre(static_cast<std::int32_t>(f)), q) < kPathologyReachMm)
+            if (facePathology[f] >= 0 && !faceDead[f] &&
+                distance(faceCentre(static_cast<std::int32_t>(f)), q) < kPathologyReachMm)
                 p = facePathology[f];
     }
     if (p < 0) {

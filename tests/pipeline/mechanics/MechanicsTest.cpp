@@ -566,6 +566,59 @@ TEST(Mechanics, AFactorRebuiltOnItsThreadIsTheCallersBitForBit) {
     EXPECT_EQ(std::memcmp(finals[0].data(), finals[1].data(), finals[0].size() * sizeof(Vec3)), 0);
 }
 
+TEST(Mechanics, ARebuildOvertakenByDowndatesIsDroppedAndTheNextRestoresTheSurface) {
+    // Downdates drop the surface's precomputed compliance; a rebuild on its own thread restores it. Cut again by
+    // downdates while it runs, the rebuilt factor would lack those cuts: it is dropped, and the next one is taken in,
+    // the same bits as a rebuild on the caller's thread.
+    const Block block = makeBlock();
+    const std::vector<FemMaterial> materials(block.tets.size(), FemMaterial{30e3, 0.47, 1050.0});
+    std::vector<std::int32_t> top;
+    for (int j = 0; j < block.nx; ++j)
+        for (int i = 0; i < block.nx; ++i)
+            top.push_back(block.at(i, j, block.nz - 1));
+    const std::size_t perLayer = 6 * static_cast<std::size_t>((block.nx - 1) * (block.nx - 1));
+    const std::vector<std::size_t> first{4 * perLayer + 7}, second{4 * perLayer + 211};
+    std::vector<Vec3> load(block.points.size(), Vec3{0.0, 0.0, -2e-4});
+    std::vector<std::vector<Vec3>> finals;
+    for (const bool threaded : {true, false}) {
+        CorotationalFem fem;
+        ASSERT_TRUE(fem.build(block.points, block.tets, materials, block.fixed, {}, FemSettings{}));
+        fem.precomputeCompliance(top);
+        std::vector<FemConstraint> rows{
+            contactRow({top[60], top[61], top[72]}, {0.4, 0.3, 0.3}, Vec3{0.0, 0.0, 1.0}, Vec3{0.0, 0.0, -0.1e-3})};
+        ASSERT_TRUE(fem.surfacePrecomputed());
+        fem.removeTets(first, CorotationalFem::Refactor::Downdate);
+        EXPECT_FALSE(fem.factorStale());
+        EXPECT_FALSE(fem.surfacePrecomputed());
+        if (threaded) {
+            ASSERT_TRUE(fem.startRefactor());
+            fem.step(load, rows);
+            fem.removeTets(second, CorotationalFem::Refactor::Downdate); // no rebuild on the caller's thread
+            EXPECT_TRUE(fem.refactorRunning());
+            EXPECT_FALSE(fem.finishRefactor()); // overtaken: dropped
+            EXPECT_FALSE(fem.surfacePrecomputed());
+            ASSERT_TRUE(fem.startRefactor());
+            for (int s = 0; s < 4; ++s)
+                fem.step(load, rows);
+            EXPECT_TRUE(fem.finishRefactor());
+        } else {
+            fem.step(load, rows);
+            fem.removeTets(second, CorotationalFem::Refactor::Downdate);
+            for (int s = 0; s < 4; ++s)
+                fem.step(load, rows);
+            fem.refactor();
+        }
+        EXPECT_TRUE(fem.surfacePrecomputed());
+        EXPECT_FALSE(fem.factorStale());
+        for (int s = 0; s < 20; ++s)
+            fem.step(load, rows);
+        EXPECT_EQ(fem.recoveries(), 0u);
+        finals.push_back(fem.positionsM());
+    }
+    ASSERT_EQ(finals[0].size(), finals[1].size());
+    EXPECT_EQ(std::memcmp(finals[0].data(), finals[1].data(), finals[0].size() * sizeof(Vec3)), 0);
+}
+
 /// The block's top pressed down by `depthMm` through held points (its centre's 4 points), settled; the force, N.
 double pressBlock(const Block& block, const std::vector<FemMaterial>& materials, double depthMm, bool refactor,
                   std::size_t* recoveries = nullptr) {

@@ -200,8 +200,13 @@ public:
     /// Waits for the rebuild startRefactor began and takes its factor and surface compliance in (nothing without
     /// one). Call it at a fixed step (e.g. a fixed number of steps after the start) and a replay takes the same
     /// factor at the same step: the result does not depend on when the thread finished. Tets removed since the start
-    /// leave the factor stale again.
-    void finishRefactor();
+    /// with Refactor::Later leave the factor stale again; removed by downdates (Refactor::Downdate), the factor in use
+    /// already lacks them and the rebuilt one does not: the rebuilt one is dropped (false; start another). True when
+    /// it was taken in.
+    bool finishRefactor();
+    /// Whether the surface's compliance is precomputed for the factor in use (precomputeCompliance; a downdate drops
+    /// it, a rebuild restores it).
+    bool surfacePrecomputed() const { return m_compliantList.empty() || m_compliantCount > 0; }
     /// Points the live tets meet as more than one disk (a singular point of the boundary) or whose live tets' faces
     /// opposite them do not close into one disk or sphere: 0 in a valid solid.
     std::vector<std::int32_t> singularPoints() const;

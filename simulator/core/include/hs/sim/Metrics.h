@@ -56,6 +56,30 @@ struct SurfaceSample {
     bool seen = false;
 };
 
+/// A pathology's resection (the operative exercises).
+struct PathologyResection {
+    std::string id;         ///< the case's pathology id
+    std::string kind;       ///< "myoma", "polyp"
+    double volumeMl = 0.0;  ///< its volume on the simulation mesh
+    double removedMl = 0.0; ///< of it, cut away (chips included)
+    double removedPercent = 0.0;
+};
+
+/// What the resectoscope's loop did (docs/simulator.md, "Cutting").
+struct ResectionMetrics {
+    std::vector<PathologyResection> pathologies;
+    double healthyRemovedMl = 0.0;    ///< tissue cut away that was no pathology's
+    double deepestMyometriumMm = 0.0; ///< how far below the cavity's surface (at rest) a cut reached into the wall
+    int perforatingCuts = 0;          ///< cut events that opened the serosa
+    std::uint64_t cutEvents = 0;      ///< steps whose cut removed tissue
+    std::uint64_t removedTets = 0;    ///< of the simulation mesh
+    std::uint64_t chips = 0;          ///< pieces cut free
+    double cuttingTimeS = 0.0;        ///< s with the cutting pedal down and the loop out
+    double resectionTimeS = 0.0;      ///< s from the first cut that removed tissue to the last
+    double firstCutS = -1.0;          ///< s into the trial; -1 none
+    double loopPathMm = 0.0;          ///< the loop's path with the cutting pedal down
+};
+
 struct TrialMetrics {
     double timeS = 0.0;
     double pathLengthMm = 0.0; ///< the tip's path inside the body (beyond the external os)
@@ -76,7 +100,8 @@ struct TrialMetrics {
     bool deficitLimitReached = false;
     double redOutTimeS = 0.0; ///< s with the walls closed on the lens
     std::vector<PathologyFinding> pathologies;
-    int falseMarks = 0; ///< marks on no pathology
+    int falseMarks = 0;         ///< marks on no pathology
+    ResectionMetrics resection; ///< the operative exercises' (empty pathologies otherwise)
 };
 
 struct TrialReport {

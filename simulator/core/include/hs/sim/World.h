@@ -175,6 +175,7 @@ private:
     friend Script entryScript(const World& world, double offAxisDeg, double towardDeg);
     friend Vec3 entryShaft(const World& world, double offAxisDeg, double towardDeg);
     friend Script entryScriptAlong(const World& world, const Vec3& shaft);
+    friend Result<Script> resectionScript(const World& world, int pathology);
     World();
     struct Impl;
     std::unique_ptr<Impl> impl_;
@@ -231,5 +232,15 @@ struct PressPlan {
 /// degrees of head-on with the scope 1 mm clear of the walls.
 [[nodiscard]] Result<PressPlan> pressScript(const World& world, int pathology, double depthMm = 3.0,
                                             double holdS = 2.0);
+/// A demonstration resection of pathology `pathology` (an index into scene().clinical.pathologies) with the
+/// resectoscope's loop, planned in the cavity opened by the fluid: in through the canal with the inflow open, then
+/// strip by strip from the pathology's free side towards its base, each strip the loop pushed out beyond the pathology
+/// and drawn back with the cutting pedal down where the wire, as planned, passes through nothing but the pathology
+/// and the fluid; out at the end. InvalidInput for a world whose exercise does not cut or a pathology out of range.
+[[nodiscard]] Result<Script> resectionScript(const World& world, int pathology);
+/// The built-in demonstration of the world's exercise (`hysteroscene-sim --demo`): the exploration for exploration
+/// and diagnosis; for polypectomy the resection of the scene's first polyp, for myomectomy of its first myoma of FIGO
+/// type 0-2 (resectionScript). InvalidInput naming the exercise when the scene has no such pathology.
+[[nodiscard]] Result<Script> demonstrationScript(const World& world);
 
 } // namespace hs::sim

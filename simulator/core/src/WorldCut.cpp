@@ -1,0 +1,123 @@
+// The resectoscope's loop in the world (docs/simulator.md, "Cutting"): the wire on the working element of the physics'
+// scope, the tets it sweeps with the cutting pedal down removed from the tissue (hs::sim::Resection on the uterus
+// model: the solver's factor downdated, the fluid's volume kept continuous), and the contact surface following the
+// cut in the same step: the faces of removed tets leave it, the faces the cut bared join it.
+#include "WorldImpl.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hs::sim {
+
+using namespace detail;
+
+namespace detail {
+
+std::vector<Vec3> loopWireOf(const ScopeFrame& frame, const ScopeConfig& scope, const LoopElectrode& loop,
+                             DeviceSample body, Vec3& middleMm) {
+    body.cameraRollDeg = 0.0;
+    const ScopePose pose = scopePose(frame, scope, body);
+    const Vec3 down = perpendicularTo(pose.shaft, pose.up * -1.0);
+    middleMm = pose.tipMm + pose.shaft * body.workingElementMm;
+    return loopWire(loop, middleMm, pose.shaft, down);
+}
+
+} // namespace detail
+
+std::vector<Vec3> World::Impl::loopWireMm(const DeviceSample& device, Vec3& middleMm) const {
+    return loopWireOf(frame, options.scope, loop, physicsSample(device), middleMm);
+}
+
+void World::Impl::cut(const DeviceSample& device) {
+    const bool pedal = device.instrument == kInstrumentLoop && (device.buttons & kButtonCut) != 0;
+    // The factor rebuilt on its own thread while the pedal is up: started at a fixed step after a cut, taken in a
+    // fixed number of steps later (a replay does the same at the same steps, and gets the same factor).
+    if (tissue.refactorRunning() && state.step >= rebuildDueStep)
+        tissue.finishRefactor(); // dropped when cuts came meanwhile: the next pause starts another
+    if (!pedal && !tissue.refactorRunning() && !tissue.surfacePrecomputed() && tissue.startRefactor())
+        rebuildDueStep = state.step + kRebuildSteps;
+    if (device.instrument != kInstrumentLoop) {
+        lastWireMm.clear();
+        return;
+    }
+    Vec3 middle;
+    std::vector<Vec3> wire = loopWireMm(device, middle);
+    ResectionMetrics& m = metrics.resection;
+    if (pedal && !lastWireMm.empty()) {
+        m.cuttingTimeS += options.stepS;
+        m.loopPathMm += distance(middle, lastLoopMm);
+        const CutEvent event = resection->cut(uterus, loop, lastWireMm, wire);
+        if (!event.removed.empty()) {
+            surfaceAfterCut(event.removed);
+            const ResectionTotals& totals = resection->totals();
+            for (std::size_t k = 0; k < m.pathologies.size() && k < totals.pathologyRemovedMl.size(); ++k) {
+                PathologyResection& p = m.pathologies[k];
+                p.removedMl = totals.pathologyRemovedMl[k];
+                p.removedPercent = p.volumeMl > 0.0 ? 100.0 * p.removedMl / p.volumeMl : 0.0;
+            }
+            m.healthyRemovedMl = totals.healthyMl;
+            m.deepestMyometriumMm = totals.deepestMyometriumMm;
+            m.perforatingCuts = totals.perforations;
+            m.cutEvents = totals.events;
+            m.removedTets = totals.removedTets;
+            m.chips = totals.chips;
+            if (m.firstCutS < 0.0)
+                m.firstCutS = state.timeS;
+            m.resectionTimeS = state.timeS - m.firstCutS;
+        }
+    }
+    lastWireMm = std::move(wire);
+    lastLoopMm = middle;
+}
+
+void World::Impl::surfaceAfterCut(const std::vector<std::size_t>& removed) {
+    // The faces whose tet went (the mesh's boundary, and faces earlier cuts bared).
+    for (std::size_t f = 0; f < faceTet.size(); ++f)
+        if (!faceDead[f] && faceTet[f] >= 0 && tissue.tetRemoved(static_cast<std::size_t>(faceTet[f])))
+            faceDead[f] = 1;
+    // The faces the cut bared: a removed tet's face against a live tet, facing out of the live tet (by its fourth
+    // point at rest), wet by the fluid.
+    auto tris = std::make_shared<std::vector<Triangle>>(*triangles);
+    const auto& tets = tissue.tets();
+    const auto& across = tissue.neighbours();
+    for (const std::size_t t : removed)
+        for (std::size_t k = 0; k < 4; ++k) {
+            const std::int32_t u = across[t][k];
+            if (u < 0 || tissue.tetRemoved(static_cast<std::size_t>(u)))
+                continue;
+            Triangle face{tets[t][static_cast<std::size_t>(kTetFacePoints[k][0])],
+                          tets[t][static_cast<std::size_t>(kTetFacePoints[k][1])],
+                          tets[t][static_cast<std::size_t>(kTetFacePoints[k][2])]};
+            const Tet& live = tets[static_cast<std::size_t>(u)];
+            std::int32_t inside = live[0];
+            for (const std::int32_t q : live)
+                if (q != face[0] && q != face[1] && q != face[2])
+                    inside = q;
+            const Vec3& a = simRest.points[static_cast<std::size_t>(face[0])];
+            if (dot(triangleNormal(simRest.points, face), simRest.points[static_cast<std::size_t>(inside)] - a) > 0.0)
+                std::swap(face[1], face[2]);
+            tris->push_back(face);
+            faceCavity.push_back(1);
+            faceInCavity.push_back(0); // the cavity's surface at rest is what the exploration measures
+            faceCut.push_back(1);
+            faceDead.push_back(0);
+            faceTet.push_back(u);
+            faceArea.push_back(0.5 * norm(triangleNormal(simRest.points, face)));
+            faceRegion.push_back(simRest.regionOf(static_cast<std::size_t>(u)));
+            facePathology.push_back(resection->tetPathology()[static_cast<std::size_t>(u)]);
+            char held = 0;
+            for (const std::int32_t v : face)
+                held = held || uterus.pointHeld[static_cast<std::size_t>(v)];
+            faceHeld.push_back(held);
+            const Vec3 c = triangleCentre(simRest.points, face);
+            const double along = dot(c - landmarks.internalOsMm, cavityAxis);
+            const Vec3 r = c - landmarks.internalOsMm - cavityAxis * along;
+            faceUnrolled.push_back({std::atan2(dot(r, cavityLeft), dot(r, cavityAnterior)) / kDeg, along, false});
+            faceSeen.push_back(0);
+        }
+    triangles = tris;
+    contactSurface.triangles = *tris;
+    bvh.build(*tris, pointsMm, faceDead);
+}
+
+} // namespace hs::sim
