@@ -30,6 +30,22 @@ Vec3 areaNormal(const std::vector<Vec3>& pts, const Triangle& t) {
 
 } // namespace
 
+Triangle cutFace(const std::vector<Tet>& tets, std::size_t removed, std::size_t k, std::size_t live,
+                 const std::vector<Vec3>& pts) {
+    Triangle face{tets[removed][static_cast<std::size_t>(kTetFacePoints[k][0])],
+                  tets[removed][static_cast<std::size_t>(kTetFacePoints[k][1])],
+                  tets[removed][static_cast<std::size_t>(kTetFacePoints[k][2])]};
+    std::int32_t inside = tets[live][0];
+    for (const std::int32_t q : tets[live])
+        if (q != face[0] && q != face[1] && q != face[2])
+            inside = q;
+    const Vec3 a = pts[static_cast<std::size_t>(face[0])];
+    const Vec3 n = cross(pts[static_cast<std::size_t>(face[1])] - a, pts[static_cast<std::size_t>(face[2])] - a);
+    if (dot(n, pts[static_cast<std::size_t>(inside)] - a) > 0.0)
+        std::swap(face[1], face[2]);
+    return face;
+}
+
 double UterusModel::cavityVolumeMl(const std::vector<Vec3>& pts) const {
     // The cavity's faces face into it: the volume between them and the external os.
     const Vec3 o = externalOsMm;

@@ -85,17 +85,7 @@ void World::Impl::surfaceAfterCut(const std::vector<std::size_t>& removed) {
             const std::int32_t u = across[t][k];
             if (u < 0 || tissue.tetRemoved(static_cast<std::size_t>(u)))
                 continue;
-            Triangle face{tets[t][static_cast<std::size_t>(kTetFacePoints[k][0])],
-                          tets[t][static_cast<std::size_t>(kTetFacePoints[k][1])],
-                          tets[t][static_cast<std::size_t>(kTetFacePoints[k][2])]};
-            const Tet& live = tets[static_cast<std::size_t>(u)];
-            std::int32_t inside = live[0];
-            for (const std::int32_t q : live)
-                if (q != face[0] && q != face[1] && q != face[2])
-                    inside = q;
-            const Vec3& a = simRest.points[static_cast<std::size_t>(face[0])];
-            if (dot(triangleNormal(simRest.points, face), simRest.points[static_cast<std::size_t>(inside)] - a) > 0.0)
-                std::swap(face[1], face[2]);
+            const Triangle face = mechanics::cutFace(tets, t, k, static_cast<std::size_t>(u), simRest.points);
             tris->push_back(face);
             faceCavity.push_back(1);
             faceInCavity.push_back(0); // the cavity's surface at rest is what the exploration measures

@@ -55,14 +55,23 @@ struct UterusModel {
     void pressureForces(const std::vector<Vec3>& pts, double pressureKpa, std::vector<Vec3>& forces) const;
     /// Calls `visit(face)` for each face a cut opened, its points ordered so its normal points into the fluid (out of
     /// its live tet, judged by that tet's fourth point in `pts`).
-    template <typename Visit> void forEachCutFace(const std::vector<Vec3>& pts, Visit&& visit) const;
+    template <typename Visit>
+    void forEachCutFace(const std::vector<Vec3>& pts, Visit&& visit) const;
     /// Removes `tets` from the solver (CorotationalFem::removeTets with `refactor`) with the points at `pts` (mm),
     /// and keeps the fluid's volume continuous across the cut (cutSpaceMl).
     CorotationalFem::Removal cutTets(const std::vector<std::size_t>& tets, const std::vector<Vec3>& pts,
                                      CorotationalFem::Refactor refactor);
 };
 
-template <typename Visit> void UterusModel::forEachCutFace(const std::vector<Vec3>& pts, Visit&& visit) const {
+/// Face `k` of tet `removed` (kTetFacePoints), which it shares with the live tet `live`, its points ordered so its
+/// normal points out of `live` (into the fluid) with the points at `pts`. Oriented by the live tet's own fourth
+/// point: the removed tet's points are carried by nothing once a cut has left them, so its fourth point may lie across
+/// the face.
+Triangle cutFace(const std::vector<Tet>& tets, std::size_t removed, std::size_t k, std::size_t live,
+                 const std::vector<Vec3>& pts);
+
+template <typename Visit>
+void UterusModel::forEachCutFace(const std::vector<Vec3>& pts, Visit&& visit) const {
     if (fem.liveTetCount() == fem.tetCount())
         return;
     const std::vector<Tet>& tets = fem.tets();
@@ -72,23 +81,8 @@ template <typename Visit> void UterusModel::forEachCutFace(const std::vector<Vec
             continue;
         for (std::size_t k = 0; k < 4; ++k) {
             const std::int32_t u = across[t][k];
-            if (u < 0 || fem.tetRemoved(static_cast<std::size_t>(u)))
-                continue;
-            Triangle face{tets[t][static_cast<std::size_t>(kTetFacePoints[k][0])],
-                          tets[t][static_cast<std::size_t>(kTetFacePoints[k][1])],
-                          tets[t][static_cast<std::size_t>(kTetFacePoints[k][2])]};
-            // Oriented by the live tet's own fourth point: the removed tet's points are carried by nothing once a
-            // cut has left them, so its fourth point may lie across the face.
-            const Tet& live = tets[static_cast<std::size_t>(u)];
-            std::int32_t inside = live[0];
-            for (const std::int32_t q : live)
-                if (q != face[0] && q != face[1] && q != face[2])
-                    inside = q;
-            const Vec3 a = pts[static_cast<std::size_t>(face[0])];
-            const Vec3 n = cross(pts[static_cast<std::size_t>(face[1])] - a, pts[static_cast<std::size_t>(face[2])] - a);
-            if (dot(n, pts[static_cast<std::size_t>(inside)] - a) > 0.0)
-                std::swap(face[1], face[2]);
-            visit(face);
+            if (u >= 0 && !fem.tetRemoved(static_cast<std::size_t>(u)))
+                visit(cutFace(tets, t, k, static_cast<std::size_t>(u), pts));
         }
     }
 }
