@@ -10,6 +10,7 @@
 
 #include <QApplication>
 #include <QSurfaceFormat>
+#include <QTimer>
 
 #include <iostream>
 
@@ -34,5 +35,12 @@ int main(int argc, char** argv) {
     window.show();
     if (!options.scene.empty())
         window.openPackage(QString::fromStdString(options.scene));
+    if (!options.screenshotPath.empty())
+        QTimer::singleShot(static_cast<int>(options.screenshotAfterS * 1000.0), &window, [&window, &options] {
+            const bool saved = window.grab().save(QString::fromStdString(options.screenshotPath));
+            if (!saved)
+                std::cerr << "hysteroscene-sim: could not write " << options.screenshotPath << '\n';
+            QCoreApplication::exit(saved ? 0 : 4);
+        });
     return QApplication::exec();
 }

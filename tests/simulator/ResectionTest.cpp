@@ -1,6 +1,6 @@
 // The resectoscope's loop (hs::sim::Resection) on a block of tissue built for it: what the wire takes, what is counted.
-#include "hs/mechanics/UterusModel.h"
 #include "hs/sim/Resection.h"
+#include "hs/mechanics/UterusModel.h"
 
 #include <gtest/gtest.h>
 
@@ -178,8 +178,9 @@ TEST(Resection, ACutThroughTheOuterWallIsAPerforation) {
     sim::Resection resection = std::move(*made);
     const Vec3 axis{0.0, 0.0, -1.0}, down{1.0, 0.0, 0.0};
     sim::LoopElectrode loop;
-    const sim::CutEvent event = resection.cut(tissue.model, loop, sim::loopWire(loop, Vec3{-11.0, 0.0, 1.0}, axis, down),
-                                              sim::loopWire(loop, Vec3{-11.0, 0.0, -3.0}, axis, down));
+    const sim::CutEvent event =
+        resection.cut(tissue.model, loop, sim::loopWire(loop, Vec3{-11.0, 0.0, 1.0}, axis, down),
+                      sim::loopWire(loop, Vec3{-11.0, 0.0, -3.0}, axis, down));
     EXPECT_FALSE(event.removed.empty());
     EXPECT_TRUE(event.perforation);
     EXPECT_EQ(resection.totals().perforations, 1);

@@ -135,6 +135,11 @@ ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
         "check runs it headless");
     app.add_option("--record", o.recordPath, "write the trial (every device sample) to this file");
     app.add_option("--replay", o.replayPath, "play a recorded trial back");
+    // For the docs' pictures: the window saved after a while, then closed (not in --help).
+    app.add_option("--screenshot", o.screenshotPath, "save the window to this image, then quit")->group("");
+    app.add_option("--screenshot-after", o.screenshotAfterS, "seconds after the window opened")
+        ->check(CLI::Range(0.0, 3600.0))
+        ->group("");
     app.add_flag("--headless", o.headless, "no window: step as fast as possible (with --replay or a scripted device)");
     app.add_option("--report", o.reportPath, "write the trial's report (JSON) here");
     app.add_option("--html", o.htmlPath, "write the trial's report page (HTML) here");

@@ -520,6 +520,7 @@ TEST(Mechanics, AStaleFactorSettlesWhereAFreshOneDoes) {
     // the first step after the cut within 0.1 % of the sag (measured 2.4e-9 m of 9.5e-5).
     EXPECT_LT(downdated, 1e-6 * sag);
     EXPECT_LT(firstStep, 1e-3 * sag);
+    std::printf("downdated %.3g of the sag, its first step %.3g\n", downdated / sag, firstStep / sag);
     EXPECT_GT(sag, 1e-5);
     // Measured 0.3 % of the sag (the kept factor's steps still moving 3e-9 m a step; the rebuilt one's 1e-19).
     EXPECT_LT(apart, 0.01 * sag) << "sag " << sag << " m, apart " << apart << " m";

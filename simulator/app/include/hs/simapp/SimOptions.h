@@ -31,15 +31,17 @@ struct DeviceSpec {
 [[nodiscard]] Result<DeviceSpec> parseDeviceSpec(const std::string& text);
 
 struct SimOptions {
-    std::string scene;       ///< the package folder (may be empty in the GUI: File > Open)
-    sim::WorldOptions world; ///< scope, fluid, exercise, seed
-    DeviceSpec device;       ///< --device
-    std::string recordPath;  ///< --record: the trial file to write
-    std::string replayPath;  ///< --replay: the trial to play back
-    bool headless = false;   ///< --headless: no window (needs --replay, a scripted device or --demo)
-    std::string reportPath;  ///< --report: the report's JSON
-    std::string htmlPath;    ///< --html: the report's page
-    std::string language;    ///< --lang (also --language): the window's language; empty: HS_LANG, else the system's
+    std::string scene;          ///< the package folder (may be empty in the GUI: File > Open)
+    sim::WorldOptions world;    ///< scope, fluid, exercise, seed
+    DeviceSpec device;          ///< --device
+    std::string recordPath;     ///< --record: the trial file to write
+    std::string replayPath;     ///< --replay: the trial to play back
+    bool headless = false;      ///< --headless: no window (needs --replay, a scripted device or --demo)
+    std::string reportPath;     ///< --report: the report's JSON
+    std::string htmlPath;       ///< --html: the report's page
+    std::string language;       ///< --lang (also --language): the window's language; empty: HS_LANG, else the system's
+    std::string screenshotPath; ///< --screenshot (hidden): save the window here after --screenshot-after, then quit
+    double screenshotAfterS = 5.0; ///< --screenshot-after: s of wall clock after the window opened
 };
 
 /// What parsing decided: run with `options`, or exit with `exitCode` after printing `message` (help, version,
