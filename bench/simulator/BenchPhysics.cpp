@@ -474,7 +474,18 @@ int main(int argc, char** argv) {
             "| physics step from the first cut on | mean %.2f ms (%.0f Hz), p99 %.2f ms (%.0f Hz), %zu steps |\n",
             cutMean, cutMean > 0.0 ? 1e3 / cutMean : 0.0, percentile(cuttingStepMs, 0.99),
             percentile(cuttingStepMs, 0.99) > 0.0 ? 1e3 / percentile(cuttingStepMs, 0.99) : 0.0, cuttingStepMs.size());
-        std::printf("| fluid | deficit %.0f mL, highest pressure %.1f kPa |\n", m.deficitMl, m.maxPressureKpa);
+        std::printf("| fluid | %s, deficit %.0f mL in %.1f min (%.0f mL/min), intravasation %.0f mL, highest pressure "
+                    "%.1f kPa |\n",
+                    std::string(hs::sim::toString(options.fluid.medium)).c_str(), m.deficitMl, m.timeS / 60.0,
+                    m.timeS > 0.0 ? 60.0 * m.deficitMl / m.timeS : 0.0, m.intravasationMl, m.maxPressureKpa);
+        const hs::sim::FluidState& f = w.state().fluid;
+        std::printf("| bleeding | blood loss %.2f mL, at the end %.2f mL/min with %.3f mL/(s kPa) of arterioles open; "
+                    "cut intravasation %.1f mL/min; coagulating %.1f s |\n",
+                    m.bloodLossMl, 60.0 * f.bleedingMlPerS,
+                    f.pressureKpa < options.fluid.meanArterialPressureKpa
+                        ? f.bleedingMlPerS / (options.fluid.meanArterialPressureKpa - f.pressureKpa)
+                        : 0.0,
+                    60.0 * f.cutIntravasationMlPerS, r.coagulationTimeS);
     }
     return 0;
 }

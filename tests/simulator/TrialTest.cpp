@@ -25,6 +25,8 @@ Trial sampleTrial(std::size_t count, std::uint64_t seed = 7) {
     trial.header.scope.opticDeg = 12.0;
     trial.header.scope.diameterMm = 4.0;
     trial.header.fluid.pumpPressureKpa = 0.1 + 10.0;
+    trial.header.fluid.medium = DistensionMedium::Glycine;
+    trial.header.fluid.elderlyOrComorbid = true;
     trial.header.device = "scripted:push \"wall\".json";
     trial.header.startedUtc = "2024-05-01T10:00:00Z";
     std::mt19937_64 rng(seed);
@@ -52,6 +54,18 @@ std::string fileBytes(const std::string& path) {
     std::ostringstream out;
     out << in.rdbuf();
     return out.str();
+}
+
+/// `bytes` of a trial file with its header replaced by `header`.
+std::string withHeader(const std::string& bytes, const std::string& header) {
+    std::uint32_t length = 0;
+    for (int i = 0; i < 4; ++i)
+        length |= static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[8 + i])) << (8 * i);
+    std::string out = bytes.substr(0, 8);
+    const auto size = static_cast<std::uint32_t>(header.size());
+    for (int i = 0; i < 4; ++i)
+        out.push_back(static_cast<char>((size >> (8 * i)) & 0xFFu));
+    return out + header + bytes.substr(12 + length);
 }
 
 bool sameBits(double a, double b) {
@@ -101,6 +115,8 @@ TEST_F(TrialFile, ReadsBackBitForBit) {
     EXPECT_EQ(read->header.exercise, Exercise::Diagnosis);
     EXPECT_TRUE(sameBits(read->header.fluid.pumpPressureKpa, original.header.fluid.pumpPressureKpa));
     EXPECT_EQ(read->header.scope.diameterMm, 4.0);
+    EXPECT_EQ(read->header.fluid.medium, DistensionMedium::Glycine);
+    EXPECT_TRUE(read->header.fluid.elderlyOrComorbid);
     EXPECT_EQ(read->header.device, original.header.device);
     EXPECT_EQ(read->header.startedUtc, original.header.startedUtc);
     EXPECT_EQ(read->header.physics.engine, "test-engine/3");
@@ -217,7 +233,7 @@ TEST_F(TrialFile, RefusesNaNAndOutOfRangeSamples) {
     putDouble(valve, records + 10 * 80 + 56, 1.5);
     EXPECT_TRUE(refusedNaming(parseTrial(valve, "v.hstrial"), "v.hstrial", "samples[10].outflow"));
     std::string buttons = bytes;
-    buttons[records + 80 + 72] = 16;
+    buttons[records + 80 + 72] = 64; // the first bit no button has
     EXPECT_TRUE(refusedNaming(parseTrial(buttons, "b.hstrial"), "b.hstrial", "samples[1].buttons"));
     std::string loop = bytes;
     putDouble(loop, records + 10 * 80 + 64, kMaxWorkingElementMm + 1.0);
@@ -289,6 +305,61 @@ TEST(Trial, ReadingAMissingFileNamesIt) {
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.error().code, ErrorCode::NotFound);
     EXPECT_NE(result.error().detail.find("/nonexistent/x.hstrial"), std::string::npos);
+}
+
+TEST_F(TrialFile, AHeaderWithoutTheMediumIsSalineInAHealthyPatientAndAnUnknownMediumIsRefusedByName) {
+    std::uint32_t length = 0;
+    for (int i = 0; i < 4; ++i)
+        length |= static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[8 + i])) << (8 * i);
+    std::string header = bytes.substr(12, length);
+    const std::string fields = ",\"medium\":\"glycine\",\"elderlyOrComorbid\":true";
+    const std::size_t at = header.find(fields);
+    ASSERT_NE(at, std::string::npos) << header;
+    std::string older = header;
+    older.erase(at, fields.size());
+    const std::string olderPath = dir.file("older.hstrial");
+    std::ofstream(olderPath, std::ios::binary) << withHeader(bytes, older);
+    auto read = readTrial(olderPath);
+    ASSERT_TRUE(read.ok()) << read.error().detail;
+    EXPECT_EQ(read->header.fluid.medium, DistensionMedium::Saline);
+    EXPECT_FALSE(read->header.fluid.elderlyOrComorbid);
+
+    std::string unknown = header;
+    unknown.replace(unknown.find("\"glycine\""), 9, "\"sorbitol\"");
+    const std::string unknownPath = dir.file("unknown.hstrial");
+    std::ofstream(unknownPath, std::ios::binary) << withHeader(bytes, unknown);
+    EXPECT_TRUE(refusedNaming(readTrial(unknownPath), unknownPath, "fluid/medium"));
+}
+
+TEST(FluidSettings, TheGuidelinesDeficitsFollowTheMediumAndThePatient) {
+    // AAGL 2013 and BSGE/ESGE 2016: stop at 2500 / 1000 mL (isotonic / hypotonic), 1500 / 750 mL in elderly or
+    // comorbid patients; each warning below its limit.
+    const struct {
+        DistensionMedium medium;
+        bool elderly;
+        double warning, limit;
+    } rows[] = {{DistensionMedium::Saline, false, 1000.0, 2500.0},
+                {DistensionMedium::Saline, true, 750.0, 1500.0},
+                {DistensionMedium::Glycine, false, 750.0, 1000.0},
+                {DistensionMedium::Glycine, true, 500.0, 750.0}};
+    for (const auto& row : rows) {
+        FluidSettings f;
+        f.medium = row.medium;
+        f.elderlyOrComorbid = row.elderly;
+        f = withGuidelineDeficits(f);
+        EXPECT_EQ(f.deficitLimitMl, row.limit) << toString(row.medium) << " " << row.elderly;
+        EXPECT_EQ(f.deficitWarningMl, row.warning) << toString(row.medium) << " " << row.elderly;
+        EXPECT_TRUE(checkFluidSettings(f).ok());
+    }
+    // The defaults are the healthy patient's with saline.
+    const FluidSettings defaults;
+    const FluidSettings saline = withGuidelineDeficits(defaults);
+    EXPECT_EQ(defaults.deficitLimitMl, saline.deficitLimitMl);
+    EXPECT_EQ(defaults.deficitWarningMl, saline.deficitWarningMl);
+    DistensionMedium back = DistensionMedium::Saline;
+    EXPECT_TRUE(fromString("glycine", back));
+    EXPECT_EQ(back, DistensionMedium::Glycine);
+    EXPECT_FALSE(fromString("sorbitol", back));
 }
 
 TEST(FluidSettings, RangesAreChecked) {

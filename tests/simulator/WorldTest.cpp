@@ -76,6 +76,18 @@ void run(World& world, const Script& script, double seconds, std::vector<DeviceS
     }
 }
 
+/// Steps `world` with `sample` held for `seconds` (ticks renumbered), appending what it fed to `samples`.
+void stepHeld(World& world, DeviceSample sample, double seconds, std::vector<DeviceSample>& samples) {
+    const std::size_t per = world.ticksPerStep();
+    std::vector<DeviceSample> step(per, sample);
+    for (int k = 0; k < static_cast<int>(std::lround(seconds / world.options().stepS)); ++k) {
+        for (std::size_t i = 0; i < per; ++i)
+            step[i].tick = world.state().step * per + i;
+        ASSERT_TRUE(world.step(step.data(), per).ok());
+        samples.insert(samples.end(), step.begin(), step.end());
+    }
+}
+
 Script holding(const DeviceSample& sample, double seconds) {
     Script s;
     KeyFrame a;
@@ -454,6 +466,56 @@ TEST(World, TheLoopCutsThePolypAndTheContactSurfaceFollowsTheCut) {
     EXPECT_GT(world->contactSurface().triangles.size(), facesBefore);
     EXPECT_EQ(worst.invertedTets, 0u);
     EXPECT_EQ(world->health().invertedTets, 0u);
+
+    // The cut bleeds below the mean arterial pressure, in proportion to how far below (the open arterioles'
+    // conductance, bleeding / (MAP - p), stays while the pressure changes), and its venules take fluid.
+    const double map = world->options().fluid.meanArterialPressureKpa;
+    const auto arterial = [&] {
+        const FluidState& f = world->state().fluid;
+        EXPECT_LT(f.pressureKpa, map);
+        return f.bleedingMlPerS / (map - f.pressureKpa);
+    };
+    DeviceSample held = samples.back();
+    held.buttons = 0;
+    stepHeld(*world, held, 0.1, samples);
+    const double openBefore = arterial();
+    const FluidState cutFluid = world->state().fluid;
+    EXPECT_GT(openBefore, 0.0);
+    EXPECT_GT(cutFluid.bloodLossMl, 0.0);
+    EXPECT_GT(cutFluid.cutIntravasationMlPerS, 0.0);
+    // Two presses of the pump's down button: 10 mmHg less, the pressure falls and the cut bleeds faster.
+    DeviceSample down = held;
+    down.buttons = kButtonPumpDown;
+    for (int press = 0; press < 2; ++press) {
+        stepHeld(*world, down, 0.05, samples);
+        stepHeld(*world, held, 0.05, samples);
+    }
+    stepHeld(*world, held, 0.5, samples);
+    EXPECT_NEAR(world->state().fluid.pumpSetKpa, world->options().fluid.pumpPressureKpa - 2.0 * kPumpStepKpa, 1e-12);
+    EXPECT_LT(world->state().fluid.pressureKpa, cutFluid.pressureKpa);
+    EXPECT_GT(world->state().fluid.bleedingMlPerS, cutFluid.bleedingMlPerS);
+    EXPECT_NEAR(arterial(), openBefore, 1e-12 * openBefore); // no cut, no seal: the same vessels are open
+    // The last half second of cutting once more with the coagulating pedal instead: the loop passes over the faces
+    // it bared and seals their vessels, less is open.
+    std::size_t lastCut = 0;
+    for (std::size_t i = 0; i < samples.size(); ++i)
+        if (samples[i].buttons & kButtonCut)
+            lastCut = i;
+    ASSERT_GT(lastCut, 500u);
+    std::vector<DeviceSample> again(samples.begin() + static_cast<std::ptrdiff_t>(lastCut - 500),
+                                    samples.begin() + static_cast<std::ptrdiff_t>(lastCut + 1));
+    for (DeviceSample& a : again)
+        a.buttons = (a.buttons & kButtonCut) ? kButtonCoagulate : 0u;
+    for (std::size_t i = world->ticksPerStep() - 1; i < again.size(); i += world->ticksPerStep())
+        stepHeld(*world, again[i], world->options().stepS, samples); // the step's last sample moves the scope
+    const double openAfter = arterial();
+    std::printf("open arterioles %.3g -> %.3g mL/(s kPa) after 0.5 s of coagulation; blood loss %.3f mL, cut "
+                "intravasation %.3f mL/min at %.2f kPa\n",
+                openBefore, openAfter, world->state().fluid.bloodLossMl,
+                world->state().fluid.cutIntravasationMlPerS * 60.0, world->state().fluid.pressureKpa);
+    EXPECT_LT(openAfter, openBefore);
+    EXPECT_GT(world->metrics().resection.coagulationTimeS, 0.0);
+    EXPECT_DOUBLE_EQ(world->metrics().bloodLossMl, world->state().fluid.bloodLossMl);
 
     Trial trial;
     trial.header = world->trialHeader();

@@ -503,6 +503,7 @@ Result<Script> resectionScript(const World& world, int pathology) {
     struct Stroke {
         DeviceSample at; ///< the tip where the stroke ends, the loop drawn in
         double lengthMm = 0.0;
+        double towardsBaseMm = 0.0; ///< its row: how far from the pathology's centre towards its base
         std::size_t firstPoint = 0, wirePoints = 0, positions = 0;
     };
     std::vector<Stroke> strokes;
@@ -537,6 +538,7 @@ Result<Script> resectionScript(const World& world, int pathology) {
                 }
             }
             stroke.lengthMm = std::min(reach, 2.0 * back);
+            stroke.towardsBaseMm = d;
             stroke.firstPoint = located.size();
             for (double we = 0.0; we <= stroke.lengthMm + 1e-9; we += kStrokeCheckMm) {
                 DeviceSample sample = stroke.at;
@@ -610,6 +612,24 @@ Result<Script> resectionScript(const World& world, int pathology) {
             s.buttons = 0;
             plan.add(kStrokeCheckMm / kCutSpeedMmPerS, s);
         }
+    }
+    // The bed coagulated: the strokes of the row at the base once more, the loop drawn back with the coagulating
+    // pedal down (its vessels bleed most: a polyp's pedicle artery, a myoma's pseudocapsule).
+    double baseRow = -1e300;
+    for (const Stroke& stroke : strokes)
+        baseRow = std::max(baseRow, stroke.towardsBaseMm);
+    for (const Stroke& stroke : strokes) {
+        if (stroke.towardsBaseMm < baseRow)
+            continue;
+        const Vec3 tip = scopePose(w.frame, scope, stroke.at).tipMm;
+        plan.add(std::max(0.2, distance(tipNow, tip) / kStrokeMoveSpeedMmPerS), stroke.at);
+        tipNow = tip;
+        DeviceSample s = stroke.at;
+        s.workingElementMm = stroke.lengthMm;
+        plan.add(stroke.lengthMm / kLoopOutSpeedMmPerS, s);
+        plan.keys.back().second.buttons = kButtonCoagulate;
+        s.workingElementMm = 0.0;
+        plan.add(stroke.lengthMm / kCutSpeedMmPerS, s);
     }
     DeviceSample back = inOs;
     plan.add(std::max(0.3, distance(tipNow, scopePose(w.frame, scope, inOs).tipMm) / kStrokeMoveSpeedMmPerS), back);

@@ -22,16 +22,30 @@ inline constexpr double kIntravasationBelowMap = 0.002;
 inline constexpr double kIntravasationAboveMap = 0.08;
 /// Below this pressure the walls close on the lens (the lowest cited distension pressures are 25-50 mmHg).
 inline constexpr double kWallsClosePressureKpa = 3.3;
+/// kPa, the pressure in the venules a cut opens: about 10 mmHg at the venous end of the capillaries (Guyton & Hall,
+/// Textbook of Medical Physiology; docs/references.md [GuytonHall]). Above it the fluid flows into them.
+inline constexpr double kVenulePressureKpa = 10.0 * units::kKpaPerMmHg;
+
+/// The vessels a cut surface has opened and nothing has sealed, as two conductances, mL/(s kPa): the arterioles,
+/// which bleed into the cavity while its pressure is below the mean arterial pressure (tamponade above it), and the
+/// venules, into which the fluid flows while the cavity's pressure is above kVenulePressureKpa (docs/simulator.md,
+/// "Bleeding").
+struct OpenVessels {
+    double arterialMlPerSKpa = 0.0;
+    double venousMlPerSKpa = 0.0;
+};
 
 class FluidModel {
 public:
     void reset(const FluidSettings& settings);
+    /// The pump's set pressure from now on, kPa, held in 2.7-20 (the pump's buttons).
+    void setPumpPressure(double kpa);
     /// The pressure for the coming step of `dt` s (kPa) with the valves' openings (0..1): the cavity holds
     /// `cavityMl` beyond its rest volume as the tissue lies now, under the pressure of the last step, and gives
     /// `complianceMlPerKpa` more per kPa over one step. Updates the fluid's volume and totals with the flows at that
-    /// pressure; `contactForceN` (the scope on the wall) stirs debris.
+    /// pressure, the open vessels' included; `contactForceN` (the scope on the wall) stirs debris.
     double step(double dt, double inflowValve, double outflowValve, double cavityMl, double complianceMlPerKpa,
-                double contactForceN);
+                double contactForceN, const OpenVessels& vessels = {});
     const FluidState& state() const { return m_state; }
 
 private:

@@ -122,6 +122,8 @@ void writeHeader(JsonWriter& w, const TrialHeader& h) {
     w.field("meanArterialPressureKpa", h.fluid.meanArterialPressureKpa);
     w.field("deficitWarningMl", h.fluid.deficitWarningMl);
     w.field("deficitLimitMl", h.fluid.deficitLimitMl);
+    w.field("medium", std::string(toString(h.fluid.medium)));
+    w.field("elderlyOrComorbid", h.fluid.elderlyOrComorbid);
     w.close('}');
     w.field("device", h.device);
     w.field("startedUtc", h.startedUtc);
@@ -172,6 +174,9 @@ void writeMetrics(JsonWriter& w, const TrialMetrics& m) {
     w.field("inflowMl", m.inflowMl);
     w.field("outflowMl", m.outflowMl);
     w.field("deficitMl", m.deficitMl);
+    w.field("intravasationMl", m.intravasationMl);
+    w.field("bloodLossMl", m.bloodLossMl);
+    w.field("finalPumpPressureKpa", m.finalPumpPressureKpa);
     w.field("deficitWarning", m.deficitWarning);
     w.field("deficitLimitReached", m.deficitLimitReached);
     w.field("redOutTimeS", m.redOutTimeS);
@@ -215,6 +220,7 @@ void writeMetrics(JsonWriter& w, const TrialMetrics& m) {
         w.field("resectionTimeS", r.resectionTimeS);
         w.field("firstCutS", r.firstCutS);
         w.field("loopPathMm", r.loopPathMm);
+        w.field("coagulationTimeS", r.coagulationTimeS);
         w.close('}');
     }
     w.close('}');
@@ -287,7 +293,10 @@ std::string sectionsHtml(const TrialReport& r) {
     }
     h += "<h2>Fluid</h2>\n" +
          keyValueTable(
-             {{"pump pressure", pressure(r.header.fluid.pumpPressureKpa)},
+             {{"medium", std::string(toString(r.header.fluid.medium)) +
+                             (r.header.fluid.elderlyOrComorbid ? " (elderly or comorbid patient)" : "")},
+              {"pump pressure (set at the start / at the end)",
+               pressure(r.header.fluid.pumpPressureKpa) + " / " + pressure(m.finalPumpPressureKpa)},
               {"mean arterial pressure", pressure(r.header.fluid.meanArterialPressureKpa)},
               {"highest intrauterine pressure", pressure(m.maxPressureKpa)},
               {"time above mean arterial pressure", seconds(m.timeAboveMeanArterialPressureS)},
@@ -296,6 +305,8 @@ std::string sectionsHtml(const TrialReport& r) {
                               fixedText(r.header.fluid.deficitWarningMl, 0) + " mL, limit " +
                               fixedText(r.header.fluid.deficitLimitMl, 0) + " mL)"},
               {"deficit warning / limit reached", yesNo(m.deficitWarning) + " / " + yesNo(m.deficitLimitReached)},
+              {"intravasation", fixedText(m.intravasationMl, 0) + " mL"},
+              {"blood loss", fixedText(m.bloodLossMl, 1) + " mL"},
               {"red-out time", seconds(m.redOutTimeS)}});
     std::vector<std::vector<std::string>> findings;
     for (const PathologyFinding& p : m.pathologies)
@@ -315,6 +326,7 @@ std::string sectionsHtml(const TrialReport& r) {
                             {"resection time (first to last cut)", seconds(cut.resectionTimeS)},
                             {"cutting time (pedal down)", seconds(cut.cuttingTimeS)},
                             {"loop path with the pedal down", fixedText(cut.loopPathMm, 0) + " mm"},
+                            {"coagulating time (pedal down)", seconds(cut.coagulationTimeS)},
                             {"cut events / chips", std::to_string(cut.cutEvents) + " / " + std::to_string(cut.chips)}});
     }
     return h;
@@ -394,6 +406,9 @@ ordered_json chartConfigs(const TrialReport& r) {
                                {{"deficit", points(s, [](const SeriesPoint& p) { return p.deficitMl; })},
                                 {"warning", level(s, r.header.fluid.deficitWarningMl)},
                                 {"limit", level(s, r.header.fluid.deficitLimitMl)}}));
+    if (!r.metrics.resection.pathologies.empty())
+        charts.push_back(
+            lineChart("Blood loss", "mL", {{"blood", points(s, [](const SeriesPoint& p) { return p.bloodLossMl; })}}));
     charts.push_back(surfaceChart(r.surface));
     return charts;
 }
@@ -438,6 +453,7 @@ std::string reportJson(const TrialReport& report) {
     w.column("forceN", report.series, [](const SeriesPoint& p) { return p.forceN; });
     w.column("pressureKpa", report.series, [](const SeriesPoint& p) { return p.pressureKpa; });
     w.column("deficitMl", report.series, [](const SeriesPoint& p) { return p.deficitMl; });
+    w.column("bloodLossMl", report.series, [](const SeriesPoint& p) { return p.bloodLossMl; });
     w.close('}');
     w.key("surface");
     w.open('{');

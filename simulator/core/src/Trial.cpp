@@ -187,10 +187,10 @@ std::string headerJson(const TrialHeader& h) {
                   {"fieldOfViewDeg", h.scope.fieldOfViewDeg},
                   {"focusNearMm", h.scope.focusNearMm},
                   {"focusFarMm", h.scope.focusFarMm}};
-    j["fluid"] = {{"pumpPressureKpa", h.fluid.pumpPressureKpa},
-                  {"meanArterialPressureKpa", h.fluid.meanArterialPressureKpa},
-                  {"deficitWarningMl", h.fluid.deficitWarningMl},
-                  {"deficitLimitMl", h.fluid.deficitLimitMl}};
+    j["fluid"] = {
+        {"pumpPressureKpa", h.fluid.pumpPressureKpa},      {"meanArterialPressureKpa", h.fluid.meanArterialPressureKpa},
+        {"deficitWarningMl", h.fluid.deficitWarningMl},    {"deficitLimitMl", h.fluid.deficitLimitMl},
+        {"medium", std::string(toString(h.fluid.medium))}, {"elderlyOrComorbid", h.fluid.elderlyOrComorbid}};
     j["device"] = h.device;
     j["startedUtc"] = h.startedUtc;
     return j.dump();
@@ -235,6 +235,12 @@ void readHeaderFields(const json& document, TrialHeader& h, scene::JsonIssues& i
         fluid.read("meanArterialPressureKpa", h.fluid.meanArterialPressureKpa, true);
         fluid.read("deficitWarningMl", h.fluid.deficitWarningMl, true);
         fluid.read("deficitLimitMl", h.fluid.deficitLimitMl, true);
+        // Trials recorded before the medium was chosen ran on saline in a healthy patient.
+        if (const json* m = fluid.member("medium")) {
+            if (!m->is_string() || !fromString(m->get_ref<const std::string&>(), h.fluid.medium))
+                issues.push_back({"/fluid/medium", "must be \"saline\" or \"glycine\""});
+        }
+        fluid.read("elderlyOrComorbid", h.fluid.elderlyOrComorbid);
         fluid.finish();
     }
     root.read("device", h.device, true);
@@ -420,6 +426,35 @@ bool fromString(std::string_view key, Exercise& out) {
     else
         return false;
     return true;
+}
+
+std::string_view toString(DistensionMedium medium) {
+    return medium == DistensionMedium::Glycine ? "glycine" : "saline";
+}
+
+bool fromString(std::string_view key, DistensionMedium& out) {
+    if (key == "saline")
+        out = DistensionMedium::Saline;
+    else if (key == "glycine")
+        out = DistensionMedium::Glycine;
+    else
+        return false;
+    return true;
+}
+
+FluidSettings withGuidelineDeficits(FluidSettings settings) {
+    // Limits: AAGL 2013 and BSGE/ESGE 2016. Warnings: the AAGL's 1000 mL alert for an isotonic medium in a healthy
+    // woman; elsewhere the guidelines give a limit only, and the warning comes at the next lower limit of the table
+    // (750 mL) or, below it, 250 mL before the limit (this project's choice).
+    const bool hypotonic = settings.medium == DistensionMedium::Glycine;
+    if (!settings.elderlyOrComorbid) {
+        settings.deficitLimitMl = hypotonic ? 1000.0 : 2500.0;
+        settings.deficitWarningMl = hypotonic ? 750.0 : 1000.0;
+    } else {
+        settings.deficitLimitMl = hypotonic ? 750.0 : 1500.0;
+        settings.deficitWarningMl = hypotonic ? 500.0 : 750.0;
+    }
+    return settings;
 }
 
 Status checkFluidSettings(const FluidSettings& f) {

@@ -55,6 +55,8 @@ Status World::Impl::build(Progress& progress) {
         if (!made)
             return fail(made.error().code, "resection: " + made.error().detail);
         resection = std::make_unique<Resection>(std::move(*made));
+        tetVessels = vesselDensities(resection->tetTissue(), resection->tetPathology(), tissue.neighbours());
+        firstCutFace = faceCut.size();
         const auto& pathologies = scene.clinical.pathologies;
         for (std::size_t k = 0; k < pathologies.size(); ++k)
             metrics.resection.pathologies.push_back({pathologies[k].id,
@@ -138,8 +140,13 @@ Status World::step(const DeviceSample* samples, std::size_t count) {
         } else {
             w.haveLastTip = false;
         }
-        if ((s.buttons & kButtonMark) && !(w.lastButtons & kButtonMark))
+        const std::uint32_t pressed = s.buttons & ~w.lastButtons;
+        if (pressed & kButtonMark)
             markPressed = true;
+        if (pressed & kButtonPumpUp)
+            w.fluid.setPumpPressure(w.fluid.state().pumpSetKpa + kPumpStepKpa);
+        if (pressed & kButtonPumpDown)
+            w.fluid.setPumpPressure(w.fluid.state().pumpSetKpa - kPumpStepKpa);
         w.lastButtons = s.buttons;
     }
     const DeviceSample& last = samples[count - 1];
@@ -148,8 +155,8 @@ Status World::step(const DeviceSample* samples, std::size_t count) {
     // The fluid's pressure for this step from the cavity as the tissue lies (two-way coupling), then the tissue and
     // the scope under it; state.scope is then the physics' scope, held off the wall by the tissue.
     const double cavityMl = w.uterus.cavityVolumeMl(w.pointsMm) - w.uterus.restCavityMl;
-    const double pressureKpa =
-        w.fluid.step(dt, last.inflow, last.outflow, cavityMl, w.cavityComplianceMlPerKpa, w.state.contact.forceN);
+    const double pressureKpa = w.fluid.step(dt, last.inflow, last.outflow, cavityMl, w.cavityComplianceMlPerKpa,
+                                            w.state.contact.forceN, w.openVessels());
     w.state.fluid = w.fluid.state();
     w.physics(last, pressureKpa);
     w.state.step += 1;
@@ -181,6 +188,9 @@ Status World::step(const DeviceSample* samples, std::size_t count) {
     m.inflowMl = f.inflowTotalMl;
     m.outflowMl = f.outflowTotalMl;
     m.deficitMl = f.deficitMl;
+    m.intravasationMl = f.intravasationTotalMl;
+    m.bloodLossMl = f.bloodLossMl;
+    m.finalPumpPressureKpa = f.pumpSetKpa;
     m.deficitWarning = m.deficitWarning || f.deficitWarning;
     m.deficitLimitReached = m.deficitLimitReached || f.deficitLimit;
     const auto seeing = std::chrono::steady_clock::now();
@@ -193,7 +203,7 @@ Status World::step(const DeviceSample* samples, std::size_t count) {
     const auto seen = std::chrono::steady_clock::now();
     w.timings.visibilityMs += std::chrono::duration<double, std::milli>(seen - seeing).count();
     if (w.state.timeS + 1e-9 >= w.nextSeriesS) {
-        w.series.push_back({w.state.timeS, w.seriesForceN, f.pressureKpa, f.deficitMl});
+        w.series.push_back({w.state.timeS, w.seriesForceN, f.pressureKpa, f.deficitMl, f.bloodLossMl});
         w.seriesForceN = 0.0;
         w.nextSeriesS += kSeriesPeriodS;
     }
@@ -318,7 +328,8 @@ Status checkReplay(const TrialHeader& trial, const WorldOptions& options) {
     const FluidSettings& f = trial.fluid;
     const FluidSettings& g = options.fluid;
     if (f.pumpPressureKpa != g.pumpPressureKpa || f.meanArterialPressureKpa != g.meanArterialPressureKpa ||
-        f.deficitWarningMl != g.deficitWarningMl || f.deficitLimitMl != g.deficitLimitMl)
+        f.deficitWarningMl != g.deficitWarningMl || f.deficitLimitMl != g.deficitLimitMl || f.medium != g.medium ||
+        f.elderlyOrComorbid != g.elderlyOrComorbid)
         return differs("fluid", "other fluid settings", "its own");
     return {};
 }

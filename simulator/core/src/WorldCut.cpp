@@ -4,6 +4,8 @@
 // cut in the same step: the faces of removed tets leave it, the faces the cut bared join it.
 #include "WorldImpl.h"
 
+#include "hs/core/TriangleGeometry.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -43,6 +45,10 @@ void World::Impl::cut(const DeviceSample& device) {
     Vec3 middle;
     std::vector<Vec3> wire = loopWireMm(device, middle);
     ResectionMetrics& m = metrics.resection;
+    if (!pedal && (device.buttons & kButtonCoagulate) != 0) {
+        m.coagulationTimeS += options.stepS;
+        coagulate(wire);
+    }
     if (pedal && !lastWireMm.empty()) {
         m.cuttingTimeS += options.stepS;
         m.loopPathMm += distance(middle, lastLoopMm);
@@ -70,6 +76,37 @@ void World::Impl::cut(const DeviceSample& device) {
     lastLoopMm = middle;
 }
 
+detail::OpenVessels World::Impl::openVessels() const {
+    detail::OpenVessels open;
+    if (tetVessels.empty())
+        return open;
+    for (std::size_t f = firstCutFace; f < faceCut.size(); ++f) {
+        if (faceDead[f] || faceSealed[f])
+            continue;
+        const VesselDensity& v = tetVessels[static_cast<std::size_t>(faceTet[f])];
+        open.arterialMlPerSKpa += faceArea[f] * v.arterialPerMm2;
+        open.venousMlPerSKpa += faceArea[f] * v.venousPerMm2;
+    }
+    return open;
+}
+
+void World::Impl::coagulate(const std::vector<Vec3>& wire) {
+    const double reach2 = kCoagulationReachMm * kCoagulationReachMm;
+    for (std::size_t f = firstCutFace; f < faceCut.size(); ++f) {
+        if (faceDead[f] || faceSealed[f])
+            continue;
+        const Triangle& t = (*triangles)[f];
+        const Vec3& a = pointsMm[static_cast<std::size_t>(t[0])];
+        const Vec3& b = pointsMm[static_cast<std::size_t>(t[1])];
+        const Vec3& c = pointsMm[static_cast<std::size_t>(t[2])];
+        for (const Vec3& p : wire) // the wire's points lie at most loop.sampleMm apart
+            if (closestPointOnTriangle(p, a, b, c).distance2 <= reach2) {
+                faceSealed[f] = 1;
+                break;
+            }
+    }
+}
+
 void World::Impl::surfaceAfterCut(const std::vector<std::size_t>& removed) {
     // The faces whose tet went (the mesh's boundary, and faces earlier cuts bared).
     for (std::size_t f = 0; f < faceTet.size(); ++f)
@@ -90,6 +127,7 @@ void World::Impl::surfaceAfterCut(const std::vector<std::size_t>& removed) {
             faceCavity.push_back(1);
             faceInCavity.push_back(0); // the cavity's surface at rest is what the exploration measures
             faceCut.push_back(1);
+            faceSealed.push_back(0);
             faceDead.push_back(0);
             faceTet.push_back(u);
             faceArea.push_back(0.5 * norm(triangleNormal(simRest.points, face)));

@@ -10,6 +10,7 @@
 #include "hs/mechanics/CorotationalFem.h"
 #include "hs/mechanics/UterusModel.h"
 #include "hs/sim/Resection.h"
+#include "hs/sim/Vessels.h"
 #include "hs/sim/World.h"
 
 #include <array>
@@ -110,6 +111,10 @@ Vec3 triangleCentre(const std::vector<Vec3>& pts, const Triangle& t);
 
 } // namespace detail
 
+/// mm: with the coagulating pedal down, the loop seals the cut faces that come this close to its wire (the
+/// lateral thermal spread of bipolar electrosurgery, 1-2 mm, is the scale; this value is the project's choice).
+inline constexpr double kCoagulationReachMm = 1.5;
+
 struct World::Impl {
     WorldOptions options;
     scene::Scene scene;
@@ -129,6 +134,7 @@ struct World::Impl {
     std::vector<std::int32_t> faceTet; ///< the simulation tet the face bounds
     std::vector<char> faceDead;        ///< a cut removed the face's tet: no contact, no sight (kept for its index)
     std::vector<char> faceCut;         ///< a face a cut opened (appended after the mesh's boundary)
+    std::vector<char> faceSealed;      ///< a cut face the loop coagulated: its vessels are closed
     std::vector<detail::Zone> zones;
     std::vector<detail::Ostium> ostia;
     Vec3 cavityAxis, cavityAnterior, cavityLeft;
@@ -147,7 +153,9 @@ struct World::Impl {
     // The resectoscope's loop (WorldCut.cpp): live in the operative exercises.
     std::unique_ptr<Resection> resection;
     LoopElectrode loop;
-    std::vector<Vec3> lastWireMm; ///< the wire where the last step left it (empty: not out)
+    std::vector<VesselDensity> tetVessels; ///< per simulation tet (Vessels.h)
+    std::size_t firstCutFace = 0;          ///< the contact surface's faces from here on are cuts'
+    std::vector<Vec3> lastWireMm;          ///< the wire where the last step left it (empty: not out)
     Vec3 lastLoopMm;
     /// The solver's factor rebuilt on its own thread once the pedal is up after a cut (the downdates drop the
     /// surface's precomputed compliance, which the contacts need to stay fast), taken in at this step.
@@ -214,6 +222,10 @@ struct World::Impl {
     /// The loop after the step's physics: with the cutting pedal down it cuts what its wire swept since the last
     /// step, and the contact surface follows the cut.
     void cut(const DeviceSample& device);
+    /// The vessels of the cut faces that are live and not sealed (the fluid's exchange with them).
+    detail::OpenVessels openVessels() const;
+    /// The coagulating pedal: the cut faces within kCoagulationReachMm of the loop's wire (`wire`) are sealed.
+    void coagulate(const std::vector<Vec3>& wire);
     /// The contact surface after `removed` left the tissue: their faces die, the faces they bared are appended.
     void surfaceAfterCut(const std::vector<std::size_t>& removed);
     /// The loop's wire for the device's working element on the physics' scope, and its middle.

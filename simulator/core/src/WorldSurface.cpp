@@ -48,6 +48,7 @@ void World::Impl::setupSurfaceData() {
     faceTet = uterus.faceTet;
     faceDead.assign(faces, 0);
     faceCut.assign(faces, 0);
+    faceSealed.assign(faces, 0);
     cavityAxis = normalized(landmarks.fundusMm - landmarks.internalOsMm);
     cavityAnterior = perpendicularTo(cavityAxis, frame.anterior);
     cavityLeft = cross(cavityAxis, cavityAnterior);

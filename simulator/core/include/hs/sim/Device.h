@@ -4,6 +4,8 @@
 /// the keyboard and mouse, and a recorded trial (Trial.h). The physics consumes them in tick order, so a trial that
 /// replays the same samples gives the same world, bit for bit.
 
+#include "hs/core/Units.h"
+
 #include <cstdint>
 
 namespace hs::sim {
@@ -17,9 +19,14 @@ enum DeviceButton : std::uint32_t {
     kButtonCapture = 1u << 1,   ///< take a still (recorded as an event; no effect on the world)
     kButtonCut = 1u << 2,       ///< the resectoscope's cutting pedal: the loop carries cutting current
     kButtonCoagulate = 1u << 3, ///< the coagulating pedal: the loop seals the vessels it touches
+    kButtonPumpUp = 1u << 4,    ///< each press raises the pump's set pressure by kPumpStepKpa
+    kButtonPumpDown = 1u << 5,  ///< each press lowers it by kPumpStepKpa
 };
 /// Every button bit a sample may carry.
-inline constexpr std::uint32_t kKnownButtons = kButtonMark | kButtonCapture | kButtonCut | kButtonCoagulate;
+inline constexpr std::uint32_t kKnownButtons =
+    kButtonMark | kButtonCapture | kButtonCut | kButtonCoagulate | kButtonPumpUp | kButtonPumpDown;
+/// kPa, one press of the pump's buttons: 5 mmHg, the set-pressure step of hysteroscopy pumps.
+inline constexpr double kPumpStepKpa = 5.0 * units::kKpaPerMmHg;
 
 /// The instrument in use (DeviceSample::instrument).
 enum Instrument : std::uint32_t {

@@ -47,6 +47,7 @@ struct SeriesPoint {
     double forceN = 0.0;      ///< contact force between scope and tissue, N
     double pressureKpa = 0.0; ///< intrauterine pressure, kPa
     double deficitMl = 0.0;   ///< fluid deficit, mL
+    double bloodLossMl = 0.0; ///< blood from the cut vessels so far, mL
 };
 
 /// One face of the cavity's surface, unrolled about the cavity's axis, for the visualized-surface plot.
@@ -78,6 +79,7 @@ struct ResectionMetrics {
     double resectionTimeS = 0.0;      ///< s from the first cut that removed tissue to the last
     double firstCutS = -1.0;          ///< s into the trial; -1 none
     double loopPathMm = 0.0;          ///< the loop's path with the cutting pedal down
+    double coagulationTimeS = 0.0;    ///< s with the coagulating pedal down and the loop out
 };
 
 struct TrialMetrics {
@@ -95,7 +97,10 @@ struct TrialMetrics {
     double maxPressureKpa = 0.0;
     double inflowMl = 0.0;
     double outflowMl = 0.0;
-    double deficitMl = 0.0; ///< inflow - outflow (what the patient absorbed or retained), mL
+    double deficitMl = 0.0;            ///< inflow - outflow (what the patient absorbed or retained), mL
+    double intravasationMl = 0.0;      ///< of the fluid, what went into the patient's vessels, mL
+    double bloodLossMl = 0.0;          ///< blood from the cut vessels, mL
+    double finalPumpPressureKpa = 0.0; ///< the pump's set pressure at the end (its buttons move it)
     bool deficitWarning = false;
     bool deficitLimitReached = false;
     double redOutTimeS = 0.0; ///< s with the walls closed on the lens

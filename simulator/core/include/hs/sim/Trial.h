@@ -33,13 +33,28 @@ inline bool isOperative(Exercise exercise) {
 std::string_view toString(Exercise exercise);
 bool fromString(std::string_view key, Exercise& out);
 
-/// Distension settings (docs/simulator.md, "Distension", with sources).
+/// The distension medium (docs/simulator.md, "Fluid management"): an electrolyte for bipolar electrosurgery and
+/// mechanical instruments, an electrolyte-free hypotonic one for monopolar electrosurgery.
+enum class DistensionMedium {
+    Saline,  ///< "saline": isotonic 0.9 % sodium chloride
+    Glycine, ///< "glycine": hypotonic 1.5 % glycine
+};
+std::string_view toString(DistensionMedium medium);
+bool fromString(std::string_view key, DistensionMedium& out);
+
+/// Distension settings (docs/simulator.md, "Distension" and "Fluid management", with sources).
 struct FluidSettings {
     double pumpPressureKpa = 10.7;         ///< kPa, the pump's set pressure (80 mmHg); 2.7-20 kPa (20-150 mmHg)
     double meanArterialPressureKpa = 11.3; ///< kPa, the patient's mean arterial pressure (85 mmHg); 6.7-20 kPa
     double deficitWarningMl = 1000.0;      ///< mL, the deficit that raises a warning; 100-5000
     double deficitLimitMl = 2500.0;        ///< mL, the deficit at which the procedure must stop; 100-5000, > warning
+    DistensionMedium medium = DistensionMedium::Saline;
+    bool elderlyOrComorbid = false; ///< the patient: the guidelines' lower deficit limits apply
 };
+/// `settings` with the deficit's warning and limit of the guidelines for its medium and patient (AAGL 2013,
+/// BSGE/ESGE 2016: stop at 2500 mL of an isotonic medium, 1000 mL of a hypotonic one, 1500 / 750 mL in elderly or
+/// comorbid patients; the warnings: docs/simulator.md, "Fluid management").
+FluidSettings withGuidelineDeficits(FluidSettings settings);
 /// InvalidInput naming the field and its range.
 [[nodiscard]] Status checkFluidSettings(const FluidSettings& settings);
 

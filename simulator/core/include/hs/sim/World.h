@@ -58,6 +58,15 @@ struct FluidState {
     double redOut = 0.0;       ///< 0 .. 1: the walls closing on the lens (low pressure or the lens on tissue)
     bool deficitWarning = false;
     bool deficitLimit = false;
+    double pumpSetKpa = 0.0; ///< the pump's set pressure now: the trial's, moved by the pump's buttons
+    /// The cut surface's open vessels (docs/simulator.md, "Bleeding"): blood into the cavity below the vessels'
+    /// pressure, fluid into the veins above theirs (part of intravasationMlPerS).
+    double bleedingMlPerS = 0.0;
+    double cutIntravasationMlPerS = 0.0;
+    double intravasationTotalMl = 0.0;
+    double bloodLossMl = 0.0;     ///< blood from the cut vessels so far
+    double bloodInCavityMl = 0.0; ///< of it, still in the cavity (the rest washed out)
+    double bloodFraction = 0.0;   ///< blood's share of the cavity's fluid, 0..1 (what reddens the view)
 };
 
 struct ContactState {
