@@ -21,6 +21,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTranslator>
+#include <cmath>
 
 using hs::simapp::KeyboardSource;
 using hs::simapp::SimWindow;
@@ -33,6 +34,8 @@ private slots:
     void cleanup();
     void listsTheKeys();
     void readsTheLanguageOption();
+    void readsTheMediumAndThePatient();
+    void theKeyboardDrivesTheLoopAndThePump();
     void speaksTheChosenLanguage_data();
     void speaksTheChosenLanguage();
     void drivesTheScopeAndEndsTheTrial();
@@ -74,7 +77,7 @@ void TestSimWindow::cleanup() {
 
 void TestSimWindow::listsTheKeys() {
     const QString help = SimWindow::keyHelp();
-    for (const char* key : {"W / S", "Q / E", "Z / X", "I / O", "Space"})
+    for (const char* key : {"W / S", "Q / E", "Z / X", "I / O", "Space", "R / F", "C, held", "V, held", "+ / -"})
         QVERIFY2(help.contains(key), key);
 }
 
@@ -92,6 +95,55 @@ void TestSimWindow::readsTheLanguageOption() {
     const auto language = parse({"--language=fr", "scene"});
     QVERIFY(language.options);
     QCOMPARE(language.options->language, std::string("fr"));
+}
+
+void TestSimWindow::readsTheMediumAndThePatient() {
+    const auto parse = [](std::vector<const char*> arguments) {
+        arguments.insert(arguments.begin(), "hysteroscene-sim");
+        return hs::simapp::parseCommandLine(static_cast<int>(arguments.size()), arguments.data());
+    };
+    const auto saline = parse({"scene"});
+    QVERIFY(saline.options);
+    QVERIFY(saline.options->world.fluid.medium == hs::sim::DistensionMedium::Saline);
+    QCOMPARE(saline.options->world.fluid.deficitLimitMl, 2500.0);
+    const auto glycine = parse({"scene", "--medium", "glycine", "--elderly-or-comorbid"});
+    QVERIFY(glycine.options);
+    QVERIFY(glycine.options->world.fluid.medium == hs::sim::DistensionMedium::Glycine);
+    QVERIFY(glycine.options->world.fluid.elderlyOrComorbid);
+    QCOMPARE(glycine.options->world.fluid.deficitLimitMl, 750.0);
+    QCOMPARE(glycine.options->world.fluid.deficitWarningMl, 500.0);
+    const auto unknown = parse({"scene", "--medium", "sorbitol"});
+    QVERIFY(!unknown.options);
+    QVERIFY(unknown.message.find("--medium") != std::string::npos);
+}
+
+void TestSimWindow::theKeyboardDrivesTheLoopAndThePump() {
+    KeyboardSource keyboard;
+    keyboard.setInstrument(hs::sim::kInstrumentLoop);
+    std::vector<hs::sim::DeviceSample> out(500);
+    // R held for half a second: the loop goes out at 10 mm/s; C held: the cutting pedal with it.
+    keyboard.setHeld(KeyboardSource::Axis::WorkingElement, 1);
+    keyboard.setButtonHeld(hs::sim::kButtonCut, true);
+    QVERIFY(keyboard.next(0, out.size(), out.data()));
+    QVERIFY(std::abs(out.back().workingElementMm - 5.0) < 1e-9);
+    QVERIFY(out.back().buttons & hs::sim::kButtonCut);
+    QCOMPARE(out.back().instrument, std::uint32_t{hs::sim::kInstrumentLoop});
+    keyboard.setHeld(KeyboardSource::Axis::WorkingElement, 0);
+    keyboard.setButtonHeld(hs::sim::kButtonCut, false);
+    // + pressed once: the pump's up button for kMarkTicks ticks, then up again (one press, one step).
+    keyboard.press(hs::sim::kButtonPumpUp);
+    QVERIFY(keyboard.next(500, out.size(), out.data()));
+    QVERIFY(out.front().buttons & hs::sim::kButtonPumpUp);
+    QVERIFY(!(out.back().buttons & hs::sim::kButtonPumpUp));
+    QCOMPARE(out.back().buttons & hs::sim::kButtonCut, 0u);
+    // The loop put down: drawn in, and the pedals energise nothing.
+    keyboard.setInstrument(hs::sim::kInstrumentNone);
+    keyboard.setButtonHeld(hs::sim::kButtonCoagulate, true);
+    QVERIFY(keyboard.next(1000, out.size(), out.data()));
+    QCOMPARE(out.back().workingElementMm, 0.0);
+    QCOMPARE(out.back().buttons, 0u);
+    for (const hs::sim::DeviceSample& sample : out)
+        QVERIFY(hs::sim::isValid(sample));
 }
 
 void TestSimWindow::speaksTheChosenLanguage_data() {

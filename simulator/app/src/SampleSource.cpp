@@ -60,6 +60,24 @@ void KeyboardSource::mark() {
     m_markTicksLeft = kMarkTicks;
 }
 
+void KeyboardSource::setButtonHeld(std::uint32_t button, bool held) {
+    const std::lock_guard lock(m_mutex);
+    m_pedals = held ? (m_pedals | button) : (m_pedals & ~button);
+}
+
+void KeyboardSource::press(std::uint32_t button) {
+    const std::lock_guard lock(m_mutex);
+    m_pressed = button;
+    m_pressTicksLeft = kMarkTicks;
+}
+
+void KeyboardSource::setInstrument(std::uint32_t instrument) {
+    const std::lock_guard lock(m_mutex);
+    if (instrument != m_sample.instrument)
+        m_sample.workingElementMm = 0.0;
+    m_sample.instrument = instrument;
+}
+
 sim::DeviceSample KeyboardSource::current() const {
     const std::lock_guard lock(m_mutex);
     return m_sample;
@@ -68,14 +86,15 @@ sim::DeviceSample KeyboardSource::current() const {
 bool KeyboardSource::next(std::uint64_t firstTick, std::size_t count, sim::DeviceSample* out) {
     const std::lock_guard lock(m_mutex);
     const double dt = 1.0 / sim::kDeviceRateHz;
-    const double speeds[5] = {kInsertionMmPerS, kPivotDegPerS, kPivotDegPerS, kRollDegPerS, kRollDegPerS};
-    double* fields[5] = {&m_sample.insertionMm, &m_sample.pitchDeg, &m_sample.yawDeg, &m_sample.rollDeg,
-                         &m_sample.cameraRollDeg};
+    const double speeds[6] = {kInsertionMmPerS, kPivotDegPerS, kPivotDegPerS,
+                              kRollDegPerS,     kRollDegPerS,  kWorkingElementMmPerS};
+    double* fields[6] = {&m_sample.insertionMm, &m_sample.pitchDeg,      &m_sample.yawDeg,
+                         &m_sample.rollDeg,     &m_sample.cameraRollDeg, &m_sample.workingElementMm};
     // Mouse and wheel increments are spent at most this fast, so the scope never jumps between two ticks.
-    const double nudgeRates[5] = {kMaxNudgeMmPerS, kMaxNudgeDegPerS, kMaxNudgeDegPerS, kMaxNudgeDegPerS,
-                                  kMaxNudgeDegPerS};
+    const double nudgeRates[6] = {kMaxNudgeMmPerS,  kMaxNudgeDegPerS, kMaxNudgeDegPerS,
+                                  kMaxNudgeDegPerS, kMaxNudgeDegPerS, kMaxNudgeMmPerS};
     for (std::size_t i = 0; i < count; ++i) {
-        for (int a = 0; a < 5; ++a) {
+        for (int a = 0; a < 6; ++a) {
             const double step = std::clamp(m_nudge[a], -nudgeRates[a] * dt, nudgeRates[a] * dt);
             *fields[a] += m_held[a] * speeds[a] * dt + step;
             m_nudge[a] -= step;
@@ -87,8 +106,12 @@ bool KeyboardSource::next(std::uint64_t firstTick, std::size_t count, sim::Devic
             else if (*roll < -sim::kMaxRollDeg)
                 *roll += 360.0;
         }
-        m_sample.buttons = m_markTicksLeft > 0 ? sim::kButtonMark : 0u;
+        m_sample.buttons = (m_markTicksLeft > 0 ? sim::kButtonMark : 0u) | (m_pressTicksLeft > 0 ? m_pressed : 0u);
+        // The pedals work the loop only (a diagnostic scope has nothing to energise).
+        if (m_sample.instrument == sim::kInstrumentLoop)
+            m_sample.buttons |= m_pedals;
         m_markTicksLeft = m_markTicksLeft > 0 ? m_markTicksLeft - 1 : 0;
+        m_pressTicksLeft = m_pressTicksLeft > 0 ? m_pressTicksLeft - 1 : 0;
         m_sample = sim::clamped(m_sample);
         m_sample.tick = firstTick + i;
         out[i] = m_sample;

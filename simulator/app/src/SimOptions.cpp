@@ -126,6 +126,15 @@ ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
     CLI::Option* mapOption =
         app.add_option("--map-mmhg", mapMmHg, "the patient's mean arterial pressure, mmHg (50-150)")
             ->default_str(std::to_string(std::lround(mapMmHg)));
+    std::string medium = "saline";
+    app.add_option("--medium", medium,
+                   "the distension medium: saline (isotonic, bipolar) or glycine (hypotonic, monopolar); sets the "
+                   "deficit's warning and limit of the guidelines")
+        ->check(CLI::IsMember({"saline", "glycine"}))
+        ->capture_default_str();
+    bool elderly = false;
+    app.add_flag("--elderly-or-comorbid", elderly,
+                 "the patient is elderly or has comorbidities: the guidelines' lower deficit limits");
     app.add_option("--seed", o.world.seed, "the world's seed")->capture_default_str();
     app.add_option("--device", device, "keyboard, hid, hid:VID:PID, scripted:FILE or demo")->capture_default_str();
     bool demo = false;
@@ -180,6 +189,9 @@ ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
         o.world.fluid.pumpPressureKpa = units::kpaFromMmHg(pumpMmHg);
     if (mapOption->count() > 0)
         o.world.fluid.meanArterialPressureKpa = units::kpaFromMmHg(mapMmHg);
+    sim::fromString(medium, o.world.fluid.medium);
+    o.world.fluid.elderlyOrComorbid = elderly;
+    o.world.fluid = sim::withGuidelineDeficits(o.world.fluid);
     if (const std::string problem = combinationProblem(o); !problem.empty()) {
         parsed.exitCode = kExitUsage;
         parsed.message = problem + "\nRun with --help for more information.\n";

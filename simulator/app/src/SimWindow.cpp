@@ -139,17 +139,23 @@ void SimWindow::buildMenus() {
 }
 
 QString SimWindow::keyHelp() {
-    return tr(
-        "<table>"
-        "<tr><td>Arrow keys, or drag with the mouse</td><td>turn the scope about the cervix (pitch, yaw)</td></tr>"
-        "<tr><td>W / S, or the mouse wheel</td><td>insert / withdraw</td></tr>"
-        "<tr><td>Q / E</td><td>roll the scope (an oblique optic looks round)</td></tr>"
-        "<tr><td>Z / X</td><td>roll the camera head (the image's horizon)</td></tr>"
-        "<tr><td>I / O</td><td>open or close the inflow / outflow valve</td></tr>"
-        "<tr><td>Space</td><td>mark the pathology at the centre of the view</td></tr>"
-        "<tr><td>Ctrl+E</td><td>end the trial and show the report</td></tr>"
-        "<tr><td>Ctrl+R</td><td>restart the trial</td></tr>"
-        "<tr><td>F1</td><td>this help</td></tr></table>");
+    return tr("<table>"
+              "<tr><td>Arrow keys, or drag with the mouse</td><td>turn the scope about the cervix (pitch, "
+              "yaw)</td></tr>"
+              "<tr><td>W / S, or the mouse wheel</td><td>insert / withdraw</td></tr>"
+              "<tr><td>Q / E</td><td>roll the scope (an oblique optic looks round)</td></tr>"
+              "<tr><td>Z / X</td><td>roll the camera head (the image's horizon)</td></tr>"
+              "<tr><td>I / O</td><td>open or close the inflow / outflow valve</td></tr>"
+              "<tr><td>Space</td><td>mark the pathology at the centre of the view</td></tr>"
+              "<tr><td>Ctrl+E</td><td>end the trial and show the report</td></tr>"
+              "<tr><td>Ctrl+R</td><td>restart the trial</td></tr>"
+              "<tr><td>F1</td><td>this help</td></tr></table>") +
+           tr("<p>The resectoscope (polypectomy, myomectomy) and the pump:</p><table>"
+              "<tr><td>R / F</td><td>push the loop out / draw it in (the working element)</td></tr>"
+              "<tr><td>C, held</td><td>the cutting pedal</td></tr>"
+              "<tr><td>V, held</td><td>the coagulating pedal</td></tr>"
+              "<tr><td>L</td><td>take up or put down the loop</td></tr>"
+              "<tr><td>+ / -</td><td>raise / lower the pump's set pressure by 5 mmHg</td></tr></table>");
 }
 
 void SimWindow::onShowKeys() {
@@ -243,6 +249,8 @@ void SimWindow::startSession(std::unique_ptr<sim::World> world) {
         m_source = std::move(*source);
     } else {
         auto keyboard = std::make_unique<KeyboardSource>();
+        if (sim::isOperative(m_world->options().exercise))
+            keyboard->setInstrument(sim::kInstrumentLoop); // the resectoscope in hand (L puts it down)
         m_keyboard = keyboard.get();
         m_source = std::move(keyboard);
     }
@@ -297,7 +305,7 @@ void SimWindow::onRenderTick() {
         m_world->visualPoints(frame->snapshot.simulationPointsMm, m_visualPoints, m_endoscope->sourcePointsInUse());
         m_endoscope->setPoints(m_visualPoints);
         m_endoscope->setPose(simrender::cameraPose(state.scope, m_options.world.scope));
-        m_endoscope->setFluid(state.fluid.turbidity, state.fluid.redOut);
+        m_endoscope->setFluid(state.fluid.turbidity, state.fluid.redOut, state.fluid.bloodFraction);
         m_endoscope->setTime(state.timeS); // the camera adapts on the trial's clock
         // The heads-up text is redrawn a few times a second (its glyphs cost a third of the GUI thread's time when
         // drawn every frame on a software GL renderer), at once when its warning line changes.
@@ -461,6 +469,33 @@ bool SimWindow::handleKey(QKeyEvent* event, bool press) {
     case Qt::Key_Space:
         if (press)
             m_keyboard->mark();
+        return true;
+    // The resectoscope (operative exercises): the working element, the pedals, the instrument; the pump.
+    case Qt::Key_R:
+        m_keyboard->setHeld(Axis::WorkingElement, held);
+        return true;
+    case Qt::Key_F:
+        m_keyboard->setHeld(Axis::WorkingElement, -held);
+        return true;
+    case Qt::Key_C:
+        m_keyboard->setButtonHeld(sim::kButtonCut, press);
+        return true;
+    case Qt::Key_V:
+        m_keyboard->setButtonHeld(sim::kButtonCoagulate, press);
+        return true;
+    case Qt::Key_L:
+        if (press)
+            m_keyboard->setInstrument(m_keyboard->current().instrument == sim::kInstrumentLoop ? sim::kInstrumentNone
+                                                                                               : sim::kInstrumentLoop);
+        return true;
+    case Qt::Key_Plus:
+    case Qt::Key_Equal:
+        if (press)
+            m_keyboard->press(sim::kButtonPumpUp);
+        return true;
+    case Qt::Key_Minus:
+        if (press)
+            m_keyboard->press(sim::kButtonPumpDown);
         return true;
     default:
         return false;

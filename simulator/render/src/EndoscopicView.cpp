@@ -47,7 +47,8 @@ constexpr double kPi = 3.14159265358979323846;
 /// Applied after VTK's own texturing (so after lighting and the albedo): the medium between lens and tissue dims the
 /// tissue's light (Beer-Lambert) and scatters the lamp's light back; the lamp's light falls as 1 / (1 + (r / r0)^2)
 /// along the ray, so the scattered light sums to sigma r0 atan(depth / r0) (single scattering; near the lens most of
-/// it), at most sigma r0 pi / 2 however far the wall; red-out covers everything; then the
+/// it), at most sigma r0 pi / 2 however far the wall; blood mixed into the fluid absorbs per colour along the light's
+/// way from the lamp to the wall and back (the scattered light's along about r0); red-out covers everything; then the
 /// camera head: its exposure and white balance, and its tone curve (linear to the knee, above it a shoulder
 /// x / (1 + x) in units of the headroom, Reinhard et al. 2002, that nears full scale without reaching it).
 constexpr const char* kFluidShader = R"(//VTK::TCoord::Impl
@@ -56,7 +57,8 @@ constexpr const char* kFluidShader = R"(//VTK::TCoord::Impl
     float hsDepth = 2.0 * hsNear * hsFar / (hsFar + hsNear - hsNdcZ * (hsFar - hsNear));
     float hsTransmitted = exp(-hsFogPerMm * hsDepth);
     float hsScattered = 1.0 - exp(-hsFogPerMm * hsLampMm * atan(hsDepth / hsLampMm));
-    gl_FragData[0].rgb = gl_FragData[0].rgb * hsTransmitted + hsFogColour * hsScattered;
+    gl_FragData[0].rgb = gl_FragData[0].rgb * hsTransmitted * exp(-hsBloodPerMm * 2.0 * hsDepth) +
+                         hsFogColour * hsScattered * exp(-hsBloodPerMm * hsLampMm);
     gl_FragData[0].rgb = mix(gl_FragData[0].rgb, hsRedOutColour, hsRedOut);
     vec3 hsSensor = gl_FragData[0].rgb * hsExposure * hsWhite;
     vec3 hsOver = max(hsSensor - vec3(hsKnee), vec3(0.0)) / (1.0 - hsKnee);
@@ -233,7 +235,7 @@ struct EndoscopicView::Impl {
     double fieldOfViewDeg = 90.0;
     std::array<double, 2> fieldScale{1.0, 1.0}; ///< the viewport's normalized coordinates per radius of the circle
     double occluderFieldOfViewDeg = -1.0;       ///< degrees; the field the occluder was built for
-    double turbidity = 0.0, redOut = 0.0;
+    double turbidity = 0.0, redOut = 0.0, bloodFraction = 0.0;
     AutoExposure autoExposure;
     std::array<double, 3> white{1.0, 1.0, 1.0};
     CircleStats stats;
@@ -661,8 +663,9 @@ void EndoscopicView::setPose(const CameraPose& pose) {
     d.lamp->SetConeAngle(std::min(89.0, 0.5 * pose.fieldOfViewDeg + 20.0));
 }
 
-void EndoscopicView::setFluid(double turbidity, double redOut) {
+void EndoscopicView::setFluid(double turbidity, double redOut, double bloodFraction) {
     Impl& d = *m_impl;
+    d.bloodFraction = std::isfinite(bloodFraction) ? std::clamp(bloodFraction, 0.0, 1.0) : 0.0;
     d.turbidity = std::isfinite(turbidity) ? std::clamp(turbidity, 0.0, 1.0) : 1.0;
     d.redOut = std::isfinite(redOut) ? std::clamp(redOut, 0.0, 1.0) : 1.0;
     d.updateUniforms();
@@ -677,7 +680,8 @@ void EndoscopicView::Impl::updateBackground() {
         const auto c = static_cast<std::size_t>(k);
         // The light the medium scatters back along a ray that meets no wall (the shader's at infinite depth).
         const double sigma = look.clearFogPerMm + turbidity * look.turbidFogPerMm;
-        background[k] = look.fogColour[c] * (1.0 - std::exp(-sigma * lampSourceMm() * 0.5 * kPi));
+        background[k] = look.fogColour[c] * (1.0 - std::exp(-sigma * lampSourceMm() * 0.5 * kPi)) *
+                        std::exp(-bloodFraction * look.bloodAbsorptionPerMm[c] * lampSourceMm());
         background[k] += (look.redOutColour[c] - background[k]) * redOut;
         background[k] = std::min(1.0, background[k] * e * white[c]);
     }
@@ -701,6 +705,10 @@ void EndoscopicView::Impl::updateUniforms() {
                           static_cast<float>(look.redOutColour[2])};
     u->SetUniform3f("hsFogColour", fog);
     u->SetUniform3f("hsRedOutColour", red);
+    const float blood[3] = {static_cast<float>(bloodFraction * look.bloodAbsorptionPerMm[0]),
+                            static_cast<float>(bloodFraction * look.bloodAbsorptionPerMm[1]),
+                            static_cast<float>(bloodFraction * look.bloodAbsorptionPerMm[2])};
+    u->SetUniform3f("hsBloodPerMm", blood);
     u->SetUniformf("hsRedOut", static_cast<float>(redOut));
     u->SetUniformf("hsLampMm", static_cast<float>(lampSourceMm()));
     u->SetUniformf("hsExposure", static_cast<float>(autoExposure.exposure()));

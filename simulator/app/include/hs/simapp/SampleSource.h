@@ -61,11 +61,13 @@ private:
 /// 1 kHz would have reported. Never ends.
 class KeyboardSource final : public SampleSource {
 public:
-    enum class Axis { Insertion, Pitch, Yaw, Roll, CameraRoll };
+    enum class Axis { Insertion, Pitch, Yaw, Roll, CameraRoll, WorkingElement };
     /// Speeds while a key is held: insertion mm/s, the angles degrees/s.
     static constexpr double kInsertionMmPerS = 15.0;
     static constexpr double kPivotDegPerS = 20.0;
     static constexpr double kRollDegPerS = 90.0;
+    /// mm/s, the loop moved along the sheath by the working element.
+    static constexpr double kWorkingElementMmPerS = 10.0;
     /// The fastest a nudge is spent: mm/s of insertion, degrees/s of the angles.
     static constexpr double kMaxNudgeMmPerS = 100.0;
     static constexpr double kMaxNudgeDegPerS = 360.0;
@@ -84,6 +86,12 @@ public:
     void toggleOutflow();
     /// Holds the mark button for kMarkTicks.
     void mark();
+    /// Holds `button` (a pedal: sim::kButtonCut, kButtonCoagulate) down or lets it up.
+    void setButtonHeld(std::uint32_t button, bool held);
+    /// Presses `button` once (held for kMarkTicks: sim::kButtonPumpUp, kButtonPumpDown).
+    void press(std::uint32_t button);
+    /// The instrument in use (sim::Instrument); the loop drawn in on a change.
+    void setInstrument(std::uint32_t instrument);
     /// The newest sample produced (for the GUI's status).
     sim::DeviceSample current() const;
 
@@ -92,9 +100,12 @@ public:
 private:
     mutable std::mutex m_mutex;
     sim::DeviceSample m_sample;
-    int m_held[5] = {0, 0, 0, 0, 0};
-    double m_nudge[5] = {0, 0, 0, 0, 0};
+    int m_held[6] = {0, 0, 0, 0, 0, 0};
+    double m_nudge[6] = {0, 0, 0, 0, 0, 0};
     std::uint32_t m_markTicksLeft = 0;
+    std::uint32_t m_pedals = 0;  ///< buttons held down
+    std::uint32_t m_pressed = 0; ///< the button pressed once, held for m_pressTicksLeft
+    std::uint32_t m_pressTicksLeft = 0;
 };
 
 /// A haptic device through the 1 kHz haptics loop (hs::haptics::HapticsLoop): next() waits for the loop's samples,

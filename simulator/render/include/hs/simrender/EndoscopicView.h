@@ -82,6 +82,9 @@ struct EndoscopicLook {
     double turbidFogPerMm = 0.12; ///< 1/mm, added at turbidity 1 (blood and debris: opaque beyond ~2 cm)
     std::array<double, 3> fogColour{0.42, 0.16, 0.12}; ///< linear RGB of lamp light scattered back by the medium
     std::array<double, 3> redOutColour{0.45, 0.03, 0.04};
+    /// 1/mm, absorption of whole blood (oxyhaemoglobin at 150 g/L) at 630, 550 and 470 nm for red, green and blue,
+    /// from Prahl's tabulated molar extinction (docs/references.md [Prahl1999]); scaled by blood's share of the fluid.
+    std::array<double, 3> bloodAbsorptionPerMm{0.33, 23.0, 17.8};
 };
 
 /// Text of the heads-up display (one line each; empty lines are skipped).
@@ -118,8 +121,8 @@ public:
     /// of the inner faces alone while the outer surface is hidden. A caller that computes the deformed points may
     /// compute just these (sim::World::visualPoints); the others may be left as they were.
     const std::vector<std::int32_t>& sourcePointsInUse() const;
-    /// Turbidity 0 (clear) .. 1 (opaque); red-out 0 .. 1 (FluidState).
-    void setFluid(double turbidity, double redOut);
+    /// Turbidity 0 (clear) .. 1 (opaque); red-out 0 .. 1; blood's share of the fluid 0 .. 1 (FluidState).
+    void setFluid(double turbidity, double redOut, double bloodFraction = 0.0);
     void setHud(const HudText& text);
     /// The host's clock (s; the trial's time in the simulator) that the camera's exposure adapts by; without it the
     /// view reads the wall clock at each render.

@@ -16,11 +16,14 @@ struct ExerciseProgress {
     int pathologiesFound = 0;
     int pathologies = 0;
     double visualizedPercent = 0.0;
+    double removedPercent = 0.0; ///< the operative exercises: of the pathologies' volume, cut away
 };
 ExerciseProgress progressOf(sim::Exercise exercise, const sim::TrialMetrics& metrics);
 
-/// Pressure in mmHg and kPa, inflow and outflow (mL/min), deficit, time, exercise progress and contact force; the
-/// warning line names a reached deficit warning or limit and a perforation.
+/// Pressure in mmHg and kPa with the pump's set pressure, inflow and outflow (mL/min), deficit against its limit and
+/// the medium, time, exercise progress (the operative exercises: the share removed, bleeding and blood loss) and
+/// contact force; the warning line names a perforation, a reached deficit warning or limit, bleeding, or a pressure
+/// above the mean arterial pressure.
 HudText hudText(const sim::WorldState& state, const sim::FluidSettings& fluid, const ExerciseProgress& progress);
 
 } // namespace hs::simrender
