@@ -4,6 +4,10 @@
 <context>
     <name>hs::simapp::SimWindow</name>
     <message>
+        <source>This device speaks version 1 of the hysteroscope protocol: it drives the diagnostic scope only. The resectoscope&apos;s loop, pedals and pump buttons need a device of version 2 (docs/haptics-protocol.md); without one the %1 exercise cannot cut.</source>
+        <translation>Dieses Gerät spricht Version 1 des Hysteroskop-Protokolls: Es steuert nur das diagnostische Hysteroskop. Schlinge, Pedale und Pumpentasten des Resektoskops brauchen ein Gerät der Version 2 (docs/haptics-protocol.md); ohne ein solches kann in der Übung %1 nicht geschnitten werden.</translation>
+    </message>
+    <message>
         <source>&lt;p&gt;The resectoscope (polypectomy, myomectomy) and the pump:&lt;/p&gt;&lt;table&gt;&lt;tr&gt;&lt;td&gt;R / F&lt;/td&gt;&lt;td&gt;push the loop out / draw it in (the working element)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;C, held&lt;/td&gt;&lt;td&gt;the cutting pedal&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;V, held&lt;/td&gt;&lt;td&gt;the coagulating pedal&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;L&lt;/td&gt;&lt;td&gt;take up or put down the loop&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;+ / -&lt;/td&gt;&lt;td&gt;raise / lower the pump&apos;s set pressure by 5 mmHg&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
         <translation>&lt;p&gt;Das Resektoskop (Polypektomie, Myomektomie) und die Pumpe:&lt;/p&gt;&lt;table&gt;&lt;tr&gt;&lt;td&gt;R / F&lt;/td&gt;&lt;td&gt;die Schlinge vorschieben / zurückziehen (der Arbeitseinsatz)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;C, gehalten&lt;/td&gt;&lt;td&gt;das Schneidpedal&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;V, gehalten&lt;/td&gt;&lt;td&gt;das Koagulationspedal&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;L&lt;/td&gt;&lt;td&gt;die Schlinge aufnehmen oder ablegen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;+ / -&lt;/td&gt;&lt;td&gt;den Solldruck der Pumpe um 5 mmHg erhöhen / senken&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
     </message>

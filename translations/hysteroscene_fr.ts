@@ -4,6 +4,10 @@
 <context>
     <name>hs::simapp::SimWindow</name>
     <message>
+        <source>This device speaks version 1 of the hysteroscope protocol: it drives the diagnostic scope only. The resectoscope&apos;s loop, pedals and pump buttons need a device of version 2 (docs/haptics-protocol.md); without one the %1 exercise cannot cut.</source>
+        <translation>Cet appareil parle la version 1 du protocole de l&apos;hystéroscope : il ne pilote que l&apos;hystéroscope diagnostique. L&apos;anse, les pédales et les boutons de pompe du résectoscope demandent un appareil de version 2 (docs/haptics-protocol.md) ; sans lui, l&apos;exercice %1 ne peut pas couper.</translation>
+    </message>
+    <message>
         <source>&lt;p&gt;The resectoscope (polypectomy, myomectomy) and the pump:&lt;/p&gt;&lt;table&gt;&lt;tr&gt;&lt;td&gt;R / F&lt;/td&gt;&lt;td&gt;push the loop out / draw it in (the working element)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;C, held&lt;/td&gt;&lt;td&gt;the cutting pedal&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;V, held&lt;/td&gt;&lt;td&gt;the coagulating pedal&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;L&lt;/td&gt;&lt;td&gt;take up or put down the loop&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;+ / -&lt;/td&gt;&lt;td&gt;raise / lower the pump&apos;s set pressure by 5 mmHg&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
         <translation>&lt;p&gt;Le résectoscope (polypectomie, myomectomie) et la pompe :&lt;/p&gt;&lt;table&gt;&lt;tr&gt;&lt;td&gt;R / F&lt;/td&gt;&lt;td&gt;sortir / rentrer l&apos;anse (l&apos;élément de travail)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;C, maintenue&lt;/td&gt;&lt;td&gt;la pédale de coupe&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;V, maintenue&lt;/td&gt;&lt;td&gt;la pédale de coagulation&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;L&lt;/td&gt;&lt;td&gt;prendre ou poser l&apos;anse&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;+ / -&lt;/td&gt;&lt;td&gt;augmenter / baisser la pression de consigne de la pompe de 5 mmHg&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
     </message>

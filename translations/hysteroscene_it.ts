@@ -4,6 +4,10 @@
 <context>
     <name>hs::simapp::SimWindow</name>
     <message>
+        <source>This device speaks version 1 of the hysteroscope protocol: it drives the diagnostic scope only. The resectoscope&apos;s loop, pedals and pump buttons need a device of version 2 (docs/haptics-protocol.md); without one the %1 exercise cannot cut.</source>
+        <translation>Questo dispositivo parla la versione 1 del protocollo dell&apos;isteroscopio: guida solo l&apos;isteroscopio diagnostico. L&apos;ansa, i pedali e i pulsanti della pompa del resettoscopio richiedono un dispositivo di versione 2 (docs/haptics-protocol.md); senza di esso l&apos;esercizio %1 non può tagliare.</translation>
+    </message>
+    <message>
         <source>&lt;p&gt;The resectoscope (polypectomy, myomectomy) and the pump:&lt;/p&gt;&lt;table&gt;&lt;tr&gt;&lt;td&gt;R / F&lt;/td&gt;&lt;td&gt;push the loop out / draw it in (the working element)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;C, held&lt;/td&gt;&lt;td&gt;the cutting pedal&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;V, held&lt;/td&gt;&lt;td&gt;the coagulating pedal&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;L&lt;/td&gt;&lt;td&gt;take up or put down the loop&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;+ / -&lt;/td&gt;&lt;td&gt;raise / lower the pump&apos;s set pressure by 5 mmHg&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
         <translation>&lt;p&gt;Il resettoscopio (polipectomia, miomectomia) e la pompa:&lt;/p&gt;&lt;table&gt;&lt;tr&gt;&lt;td&gt;R / F&lt;/td&gt;&lt;td&gt;spingere fuori / ritirare l&apos;ansa (l&apos;elemento di lavoro)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;C, tenuto&lt;/td&gt;&lt;td&gt;il pedale di taglio&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;V, tenuto&lt;/td&gt;&lt;td&gt;il pedale di coagulazione&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;L&lt;/td&gt;&lt;td&gt;prendere o posare l&apos;ansa&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;+ / -&lt;/td&gt;&lt;td&gt;alzare / abbassare la pressione impostata della pompa di 5 mmHg&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
     </message>

@@ -41,9 +41,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const DeviceLimits limits{5.0, 300.0};
     switch (kind) {
     case 0: {
-        const auto input = decodeInputReport(body, bytes, Calibration{});
-        if (input.ok())
-            hs::fuzz::check(hs::sim::isValid(input->sample), "a decoded sample is inside its ranges");
+        for (const std::uint8_t version : {kProtocolVersion1, kProtocolVersion2}) {
+            const auto input = decodeInputReport(body, bytes, Calibration{}, version);
+            if (input.ok())
+                hs::fuzz::check(hs::sim::isValid(input->sample), "a decoded sample is inside its ranges");
+        }
         break;
     }
     case 1: {

@@ -126,6 +126,49 @@ TEST(HidDevice, DecodesInputAndWritesTheExpectedOutputBytes) {
     EXPECT_EQ(written[0].bytes, expected);
 }
 
+TEST(HidDevice, AProtocolTwoDeviceDrivesTheResectoscopeAndAVersionOneDeviceTheDiagnosticScopeOnly) {
+    sim::DeviceSample loop = pose(40.0);
+    loop.workingElementMm = 8.5;
+    loop.instrument = sim::kInstrumentLoop;
+    loop.buttons = sim::kButtonCut;
+    // Protocol 2: the limits report says so, its input reports carry the loop.
+    fake::Trace trace = deviceTrace();
+    DeviceLimits operative = kLimits;
+    operative.resectoscope = true;
+    trace.featureReports[hid::kLimitsReportId] = hid::encodeLimitsReport(operative);
+    trace.inputs.push_back({0, hid::encodeInputReport(loop, 1, hid::kProtocolVersion2)});
+    fake::install(trace);
+    {
+        HidDevice device;
+        ASSERT_TRUE(device.open().ok());
+        EXPECT_TRUE(device.limits().resectoscope);
+        sim::DeviceSample s;
+        ASSERT_EQ(device.read(s), ReadStatus::Sample);
+        EXPECT_DOUBLE_EQ(s.workingElementMm, 8.5);
+        EXPECT_EQ(s.instrument, sim::kInstrumentLoop);
+        EXPECT_EQ(s.buttons, sim::kButtonCut);
+    }
+    // Protocol 1: the same device state in a version-2 report is refused (counted, no sample); its own reports
+    // give the diagnostic scope.
+    fake::Trace old = deviceTrace();
+    old.inputs.push_back({0, hid::encodeInputReport(loop, 1, hid::kProtocolVersion2)});
+    old.inputs.push_back({1000, hid::encodeInputReport(loop, 2, hid::kProtocolVersion1)});
+    fake::install(old);
+    HidDevice device;
+    ASSERT_TRUE(device.open().ok());
+    EXPECT_FALSE(device.limits().resectoscope);
+    sim::DeviceSample s;
+    fake::setTimeUs(0);
+    EXPECT_EQ(device.read(s), ReadStatus::NoNewData);
+    EXPECT_EQ(device.stats().refused, 1u);
+    EXPECT_NE(device.stats().lastRefusal.find("37 bytes"), std::string::npos) << device.stats().lastRefusal;
+    fake::setTimeUs(1000);
+    ASSERT_EQ(device.read(s), ReadStatus::Sample);
+    EXPECT_EQ(s.instrument, sim::kInstrumentNone);
+    EXPECT_EQ(s.workingElementMm, 0.0);
+    EXPECT_DOUBLE_EQ(s.insertionMm, 40.0);
+}
+
 TEST(HidDevice, ReportsArrivingTooFastYieldTheNewest) {
     fake::Trace trace = deviceTrace();
     for (std::uint16_t i = 0; i < 5; ++i)

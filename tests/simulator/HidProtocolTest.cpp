@@ -27,7 +27,8 @@ TEST(HidDescriptor, DeclaresTheReportSizesTheCodecUses) {
         declared += (sizes->input[id] ? 1 : 0) + (sizes->output[id] ? 1 : 0) + (sizes->feature[id] ? 1 : 0);
     EXPECT_EQ(declared, 4u);
     // The encoders agree with the declared sizes.
-    EXPECT_EQ(encodeInputReport({}, 0).size(), 1 + sizes->input[kInputReportId]);
+    EXPECT_EQ(encodeInputReport({}, 0, kProtocolVersion2).size(), 1 + sizes->input[kInputReportId]);
+    EXPECT_EQ(encodeInputReport({}, 0, kProtocolVersion1).size(), kInputReportBytesV1);
     EXPECT_EQ(encodeOutputReport({}, kLimits).size(), 1 + sizes->output[kOutputReportId]);
     EXPECT_EQ(encodeLimitsReport(kLimits).size(), 1 + sizes->feature[kLimitsReportId]);
     EXPECT_EQ(encodeCalibrationReport({}).size(), 1 + sizes->feature[kCalibrationReportId]);
@@ -181,12 +182,83 @@ TEST(HidOutput, DisabledOrNonFiniteCommandsSendNoForce) {
         EXPECT_EQ(nan[i], 0) << "byte " << i;
 }
 
+TEST(HidInput, ProtocolTwoCarriesTheResectoscope) {
+    sim::DeviceSample s;
+    s.insertionMm = 61.5;
+    s.workingElementMm = 12.3456;
+    s.instrument = sim::kInstrumentLoop;
+    s.buttons = sim::kButtonCut | sim::kButtonPumpUp;
+    const auto bytes = encodeInputReport(s, 9, kProtocolVersion2);
+    ASSERT_EQ(bytes.size(), kInputReportBytes);
+    auto in = decodeInputReport(bytes.data(), bytes.size(), Calibration{}, kProtocolVersion2);
+    ASSERT_TRUE(in.ok()) << in.error().detail;
+    EXPECT_NEAR(in->sample.workingElementMm, 12.346, 1e-12); // micrometres on the wire
+    EXPECT_EQ(in->sample.instrument, sim::kInstrumentLoop);
+    EXPECT_EQ(in->sample.buttons, sim::kButtonCut | sim::kButtonPumpUp);
+    EXPECT_EQ(in->sample.insertionMm, 61.5);
+    // A protocol-1 device's report of the same: the diagnostic scope (no loop, no pedals), 29 bytes.
+    const auto v1 = encodeInputReport(s, 9, kProtocolVersion1);
+    ASSERT_EQ(v1.size(), kInputReportBytesV1);
+    auto diagnostic = decodeInputReport(v1.data(), v1.size(), Calibration{});
+    ASSERT_TRUE(diagnostic.ok()) << diagnostic.error().detail;
+    EXPECT_EQ(diagnostic->sample.instrument, sim::kInstrumentNone);
+    EXPECT_EQ(diagnostic->sample.workingElementMm, 0.0);
+    EXPECT_EQ(diagnostic->sample.buttons, 0u);
+    // Each version's report is refused as the other's (by its size).
+    EXPECT_FALSE(decodeInputReport(bytes.data(), bytes.size(), Calibration{}, kProtocolVersion1).ok());
+    EXPECT_FALSE(decodeInputReport(v1.data(), v1.size(), Calibration{}, kProtocolVersion2).ok());
+    EXPECT_FALSE(decodeInputReport(bytes.data(), bytes.size(), Calibration{}, 3).ok());
+}
+
+TEST(HidInput, AnImpossibleWorkingElementOrInstrumentIsRefusedByName) {
+    sim::DeviceSample s;
+    s.instrument = sim::kInstrumentLoop;
+    const auto good = encodeInputReport(s, 1, kProtocolVersion2);
+    const auto refusedNaming = [](std::vector<std::uint8_t> bytes, const std::string& field) {
+        auto in = decodeInputReport(bytes.data(), bytes.size(), Calibration{}, kProtocolVersion2);
+        if (in.ok())
+            return ::testing::AssertionFailure() << "accepted";
+        if (in.error().detail.find(field) == std::string::npos)
+            return ::testing::AssertionFailure() << in.error().detail;
+        return ::testing::AssertionSuccess();
+    };
+    const auto putI32 = [](std::vector<std::uint8_t>& bytes, std::size_t at, std::int32_t v) {
+        for (int i = 0; i < 4; ++i)
+            bytes[at + static_cast<std::size_t>(i)] =
+                static_cast<std::uint8_t>((static_cast<std::uint32_t>(v) >> (8 * i)) & 0xFFu);
+    };
+    auto negative = good;
+    putI32(negative, 29, -1);
+    EXPECT_TRUE(refusedNaming(negative, "workingElement"));
+    auto far = good;
+    putI32(far, 29, kWorkingElementMaxCount + 1);
+    EXPECT_TRUE(refusedNaming(far, "workingElement"));
+    auto scissors = good;
+    scissors[33] = 2; // no such instrument (yet)
+    EXPECT_TRUE(refusedNaming(scissors, "instrument"));
+    auto reserved = good;
+    reserved[35] = 1;
+    EXPECT_TRUE(refusedNaming(reserved, "reserved"));
+    auto button = good;
+    button[27] = 0x40; // bit 6
+    EXPECT_TRUE(refusedNaming(button, "buttons"));
+}
+
 TEST(HidFeatures, LimitsAndCalibrationRoundTrip) {
     const auto limitsBytes = encodeLimitsReport(kLimits);
     auto limits = decodeLimitsReport(limitsBytes.data(), limitsBytes.size());
     ASSERT_TRUE(limits.ok()) << limits.error().detail;
     EXPECT_DOUBLE_EQ(limits->maxForceN, 4.0);
     EXPECT_DOUBLE_EQ(limits->maxTorqueNmm, 250.0);
+    EXPECT_FALSE(limits->resectoscope);
+    EXPECT_EQ(limitsBytes[1], kProtocolVersion1);
+    DeviceLimits operative = kLimits;
+    operative.resectoscope = true;
+    const auto v2 = encodeLimitsReport(operative);
+    EXPECT_EQ(v2[1], kProtocolVersion2);
+    auto declared = decodeLimitsReport(v2.data(), v2.size());
+    ASSERT_TRUE(declared.ok()) << declared.error().detail;
+    EXPECT_TRUE(declared->resectoscope);
 
     Calibration c;
     c.axes[kAxisYaw] = {-1200, 0.98};
@@ -201,7 +273,7 @@ TEST(HidFeatures, LimitsAndCalibrationRoundTrip) {
 
 TEST(HidFeatures, ImplausibleFeatureReportsAreRefused) {
     auto limits = encodeLimitsReport(kLimits);
-    limits[1] = 2; // protocol version
+    limits[1] = 3; // protocol version
     EXPECT_EQ(decodeLimitsReport(limits.data(), limits.size()).error().code, ErrorCode::Unsupported);
     auto strong = encodeLimitsReport({80.0, 250.0});
     auto refused = decodeLimitsReport(strong.data(), strong.size());

@@ -171,6 +171,10 @@ haptics::HapticsStats HapticsSource::stats() const {
     return m_loop->stats();
 }
 
+haptics::DeviceLimits HapticsSource::deviceLimits() const {
+    return m_device->limits();
+}
+
 std::string HapticsSource::deviceName() const {
     return m_device->name();
 }

@@ -247,6 +247,13 @@ void SimWindow::startSession(std::unique_ptr<sim::World> world) {
         }
         m_haptics = source->get();
         m_source = std::move(*source);
+        if (sim::isOperative(m_world->options().exercise) && !m_haptics->deviceLimits().resectoscope)
+            MessageBox::information(
+                this, tr("Haptic device"),
+                tr("This device speaks version 1 of the hysteroscope protocol: it drives the diagnostic scope only. "
+                   "The resectoscope's loop, pedals and pump buttons need a device of version 2 "
+                   "(docs/haptics-protocol.md); without one the %1 exercise cannot cut.")
+                    .arg(fromUtf8(std::string(sim::toString(m_world->options().exercise)))));
     } else {
         auto keyboard = std::make_unique<KeyboardSource>();
         if (sim::isOperative(m_world->options().exercise))

@@ -170,7 +170,8 @@ ReadStatus HidDevice::read(sim::DeviceSample& out) {
         }
         if (n == 0)
             break;
-        auto decoded = hid::decodeInputReport(buffer, static_cast<std::size_t>(n), m.calibration);
+        auto decoded = hid::decodeInputReport(buffer, static_cast<std::size_t>(n), m.calibration,
+                                              m.limits.resectoscope ? hid::kProtocolVersion2 : hid::kProtocolVersion1);
         if (!decoded) {
             ++m.stats.refused;
             m.stats.lastRefusal = decoded.error().detail;

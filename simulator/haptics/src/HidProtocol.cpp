@@ -9,11 +9,11 @@
 namespace hs::haptics::hid {
 
 // clang-format off
-const std::array<std::uint8_t, 213> kReportDescriptor = {
+const std::array<std::uint8_t, 238> kReportDescriptor = {
     0x06, 0x00, 0xFF,             // Usage Page (Vendor Defined 0xFF00)
     0x09, 0x01,                   // Usage (0x01: hysteroscope)
     0xA1, 0x01,                   // Collection (Application)
-    // Input report 1: the device's state, 28 bytes
+    // Input report 1: the device's state, 36 bytes (protocol 1: 28, without the items from offset 106 to 130)
     0x85, 0x01,                   //   Report ID (1)
     0x09, 0x10,                   //   Usage (0x10: sequence)
     0x15, 0x00,                   //   Logical Minimum (0)
@@ -52,6 +52,17 @@ const std::array<std::uint8_t, 213> kReportDescriptor = {
     0x95, 0x10,                   //   Report Count (16)
     0x81, 0x02,                   //   Input (Data, Variable, Absolute)
     0x06, 0x00, 0xFF,             //   Usage Page (Vendor Defined 0xFF00)
+    0x09, 0x18,                   //   Usage (0x18: working element, micrometres; protocol 2)
+    0x15, 0x00,                   //   Logical Minimum (0)
+    0x27, 0x20, 0x4E, 0x00, 0x00, //   Logical Maximum (20000)
+    0x75, 0x20,                   //   Report Size (32)
+    0x95, 0x01,                   //   Report Count (1)
+    0x81, 0x02,                   //   Input (Data, Variable, Absolute)
+    0x09, 0x19,                   //   Usage (0x19: instrument; protocol 2)
+    0x25, 0x01,                   //   Logical Maximum (1)
+    0x75, 0x10,                   //   Report Size (16)
+    0x81, 0x02,                   //   Input (Data, Variable, Absolute)
+    0x81, 0x03,                   //   Input (Constant): reserved, 0
     // Output report 2: the force, 20 bytes
     0x85, 0x02,                   //   Report ID (2)
     0x09, 0x20,                   //   Usage (0x20: sequence echo)
@@ -168,9 +179,14 @@ std::string idText(std::uint8_t got, std::uint8_t expected) {
 
 } // namespace
 
-Result<DecodedInput> decodeInputReport(const std::uint8_t* data, std::size_t size, const Calibration& calibration) {
-    if (!data || size != kInputReportBytes)
-        return refused("input report", sizeText(data ? size : 0, kInputReportBytes));
+Result<DecodedInput> decodeInputReport(const std::uint8_t* data, std::size_t size, const Calibration& calibration,
+                                       std::uint8_t version) {
+    if (version != kProtocolVersion1 && version != kProtocolVersion2)
+        return refused("input report", "protocol version " + std::to_string(version) + " (1 or 2)");
+    const bool resectoscope = version == kProtocolVersion2;
+    const std::size_t expected = resectoscope ? kInputReportBytes : kInputReportBytesV1;
+    if (!data || size != expected)
+        return refused("input report", sizeText(data ? size : 0, expected));
     if (data[0] != kInputReportId)
         return refused("input report", idText(data[0], kInputReportId));
     DecodedInput in;
@@ -186,9 +202,25 @@ Result<DecodedInput> decodeInputReport(const std::uint8_t* data, std::size_t siz
                                                " counts is outside " + std::to_string(kAxes[a].lo) + ".." +
                                                std::to_string(kAxes[a].hi));
     const std::uint16_t buttons = getU16(data + 27);
-    if (buttons & ~kButtonMask)
-        return refused("input report",
-                       "buttons " + std::to_string(buttons) + " has reserved bits set (only bits 0, 1)");
+    const std::uint16_t mask = resectoscope ? kButtonMask : kButtonMaskV1;
+    if (buttons & ~mask)
+        return refused("input report", "buttons " + std::to_string(buttons) + " has reserved bits set (only bits 0-" +
+                                           std::string(resectoscope ? "5" : "1") + " in protocol " +
+                                           std::to_string(version) + ")");
+    std::int32_t workingElement = 0;
+    std::uint16_t instrument = sim::kInstrumentNone;
+    if (resectoscope) {
+        workingElement = getI32(data + 29);
+        if (workingElement < 0 || workingElement > kWorkingElementMaxCount)
+            return refused("input report", "workingElement " + std::to_string(workingElement) +
+                                               " counts is outside 0.." + std::to_string(kWorkingElementMaxCount));
+        instrument = getU16(data + 33);
+        if (instrument > sim::kMaxInstrument)
+            return refused("input report", "instrument " + std::to_string(instrument) + " is not one of 0.." +
+                                               std::to_string(sim::kMaxInstrument));
+        if (getU16(data + 35) != 0)
+            return refused("input report", "the reserved bytes 35-36 are not 0");
+    }
     double value[kAxisCount] = {};
     for (std::size_t a = 0; a < kAxisCount; ++a) {
         const AxisCalibration& c = calibration.axes[a];
@@ -204,11 +236,14 @@ Result<DecodedInput> decodeInputReport(const std::uint8_t* data, std::size_t siz
     s.inflow = value[kAxisInflow];
     s.outflow = value[kAxisOutflow];
     s.buttons = buttons;
+    s.workingElementMm = workingElement * kMmPerCount;
+    s.instrument = instrument;
     in.sample = sim::clamped(s);
     return in;
 }
 
-std::vector<std::uint8_t> encodeInputReport(const sim::DeviceSample& s, std::uint16_t sequence) {
+std::vector<std::uint8_t> encodeInputReport(const sim::DeviceSample& s, std::uint16_t sequence, std::uint8_t version) {
+    const bool resectoscope = version == kProtocolVersion2;
     std::vector<std::uint8_t> out;
     out.reserve(kInputReportBytes);
     out.push_back(kInputReportId);
@@ -218,7 +253,12 @@ std::vector<std::uint8_t> encodeInputReport(const sim::DeviceSample& s, std::uin
         putI32(out, toCounts(values[a], kAxes[a].unit, kAxes[a].lo, kAxes[a].hi));
     putU16(out, static_cast<std::uint16_t>(toCounts(s.inflow, kValvePerCount, 0, kValveMaxCount)));
     putU16(out, static_cast<std::uint16_t>(toCounts(s.outflow, kValvePerCount, 0, kValveMaxCount)));
-    putU16(out, static_cast<std::uint16_t>(s.buttons & kButtonMask));
+    putU16(out, static_cast<std::uint16_t>(s.buttons & (resectoscope ? kButtonMask : kButtonMaskV1)));
+    if (resectoscope) {
+        putI32(out, toCounts(s.workingElementMm, kMmPerCount, 0, kWorkingElementMaxCount));
+        putU16(out, static_cast<std::uint16_t>(std::min<std::uint32_t>(s.instrument, sim::kMaxInstrument)));
+        putU16(out, 0);
+    }
     return out;
 }
 
@@ -262,7 +302,7 @@ std::vector<std::uint8_t> encodeLimitsReport(const DeviceLimits& limits) {
     std::vector<std::uint8_t> out;
     out.reserve(kLimitsReportBytes);
     out.push_back(kLimitsReportId);
-    out.push_back(kProtocolVersion);
+    out.push_back(limits.resectoscope ? kProtocolVersion2 : kProtocolVersion1);
     out.push_back(actuated ? kLimitsFlagActuated : 0);
     putU16(out, 0);
     putI32(out, toCounts(limits.maxForceN, kNPerCount, 0, std::numeric_limits<std::int32_t>::max()));
@@ -275,10 +315,9 @@ Result<DeviceLimits> decodeLimitsReport(const std::uint8_t* data, std::size_t si
         return refused("limits report", sizeText(data ? size : 0, kLimitsReportBytes));
     if (data[0] != kLimitsReportId)
         return refused("limits report", idText(data[0], kLimitsReportId));
-    if (data[1] != kProtocolVersion)
+    if (data[1] != kProtocolVersion1 && data[1] != kProtocolVersion2)
         return Error{ErrorCode::Unsupported, "limits report: protocol version " + std::to_string(data[1]) +
-                                                 " (this build speaks version " + std::to_string(kProtocolVersion) +
-                                                 ")"};
+                                                 " (this build speaks versions 1 and 2)"};
     if (data[2] & ~kLimitsFlagActuated)
         return refused("limits report", "flags " + std::to_string(data[2]) + " has reserved bits set (only bit 0)");
     const double force = getU32(data + 5) * kNPerCount;
@@ -290,6 +329,7 @@ Result<DeviceLimits> decodeLimitsReport(const std::uint8_t* data, std::size_t si
         return refused("limits report", "maxTorque " + std::to_string(torque) + " N*mm is above " +
                                             std::to_string(kMaxDeclaredTorqueNmm) + " N*mm");
     DeviceLimits limits;
+    limits.resectoscope = data[1] == kProtocolVersion2;
     if (data[2] & kLimitsFlagActuated) {
         limits.maxForceN = force;
         limits.maxTorqueNmm = torque;

@@ -129,6 +129,8 @@ public:
     bool deviceLost() const;
     haptics::HapticsStats stats() const;
     std::string deviceName() const;
+    /// What the device renders and reports (read at open; `resectoscope` false: the diagnostic scope only).
+    haptics::DeviceLimits deviceLimits() const;
 
 private:
     HapticsSource() = default;

@@ -16,6 +16,9 @@ namespace hs::haptics {
 struct DeviceLimits {
     double maxForceN = 0.0;    ///< N, |insertion force|; 0: no actuator along the shaft
     double maxTorqueNmm = 0.0; ///< N*mm, |torque| about each pivot axis and about the shaft; 0: no actuators
+    /// The device reports the resectoscope: the working element, the pedals, the pump's buttons and the instrument
+    /// (HID protocol version 2). Without it its samples carry the diagnostic scope only (instrument 0).
+    bool resectoscope = false;
 };
 
 /// The force the device renders for one tick, in the device's degrees of freedom. Signs follow DeviceSample: a

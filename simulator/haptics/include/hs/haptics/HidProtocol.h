@@ -24,7 +24,11 @@ inline constexpr std::uint16_t kDefaultProductId = 0x0001;
 /// Vendor-defined usage page and the application collection's usage.
 inline constexpr std::uint16_t kUsagePage = 0xFF00;
 inline constexpr std::uint16_t kUsage = 0x0001;
-inline constexpr std::uint8_t kProtocolVersion = 1;
+/// Protocol versions: 1 the diagnostic scope; 2 adds the resectoscope to input report 1 (the working element, the
+/// pedals, the pump's buttons, the instrument). The host speaks both; a device declares its own in feature report 3.
+inline constexpr std::uint8_t kProtocolVersion1 = 1;
+inline constexpr std::uint8_t kProtocolVersion2 = 2;
+inline constexpr std::uint8_t kProtocolVersion = kProtocolVersion2; ///< the newest this build speaks
 
 /// Report IDs.
 inline constexpr std::uint8_t kInputReportId = 0x01;
@@ -33,10 +37,12 @@ inline constexpr std::uint8_t kLimitsReportId = 0x03;
 inline constexpr std::uint8_t kCalibrationReportId = 0x04;
 
 /// Report sizes in bytes without the report ID (what the report descriptor declares) and with it (on the wire).
-inline constexpr std::size_t kInputPayloadBytes = 28;
+inline constexpr std::size_t kInputPayloadBytesV1 = 28;
+inline constexpr std::size_t kInputPayloadBytes = 36; ///< protocol 2: the v1 fields, then the resectoscope's
 inline constexpr std::size_t kOutputPayloadBytes = 20;
 inline constexpr std::size_t kLimitsPayloadBytes = 12;
 inline constexpr std::size_t kCalibrationPayloadBytes = 56;
+inline constexpr std::size_t kInputReportBytesV1 = 1 + kInputPayloadBytesV1;
 inline constexpr std::size_t kInputReportBytes = 1 + kInputPayloadBytes;
 inline constexpr std::size_t kOutputReportBytes = 1 + kOutputPayloadBytes;
 inline constexpr std::size_t kLimitsReportBytes = 1 + kLimitsPayloadBytes;
@@ -56,8 +62,12 @@ inline constexpr std::int32_t kInsertionMaxCount = 150000;
 inline constexpr std::int32_t kPivotMaxCount = 60000;
 inline constexpr std::int32_t kRollMaxCount = 180000;
 inline constexpr std::uint16_t kValveMaxCount = 10000;
-/// Button bits defined (sim::kButtonMark, sim::kButtonCapture); the others must be 0.
-inline constexpr std::uint16_t kButtonMask = 0x0003;
+inline constexpr std::int32_t kWorkingElementMaxCount = 20000; ///< micrometres (sim::kMaxWorkingElementMm)
+/// Button bits defined: protocol 1 mark and capture (sim::kButtonMark, sim::kButtonCapture); protocol 2 also the
+/// cutting and coagulating pedals and the pump's up and down buttons (bits 2-5, as sim::DeviceButton). The others
+/// must be 0.
+inline constexpr std::uint16_t kButtonMaskV1 = 0x0003;
+inline constexpr std::uint16_t kButtonMask = 0x003F;
 /// Output report flags.
 inline constexpr std::uint16_t kFlagForceEnable = 0x0001;
 /// Limits report flags.
@@ -67,7 +77,8 @@ inline constexpr double kMaxDeclaredForceN = 50.0;
 inline constexpr double kMaxDeclaredTorqueNmm = 5000.0;
 
 /// The HID report descriptor (docs/haptics-protocol.md annotates every item).
-extern const std::array<std::uint8_t, 213> kReportDescriptor;
+/// Protocol 2's; a protocol-1 device's declares input report 1 without the items at offsets 106-130 (28 bytes).
+extern const std::array<std::uint8_t, 238> kReportDescriptor;
 
 /// Input axes in report order, for the calibration report.
 enum Axis : std::size_t {
@@ -96,13 +107,18 @@ struct DecodedInput {
     sim::DeviceSample sample;   ///< calibrated and clamped into Device.h's ranges; tick 0
 };
 
-/// Refused (InvalidInput naming the field): a size other than kInputReportBytes, another report ID, a field outside
-/// its logical range, a reserved button bit set.
+/// Input report 1 of a device of protocol `version` (1 or 2). Refused (InvalidInput naming the field): a size other
+/// than the version's (kInputReportBytesV1, kInputReportBytes), another report ID, a field outside its logical range
+/// (an impossible working element or an unknown instrument among them), a reserved bit or byte set. A protocol-1
+/// sample carries the diagnostic scope (instrument 0, working element 0).
 [[nodiscard]] Result<DecodedInput> decodeInputReport(const std::uint8_t* data, std::size_t size,
-                                                     const Calibration& calibration);
-/// The input report a device sends for `sample` (values rounded to counts and clamped to the logical ranges; no
-/// calibration): what a device's firmware does, for tests and the reference implementation.
-std::vector<std::uint8_t> encodeInputReport(const sim::DeviceSample& sample, std::uint16_t sequence);
+                                                     const Calibration& calibration,
+                                                     std::uint8_t version = kProtocolVersion1);
+/// The input report a device of protocol `version` sends for `sample` (values rounded to counts and clamped to the
+/// logical ranges; no calibration; the fields the version lacks left out): what a device's firmware does, for tests
+/// and the reference implementation.
+std::vector<std::uint8_t> encodeInputReport(const sim::DeviceSample& sample, std::uint16_t sequence,
+                                            std::uint8_t version = kProtocolVersion1);
 
 /// The output report for `command`: clamped to `limits` first (clampForce), then rounded towards zero to counts,
 /// so the wire value never exceeds the limit. `sequenceEcho` is the sequence of the newest input report the force
@@ -118,10 +134,12 @@ struct DecodedOutput {
 [[nodiscard]] Result<DecodedOutput> decodeOutputReport(const std::uint8_t* data, std::size_t size,
                                                        const DeviceLimits& limits);
 
-/// Feature report 3: the device's limits and capabilities (read at open).
+/// Feature report 3: the device's limits and capabilities (read at open); protocol version 2 when
+/// `limits.resectoscope`, else 1.
 std::vector<std::uint8_t> encodeLimitsReport(const DeviceLimits& limits);
-/// Refused: wrong size or ID, another protocol version, limits above kMaxDeclaredForceN/kMaxDeclaredTorqueNmm.
-/// A device without the "actuated" flag gets zero limits.
+/// Refused: wrong size or ID, a protocol version other than 1 and 2 (Unsupported), limits above
+/// kMaxDeclaredForceN/kMaxDeclaredTorqueNmm. A device without the "actuated" flag gets zero limits; one of
+/// protocol 2 reports the resectoscope.
 [[nodiscard]] Result<DeviceLimits> decodeLimitsReport(const std::uint8_t* data, std::size_t size);
 
 /// Feature report 4: zero offsets and scales of the seven axes.
