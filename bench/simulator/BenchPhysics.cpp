@@ -339,6 +339,11 @@ int main(int argc, char** argv) {
     const std::uint64_t scriptTicks = script.tickCount();
     std::vector<hs::sim::DeviceSample> samples(per);
     std::vector<double> stepMs, cuttingStepMs;
+    struct StepCost {
+        double ms, forcesMs, solvesMs, contactMs;
+        bool cut, precomputed, touching;
+    };
+    std::vector<StepCost> cuttingSteps; ///< from the first cut on, with what each step did
     stepMs.reserve(steps);
     std::size_t maxInverted = 0, perforationsSeen = 0;
     double minRatio = 1e300, maxEnergy = 0.0, maxSpeed = 0.0;
@@ -348,14 +353,23 @@ int main(int argc, char** argv) {
             samples[i] = script.sampleAt(tick % scriptTicks);
             samples[i].tick = tick;
         }
+        const hs::sim::World::StepTimings before = w.stepTimings();
+        const std::uint64_t eventsBefore = w.metrics().resection.cutEvents;
+        const bool precomputedBefore = w.surfacePrecomputed();
         const auto t0 = std::chrono::steady_clock::now();
         if (!w.step(samples.data(), per).ok()) {
             std::fprintf(stderr, "bench_physics: step %llu failed\n", static_cast<unsigned long long>(s));
             return 4;
         }
         stepMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-        if (operative && w.metrics().resection.firstCutS >= 0.0)
+        if (operative && w.metrics().resection.firstCutS >= 0.0) {
             cuttingStepMs.push_back(stepMs.back()); // from the first cut on
+            const hs::sim::World::StepTimings& after = w.stepTimings();
+            cuttingSteps.push_back(
+                {stepMs.back(), after.tissueForcesMs - before.tissueForcesMs,
+                 after.tissueSolvesMs - before.tissueSolvesMs, after.contactSolveMs - before.contactSolveMs,
+                 w.metrics().resection.cutEvents > eventsBefore, precomputedBefore, w.state().contact.touching});
+        }
         if (trace && w.state().contact.forceN > 2.0 && w.state().step % 10 == 0) {
             const hs::sim::WorldState& st = w.state();
             const double along = hs::dot(st.scope.tipMm - w.landmarks().internalOsMm, w.frame().axis);
@@ -474,6 +488,32 @@ int main(int argc, char** argv) {
             "| physics step from the first cut on | mean %.2f ms (%.0f Hz), p99 %.2f ms (%.0f Hz), %zu steps |\n",
             cutMean, cutMean > 0.0 ? 1e3 / cutMean : 0.0, percentile(cuttingStepMs, 0.99),
             percentile(cuttingStepMs, 0.99) > 0.0 ? 1e3 / percentile(cuttingStepMs, 0.99) : 0.0, cuttingStepMs.size());
+        // The slowest percent of the steps from the first cut on: what they did.
+        if (!cuttingSteps.empty()) {
+            const double p99 = percentile(cuttingStepMs, 0.99);
+            double n = 0, ms = 0, forces = 0, solves = 0, contact = 0, cuts = 0, stale = 0, touching = 0;
+            double staleAll = 0, touchingAll = 0;
+            for (const StepCost& c : cuttingSteps) {
+                staleAll += c.precomputed ? 0 : 1;
+                touchingAll += c.touching ? 1 : 0;
+                if (c.ms < p99)
+                    continue;
+                n += 1;
+                ms += c.ms;
+                forces += c.forcesMs;
+                solves += c.solvesMs;
+                contact += c.contactMs;
+                cuts += c.cut ? 1 : 0;
+                stale += c.precomputed ? 0 : 1;
+                touching += c.touching ? 1 : 0;
+            }
+            const double all = static_cast<double>(cuttingSteps.size());
+            std::printf("| the slowest 1 %% of those steps | %.0f steps of %.2f ms mean: tissue forces %.2f ms, solves "
+                        "%.2f ms, contact problem %.2f ms; %.0f %% cut, %.0f %% with the surface's compliance not "
+                        "precomputed (%.0f %% of all), %.0f %% touching (%.0f %% of all) |\n",
+                        n, ms / n, forces / n, solves / n, contact / n, 100.0 * cuts / n, 100.0 * stale / n,
+                        100.0 * staleAll / all, 100.0 * touching / n, 100.0 * touchingAll / all);
+        }
         std::printf("| fluid | %s, deficit %.0f mL in %.1f min (%.0f mL/min), intravasation %.0f mL, highest pressure "
                     "%.1f kPa |\n",
                     std::string(hs::sim::toString(options.fluid.medium)).c_str(), m.deficitMl, m.timeS / 60.0,

@@ -179,6 +179,67 @@ TEST_F(EndoscopicViewTest, BothDetailsShowTheLitWallInsideTheOpticsCircle) {
     }
 }
 
+TEST_F(EndoscopicViewTest, ACutHidesTheFacesOfItsTetsAndDrawsTheBaredFacesAndTheLoop) {
+    const scene::VisualSurface surface = sphere();
+    EndoscopicLook look;
+    look.detail = ViewDetail::Full;
+    look.hud = false;
+    EndoscopicView view(m_renderer, look);
+    view.setSurface(surface);
+    draw(view);
+    const auto drawn = [&] { return vtkPolyData::SafeDownCast(view.tissueActor()->GetMapper()->GetInput()); };
+    const vtkIdType allFaces = drawn()->GetNumberOfPolys();
+    const auto greys = [&] { // pixels of the bare metal: no tissue is grey
+        int n = 0;
+        for (int y = 0; y < 120; y += 2)
+            for (int x = 0; x < 160; x += 2) {
+                const int r = red(x, y), g = channel(x, y, 1), b = channel(x, y, 2);
+                n += r > 60 && std::abs(r - g) < 12 && std::abs(g - b) < 12 ? 1 : 0;
+            }
+        return n;
+    };
+    EXPECT_EQ(greys(), 0);
+    const double wallGreenOverRed = static_cast<double>(channel(80, 60, 1)) / std::max(1, red(80, 60));
+
+    // The cap the scope looks at (x > 12 mm) cut away: its faces are not drawn.
+    std::vector<char> hidden(surface.mesh.points.size(), 0);
+    for (std::size_t i = 0; i < hidden.size(); ++i)
+        hidden[i] = surface.mesh.points[i].x > 12.0;
+    view.setHiddenPoints(hidden);
+    EXPECT_LT(drawn()->GetNumberOfPolys(), allFaces);
+    EXPECT_GT(drawn()->GetNumberOfPolys(), allFaces / 2);
+    // In the hole, a face the cut bared: a myoma's pale interior, 15 mm ahead.
+    const std::vector<Vec3> points{{15, -10, -10}, {15, 10, -10}, {15, 10, 10}, {15, -10, 10}};
+    const std::vector<Triangle> faces{{0, 1, 2}, {0, 2, 3}};
+    view.setCutSurface(points, faces, {clinical::Tissue::Myoma, clinical::Tissue::Myoma});
+    draw(view);
+    const double cutGreenOverRed = static_cast<double>(channel(80, 60, 1)) / std::max(1, red(80, 60));
+    std::printf("green / red in the middle: the wall %.2f, the myoma's cut face %.2f\n", wallGreenOverRed,
+                cutGreenOverRed);
+    EXPECT_GT(red(80, 60), 30);
+    EXPECT_GT(cutGreenOverRed, wallGreenOverRed + 0.1); // paler than the wall
+    // Shown again: every face.
+    view.setHiddenPoints({});
+    EXPECT_EQ(drawn()->GetNumberOfPolys(), allFaces);
+    view.setCutSurface({}, {}, {});
+
+    // The loop pushed 8 mm out, hanging below the axis: bare metal in the picture; gone when put down.
+    sim::LoopState loop;
+    loop.out = true;
+    loop.widthMm = 4.5;
+    loop.travelMm = 8.0;
+    loop.middleMm = {8.0, 0.0, 0.0};
+    loop.axis = {1.0, 0.0, 0.0};
+    loop.down = {0.0, 0.0, -1.0};
+    view.setLoop(loop);
+    draw(view);
+    EXPECT_GT(greys(), 0);
+    loop.out = false;
+    view.setLoop(loop);
+    draw(view);
+    EXPECT_EQ(greys(), 0);
+}
+
 TEST_F(EndoscopicViewTest, DrawsTheMapsWithTheScenesUvOriginAtTheTopLeft) {
     // A wall 10 mm ahead, its upper half mapped to the image's upper half (red), its lower half to the lower (blue):
     // the scene's UVs have their origin at the image's top left (scene::VisualSurface). Drawn flipped, each half would

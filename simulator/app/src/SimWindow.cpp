@@ -313,6 +313,19 @@ void SimWindow::onRenderTick() {
         m_endoscope->setPoints(m_visualPoints);
         m_endoscope->setPose(simrender::cameraPose(state.scope, m_options.world.scope));
         m_endoscope->setFluid(state.fluid.turbidity, state.fluid.redOut, state.fluid.bloodFraction);
+        // The cut: the visual surface's faces in removed tets hide (anew once per cut event), the bared faces and
+        // the loop are drawn.
+        const sim::CutView* cut = frame->snapshot.cut.get();
+        const std::uint64_t cutEvents = cut ? cut->events : 0;
+        if (cutEvents != m_drawnCutEvents) {
+            m_endoscope->setHiddenPoints(m_world->visualPointsCut(cut));
+            m_drawnCutEvents = cutEvents;
+        }
+        if (cut)
+            m_endoscope->setCutSurface(frame->snapshot.simulationPointsMm, cut->faces, cut->faceTissue);
+        else
+            m_endoscope->setCutSurface({}, {}, {});
+        m_endoscope->setLoop(state.loop);
         m_endoscope->setTime(state.timeS); // the camera adapts on the trial's clock
         // The heads-up text is redrawn a few times a second (its glyphs cost a third of the GUI thread's time when
         // drawn every frame on a software GL renderer), at once when its warning line changes.

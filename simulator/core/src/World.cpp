@@ -213,6 +213,10 @@ Status World::step(const DeviceSample* samples, std::size_t count) {
     return {};
 }
 
+bool World::surfacePrecomputed() const {
+    return impl_->tissue.surfacePrecomputed();
+}
+
 const World::StepTimings& World::stepTimings() const {
     return impl_->timings;
 }
@@ -255,7 +259,19 @@ const std::vector<Vec3>& World::simulationPointsMm() const {
 }
 
 WorldSnapshot World::snapshot() const {
-    return {impl_->pointsMm, impl_->state};
+    return {impl_->pointsMm, impl_->state, impl_->cutView};
+}
+
+std::vector<char> World::visualPointsCut(const CutView* cut) const {
+    const auto& embedding = impl_->scene.simulation->surfaceEmbedding;
+    std::vector<char> out(embedding.size(), 0);
+    if (!cut)
+        return out;
+    for (std::size_t i = 0; i < embedding.size(); ++i) {
+        const auto t = static_cast<std::size_t>(embedding[i].tet);
+        out[i] = t < cut->removedTets.size() && cut->removedTets[t] != 0;
+    }
+    return out;
 }
 
 std::shared_ptr<const HapticFrame> World::hapticFrame() const {

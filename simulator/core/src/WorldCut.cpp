@@ -15,13 +15,24 @@ using namespace detail;
 
 namespace detail {
 
-std::vector<Vec3> loopWireOf(const ScopeFrame& frame, const ScopeConfig& scope, const LoopElectrode& loop,
-                             DeviceSample body, Vec3& middleMm) {
+LoopState loopStateOf(const ScopeFrame& frame, const ScopeConfig& scope, const LoopElectrode& loop, DeviceSample body) {
     body.cameraRollDeg = 0.0;
     const ScopePose pose = scopePose(frame, scope, body);
-    const Vec3 down = perpendicularTo(pose.shaft, pose.up * -1.0);
-    middleMm = pose.tipMm + pose.shaft * body.workingElementMm;
-    return loopWire(loop, middleMm, pose.shaft, down);
+    LoopState s;
+    s.out = true;
+    s.widthMm = loop.widthMm;
+    s.travelMm = body.workingElementMm;
+    s.middleMm = pose.tipMm + pose.shaft * body.workingElementMm;
+    s.axis = pose.shaft;
+    s.down = perpendicularTo(pose.shaft, pose.up * -1.0);
+    return s;
+}
+
+std::vector<Vec3> loopWireOf(const ScopeFrame& frame, const ScopeConfig& scope, const LoopElectrode& loop,
+                             DeviceSample body, Vec3& middleMm) {
+    const LoopState s = loopStateOf(frame, scope, loop, body);
+    middleMm = s.middleMm;
+    return loopWire(loop, s.middleMm, s.axis, s.down);
 }
 
 } // namespace detail
@@ -38,12 +49,16 @@ void World::Impl::cut(const DeviceSample& device) {
         tissue.finishRefactor(); // dropped when cuts came meanwhile: the next pause starts another
     if (!pedal && !tissue.refactorRunning() && !tissue.surfacePrecomputed() && tissue.startRefactor())
         rebuildDueStep = state.step + kRebuildSteps;
+    state.loop = LoopState{};
     if (device.instrument != kInstrumentLoop) {
         lastWireMm.clear();
         return;
     }
     Vec3 middle;
     std::vector<Vec3> wire = loopWireMm(device, middle);
+    state.loop = loopStateOf(frame, options.scope, loop, physicsSample(device)); // drawn where the wire cuts
+    state.loop.cutting = pedal;
+    state.loop.coagulating = !pedal && (device.buttons & kButtonCoagulate) != 0;
     ResectionMetrics& m = metrics.resection;
     if (!pedal && (device.buttons & kButtonCoagulate) != 0) {
         m.coagulationTimeS += options.stepS;
@@ -146,6 +161,18 @@ void World::Impl::surfaceAfterCut(const std::vector<std::size_t>& removed) {
     triangles = tris;
     contactSurface.triangles = *tris;
     bvh.build(*tris, pointsMm, faceDead);
+    // What the view draws of the cut: the removed tets (their visual faces hide) and the live faces the cuts bared.
+    auto view = std::make_shared<CutView>();
+    view->events = resection->totals().events;
+    view->removedTets.resize(tissue.tetCount());
+    for (std::size_t t = 0; t < view->removedTets.size(); ++t)
+        view->removedTets[t] = tissue.tetRemoved(t) ? 1 : 0;
+    for (std::size_t f = firstCutFace; f < faceCut.size(); ++f)
+        if (!faceDead[f]) {
+            view->faces.push_back((*tris)[f]);
+            view->faceTissue.push_back(resection->tetTissue()[static_cast<std::size_t>(faceTet[f])]);
+        }
+    cutView = std::move(view);
 }
 
 } // namespace hs::sim

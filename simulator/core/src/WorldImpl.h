@@ -88,6 +88,8 @@ constexpr double kOstiumOcclusionSlackMm = 2.5;
 /// camera upright, the working element's travel beyond the sheath's tip.
 std::vector<Vec3> loopWireOf(const ScopeFrame& frame, const ScopeConfig& scope, const LoopElectrode& loop,
                              DeviceSample body, Vec3& middleMm);
+/// The same loop as a LoopState (out, its middle, the sheath's axis and the side it hangs to; pedals unset).
+LoopState loopStateOf(const ScopeFrame& frame, const ScopeConfig& scope, const LoopElectrode& loop, DeviceSample body);
 
 /// Steps between the start of the factor's rebuild after a cut and its taking in (3 s at 5 ms: the rebuild of the
 /// default scene's factor and surface compliance takes 1-1.5 s on a core of its own; bench_cutting).
@@ -153,9 +155,10 @@ struct World::Impl {
     // The resectoscope's loop (WorldCut.cpp): live in the operative exercises.
     std::unique_ptr<Resection> resection;
     LoopElectrode loop;
-    std::vector<VesselDensity> tetVessels; ///< per simulation tet (Vessels.h)
-    std::size_t firstCutFace = 0;          ///< the contact surface's faces from here on are cuts'
-    std::vector<Vec3> lastWireMm;          ///< the wire where the last step left it (empty: not out)
+    std::vector<VesselDensity> tetVessels;  ///< per simulation tet (Vessels.h)
+    std::shared_ptr<const CutView> cutView; ///< what the cuts did, for drawing (null before the first cut)
+    std::size_t firstCutFace = 0;           ///< the contact surface's faces from here on are cuts'
+    std::vector<Vec3> lastWireMm;           ///< the wire where the last step left it (empty: not out)
     Vec3 lastLoopMm;
     /// The solver's factor rebuilt on its own thread once the pedal is up after a cut (the downdates drop the
     /// surface's precomputed compliance, which the contacts need to stay fast), taken in at this step.

@@ -4,6 +4,7 @@
 #include "hs/simrender/EndoscopicView.h"
 
 #include "hs/clinical/Tissue.h"
+#include "hs/sim/Resection.h"
 #include "hs/simrender/ViewDecimation.h"
 
 #include <vtkActor.h>
@@ -11,6 +12,7 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkLight.h>
@@ -31,6 +33,7 @@
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkTexture.h>
+#include <vtkTubeFilter.h>
 #include <vtkUniforms.h>
 #include <vtkUnsignedCharArray.h>
 
@@ -264,6 +267,18 @@ struct EndoscopicView::Impl {
     void fitOccluder();
     void updateUniforms();
     void setNormals(const std::vector<Vec3>& normals, std::size_t count); ///< the first `count` points'
+
+    // The cut (setCut, setCutSurface) and the loop (setLoop).
+    std::vector<char> hiddenSource; ///< per source point: its tet was cut away (faces on it are not drawn)
+    void applyHidden();
+    vtkSmartPointer<vtkActor> cutActor;
+    vtkSmartPointer<vtkPolyData> cutGeometry;
+    vtkSmartPointer<vtkActor> loopActor;
+    vtkSmartPointer<vtkPolyData> loopGeometry;
+    /// The shader properties that carry the fluid's and the optic's uniforms (the tissue's and the cut's).
+    std::vector<vtkShaderProperty*> fluidShaders() const {
+        return {actor->GetShaderProperty(), cutActor->GetShaderProperty()};
+    }
 };
 
 EndoscopicView::EndoscopicView(vtkRenderer* renderer, const EndoscopicLook& look) : m_impl(std::make_unique<Impl>()) {
@@ -309,6 +324,33 @@ EndoscopicView::EndoscopicView(vtkRenderer* renderer, const EndoscopicLook& look
     shader->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true, kFluidShader, false);
     shader->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true, kOpticVertexShader, false);
     renderer->AddActor(d.actor);
+
+    // The faces the cuts bared, coloured by their tissue, seen through the same fluid and optic as the tissue.
+    d.cutGeometry = vtkSmartPointer<vtkPolyData>::New();
+    auto cutMapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    cutMapper->SetInputData(d.cutGeometry);
+    cutMapper->SetScalarModeToUseCellData();
+    cutMapper->SetColorModeToDirectScalars();
+    d.cutActor = vtkSmartPointer<vtkActor>::New();
+    d.cutActor->SetMapper(cutMapper);
+    d.cutActor->GetProperty()->BackfaceCullingOff();
+    d.cutActor->GetProperty()->SetInterpolationToFlat();
+    d.cutActor->VisibilityOff();
+    vtkShaderProperty* cutShader = d.cutActor->GetShaderProperty();
+    cutShader->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true, kFluidShader, false);
+    cutShader->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true, kOpticVertexShader, false);
+    renderer->AddActor(d.cutActor);
+
+    // The loop: a wire in front of the lens, metal, glowing while it carries current.
+    d.loopGeometry = vtkSmartPointer<vtkPolyData>::New();
+    auto loopMapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    loopMapper->SetInputData(d.loopGeometry);
+    loopMapper->ScalarVisibilityOff();
+    d.loopActor = vtkSmartPointer<vtkActor>::New();
+    d.loopActor->SetMapper(loopMapper);
+    d.loopActor->GetProperty()->SetRepresentationToSurface();
+    d.loopActor->VisibilityOff();
+    renderer->AddActor(d.loopActor);
 
     d.maskGeometry = vtkSmartPointer<vtkPolyData>::New();
     auto maskMapper = vtkSmartPointer<vtkPolyDataMapper2D>::New();
@@ -491,6 +533,8 @@ void EndoscopicView::Impl::buildSurface() {
         to->SetTCoords(prefix(from->GetTCoords()));
         to->SetTangents(prefix(from->GetTangents()));
     }
+    if (!hiddenSource.empty())
+        applyHidden(); // the cuts so far, on the surface built anew
     mapper->SetInputData(active());
     updateSourceInUse();
 }
@@ -556,6 +600,123 @@ void EndoscopicView::Impl::probeRenderer() {
         light = wantsLight();
         buildSurface(); // before the tissue is drawn in this render
     }
+}
+
+void EndoscopicView::setHiddenPoints(const std::vector<char>& hidden) {
+    Impl& d = *m_impl;
+    if (hidden == d.hiddenSource)
+        return;
+    d.hiddenSource = hidden;
+    d.applyHidden();
+}
+
+void EndoscopicView::Impl::applyHidden() {
+    if (!surface)
+        return;
+    const auto hiddenDrawn = [&](std::int32_t p) {
+        const std::size_t at =
+            sourceIndex.empty() ? static_cast<std::size_t>(p) : sourceIndex[static_cast<std::size_t>(p)];
+        return at < hiddenSource.size() && hiddenSource[at] != 0;
+    };
+    allFaces = vtkSmartPointer<vtkCellArray>::New();
+    if (innerFaces)
+        innerFaces = vtkSmartPointer<vtkCellArray>::New();
+    for (std::size_t f = 0; f < triangles.size(); ++f) {
+        const Triangle& t = triangles[f];
+        if (hiddenDrawn(t[0]) || hiddenDrawn(t[1]) || hiddenDrawn(t[2]))
+            continue;
+        const vtkIdType ids[3] = {t[0], t[1], t[2]};
+        allFaces->InsertNextCell(3, ids);
+        if (innerFaces && f < innerTriangles)
+            innerFaces->InsertNextCell(3, ids);
+    }
+    surface->SetPolys(allFaces);
+    if (innerSurface)
+        innerSurface->SetPolys(innerFaces);
+}
+
+void EndoscopicView::setCutSurface(const std::vector<Vec3>& pointsMm, const std::vector<Triangle>& faces,
+                                   const std::vector<clinical::Tissue>& tissue) {
+    Impl& d = *m_impl;
+    if (faces.empty() || tissue.size() != faces.size()) {
+        d.cutActor->VisibilityOff();
+        return;
+    }
+    // The faces' own points (a few hundred faces: built anew each frame).
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->SetDataTypeToFloat();
+    auto cells = vtkSmartPointer<vtkCellArray>::New();
+    auto colours = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    colours->SetNumberOfComponents(3);
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+        vtkIdType ids[3];
+        bool inside = true;
+        for (int k = 0; k < 3; ++k) {
+            const auto p = static_cast<std::size_t>(faces[f][static_cast<std::size_t>(k)]);
+            inside = inside && p < pointsMm.size();
+            if (inside)
+                ids[k] = points->InsertNextPoint(pointsMm[p].x, pointsMm[p].y, pointsMm[p].z);
+        }
+        if (!inside)
+            continue;
+        cells->InsertNextCell(3, ids);
+        const auto kind = static_cast<std::size_t>(tissue[f]);
+        const std::array<double, 3>& c = d.look.cutColour[std::min(kind, d.look.cutColour.size() - 1)];
+        // Direct scalars are taken as the colour before lighting: the linear colour in 8 bits.
+        const unsigned char rgb[3] = {static_cast<unsigned char>(std::lround(255.0 * std::clamp(c[0], 0.0, 1.0))),
+                                      static_cast<unsigned char>(std::lround(255.0 * std::clamp(c[1], 0.0, 1.0))),
+                                      static_cast<unsigned char>(std::lround(255.0 * std::clamp(c[2], 0.0, 1.0)))};
+        colours->InsertNextTypedTuple(rgb);
+    }
+    d.cutGeometry->SetPoints(points);
+    d.cutGeometry->SetPolys(cells);
+    d.cutGeometry->GetCellData()->SetScalars(colours);
+    d.cutActor->SetVisibility(cells->GetNumberOfCells() > 0);
+}
+
+void EndoscopicView::setLoop(const sim::LoopState& loop) {
+    Impl& d = *m_impl;
+    if (!loop.out || !(loop.widthMm > 0.0)) {
+        d.loopActor->VisibilityOff();
+        return;
+    }
+    sim::LoopElectrode electrode;
+    electrode.widthMm = loop.widthMm;
+    const std::vector<Vec3> wire = sim::loopWire(electrode, loop.middleMm, loop.axis, loop.down);
+    if (wire.size() < 2) {
+        d.loopActor->VisibilityOff();
+        return;
+    }
+    // The arms from the wire's ends back along the sheath to its tip, then the wire.
+    std::vector<Vec3> path;
+    path.push_back(wire.front() - loop.axis * loop.travelMm);
+    path.insert(path.end(), wire.begin(), wire.end());
+    path.push_back(wire.back() - loop.axis * loop.travelMm);
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    auto line = vtkSmartPointer<vtkCellArray>::New();
+    line->InsertNextCell(static_cast<int>(path.size()));
+    for (const Vec3& p : path)
+        line->InsertCellPoint(points->InsertNextPoint(p.x, p.y, p.z));
+    auto polyline = vtkSmartPointer<vtkPolyData>::New();
+    polyline->SetPoints(points);
+    polyline->SetLines(line);
+    auto tube = vtkSmartPointer<vtkTubeFilter>::New();
+    tube->SetInputData(polyline);
+    tube->SetRadius(d.look.loopWireRadiusMm);
+    tube->SetNumberOfSides(8);
+    tube->Update();
+    d.loopGeometry->ShallowCopy(tube->GetOutput());
+    // Unlit: the wire is a few millimetres from the lamp and would be drawn at full scale whatever its shading; bare
+    // metal grey, or the orange of the vapour pocket round a wire carrying current in saline (dimmer coagulating).
+    vtkProperty* property = d.loopActor->GetProperty();
+    property->LightingOff();
+    if (loop.cutting)
+        property->SetColor(1.0, 0.78, 0.45);
+    else if (loop.coagulating)
+        property->SetColor(0.9, 0.62, 0.4);
+    else
+        property->SetColor(0.55, 0.56, 0.58);
+    d.loopActor->VisibilityOn();
 }
 
 void EndoscopicView::setOuterSurfaceVisible(bool visible) {
@@ -689,32 +850,35 @@ void EndoscopicView::Impl::updateBackground() {
 }
 
 void EndoscopicView::Impl::updateUniforms() {
-    vtkUniforms* v = actor->GetShaderProperty()->GetVertexCustomUniforms();
-    v->SetUniformf("hsBarrel", static_cast<float>(barrelCoefficient(look.edgeMagnification)));
-    v->SetUniformf("hsNear", static_cast<float>(look.nearClipMm));
-    v->SetUniformf("hsFadeMm", static_cast<float>(std::max(kDistortionFadeMm, 2.0 * look.nearClipMm)));
-    const float scale[2] = {static_cast<float>(fieldScale[0]), static_cast<float>(fieldScale[1])};
-    v->SetUniform2f("hsFieldScale", scale);
-    vtkUniforms* u = actor->GetShaderProperty()->GetFragmentCustomUniforms();
-    u->SetUniformf("hsNear", static_cast<float>(look.nearClipMm));
-    u->SetUniformf("hsFar", static_cast<float>(look.farClipMm));
-    u->SetUniformf("hsFogPerMm", static_cast<float>(look.clearFogPerMm + turbidity * look.turbidFogPerMm));
-    const float fog[3] = {static_cast<float>(look.fogColour[0]), static_cast<float>(look.fogColour[1]),
-                          static_cast<float>(look.fogColour[2])};
-    const float red[3] = {static_cast<float>(look.redOutColour[0]), static_cast<float>(look.redOutColour[1]),
-                          static_cast<float>(look.redOutColour[2])};
-    u->SetUniform3f("hsFogColour", fog);
-    u->SetUniform3f("hsRedOutColour", red);
-    const float blood[3] = {static_cast<float>(bloodFraction * look.bloodAbsorptionPerMm[0]),
-                            static_cast<float>(bloodFraction * look.bloodAbsorptionPerMm[1]),
-                            static_cast<float>(bloodFraction * look.bloodAbsorptionPerMm[2])};
-    u->SetUniform3f("hsBloodPerMm", blood);
-    u->SetUniformf("hsRedOut", static_cast<float>(redOut));
-    u->SetUniformf("hsLampMm", static_cast<float>(lampSourceMm()));
-    u->SetUniformf("hsExposure", static_cast<float>(autoExposure.exposure()));
-    const float gains[3] = {static_cast<float>(white[0]), static_cast<float>(white[1]), static_cast<float>(white[2])};
-    u->SetUniform3f("hsWhite", gains);
-    u->SetUniformf("hsKnee", static_cast<float>(std::clamp(look.toneKnee, 0.05, 0.99)));
+    for (vtkShaderProperty* property : fluidShaders()) {
+        vtkUniforms* v = property->GetVertexCustomUniforms();
+        v->SetUniformf("hsBarrel", static_cast<float>(barrelCoefficient(look.edgeMagnification)));
+        v->SetUniformf("hsNear", static_cast<float>(look.nearClipMm));
+        v->SetUniformf("hsFadeMm", static_cast<float>(std::max(kDistortionFadeMm, 2.0 * look.nearClipMm)));
+        const float scale[2] = {static_cast<float>(fieldScale[0]), static_cast<float>(fieldScale[1])};
+        v->SetUniform2f("hsFieldScale", scale);
+        vtkUniforms* u = property->GetFragmentCustomUniforms();
+        u->SetUniformf("hsNear", static_cast<float>(look.nearClipMm));
+        u->SetUniformf("hsFar", static_cast<float>(look.farClipMm));
+        u->SetUniformf("hsFogPerMm", static_cast<float>(look.clearFogPerMm + turbidity * look.turbidFogPerMm));
+        const float fog[3] = {static_cast<float>(look.fogColour[0]), static_cast<float>(look.fogColour[1]),
+                              static_cast<float>(look.fogColour[2])};
+        const float red[3] = {static_cast<float>(look.redOutColour[0]), static_cast<float>(look.redOutColour[1]),
+                              static_cast<float>(look.redOutColour[2])};
+        u->SetUniform3f("hsFogColour", fog);
+        u->SetUniform3f("hsRedOutColour", red);
+        const float blood[3] = {static_cast<float>(bloodFraction * look.bloodAbsorptionPerMm[0]),
+                                static_cast<float>(bloodFraction * look.bloodAbsorptionPerMm[1]),
+                                static_cast<float>(bloodFraction * look.bloodAbsorptionPerMm[2])};
+        u->SetUniform3f("hsBloodPerMm", blood);
+        u->SetUniformf("hsRedOut", static_cast<float>(redOut));
+        u->SetUniformf("hsLampMm", static_cast<float>(lampSourceMm()));
+        u->SetUniformf("hsExposure", static_cast<float>(autoExposure.exposure()));
+        const float gains[3] = {static_cast<float>(white[0]), static_cast<float>(white[1]),
+                                static_cast<float>(white[2])};
+        u->SetUniform3f("hsWhite", gains);
+        u->SetUniformf("hsKnee", static_cast<float>(std::clamp(look.toneKnee, 0.05, 0.99)));
+    }
 }
 
 void EndoscopicView::Impl::measureFrame() {

@@ -31,8 +31,12 @@ ExerciseProgress progressOf(sim::Exercise exercise, const sim::TrialMetrics& met
     for (const sim::PathologyFinding& f : metrics.pathologies)
         p.pathologiesFound += f.found ? 1 : 0;
     p.visualizedPercent = metrics.cavitySurfaceVisualizedPercent;
+    // The exercise's pathologies: the polyps of a polypectomy, the myomas of a myomectomy.
+    const std::string kind = exercise == sim::Exercise::Polypectomy ? "polyp" : "myoma";
     double volume = 0.0, removed = 0.0;
     for (const sim::PathologyResection& r : metrics.resection.pathologies) {
+        if (r.kind != kind)
+            continue;
         volume += r.volumeMl;
         removed += r.removedMl;
     }

@@ -103,6 +103,7 @@ private:
     QElapsedTimer m_sessionClock; ///< since the session started: its mean frame rate, logged when the samples end
     int m_sessionFrames = 0;
     QElapsedTimer m_fpsClock;
+    std::uint64_t m_drawnCutEvents = 0; ///< the cut events the view hides the faces of
     int m_fpsFrames = 0;
     double m_fps = 0.0;
     bool m_rendererLogged = false; ///< the GL renderer and the view's detail, logged once

@@ -77,6 +77,17 @@ struct ContactState {
     bool perforated = false; ///< the tip is beyond the wall
 };
 
+/// The resectoscope's loop as the step left it (the operative exercises), to draw it: loopWire(LoopElectrode with
+/// widthMm, middleMm, axis, down) gives its wire.
+struct LoopState {
+    bool out = false;         ///< the loop is in use (instrument kInstrumentLoop in an operative exercise)
+    bool cutting = false;     ///< the cutting pedal is down
+    bool coagulating = false; ///< the coagulating pedal is down (and the cutting pedal up)
+    double widthMm = 0.0;
+    double travelMm = 0.0; ///< the working element: the loop's middle this far beyond the sheath's tip
+    Vec3 middleMm, axis, down;
+};
+
 /// What one step left: the scope, the fluid, the contact.
 struct WorldState {
     std::uint64_t step = 0;
@@ -88,12 +99,24 @@ struct WorldState {
     double horizonErrorDeg = 0.0;
     bool inCavity = false;        ///< the tip is beyond the internal os
     double cavityOpeningMl = 0.0; ///< mL, the cavity's volume in the deformed tissue beyond its volume at rest
+    LoopState loop;
 };
 
-/// The state other threads draw: the simulation mesh's points and the world's state, copied at the end of a step.
+/// What the cuts have done to the tissue so far, to draw it: shared between threads, never changed once published
+/// (a cut publishes a new one).
+struct CutView {
+    std::uint64_t events = 0;                 ///< cut events so far (a new view per event)
+    std::vector<char> removedTets;            ///< per simulation tet, removed
+    std::vector<Triangle> faces;              ///< the live faces the cuts bared, in simulation point indices
+    std::vector<clinical::Tissue> faceTissue; ///< each one's tissue (its live tet's)
+};
+
+/// The state other threads draw: the simulation mesh's points and the world's state, copied at the end of a step,
+/// and what the cuts have done (null before the first cut).
 struct WorldSnapshot {
     std::vector<Vec3> simulationPointsMm;
     WorldState state;
+    std::shared_ptr<const CutView> cut;
 };
 
 class World {
@@ -139,6 +162,9 @@ public:
     /// not in `only` are left as they were (zero when `out` grows).
     void visualPoints(const std::vector<Vec3>& simulationPointsMm, std::vector<Vec3>& out,
                       const std::vector<std::int32_t>& only) const;
+    /// Per visual surface point, whether the tet it is embedded in was removed by a cut (`cut` from a snapshot; all
+    /// false without one): the view hides the faces on such points.
+    std::vector<char> visualPointsCut(const CutView* cut) const;
 
     const TrialMetrics& metrics() const;
     /// The report of the trial so far (with the header the trial would record).
@@ -159,6 +185,9 @@ public:
         std::size_t refusedSteps = 0;
     };
     Health health() const;
+    /// Whether the tissue's surface compliance is precomputed for the factor in use: false from a cut until the
+    /// rebuilt factor is taken in (the contacts then cost forward solves; docs/simulator.md, "Cutting").
+    bool surfacePrecomputed() const;
 
     /// The cavity's opening (mL over rest) at `pressureKpa` (0-40) by a static solve of the same tissue model the
     /// steps run (from rest, no scope): the steady state the simulation's distension must reach. Takes about a second.

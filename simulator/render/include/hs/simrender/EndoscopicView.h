@@ -16,6 +16,7 @@
 #include "hs/scene/Scene.h"
 #include "hs/scene/ScopeView.h"
 #include "hs/sim/Scope.h"
+#include "hs/sim/World.h"
 #include "hs/simrender/Exposure.h"
 
 #include <array>
@@ -85,6 +86,12 @@ struct EndoscopicLook {
     /// 1/mm, absorption of whole blood (oxyhaemoglobin at 150 g/L) at 630, 550 and 470 nm for red, green and blue,
     /// from Prahl's tabulated molar extinction (docs/references.md [Prahl1999]); scaled by blood's share of the fluid.
     std::array<double, 3> bloodAbsorptionPerMm{0.33, 23.0, 17.8};
+    /// Linear RGB of the faces a cut bares, by clinical::Tissue (myometrium, endometrium, cervix, myoma, polyp): flat
+    /// colours of this project's choice after the atlases' descriptions (a myoma's interior pale and whorled, a
+    /// polyp's stroma pink, the muscle red).
+    std::array<std::array<double, 3>, 5> cutColour{
+        {{0.62, 0.30, 0.27}, {0.70, 0.33, 0.30}, {0.72, 0.50, 0.46}, {0.82, 0.74, 0.68}, {0.80, 0.55, 0.48}}};
+    double loopWireRadiusMm = 0.15; ///< mm, the loop's wire drawn (a 0.3 mm electrode)
 };
 
 /// Text of the heads-up display (one line each; empty lines are skipped).
@@ -124,6 +131,16 @@ public:
     /// Turbidity 0 (clear) .. 1 (opaque); red-out 0 .. 1; blood's share of the fluid 0 .. 1 (FluidState).
     void setFluid(double turbidity, double redOut, double bloodFraction = 0.0);
     void setHud(const HudText& text);
+    /// Hides the faces on the visual surface's points flagged in `hidden` (their tet was cut away:
+    /// sim::World::visualPointsCut); empty: nothing hidden.
+    void setHiddenPoints(const std::vector<char>& hidden);
+    /// The faces the cuts bared (`faces` in indices of `simulationPointsMm`), coloured by `tissue` (cutColour),
+    /// through the same fluid and optic as the tissue; no faces: none drawn.
+    void setCutSurface(const std::vector<Vec3>& simulationPointsMm, const std::vector<Triangle>& faces,
+                       const std::vector<clinical::Tissue>& tissue);
+    /// The resectoscope's loop: the wire and its two arms back to the sheath, glowing while it cuts or coagulates;
+    /// not drawn when `loop.out` is false.
+    void setLoop(const sim::LoopState& loop);
     /// The host's clock (s; the trial's time in the simulator) that the camera's exposure adapts by; without it the
     /// view reads the wall clock at each render.
     void setTime(double seconds);
