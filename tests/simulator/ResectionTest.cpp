@@ -187,6 +187,56 @@ TEST(Resection, ACutThroughTheOuterWallIsAPerforation) {
     EXPECT_EQ(event.pathologyMl, 0.0);
 }
 
+TEST(Resection, CuttingARegionsLastTetAndSeveringTheTopFromTheHeldBaseLeaveASolverThatSteps) {
+    // Bad input for the solver: a loop as wide as the block drawn through its top layer takes all of the polyp (a
+    // region left without a tet), then through the layer below it, which cuts the rest of the top off what holds it
+    // (as a cut through the isthmus would part the corpus from the held cervix, were the corpus not tethered). The
+    // severed part goes as chips; the tissue left stays a valid solid and steps with finite, bounded motion.
+    TestTissue tissue;
+    makeTissue(tissue);
+    auto made = sim::Resection::make(tissue.scene, tissue.mesh, tissue.boundary, tissue.faceCavity);
+    ASSERT_TRUE(made) << made.error().detail;
+    sim::Resection resection = std::move(*made);
+    sim::LoopElectrode loop;
+    loop.widthMm = 40.0;
+    const Vec3 axis{-1.0, 0.0, 0.0}, down{0.0, 0.0, -1.0};
+    const auto sweep = [&](double depthMm) {
+        // The half circle's lowest point `depthMm` below the top, where it leaves the block's sides (|y| = 10 mm)
+        // still in it: a cut across all of it.
+        std::vector<Vec3> from = sim::loopWire(loop, Vec3{12.0, 0.0, 20.0 - depthMm}, axis, down);
+        std::size_t chips = 0;
+        for (int s = 1; s <= 48; ++s) {
+            const std::vector<Vec3> to = sim::loopWire(loop, Vec3{12.0 - 0.5 * s, 0.0, 20.0 - depthMm}, axis, down);
+            chips += resection.cut(tissue.model, loop, from, to).chips.size();
+            from = to;
+        }
+        return chips;
+    };
+    sweep(1.0);
+    EXPECT_NEAR(resection.totals().pathologyRemovedMl[0], resection.totals().pathologyMl[0], 1e-12);
+    EXPECT_TRUE(tissue.fem.singularPoints().empty());
+    EXPECT_EQ(tissue.fem.looseLivePieces(), 0u);
+    const std::size_t liveBefore = tissue.fem.liveTetCount();
+    EXPECT_GT(sweep(4.0), 0u); // what lies above the cut, held by nothing, went as chips
+    EXPECT_LT(tissue.fem.liveTetCount(), liveBefore);
+    EXPECT_GT(tissue.fem.liveTetCount(), 0u);
+    EXPECT_TRUE(tissue.fem.singularPoints().empty());
+    EXPECT_EQ(tissue.fem.looseLivePieces(), 0u);
+    // A push on the top of what is left: the solver steps, the motion stays finite and small.
+    std::vector<Vec3> forces(tissue.fem.pointCount());
+    for (std::size_t i = 0; i < forces.size(); ++i)
+        if (tissue.mesh.points[i].z > -5.0)
+            forces[i] = Vec3{0.0, 0.0, -0.01};
+    std::vector<mechanics::FemConstraint> none;
+    for (int k = 0; k < 50; ++k)
+        tissue.fem.step(forces, none);
+    for (std::size_t i = 0; i < tissue.fem.pointCount(); ++i) {
+        const Vec3 moved = tissue.fem.positionsM()[i] - tissue.fem.restM()[i];
+        ASSERT_TRUE(std::isfinite(moved.x) && std::isfinite(moved.y) && std::isfinite(moved.z)) << i;
+        EXPECT_LT(norm(moved), 5e-3) << "point " << i; // less than 5 mm
+    }
+}
+
 TEST(Resection, ARegionTheSceneDoesNotListIsRefusedByName) {
     TestTissue tissue;
     makeTissue(tissue);
