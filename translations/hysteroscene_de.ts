@@ -4,6 +4,14 @@
 <context>
     <name>hs::simapp::SimWindow</name>
     <message>
+        <source>&amp;Polypectomy: resect the polyps with the loop</source>
+        <translation>&amp;Polypektomie: die Polypen mit der Schlinge resezieren</translation>
+    </message>
+    <message>
+        <source>&amp;Myomectomy: resect the submucous myomas with the loop</source>
+        <translation>&amp;Myomektomie: die submukösen Myome mit der Schlinge resezieren</translation>
+    </message>
+    <message>
         <source>This device speaks version 1 of the hysteroscope protocol: it drives the diagnostic scope only. The resectoscope&apos;s loop, pedals and pump buttons need a device of version 2 (docs/haptics-protocol.md); without one the %1 exercise cannot cut.</source>
         <translation>Dieses Gerät spricht Version 1 des Hysteroskop-Protokolls: Es steuert nur das diagnostische Hysteroskop. Schlinge, Pedale und Pumpentasten des Resektoskops brauchen ein Gerät der Version 2 (docs/haptics-protocol.md); ohne ein solches kann in der Übung %1 nicht geschnitten werden.</translation>
     </message>

@@ -4,6 +4,14 @@
 <context>
     <name>hs::simapp::SimWindow</name>
     <message>
+        <source>&amp;Polypectomy: resect the polyps with the loop</source>
+        <translation>&amp;Polypectomie : réséquer les polypes à l&apos;anse</translation>
+    </message>
+    <message>
+        <source>&amp;Myomectomy: resect the submucous myomas with the loop</source>
+        <translation>&amp;Myomectomie : réséquer les myomes sous-muqueux à l&apos;anse</translation>
+    </message>
+    <message>
         <source>This device speaks version 1 of the hysteroscope protocol: it drives the diagnostic scope only. The resectoscope&apos;s loop, pedals and pump buttons need a device of version 2 (docs/haptics-protocol.md); without one the %1 exercise cannot cut.</source>
         <translation>Cet appareil parle la version 1 du protocole de l&apos;hystéroscope : il ne pilote que l&apos;hystéroscope diagnostique. L&apos;anse, les pédales et les boutons de pompe du résectoscope demandent un appareil de version 2 (docs/haptics-protocol.md) ; sans lui, l&apos;exercice %1 ne peut pas couper.</translation>
     </message>

@@ -4,6 +4,14 @@
 <context>
     <name>hs::simapp::SimWindow</name>
     <message>
+        <source>&amp;Polypectomy: resect the polyps with the loop</source>
+        <translation>&amp;Polipectomia: resecare i polipi con l&apos;ansa</translation>
+    </message>
+    <message>
+        <source>&amp;Myomectomy: resect the submucous myomas with the loop</source>
+        <translation>&amp;Miomectomia: resecare i miomi sottomucosi con l&apos;ansa</translation>
+    </message>
+    <message>
         <source>This device speaks version 1 of the hysteroscope protocol: it drives the diagnostic scope only. The resectoscope&apos;s loop, pedals and pump buttons need a device of version 2 (docs/haptics-protocol.md); without one the %1 exercise cannot cut.</source>
         <translation>Questo dispositivo parla la versione 1 del protocollo dell&apos;isteroscopio: guida solo l&apos;isteroscopio diagnostico. L&apos;ansa, i pedali e i pulsanti della pompa del resettoscopio richiedono un dispositivo di versione 2 (docs/haptics-protocol.md); senza di esso l&apos;esercizio %1 non può tagliare.</translation>
     </message>

@@ -340,7 +340,7 @@ int main(int argc, char** argv) {
     std::vector<hs::sim::DeviceSample> samples(per);
     std::vector<double> stepMs, cuttingStepMs;
     struct StepCost {
-        double ms, forcesMs, solvesMs, contactMs;
+        double ms, forcesMs, solvesMs, contactMs, cutMs;
         bool cut, precomputed, touching;
     };
     std::vector<StepCost> cuttingSteps; ///< from the first cut on, with what each step did
@@ -365,10 +365,11 @@ int main(int argc, char** argv) {
         if (operative && w.metrics().resection.firstCutS >= 0.0) {
             cuttingStepMs.push_back(stepMs.back()); // from the first cut on
             const hs::sim::World::StepTimings& after = w.stepTimings();
-            cuttingSteps.push_back(
-                {stepMs.back(), after.tissueForcesMs - before.tissueForcesMs,
-                 after.tissueSolvesMs - before.tissueSolvesMs, after.contactSolveMs - before.contactSolveMs,
-                 w.metrics().resection.cutEvents > eventsBefore, precomputedBefore, w.state().contact.touching});
+            cuttingSteps.push_back({stepMs.back(), after.tissueForcesMs - before.tissueForcesMs,
+                                    after.tissueSolvesMs - before.tissueSolvesMs,
+                                    after.contactSolveMs - before.contactSolveMs, after.cutMs - before.cutMs,
+                                    w.metrics().resection.cutEvents > eventsBefore, precomputedBefore,
+                                    w.state().contact.touching});
         }
         if (trace && w.state().contact.forceN > 2.0 && w.state().step % 10 == 0) {
             const hs::sim::WorldState& st = w.state();
@@ -491,7 +492,7 @@ int main(int argc, char** argv) {
         // The slowest percent of the steps from the first cut on: what they did.
         if (!cuttingSteps.empty()) {
             const double p99 = percentile(cuttingStepMs, 0.99);
-            double n = 0, ms = 0, forces = 0, solves = 0, contact = 0, cuts = 0, stale = 0, touching = 0;
+            double n = 0, ms = 0, forces = 0, solves = 0, contact = 0, cutMs = 0, cuts = 0, stale = 0, touching = 0;
             double staleAll = 0, touchingAll = 0;
             for (const StepCost& c : cuttingSteps) {
                 staleAll += c.precomputed ? 0 : 1;
@@ -503,15 +504,17 @@ int main(int argc, char** argv) {
                 forces += c.forcesMs;
                 solves += c.solvesMs;
                 contact += c.contactMs;
+                cutMs += c.cutMs;
                 cuts += c.cut ? 1 : 0;
                 stale += c.precomputed ? 0 : 1;
                 touching += c.touching ? 1 : 0;
             }
             const double all = static_cast<double>(cuttingSteps.size());
             std::printf("| the slowest 1 %% of those steps | %.0f steps of %.2f ms mean: tissue forces %.2f ms, solves "
-                        "%.2f ms, contact problem %.2f ms; %.0f %% cut, %.0f %% with the surface's compliance not "
-                        "precomputed (%.0f %% of all), %.0f %% touching (%.0f %% of all) |\n",
-                        n, ms / n, forces / n, solves / n, contact / n, 100.0 * cuts / n, 100.0 * stale / n,
+                        "%.2f ms, contact problem %.2f ms, the loop (cuts, rebuilds) %.2f ms; %.0f %% cut, %.0f %% "
+                        "with the surface's compliance not precomputed (%.0f %% of all), %.0f %% touching (%.0f %% of "
+                        "all) |\n",
+                        n, ms / n, forces / n, solves / n, contact / n, cutMs / n, 100.0 * cuts / n, 100.0 * stale / n,
                         100.0 * staleAll / all, 100.0 * touching / n, 100.0 * touchingAll / all);
         }
         std::printf("| fluid | %s, deficit %.0f mL in %.1f min (%.0f mL/min), intravasation %.0f mL, highest pressure "

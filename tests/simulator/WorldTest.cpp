@@ -478,6 +478,16 @@ TEST(World, TheLoopCutsThePolypAndTheContactSurfaceFollowsTheCut) {
     DeviceSample held = samples.back();
     held.buttons = 0;
     stepHeld(*world, held, 0.1, samples);
+    // The pedal up: what the presses cut came off the loop as chips, every millilitre cut away in one of them.
+    const WorldSnapshot afterCut = world->snapshot();
+    double cutAway = world->metrics().resection.healthyRemovedMl, inChips = 0.0;
+    for (const PathologyResection& r : world->metrics().resection.pathologies)
+        cutAway += r.removedMl;
+    for (const Chip& chip : afterCut.chips)
+        inChips += chip.volumeMl;
+    EXPECT_GT(world->metrics().resection.chipsMade, 0u);
+    EXPECT_EQ(world->metrics().resection.chipsLeft, afterCut.chips.size());
+    EXPECT_NEAR(inChips, cutAway, 1e-9);
     const double openBefore = arterial();
     const FluidState cutFluid = world->state().fluid;
     EXPECT_GT(openBefore, 0.0);
@@ -491,6 +501,14 @@ TEST(World, TheLoopCutsThePolypAndTheContactSurfaceFollowsTheCut) {
         stepHeld(*world, held, 0.05, samples);
     }
     stepHeld(*world, held, 0.5, samples);
+    // Meanwhile the chips sank towards the patient's back (-y) or rest on the wall; none rose (or the loop holds it).
+    const WorldSnapshot later = world->snapshot();
+    ASSERT_GE(later.chips.size(), afterCut.chips.size());
+    for (std::size_t k = 0; k < afterCut.chips.size(); ++k) {
+        if (!later.chips[k].hooked) {
+            EXPECT_LE(later.chips[k].positionMm.y, afterCut.chips[k].positionMm.y + 1e-12) << "chip " << k;
+        }
+    }
     EXPECT_NEAR(world->state().fluid.pumpSetKpa, world->options().fluid.pumpPressureKpa - 2.0 * kPumpStepKpa, 1e-12);
     EXPECT_LT(world->state().fluid.pressureKpa, cutFluid.pressureKpa);
     EXPECT_GT(world->state().fluid.bleedingMlPerS, cutFluid.bleedingMlPerS);

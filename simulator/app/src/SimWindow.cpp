@@ -126,12 +126,15 @@ void SimWindow::buildMenus() {
     m_diameterGroup = choices(diameter, {{tr("2.9 mm"), 2.9}, {tr("4 mm"), 4.0}, {tr("5 mm"), 5.0}},
                               m_options.world.scope.diameterMm, "actionDiameter");
     QMenu* exercise = menuBar()->addMenu(tr("&Exercise"));
-    m_exerciseGroup =
-        choices(exercise,
-                {{tr("&Exploration: see the fundus, both ostia and every wall"),
-                  double(static_cast<int>(sim::Exercise::Exploration))},
-                 {tr("&Diagnosis: mark each pathology"), double(static_cast<int>(sim::Exercise::Diagnosis))}},
-                double(static_cast<int>(m_options.world.exercise)), "actionExercise");
+    m_exerciseGroup = choices(
+        exercise,
+        {{tr("&Exploration: see the fundus, both ostia and every wall"),
+          double(static_cast<int>(sim::Exercise::Exploration))},
+         {tr("&Diagnosis: mark each pathology"), double(static_cast<int>(sim::Exercise::Diagnosis))},
+         {tr("&Polypectomy: resect the polyps with the loop"), double(static_cast<int>(sim::Exercise::Polypectomy))},
+         {tr("&Myomectomy: resect the submucous myomas with the loop"),
+          double(static_cast<int>(sim::Exercise::Myomectomy))}},
+        double(static_cast<int>(m_options.world.exercise)), "actionExercise");
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     QAction* keys = help->addAction(tr("&Keys..."), this, &SimWindow::onShowKeys);
     keys->setObjectName("actionKeys");
@@ -321,6 +324,7 @@ void SimWindow::onRenderTick() {
             m_endoscope->setHiddenPoints(m_world->visualPointsCut(cut));
             m_drawnCutEvents = cutEvents;
         }
+        m_endoscope->setChips(frame->snapshot.chips);
         if (cut)
             m_endoscope->setCutSurface(frame->snapshot.simulationPointsMm, cut->faces, cut->faceTissue);
         else

@@ -216,6 +216,9 @@ void writeMetrics(JsonWriter& w, const TrialMetrics& m) {
         w.field("cutEvents", r.cutEvents);
         w.field("removedTets", r.removedTets);
         w.field("chips", r.chips);
+        w.field("chipsMade", r.chipsMade);
+        w.field("chipsCarriedOut", r.chipsCarriedOut);
+        w.field("chipsLeft", r.chipsLeft);
         w.field("cuttingTimeS", r.cuttingTimeS);
         w.field("resectionTimeS", r.resectionTimeS);
         w.field("firstCutS", r.firstCutS);
@@ -320,14 +323,18 @@ std::string sectionsHtml(const TrialReport& r) {
             removed.push_back({p.id, p.kind, fixedText(p.volumeMl, 3) + " mL", fixedText(p.removedMl, 3) + " mL",
                                fixedText(p.removedPercent, 1) + " %"});
         h += "<h2>Resection</h2>\n" + table({"pathology", "kind", "volume", "removed", "removed (%)"}, removed) +
-             keyValueTable({{"healthy tissue removed", fixedText(cut.healthyRemovedMl, 3) + " mL"},
-                            {"deepest cut into the myometrium", fixedText(cut.deepestMyometriumMm, 1) + " mm"},
-                            {"cuts through the serosa", std::to_string(cut.perforatingCuts)},
-                            {"resection time (first to last cut)", seconds(cut.resectionTimeS)},
-                            {"cutting time (pedal down)", seconds(cut.cuttingTimeS)},
-                            {"loop path with the pedal down", fixedText(cut.loopPathMm, 0) + " mm"},
-                            {"coagulating time (pedal down)", seconds(cut.coagulationTimeS)},
-                            {"cut events / chips", std::to_string(cut.cutEvents) + " / " + std::to_string(cut.chips)}});
+             keyValueTable(
+                 {{"healthy tissue removed", fixedText(cut.healthyRemovedMl, 3) + " mL"},
+                  {"deepest cut into the myometrium", fixedText(cut.deepestMyometriumMm, 1) + " mm"},
+                  {"cuts through the serosa", std::to_string(cut.perforatingCuts)},
+                  {"resection time (first to last cut)", seconds(cut.resectionTimeS)},
+                  {"cutting time (pedal down)", seconds(cut.cuttingTimeS)},
+                  {"loop path with the pedal down", fixedText(cut.loopPathMm, 0) + " mm"},
+                  {"coagulating time (pedal down)", seconds(cut.coagulationTimeS)},
+                  {"cut events / pieces cut free", std::to_string(cut.cutEvents) + " / " + std::to_string(cut.chips)},
+                  {"chips made / carried out / left in the cavity", std::to_string(cut.chipsMade) + " / " +
+                                                                        std::to_string(cut.chipsCarriedOut) + " / " +
+                                                                        std::to_string(cut.chipsLeft)}});
     }
     return h;
 }

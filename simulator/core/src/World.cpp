@@ -161,8 +161,12 @@ Status World::step(const DeviceSample* samples, std::size_t count) {
     w.physics(last, pressureKpa);
     w.state.step += 1;
     w.state.timeS = static_cast<double>(w.state.step) * dt;
-    if (w.resection)
+    if (w.resection) {
+        const auto cutting = std::chrono::steady_clock::now();
         w.cut(last);
+        w.timings.cutMs +=
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cutting).count();
+    }
     // The lens against the tissue closes the view too.
     double t = 0.0, a = 0.0, b = 0.0;
     const std::int32_t hit = w.bvh.raycast(w.pointsMm, w.state.scope.tipMm, w.state.scope.direction, 1.0, t, a, b);
@@ -259,7 +263,7 @@ const std::vector<Vec3>& World::simulationPointsMm() const {
 }
 
 WorldSnapshot World::snapshot() const {
-    return {impl_->pointsMm, impl_->state, impl_->cutView};
+    return {impl_->pointsMm, impl_->state, impl_->cutView, impl_->chips};
 }
 
 std::vector<char> World::visualPointsCut(const CutView* cut) const {

@@ -6,6 +6,8 @@
 
 #include "hs/core/TriangleGeometry.h"
 
+#include <array>
+
 #include <algorithm>
 #include <cmath>
 
@@ -50,8 +52,12 @@ void World::Impl::cut(const DeviceSample& device) {
     if (!pedal && !tissue.refactorRunning() && !tissue.surfacePrecomputed() && tissue.startRefactor())
         rebuildDueStep = state.step + kRebuildSteps;
     state.loop = LoopState{};
+    if (lastPedal && !pedal && stripMl > 0.0)
+        releaseStrip(lastLoopMm); // the pedal up: the strip comes off the loop
+    lastPedal = pedal;
     if (device.instrument != kInstrumentLoop) {
         lastWireMm.clear();
+        moveChips(device);
         return;
     }
     Vec3 middle;
@@ -70,6 +76,36 @@ void World::Impl::cut(const DeviceSample& device) {
         const CutEvent event = resection->cut(uterus, loop, lastWireMm, wire);
         if (!event.removed.empty()) {
             surfaceAfterCut(event.removed);
+            // The tissue cut away: pieces cut free float off at once, the rest gathers on the loop as its strip.
+            std::vector<char> inPiece(tissue.tetCount(), 0);
+            for (const std::vector<std::size_t>& piece : event.chips) {
+                Chip chip;
+                std::array<double, 5> byTissue{};
+                Vec3 centre;
+                double corners = 0.0;
+                for (const std::size_t t : piece) {
+                    inPiece[t] = 1;
+                    const double ml = tissue.restVolumeM3(t) * 1e6;
+                    chip.volumeMl += ml;
+                    byTissue[static_cast<std::size_t>(resection->tetTissue()[t])] += ml;
+                    for (const std::int32_t v : tissue.tets()[t]) {
+                        centre += pointsMm[static_cast<std::size_t>(v)];
+                        corners += 1.0;
+                    }
+                }
+                chip.positionMm = centre / std::max(corners, 1.0);
+                chip.radiusMm = std::cbrt(3.0 * chip.volumeMl * 1e3 / (4.0 * kPi));
+                chip.tissue = static_cast<clinical::Tissue>(std::max_element(byTissue.begin(), byTissue.end()) -
+                                                            byTissue.begin());
+                chips.push_back(chip);
+                m.chipsMade += 1;
+            }
+            for (const std::size_t t : event.removed)
+                if (!inPiece[t]) {
+                    const double ml = tissue.restVolumeM3(t) * 1e6;
+                    stripMl += ml;
+                    stripByTissue[static_cast<std::size_t>(resection->tetTissue()[t])] += ml;
+                }
             const ResectionTotals& totals = resection->totals();
             for (std::size_t k = 0; k < m.pathologies.size() && k < totals.pathologyRemovedMl.size(); ++k) {
                 PathologyResection& p = m.pathologies[k];
@@ -89,6 +125,50 @@ void World::Impl::cut(const DeviceSample& device) {
     }
     lastWireMm = std::move(wire);
     lastLoopMm = middle;
+    moveChips(device);
+}
+
+void World::Impl::releaseStrip(const Vec3& whereMm) {
+    Chip chip;
+    chip.positionMm = whereMm;
+    chip.volumeMl = stripMl;
+    chip.radiusMm = std::cbrt(3.0 * stripMl * 1e3 / (4.0 * kPi));
+    chip.tissue = static_cast<clinical::Tissue>(std::max_element(stripByTissue.begin(), stripByTissue.end()) -
+                                                stripByTissue.begin());
+    chips.push_back(chip);
+    metrics.resection.chipsMade += 1;
+    stripMl = 0.0;
+    stripByTissue = {};
+}
+
+void World::Impl::moveChips(const DeviceSample& device) {
+    ResectionMetrics& m = metrics.resection;
+    // The loop drawn in catches the chips at its middle; caught, they go with it and leave the cavity when the tip is
+    // drawn back behind the internal os.
+    const bool drawnIn = state.loop.out && device.workingElementMm <= 1.0;
+    const bool outOfCavity = dot(state.scope.tipMm - landmarks.internalOsMm, frame.axis) <= 0.0;
+    const Vec3 sink = Vec3{0.0, -kChipSinkMmPerS * options.stepS, 0.0};
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < chips.size(); ++k) {
+        Chip chip = chips[k];
+        if (!chip.hooked && drawnIn && distance(chip.positionMm, state.loop.middleMm) <= chip.radiusMm + kChipCatchMm)
+            chip.hooked = true;
+        if (chip.hooked) {
+            if (outOfCavity) {
+                m.chipsCarriedOut += 1;
+                continue;
+            }
+            chip.positionMm = state.loop.out ? state.loop.middleMm : state.scope.tipMm;
+        } else {
+            // Sinking until it rests on the wall (its surface at the contact surface).
+            const Vec3 next = chip.positionMm + sink;
+            if (clearanceMm(pointsMm, bvh, next, chip.radiusMm + 1.0) >= chip.radiusMm)
+                chip.positionMm = next;
+        }
+        chips[kept++] = chip;
+    }
+    chips.resize(kept);
+    m.chipsLeft = chips.size();
 }
 
 detail::OpenVessels World::Impl::openVessels() const {

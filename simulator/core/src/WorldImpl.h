@@ -116,6 +116,12 @@ Vec3 triangleCentre(const std::vector<Vec3>& pts, const Triangle& t);
 /// mm: with the coagulating pedal down, the loop seals the cut faces that come this close to its wire (the
 /// lateral thermal spread of bipolar electrosurgery, 1-2 mm, is the scale; this value is the project's choice).
 inline constexpr double kCoagulationReachMm = 1.5;
+/// mm/s, a chip sinking through the saline towards the patient's back (-y; she lies on it): tissue of 1050 kg/m^3
+/// in saline of 1005 kg/m^3, a millimetre-sized piece at a drag-limited speed of millimetres to centimetres a
+/// second: this project's estimate.
+inline constexpr double kChipSinkMmPerS = 5.0;
+/// mm: the loop drawn in (working element at most 1 mm) catches a chip whose surface lies this close to its middle.
+inline constexpr double kChipCatchMm = 2.0;
 
 struct World::Impl {
     WorldOptions options;
@@ -158,7 +164,15 @@ struct World::Impl {
     std::vector<VesselDensity> tetVessels;  ///< per simulation tet (Vessels.h)
     std::shared_ptr<const CutView> cutView; ///< what the cuts did, for drawing (null before the first cut)
     std::size_t firstCutFace = 0;           ///< the contact surface's faces from here on are cuts'
-    std::vector<Vec3> lastWireMm;           ///< the wire where the last step left it (empty: not out)
+    // The chips (WorldCut.cpp): the tissue a pedal press cuts gathers into one strip, let go when the pedal comes up.
+    std::vector<Chip> chips;
+    double stripMl = 0.0;
+    std::array<double, 5> stripByTissue{}; ///< mL of the strip by clinical::Tissue
+    bool lastPedal = false;
+    /// Chips: the strip let go at `whereMm`; each step the chips sink and the drawn-in loop catches them.
+    void releaseStrip(const Vec3& whereMm);
+    void moveChips(const DeviceSample& device);
+    std::vector<Vec3> lastWireMm; ///< the wire where the last step left it (empty: not out)
     Vec3 lastLoopMm;
     /// The solver's factor rebuilt on its own thread once the pedal is up after a cut (the downdates drop the
     /// surface's precomputed compliance, which the contacts need to stay fast), taken in at this step.

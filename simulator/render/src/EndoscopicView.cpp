@@ -271,6 +271,7 @@ struct EndoscopicView::Impl {
     // The cut (setCut, setCutSurface) and the loop (setLoop).
     std::vector<char> hiddenSource; ///< per source point: its tet was cut away (faces on it are not drawn)
     void applyHidden();
+    std::vector<sim::Chip> chips; ///< drawn with the cut faces
     vtkSmartPointer<vtkActor> cutActor;
     vtkSmartPointer<vtkPolyData> cutGeometry;
     vtkSmartPointer<vtkActor> loopActor;
@@ -635,10 +636,14 @@ void EndoscopicView::Impl::applyHidden() {
         innerSurface->SetPolys(innerFaces);
 }
 
+void EndoscopicView::setChips(const std::vector<sim::Chip>& chips) {
+    m_impl->chips = chips;
+}
+
 void EndoscopicView::setCutSurface(const std::vector<Vec3>& pointsMm, const std::vector<Triangle>& faces,
                                    const std::vector<clinical::Tissue>& tissue) {
     Impl& d = *m_impl;
-    if (faces.empty() || tissue.size() != faces.size()) {
+    if ((faces.empty() || tissue.size() != faces.size()) && d.chips.empty()) {
         d.cutActor->VisibilityOff();
         return;
     }
@@ -648,7 +653,17 @@ void EndoscopicView::setCutSurface(const std::vector<Vec3>& pointsMm, const std:
     auto cells = vtkSmartPointer<vtkCellArray>::New();
     auto colours = vtkSmartPointer<vtkUnsignedCharArray>::New();
     colours->SetNumberOfComponents(3);
-    for (std::size_t f = 0; f < faces.size(); ++f) {
+    const auto colourOf = [&](clinical::Tissue kind) {
+        const std::array<double, 3>& c =
+            d.look.cutColour[std::min(static_cast<std::size_t>(kind), d.look.cutColour.size() - 1)];
+        // Direct scalars are taken as the colour before lighting: the linear colour in 8 bits.
+        return std::array<unsigned char, 3>{
+            static_cast<unsigned char>(std::lround(255.0 * std::clamp(c[0], 0.0, 1.0))),
+            static_cast<unsigned char>(std::lround(255.0 * std::clamp(c[1], 0.0, 1.0))),
+            static_cast<unsigned char>(std::lround(255.0 * std::clamp(c[2], 0.0, 1.0)))};
+    };
+    const std::size_t faceCount = tissue.size() == faces.size() ? faces.size() : 0;
+    for (std::size_t f = 0; f < faceCount; ++f) {
         vtkIdType ids[3];
         bool inside = true;
         for (int k = 0; k < 3; ++k) {
@@ -660,13 +675,25 @@ void EndoscopicView::setCutSurface(const std::vector<Vec3>& pointsMm, const std:
         if (!inside)
             continue;
         cells->InsertNextCell(3, ids);
-        const auto kind = static_cast<std::size_t>(tissue[f]);
-        const std::array<double, 3>& c = d.look.cutColour[std::min(kind, d.look.cutColour.size() - 1)];
-        // Direct scalars are taken as the colour before lighting: the linear colour in 8 bits.
-        const unsigned char rgb[3] = {static_cast<unsigned char>(std::lround(255.0 * std::clamp(c[0], 0.0, 1.0))),
-                                      static_cast<unsigned char>(std::lround(255.0 * std::clamp(c[1], 0.0, 1.0))),
-                                      static_cast<unsigned char>(std::lround(255.0 * std::clamp(c[2], 0.0, 1.0)))};
-        colours->InsertNextTypedTuple(rgb);
+        colours->InsertNextTypedTuple(colourOf(tissue[f]).data());
+    }
+    // Each chip an octahedron of its radius (eight faces: enough for a piece a millimetre or two across).
+    for (const sim::Chip& chip : d.chips) {
+        const double r = std::max(chip.radiusMm, 0.05);
+        const Vec3& c = chip.positionMm;
+        const Vec3 corner[6] = {c + Vec3{r, 0, 0}, c - Vec3{r, 0, 0}, c + Vec3{0, r, 0},
+                                c - Vec3{0, r, 0}, c + Vec3{0, 0, r}, c - Vec3{0, 0, r}};
+        vtkIdType id[6];
+        for (int k = 0; k < 6; ++k)
+            id[k] = points->InsertNextPoint(corner[k].x, corner[k].y, corner[k].z);
+        const int octahedron[8][3] = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                                      {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+        const auto rgb = colourOf(chip.tissue);
+        for (const auto& f : octahedron) {
+            const vtkIdType tri[3] = {id[f[0]], id[f[1]], id[f[2]]};
+            cells->InsertNextCell(3, tri);
+            colours->InsertNextTypedTuple(rgb.data());
+        }
     }
     d.cutGeometry->SetPoints(points);
     d.cutGeometry->SetPolys(cells);

@@ -69,17 +69,20 @@ struct PathologyResection {
 /// What the resectoscope's loop did (docs/simulator.md, "Cutting").
 struct ResectionMetrics {
     std::vector<PathologyResection> pathologies;
-    double healthyRemovedMl = 0.0;    ///< tissue cut away that was no pathology's
-    double deepestMyometriumMm = 0.0; ///< how far below the cavity's surface (at rest) a cut reached into the wall
-    int perforatingCuts = 0;          ///< cut events that opened the serosa
-    std::uint64_t cutEvents = 0;      ///< steps whose cut removed tissue
-    std::uint64_t removedTets = 0;    ///< of the simulation mesh
-    std::uint64_t chips = 0;          ///< pieces cut free
-    double cuttingTimeS = 0.0;        ///< s with the cutting pedal down and the loop out
-    double resectionTimeS = 0.0;      ///< s from the first cut that removed tissue to the last
-    double firstCutS = -1.0;          ///< s into the trial; -1 none
-    double loopPathMm = 0.0;          ///< the loop's path with the cutting pedal down
-    double coagulationTimeS = 0.0;    ///< s with the coagulating pedal down and the loop out
+    double healthyRemovedMl = 0.0;     ///< tissue cut away that was no pathology's
+    double deepestMyometriumMm = 0.0;  ///< how far below the cavity's surface (at rest) a cut reached into the wall
+    int perforatingCuts = 0;           ///< cut events that opened the serosa
+    std::uint64_t cutEvents = 0;       ///< steps whose cut removed tissue
+    std::uint64_t removedTets = 0;     ///< of the simulation mesh
+    std::uint64_t chips = 0;           ///< pieces cut free
+    std::uint64_t chipsMade = 0;       ///< chips in the fluid: a strip per pedal press, and each piece cut free
+    std::uint64_t chipsCarriedOut = 0; ///< chips the drawn-in loop caught and took out through the canal
+    std::uint64_t chipsLeft = 0;       ///< chips in the cavity now (at the end: left behind)
+    double cuttingTimeS = 0.0;         ///< s with the cutting pedal down and the loop out
+    double resectionTimeS = 0.0;       ///< s from the first cut that removed tissue to the last
+    double firstCutS = -1.0;           ///< s into the trial; -1 none
+    double loopPathMm = 0.0;           ///< the loop's path with the cutting pedal down
+    double coagulationTimeS = 0.0;     ///< s with the coagulating pedal down and the loop out
 };
 
 struct TrialMetrics {

@@ -111,12 +111,22 @@ struct CutView {
     std::vector<clinical::Tissue> faceTissue; ///< each one's tissue (its live tet's)
 };
 
+/// A piece of tissue the loop cut away, in the cavity's fluid (docs/simulator.md, "Chips").
+struct Chip {
+    Vec3 positionMm;
+    double volumeMl = 0.0;
+    double radiusMm = 0.0; ///< of a sphere of its volume
+    clinical::Tissue tissue = clinical::Tissue::Myometrium;
+    bool hooked = false; ///< caught by the drawn-in loop: it leaves the cavity with the scope
+};
+
 /// The state other threads draw: the simulation mesh's points and the world's state, copied at the end of a step,
-/// and what the cuts have done (null before the first cut).
+/// what the cuts have done (null before the first cut) and the chips in the cavity.
 struct WorldSnapshot {
     std::vector<Vec3> simulationPointsMm;
     WorldState state;
     std::shared_ptr<const CutView> cut;
+    std::vector<Chip> chips;
 };
 
 class World {
@@ -203,6 +213,7 @@ public:
         double contactSolveMs = 0.0;  ///< the contacts' compliance and complementarity problem
         double contactSearchMs = 0.0; ///< the scope's contact candidates
         double visibilityMs = 0.0;    ///< what the optic sees, marking
+        double cutMs = 0.0; ///< the loop: its cuts (topology, the contact surface), coagulation, the factor's rebuild
     };
     const StepTimings& stepTimings() const;
 

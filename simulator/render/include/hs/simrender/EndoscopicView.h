@@ -138,6 +138,9 @@ public:
     /// through the same fluid and optic as the tissue; no faces: none drawn.
     void setCutSurface(const std::vector<Vec3>& simulationPointsMm, const std::vector<Triangle>& faces,
                        const std::vector<clinical::Tissue>& tissue);
+    /// The chips in the fluid, drawn as small polyhedra of their size in their tissue's colour with the cut faces
+    /// (call before setCutSurface, which draws both).
+    void setChips(const std::vector<sim::Chip>& chips);
     /// The resectoscope's loop: the wire and its two arms back to the sheath, glowing while it cuts or coagulates;
     /// not drawn when `loop.out` is false.
     void setLoop(const sim::LoopState& loop);
