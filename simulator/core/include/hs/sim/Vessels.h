@@ -16,10 +16,11 @@ namespace hs::sim {
 /// (0.7 mPa s at 37 C) through venules of 25 um radius and 5 mm to a wider vein (4.4e-5 each), five of them
 /// assumed to cross a square millimetre; docs/simulator.md ("Bleeding") compares the rates it gives with the
 /// intravasation measured in hysteroscopic myomectomy.
-/// The arterioles': no published rate per cut area was found; chosen so that 1 cm^2 of fresh myometrium bleeds about
-/// 4 mL/min at 40 mmHg, an order a resectoscopist recognises, and stops at the mean arterial pressure.
+/// The arterioles': no published rate per cut area was found; chosen so that the demonstration polypectomy at the
+/// default 80 mmHg reddens the view without hiding it (1 cm^2 of fresh myometrium bleeds about 0.7 mL/min at
+/// 40 mmHg, nothing at the mean arterial pressure). Five times more hid the whole picture in red.
 inline constexpr double kVenousPerMm2 = 2e-4;
-inline constexpr double kArterialPerMm2 = 1e-4;
+inline constexpr double kArterialPerMm2 = 2e-5;
 
 /// How vascular a tissue is relative to the myometrium's (both conductances scale together):
 /// the myometrium 1 (arcuate and radial vessels), the cervix and the endometrium 0.5 (spiral arterioles), a myoma's
