@@ -481,10 +481,13 @@ int main(int argc, char** argv) {
                         p.volumeMl, p.removedPercent);
         std::printf("| healthy tissue | %.3f mL removed, deepest %.1f mm into the myometrium, %d perforating cuts |\n",
                     r.healthyRemovedMl, r.deepestMyometriumMm, r.perforatingCuts);
-        std::printf("| cutting | %llu events, %llu tets, %llu chips; pedal down %.1f s, first to last cut %.1f s, "
-                    "loop path %.0f mm |\n",
+        std::printf("| cutting | %llu events, %llu tets, %llu pieces cut free; pedal down %.1f s, first to last cut "
+                    "%.1f s, loop path %.0f mm |\n",
                     static_cast<unsigned long long>(r.cutEvents), static_cast<unsigned long long>(r.removedTets),
                     static_cast<unsigned long long>(r.chips), r.cuttingTimeS, r.resectionTimeS, r.loopPathMm);
+        std::printf("| chips | %llu made, %llu carried out by the loop, %llu left in the cavity |\n",
+                    static_cast<unsigned long long>(r.chipsMade), static_cast<unsigned long long>(r.chipsCarriedOut),
+                    static_cast<unsigned long long>(r.chipsLeft));
         std::printf(
             "| physics step from the first cut on | mean %.2f ms (%.0f Hz), p99 %.2f ms (%.0f Hz), %zu steps |\n",
             cutMean, cutMean > 0.0 ? 1e3 / cutMean : 0.0, percentile(cuttingStepMs, 0.99),

@@ -595,13 +595,18 @@ Result<Script> resectionScript(const World& world, int pathology) {
     plan.add(2.0, out);
     plan.add(4.0, inOs);
     Vec3 tipNow = scopePose(w.frame, scope, inOs).tipMm;
-    for (const Stroke& stroke : strokes) {
+    // To a stroke's place, the loop drawn in, then pushed out to its length: the sample there.
+    const auto pushOut = [&](const Stroke& stroke) {
         const Vec3 tip = scopePose(w.frame, scope, stroke.at).tipMm;
         plan.add(std::max(0.2, distance(tipNow, tip) / kStrokeMoveSpeedMmPerS), stroke.at);
         tipNow = tip;
         DeviceSample s = stroke.at;
         s.workingElementMm = stroke.lengthMm;
         plan.add(stroke.lengthMm / kLoopOutSpeedMmPerS, s);
+        return s;
+    };
+    for (const Stroke& stroke : strokes) {
+        DeviceSample s = pushOut(stroke);
         // Drawn back position by position, the pedal down over each step between two safe positions.
         for (std::size_t i = stroke.positions - 1; i > 0; --i) {
             const bool pedal = safe(stroke, i) && safe(stroke, i - 1);
@@ -621,12 +626,7 @@ Result<Script> resectionScript(const World& world, int pathology) {
     for (const Stroke& stroke : strokes) {
         if (stroke.towardsBaseMm < baseRow)
             continue;
-        const Vec3 tip = scopePose(w.frame, scope, stroke.at).tipMm;
-        plan.add(std::max(0.2, distance(tipNow, tip) / kStrokeMoveSpeedMmPerS), stroke.at);
-        tipNow = tip;
-        DeviceSample s = stroke.at;
-        s.workingElementMm = stroke.lengthMm;
-        plan.add(stroke.lengthMm / kLoopOutSpeedMmPerS, s);
+        DeviceSample s = pushOut(stroke);
         plan.keys.back().second.buttons = kButtonCoagulate;
         s.workingElementMm = 0.0;
         plan.add(stroke.lengthMm / kCutSpeedMmPerS, s);
