@@ -102,6 +102,14 @@ TEST(TrialReport, PageNamesAMissingChartLibrary) {
     EXPECT_NE(page.error().message().find("/nonexistent/chart.min.js"), std::string::npos);
 }
 
+/// The page's DOM after headless Chromium has run its scripts (exit code 0 and the DOM on success).
+hs::test::CommandRun openedInChromium(const hs::test::TempDir& tmp, const std::string& html) {
+    return hs::test::runCommand(
+        "timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-background-networking "
+        "--disable-component-update --disable-sync --no-first-run --user-data-dir=" +
+        shellQuote(tmp.file("profile")) + " --dump-dom " + shellQuote("file://" + html) + " 2>/dev/null");
+}
+
 TEST(TrialReport, PageDrawsItsPlotsInHeadlessChromium) {
     if (!fs::exists(std::string(hs::io::kDefaultChartLibrary)))
         GTEST_SKIP() << "libjs-chart.js is not installed: the page has no plots to check";
@@ -113,14 +121,24 @@ TEST(TrialReport, PageDrawsItsPlotsInHeadlessChromium) {
     EXPECT_NE(html.find("myometrium"), std::string::npos);
     if (hs::test::runCommand("command -v chromium").exitCode != 0)
         GTEST_SKIP() << "chromium is not installed (tools/setup.sh installs it): the page was not opened";
-    const auto dom = hs::test::runCommand(
-        "timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-background-networking "
-        "--disable-component-update --disable-sync --no-first-run --user-data-dir=" +
-        shellQuote(tmp.file("profile")) + " --dump-dom " + shellQuote("file://" + tmp.file("r.html")) + " 2>/dev/null");
+    const auto dom = openedInChromium(tmp, tmp.file("r.html"));
     ASSERT_EQ(dom.exitCode, 0) << dom.out.substr(0, 2000);
     EXPECT_EQ(dom.out.find("data-chart-error"), std::string::npos) << dom.out.substr(0, 3000);
     // Force, pressure, deficit and the visualized surface.
     EXPECT_NE(dom.out.find("data-charts=\"4\""), std::string::npos) << dom.out.substr(0, 3000);
+
+    // An operative exercise's page plots the blood lost too, with the plots over time (a fifth canvas).
+    hs::sim::TrialReport operative = sampleReport();
+    operative.header.exercise = hs::sim::Exercise::Polypectomy;
+    operative.metrics.resection.pathologies = {{"polyp-1", "polyp", 0.24, 0.12, 50.0}};
+    for (std::size_t i = 0; i < operative.series.size(); ++i)
+        operative.series[i].bloodLossMl = 0.01 * static_cast<double>(i);
+    ASSERT_TRUE(hs::sim::writeReport(operative, tmp.file("o.json"), tmp.file("o.html")).ok());
+    const auto drawn = openedInChromium(tmp, tmp.file("o.html"));
+    ASSERT_EQ(drawn.exitCode, 0) << drawn.out.substr(0, 2000);
+    EXPECT_EQ(drawn.out.find("data-chart-error"), std::string::npos) << drawn.out.substr(0, 3000);
+    EXPECT_NE(drawn.out.find("data-charts=\"5\""), std::string::npos) << drawn.out.substr(0, 3000);
+    EXPECT_NE(drawn.out.find("Blood loss"), std::string::npos);
 }
 
 /// The simulator tests' package (SimPackage.h), generated once per binary.

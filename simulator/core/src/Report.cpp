@@ -413,10 +413,10 @@ ordered_json chartConfigs(const TrialReport& r) {
                                {{"deficit", points(s, [](const SeriesPoint& p) { return p.deficitMl; })},
                                 {"warning", level(s, r.header.fluid.deficitWarningMl)},
                                 {"limit", level(s, r.header.fluid.deficitLimitMl)}}));
-    if (!r.metrics.resection.pathologies.empty())
+    charts.push_back(surfaceChart(r.surface));
+    if (!r.metrics.resection.pathologies.empty()) // canvas 4, with the plots over time
         charts.push_back(
             lineChart("Blood loss", "mL", {{"blood", points(s, [](const SeriesPoint& p) { return p.bloodLossMl; })}}));
-    charts.push_back(surfaceChart(r.surface));
     return charts;
 }
 
@@ -436,6 +436,7 @@ std::string pageHtml(const TrialReport& r, const std::string& library) {
     if (library.empty())
         h += "<p>No plots: the chart library (Debian's libjs-chart.js) is not installed.</p>\n";
     h += "<h2>Over time</h2>\n<div class=\"charts\">\n" + io::chartCanvas(0) + io::chartCanvas(1) + io::chartCanvas(2) +
+         (r.metrics.resection.pathologies.empty() ? std::string() : io::chartCanvas(4)) +
          "</div>\n<h2>Visualized surface</h2>\n" + io::chartCanvas(3, "wide");
     h += sectionsHtml(r);
     h += io::chartScripts(library, chartConfigs(r));
