@@ -4,11 +4,15 @@
 // it pops ticksPerStep() device samples, steps the world and publishes world.hapticFrame(), as hysteroscene-sim
 // does. Without, a stand-in publishes a frame of 48 contacts every 5 ms after burning ~4 ms of CPU.
 //
-//   bench_haptics [--seconds 10] [--package DIR [--throttle-hz 100]]
+//   bench_haptics [--seconds 10] [--package DIR [--throttle-hz 100] [--demo polypectomy|myomectomy]]
 // --throttle-hz: the physics held to that rate; the table gains the lag between the device and the world.
+// --demo: the device plays that exercise's demonstration (demonstrationScript) once, in real time, and the World
+// cuts as it goes; the table gains the ticks while the cutting pedal was down (to the loop's statistics' 0.25 s
+// publishing) and the physics steps taken then. --seconds defaults to the demonstration's length.
 #include "hs/haptics/Clock.h"
 #include "hs/haptics/HapticsLoop.h"
 #include "hs/haptics/ScriptedDevice.h"
+#include "hs/sim/Trial.h"
 #include "hs/sim/World.h"
 
 #include <algorithm>
@@ -93,45 +97,80 @@ struct LagLog {
     std::size_t skipped = 0;
 };
 
+/// The ticks of the haptics loop while the World cut (the cutting pedal down), put together from windows of the
+/// loop's statistics, and the physics steps' wall times then.
+struct CuttingLog {
+    bool cutting = false;
+    HapticsStats atStart; ///< the loop's statistics when the pedal went down
+    DurationHistogram jitterUs, periodUs, latenessUs;
+    std::uint64_t ticks = 0, missedTicks = 0;
+    std::vector<double> stepMs;
+    double seconds = 0.0;
+    std::int64_t startedNs = 0;
+
+    void observe(const HapticsLoop& loop, bool nowCutting) {
+        if (nowCutting == cutting)
+            return;
+        const HapticsStats s = loop.stats();
+        if (nowCutting) {
+            atStart = s;
+            startedNs = monotonicNs();
+        } else {
+            jitterUs.merge(s.jitterUs.since(atStart.jitterUs));
+            periodUs.merge(s.periodUs.since(atStart.periodUs));
+            latenessUs.merge(s.latenessUs.since(atStart.latenessUs));
+            ticks += s.ticks - atStart.ticks;
+            missedTicks += s.missedTicks - atStart.missedTicks;
+            seconds += static_cast<double>(monotonicNs() - startedNs) * 1e-9;
+        }
+        cutting = nowCutting;
+    }
+};
+
 /// The World on a scene package: the device's samples step it, the newest ones when it has fallen behind (as
 /// hysteroscene-sim's HapticsSource takes them); every step publishes its haptic frame. `throttleHz` > 0 holds each
 /// step to at least 1/throttleHz of wall time (a slow machine, or a heavy scene).
-Physics worldPhysics(sim::World& world, std::uint64_t& steps, double throttleHz, LagLog& log) {
-    return [&world, &steps, throttleHz, &log](HapticsLoop& loop, const std::atomic<bool>& stop) -> std::uint64_t {
-        const std::size_t per = world.ticksPerStep();
-        std::vector<sim::DeviceSample> samples(per);
-        std::uint64_t tick = 0;
-        loop.publish(world.hapticFrame());
-        while (!stop.load()) {
-            std::size_t skipped = 0;
-            std::int64_t newestNs = 0;
-            if (!loop.takeNewest(per, samples.data(), skipped, newestNs)) {
-                std::this_thread::sleep_for(std::chrono::microseconds(200));
-                continue;
-            }
-            const std::int64_t started = monotonicNs();
-            for (std::size_t i = 0; i < per; ++i) {
-                samples[i] = sim::clamped(samples[i]);
-                samples[i].tick = tick + i;
-            }
-            if (!world.step(samples.data(), per).ok())
-                break;
-            if (throttleHz > 0.0) {
-                // Sleep to 0.3 ms before, then spin: the throttle itself adds no lag.
-                const auto until = started + static_cast<std::int64_t>(1e9 / throttleHz);
-                if (until - monotonicNs() > 300000)
-                    std::this_thread::sleep_for(std::chrono::nanoseconds(until - monotonicNs() - 300000));
-                while (monotonicNs() < until) {
-                }
-            }
-            log.lagMs.push_back(static_cast<double>(monotonicNs() - newestNs) * 1e-6);
-            log.skipped += skipped;
-            tick += per;
-            ++steps;
+Physics worldPhysics(sim::World& world, std::uint64_t& steps, double throttleHz, LagLog& log, CuttingLog& cuts) {
+    return
+        [&world, &steps, throttleHz, &log, &cuts](HapticsLoop& loop, const std::atomic<bool>& stop) -> std::uint64_t {
+            const std::size_t per = world.ticksPerStep();
+            std::vector<sim::DeviceSample> samples(per);
+            std::uint64_t tick = 0;
             loop.publish(world.hapticFrame());
-        }
-        return steps;
-    };
+            while (!stop.load()) {
+                std::size_t skipped = 0;
+                std::int64_t newestNs = 0;
+                if (!loop.takeNewest(per, samples.data(), skipped, newestNs)) {
+                    std::this_thread::sleep_for(std::chrono::microseconds(200));
+                    continue;
+                }
+                const std::int64_t started = monotonicNs();
+                for (std::size_t i = 0; i < per; ++i) {
+                    samples[i] = sim::clamped(samples[i]);
+                    samples[i].tick = tick + i;
+                }
+                if (!world.step(samples.data(), per).ok())
+                    break;
+                if (cuts.cutting)
+                    cuts.stepMs.push_back(static_cast<double>(monotonicNs() - started) * 1e-6);
+                cuts.observe(loop, world.state().loop.cutting);
+                if (throttleHz > 0.0) {
+                    // Sleep to 0.3 ms before, then spin: the throttle itself adds no lag.
+                    const auto until = started + static_cast<std::int64_t>(1e9 / throttleHz);
+                    if (until - monotonicNs() > 300000)
+                        std::this_thread::sleep_for(std::chrono::nanoseconds(until - monotonicNs() - 300000));
+                    while (monotonicNs() < until) {
+                    }
+                }
+                log.lagMs.push_back(static_cast<double>(monotonicNs() - newestNs) * 1e-6);
+                log.skipped += skipped;
+                tick += per;
+                ++steps;
+                loop.publish(world.hapticFrame());
+            }
+            cuts.observe(loop, false);
+            return steps;
+        };
 }
 
 /// In along the axis, into the far wall 10 mm deep, sweeping pitch and yaw along it, and back: 4 s, repeated.
@@ -156,17 +195,20 @@ sim::Script pushScript() {
 
 struct BenchConfig {
     double seconds = 10.0;
+    bool secondsGiven = false;
     std::string package;     ///< empty: the stand-in physics
     double throttleHz = 0.0; ///< with --package: each physics step takes at least 1/throttleHz s
+    sim::Exercise demo = sim::Exercise::Exploration; ///< with --package: an operative exercise's demonstration
     DeviceLimits limits{5.0, 300.0};
 };
 
-int runBench(const BenchConfig& config, const Physics& physics, const char* physicsName) {
+/// `script` played once (a demonstration) or, without one, the push into the wall, repeated.
+int runBench(const BenchConfig& config, const sim::Script* script, const Physics& physics, const char* physicsName) {
     ScriptedDeviceOptions deviceOptions;
     deviceOptions.limits = config.limits;
-    deviceOptions.loop = true;
+    deviceOptions.loop = script == nullptr;
     deviceOptions.maxRecorded = 0;
-    ScriptedDevice device(pushScript(), deviceOptions);
+    ScriptedDevice device(script ? *script : pushScript(), deviceOptions);
     if (!device.open().ok())
         return 1;
     HapticsLoop loop(device);
@@ -183,8 +225,8 @@ int runBench(const BenchConfig& config, const Physics& physics, const char* phys
     physicsThread.join();
 
     const HapticsStats s = loop.stats();
-    std::printf("bench_haptics: %.1f s, scripted device (push into the wall, 4 s cycle), physics thread: %s\n",
-                config.seconds, physicsName);
+    std::printf("bench_haptics: %.1f s, scripted device (%s), physics thread: %s\n", config.seconds,
+                script ? "the exercise's demonstration, once" : "push into the wall, 4 s cycle", physicsName);
     std::printf("%-34s %s\n", "scheduling", s.realtime ? "SCHED_FIFO" : "SCHED_OTHER (no real-time privilege)");
     std::printf("%-34s %llu\n", "ticks", static_cast<unsigned long long>(s.ticks));
     std::printf("%-34s %.0f / %.0f / %.0f us\n", "tick period p50 / p99 / max", s.periodUs.quantile(0.5),
@@ -218,27 +260,57 @@ int main(int argc, char** argv) {
             config.throttleHz = std::atof(argv[++i]);
         } else if (std::strcmp(argv[i], "--package") == 0 && i + 1 < argc) {
             config.package = argv[++i];
+        } else if (std::strcmp(argv[i], "--demo") == 0 && i + 1 < argc) {
+            if (!sim::fromString(argv[++i], config.demo) || !sim::isOperative(config.demo)) {
+                std::fprintf(stderr, "bench_haptics: --demo takes polypectomy or myomectomy\n");
+                return 1;
+            }
         } else {
-            std::fprintf(stderr, "usage: bench_haptics [--seconds S] [--package DIR [--throttle-hz H]]\n");
+            std::fprintf(stderr, "usage: bench_haptics [--seconds S] [--package DIR [--throttle-hz H] "
+                                 "[--demo polypectomy|myomectomy]]\n");
             return 1;
         }
+        if (std::strcmp(argv[i - 1], "--seconds") == 0)
+            config.secondsGiven = true;
+    }
+    const bool demo = sim::isOperative(config.demo);
+    if (demo && config.package.empty()) {
+        std::fprintf(stderr, "bench_haptics: --demo needs --package\n");
+        return 1;
     }
     if (!(config.seconds > 0.0 && config.seconds <= 3600.0)) {
         std::fprintf(stderr, "bench_haptics: --seconds must be in (0, 3600]\n");
         return 1;
     }
     if (config.package.empty())
-        return runBench(config, fakePhysics, "stand-in (4900-triangle sphere, a frame every 5 ms after ~4 ms of CPU)");
-    auto world = sim::World::load(config.package, sim::WorldOptions{});
+        return runBench(config, nullptr, fakePhysics,
+                        "stand-in (4900-triangle sphere, a frame every 5 ms after ~4 ms of CPU)");
+    sim::WorldOptions worldOptions;
+    worldOptions.exercise = config.demo;
+    auto world = sim::World::load(config.package, worldOptions);
     if (!world) {
         std::fprintf(stderr, "bench_haptics: %s\n", world.error().detail.c_str());
         return 3;
     }
+    sim::Script script;
+    if (demo) {
+        auto planned = sim::demonstrationScript(**world);
+        if (!planned) {
+            std::fprintf(stderr, "bench_haptics: %s\n", planned.error().detail.c_str());
+            return 3;
+        }
+        script = std::move(*planned);
+        config.limits.resectoscope = true;
+        if (!config.secondsGiven)
+            config.seconds = static_cast<double>(script.tickCount()) / sim::kDeviceRateHz + 1.0;
+    }
     std::uint64_t steps = 0;
     LagLog log;
-    const int code = runBench(config, worldPhysics(**world, steps, config.throttleHz, log),
-                              config.throttleHz > 0.0 ? "the World on the package, throttled"
-                                                      : "the World on the package (paced by the device)");
+    CuttingLog cuts;
+    const int code =
+        runBench(config, demo ? &script : nullptr, worldPhysics(**world, steps, config.throttleHz, log, cuts),
+                 config.throttleHz > 0.0 ? "the World on the package, throttled"
+                                         : "the World on the package (paced by the device)");
     std::vector<double> lags = log.lagMs;
     std::sort(lags.begin(), lags.end());
     const auto quantile = [&lags](double q) {
@@ -255,5 +327,33 @@ int main(int argc, char** argv) {
     std::printf("%-34s %zu\n", "samples skipped (physics behind)", log.skipped);
     std::printf("%-34s %llu (%.0f Hz)\n", "physics steps", static_cast<unsigned long long>(steps),
                 static_cast<double>(steps) / config.seconds);
+    if (demo) {
+        const sim::TrialMetrics& m = (*world)->metrics();
+        std::printf("while cutting (pedal down)         %.1f s wall, %llu ticks\n", cuts.seconds,
+                    static_cast<unsigned long long>(cuts.ticks));
+        std::printf("%-34s %.0f / %.0f / %.0f us\n", "  tick period p50 / p99 / max", cuts.periodUs.quantile(0.5),
+                    cuts.periodUs.quantile(0.99), cuts.periodUs.max());
+        std::printf("%-34s %.0f / %.0f us (bar: p99 < 300 us)\n", "  jitter |period - 1 ms| p99 / max",
+                    cuts.jitterUs.quantile(0.99), cuts.jitterUs.max());
+        std::printf("%-34s %.0f / %.0f us\n", "  wake-up lateness p99 / max", cuts.latenessUs.quantile(0.99),
+                    cuts.latenessUs.max());
+        std::printf("%-34s %llu\n", "  ticks missed", static_cast<unsigned long long>(cuts.missedTicks));
+        std::vector<double> cutStepMs = cuts.stepMs;
+        std::sort(cutStepMs.begin(), cutStepMs.end());
+        const auto at = [&cutStepMs](double q) {
+            return cutStepMs.empty()
+                       ? 0.0
+                       : cutStepMs[std::min(cutStepMs.size() - 1,
+                                            static_cast<std::size_t>(q * static_cast<double>(cutStepMs.size())))];
+        };
+        std::printf("%-34s %zu, %.2f / %.2f / %.2f ms p50 / p99 / max\n", "  physics steps", cutStepMs.size(), at(0.5),
+                    at(0.99), at(1.0));
+        std::printf("%-34s %.1f s simulated: %.3f mL healthy, %llu cut events, %.1f s cutting\n", "the trial", m.timeS,
+                    m.resection.healthyRemovedMl, static_cast<unsigned long long>(m.resection.cutEvents),
+                    m.resection.cuttingTimeS);
+        for (const sim::PathologyResection& p : m.resection.pathologies)
+            std::printf("  %-32s %.1f %% of %.2f mL removed\n", (p.kind + " " + p.id).c_str(), p.removedPercent,
+                        p.volumeMl);
+    }
     return code;
 }

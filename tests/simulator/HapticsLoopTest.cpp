@@ -106,6 +106,30 @@ void waitFor(const std::function<bool()>& done, std::chrono::milliseconds limit)
         std::this_thread::sleep_for(1ms);
 }
 
+TEST(DurationHistogram, AWindowHoldsWhatCameAfterTheEarlierCopyAndWindowsMerge) {
+    DurationHistogram h;
+    for (int i = 0; i < 100; ++i)
+        h.add(10.0);
+    const DurationHistogram before = h;
+    for (int i = 0; i < 99; ++i)
+        h.add(500.0);
+    h.add(900.5);
+    const DurationHistogram window = h.since(before);
+    EXPECT_EQ(window.count(), 100u);
+    EXPECT_DOUBLE_EQ(window.quantile(0.5), 500.0);
+    EXPECT_DOUBLE_EQ(window.max(), 900.0);
+    EXPECT_DOUBLE_EQ(h.quantile(0.5), 10.0);
+
+    DurationHistogram merged;
+    merged.merge(window);
+    merged.merge(before);
+    EXPECT_EQ(merged.count(), 200u);
+    EXPECT_DOUBLE_EQ(merged.quantile(0.25), 10.0);
+    EXPECT_DOUBLE_EQ(merged.quantile(1.0), 900.0);
+    EXPECT_DOUBLE_EQ(merged.max(), 900.0);
+    EXPECT_DOUBLE_EQ(h.max(), 900.5);
+}
+
 TEST(HapticsLoop, AScriptedPushIntoTheWallNeverExceedsTheClamp) {
     ScriptedDeviceOptions deviceOptions;
     deviceOptions.limits = {2.0, 100.0};

@@ -70,6 +70,25 @@ double DurationHistogram::quantile(double q) const {
     return m_max;
 }
 
+DurationHistogram DurationHistogram::since(const DurationHistogram& earlier) const {
+    DurationHistogram window;
+    for (std::size_t bin = 0; bin < m_counts.size(); ++bin) {
+        const std::uint64_t added = m_counts[bin] - std::min(m_counts[bin], earlier.m_counts[bin]);
+        window.m_counts[bin] = added;
+        window.m_count += added;
+        if (added > 0)
+            window.m_max = bin == kBins ? m_max : static_cast<double>(bin);
+    }
+    return window;
+}
+
+void DurationHistogram::merge(const DurationHistogram& other) {
+    for (std::size_t bin = 0; bin < m_counts.size(); ++bin)
+        m_counts[bin] += other.m_counts[bin];
+    m_count += other.m_count;
+    m_max = std::max(m_max, other.m_max);
+}
+
 Status checkHapticsLoopOptions(const HapticsLoopOptions& o) {
     if (!(o.periodS >= 0.0002 && o.periodS <= 0.01))
         return outside("periodS", "0.0002-0.01 s");

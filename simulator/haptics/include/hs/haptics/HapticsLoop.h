@@ -63,6 +63,11 @@ public:
     double max() const { return m_max; }
     /// The q quantile (0..1), us, to the bin (1 us); 0 when empty.
     double quantile(double q) const;
+    /// What was added to this histogram after `earlier`, an earlier copy of it (a window of a run); its max is the
+    /// window's highest bin (exact in the overflow bin only when that holds the whole run's max).
+    DurationHistogram since(const DurationHistogram& earlier) const;
+    /// Adds `other`'s durations (the windows of a run put together).
+    void merge(const DurationHistogram& other);
 
 private:
     std::vector<std::uint64_t> m_counts;
