@@ -129,7 +129,7 @@ struct Run {
             std::vector<Vec3> after = sim::loopWire(loop, centre, s.axis, s.down);
             bool pedal = true;
             if (only >= 0)
-                for (const std::size_t t : resection.sweptTets(model.fem, loop, before, after))
+                for (const std::size_t t : resection.sweptTets(model.fem, loop.sampleMm, before, after))
                     pedal = pedal && resection.tetPathology()[t] == only;
             if (!pedal) {
                 before = std::move(after);
@@ -137,7 +137,7 @@ struct Run {
                 continue;
             }
             ++pedalSteps;
-            const sim::CutEvent event = resection.cut(model, loop, before, after);
+            const sim::CutEvent event = resection.cut(model, loop.sampleMm, before, after);
             if (refactorAt < 1.0 && model.fem.factorStaleness() > refactorAt) {
                 const auto t = Clock::now();
                 model.fem.refactor();

@@ -21,6 +21,8 @@ int main(int argc, char** argv) {
         return parsed.exitCode;
     }
     const hs::simapp::SimOptions& options = *parsed.options;
+    if (!options.writeDemoPath.empty())
+        return hs::simapp::writeDemonstration(options);
     if (options.headless)
         return hs::simapp::runHeadless(options);
     // VTK needs an OpenGL 3.2 core context; Qt's windows share contexts, so the format is set for all of them.

@@ -234,6 +234,24 @@ TEST_F(EndoscopicViewTest, ACutHidesTheFacesOfItsTetsAndDrawsTheBaredFacesAndThe
     view.setLoop(loop);
     draw(view);
     EXPECT_GT(greys(), 0);
+    // Exchanged for the office scope's scissors, 5 mm out, open: their shaft and jaws are metal too, and the open
+    // jaws cover more of the picture than the shut ones.
+    sim::LoopState scissors = loop;
+    scissors.instrument = sim::kInstrumentScissors;
+    scissors.widthMm = 0.0;
+    scissors.travelMm = 5.0;
+    scissors.middleMm = {5.0, 0.0, -1.5}; // out of the working channel below the optic
+    scissors.jawLengthMm = 3.0;
+    scissors.jawOpenDeg = 25.0;
+    view.setLoop(scissors);
+    draw(view);
+    const int open = greys();
+    EXPECT_GT(open, 0);
+    scissors.jawOpenDeg = 0.0;
+    view.setLoop(scissors);
+    draw(view);
+    EXPECT_GT(greys(), 0);
+    EXPECT_LT(greys(), open);
     loop.out = false;
     view.setLoop(loop);
     draw(view);

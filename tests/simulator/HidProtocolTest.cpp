@@ -233,9 +233,14 @@ TEST(HidInput, AnImpossibleWorkingElementOrInstrumentIsRefusedByName) {
     auto far = good;
     putI32(far, 29, kWorkingElementMaxCount + 1);
     EXPECT_TRUE(refusedNaming(far, "workingElement"));
-    auto scissors = good;
-    scissors[33] = 2; // no such instrument (yet)
-    EXPECT_TRUE(refusedNaming(scissors, "instrument"));
+    auto unknown = good;
+    unknown[33] = 4; // no such instrument
+    EXPECT_TRUE(refusedNaming(unknown, "instrument"));
+    auto grasper = good;
+    grasper[33] = 3; // the office scope's grasper, the last instrument
+    auto taken = decodeInputReport(grasper.data(), grasper.size(), Calibration{}, kProtocolVersion2);
+    ASSERT_TRUE(taken) << taken.error().detail;
+    EXPECT_EQ(taken->sample.instrument, sim::kInstrumentGrasper);
     auto reserved = good;
     reserved[35] = 1;
     EXPECT_TRUE(refusedNaming(reserved, "reserved"));

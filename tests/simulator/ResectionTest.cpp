@@ -126,7 +126,7 @@ TEST(Resection, TheLoopTakesTheTetsItsWirePassesThroughAndCountsThem) {
     for (int s = 1; s <= 28; ++s) {
         const double x = 7.0 - 0.5 * s;
         const std::vector<Vec3> to = sim::loopWire(loop, Vec3{x, 1.0, 0.5}, axis, down);
-        const sim::CutEvent event = resection.cut(tissue.model, loop, from, to);
+        const sim::CutEvent event = resection.cut(tissue.model, loop.sampleMm, from, to);
         taken.insert(event.removed.begin(), event.removed.end());
         pathologyMl += event.pathologyMl;
         healthyMl += event.healthyMl;
@@ -169,6 +169,69 @@ TEST(Resection, TheLoopTakesTheTetsItsWirePassesThroughAndCountsThem) {
     EXPECT_EQ(tissue.fem.looseLivePieces(), 0u);
 }
 
+TEST(Resection, TheScissorsJawsOpenSymmetricallyAndTheirClosingCutsWhatLiesBetweenThem) {
+    sim::JawInstrument jaws;
+    const Vec3 hinge{-4.0, 1.0, -1.0}, axis{1.0, 0.0, 0.0}, down{0.0, 0.0, -1.0};
+    const std::vector<Vec3> open = sim::jawWire(jaws, hinge, axis, down, jaws.openDeg);
+    const std::vector<Vec3> shut = sim::jawWire(jaws, hinge, axis, down, 0.0);
+    ASSERT_EQ(open.size(), shut.size()); // a closing is a sweep of the same points
+    ASSERT_EQ(open.size() % 2, 1u);
+    EXPECT_NEAR(norm(open[open.size() / 2] - hinge), 0.0, 1e-12);
+    const double a = jaws.openDeg * 3.14159265358979323846 / 180.0;
+    for (const Vec3& tip : {open.front(), open.back()}) {
+        EXPECT_NEAR(norm(tip - hinge), jaws.jawLengthMm, 1e-12);
+        EXPECT_NEAR(dot(tip - hinge, axis), jaws.jawLengthMm * std::cos(a), 1e-12);
+        EXPECT_NEAR(tip.y, hinge.y, 1e-12); // in the plane of the shaft and down
+    }
+    EXPECT_NEAR(dot(open.back() - hinge, down), jaws.jawLengthMm * std::sin(a), 1e-12);
+    EXPECT_NEAR(dot(open.front() - hinge, down), -jaws.jawLengthMm * std::sin(a), 1e-12);
+    for (std::size_t k = 1; k < open.size(); ++k)
+        EXPECT_LE(norm(open[k] - open[k - 1]), jaws.sampleMm + 1e-12);
+    for (const Vec3& p : shut)
+        EXPECT_NEAR(norm(cross(p - hinge, axis)), 0.0, 1e-12);
+
+    // The hinge 1 mm deep in the block's polyp, the jaws in the x-z plane: closing them in ten steps takes every tet
+    // their edges pass through, and only tets within a cube's diagonal of the wedge they close over.
+    TestTissue tissue;
+    makeTissue(tissue);
+    auto made = sim::Resection::make(tissue.scene, tissue.mesh, tissue.boundary, tissue.faceCavity);
+    ASSERT_TRUE(made) << made.error().detail;
+    sim::Resection resection = std::move(*made);
+    std::set<std::size_t> taken;
+    std::vector<Vec3> from = open;
+    for (int s = 1; s <= 10; ++s) {
+        const std::vector<Vec3> to = sim::jawWire(jaws, hinge, axis, down, jaws.openDeg * (1.0 - 0.1 * s));
+        const sim::CutEvent event = resection.cut(tissue.model, jaws.sampleMm, from, to);
+        taken.insert(event.removed.begin(), event.removed.end());
+        from = to;
+    }
+    std::set<std::size_t> swept;
+    sim::JawInstrument fine = jaws;
+    fine.sampleMm = 0.05;
+    for (int s = 0; s <= 100; ++s)
+        for (const Vec3& p : sim::jawWire(fine, hinge, axis, down, jaws.openDeg * (1.0 - 0.01 * s)))
+            for (std::size_t t = 0; t < tissue.mesh.tets.size(); ++t)
+                if (inside(p, tissue.mesh, t))
+                    swept.insert(t);
+    ASSERT_FALSE(swept.empty());
+    for (const std::size_t t : swept)
+        EXPECT_TRUE(taken.count(t)) << "tet " << t << " lay between the blades and was left";
+    bool polyp = false;
+    for (const std::size_t t : taken) {
+        polyp = polyp || tissue.mesh.regions[t] == 1;
+        for (const std::int32_t v : tissue.mesh.tets[t]) {
+            const Vec3& p = tissue.mesh.points[static_cast<std::size_t>(v)];
+            EXPECT_LE(std::abs(p.y - hinge.y), 3.5); // the blades' plane, y = 1
+            EXPECT_GE(p.x, hinge.x - 3.5);
+            EXPECT_LE(p.x, hinge.x + jaws.jawLengthMm + 3.5);
+        }
+    }
+    EXPECT_TRUE(polyp);
+    EXPECT_GT(resection.totals().pathologyRemovedMl[0], 0.0);
+    EXPECT_TRUE(tissue.fem.singularPoints().empty());
+    EXPECT_EQ(tissue.fem.looseLivePieces(), 0u);
+}
+
 TEST(Resection, ACutThroughTheOuterWallIsAPerforation) {
     // The loop drawn down through the block's side (x = -10 mm, the serosa here).
     TestTissue tissue;
@@ -179,7 +242,7 @@ TEST(Resection, ACutThroughTheOuterWallIsAPerforation) {
     const Vec3 axis{0.0, 0.0, -1.0}, down{1.0, 0.0, 0.0};
     sim::LoopElectrode loop;
     const sim::CutEvent event =
-        resection.cut(tissue.model, loop, sim::loopWire(loop, Vec3{-11.0, 0.0, 1.0}, axis, down),
+        resection.cut(tissue.model, loop.sampleMm, sim::loopWire(loop, Vec3{-11.0, 0.0, 1.0}, axis, down),
                       sim::loopWire(loop, Vec3{-11.0, 0.0, -3.0}, axis, down));
     EXPECT_FALSE(event.removed.empty());
     EXPECT_TRUE(event.perforation);
@@ -207,7 +270,7 @@ TEST(Resection, CuttingARegionsLastTetAndSeveringTheTopFromTheHeldBaseLeaveASolv
         std::size_t chips = 0;
         for (int s = 1; s <= 48; ++s) {
             const std::vector<Vec3> to = sim::loopWire(loop, Vec3{12.0 - 0.5 * s, 0.0, 20.0 - depthMm}, axis, down);
-            chips += resection.cut(tissue.model, loop, from, to).chips.size();
+            chips += resection.cut(tissue.model, loop.sampleMm, from, to).chips.size();
             from = to;
         }
         return chips;

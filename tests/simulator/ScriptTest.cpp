@@ -102,7 +102,7 @@ TEST(Script, RefusesMalformedScripts) {
     expectRefused(head + R"([{"t": 0, "insertionMm": 1e999}]})", "insertionMm");
     expectRefused(head + R"([{"t": 0, "insertionMm": "deep"}]})", "/keyframes/0/insertionMm");
     expectRefused(head + R"([{"t": 0, "buttons": 64}]})", "/keyframes/0/buttons");
-    expectRefused(head + R"([{"t": 0, "instrument": 2}]})", "/keyframes/0/instrument");
+    expectRefused(head + R"([{"t": 0, "instrument": 4}]})", "/keyframes/0/instrument");
     expectRefused(head + R"([{"t": 0, "workingElementMm": 21}]})", "/keyframes/0/workingElementMm");
     expectRefused(head + R"([{"t": 0, "force": 1}]})", "/keyframes/0/force");
     expectRefused(head + R"([{"insertionMm": 1}]})", "/keyframes/0/t");

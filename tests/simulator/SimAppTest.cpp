@@ -7,6 +7,7 @@
 #include "hs/io/HtmlPage.h"
 #include "hs/scene/ScenePackage.h"
 #include "hs/sim/Metrics.h"
+#include "hs/sim/Script.h"
 #include "hs/sim/World.h"
 
 #include <gtest/gtest.h>
@@ -65,10 +66,11 @@ constexpr const char* kShortScript = R"({"format": "hysteroscene-script", "versi
 } // namespace
 
 TEST(SimCommandLine, RefusesBadArgumentsWithUsageErrors) {
-    for (const char* arguments : {"--optic 45 scene", "--diameter 3 scene", "--exercise surgery scene",
-                                  "--frobnicate scene", "scene --headless", "scene --device joystick",
-                                  "scene --device hid:xyz:1", "scene --replay t.trial --device scripted:s.json",
-                                  "scene --demo --device hid", "scene --demo --replay t.trial"}) {
+    for (const char* arguments :
+         {"--optic 45 scene", "--diameter 3 scene", "--exercise surgery scene", "--frobnicate scene",
+          "scene --headless", "scene --device joystick", "scene --device hid:xyz:1",
+          "scene --replay t.trial --device scripted:s.json", "scene --demo --device hid",
+          "scene --demo --replay t.trial", "--write-demo d.json"}) {
         const auto run = sim(arguments);
         EXPECT_EQ(run.exitCode, 2) << arguments << "\n" << run.out;
     }
@@ -186,6 +188,14 @@ TEST_F(SimHeadless, TheDemoPlaysTheBuiltInExplorationAndRecordsItsTrial) {
                               " --report " + shellQuote(tmp.file("b.json")));
     ASSERT_EQ(replayed.exitCode, 0) << replayed.out;
     EXPECT_EQ(a, readText(tmp.file("b.json")));
+    // --write-demo: the same demonstration as a script file, to edit and play as a scripted device.
+    const auto written =
+        sim(shellQuote(s_package) + " --exercise exploration --write-demo " + shellQuote(tmp.file("demo.json")));
+    ASSERT_EQ(written.exitCode, 0) << written.out;
+    auto script = hs::sim::readScript(tmp.file("demo.json"));
+    ASSERT_TRUE(script) << script.error().detail;
+    EXPECT_GT(script->keyframes.size(), 10u);
+    EXPECT_NE(written.out.find("demo.json"), std::string::npos) << written.out;
 }
 
 TEST_F(SimHeadless, RefusesATrialOfAnotherScene) {

@@ -5,6 +5,7 @@
 #include "SimPackage.h"
 #include "hs/scene/Hydrometra.h"
 #include "hs/scene/Sha256.h"
+#include "hs/sim/Resection.h"
 
 #include <gtest/gtest.h>
 
@@ -534,6 +535,112 @@ TEST(World, TheLoopCutsThePolypAndTheContactSurfaceFollowsTheCut) {
     EXPECT_LT(openAfter, openBefore);
     EXPECT_GT(world->metrics().resection.coagulationTimeS, 0.0);
     EXPECT_DOUBLE_EQ(world->metrics().bloodLossMl, world->state().fluid.bloodLossMl);
+
+    // Instrument exchange: the office scope's 5 Fr scissors and grasper. `reach` brings an instrument's jaws, open,
+    // their middle on `target` (the shaft on the line from the pivot), over 0.7 s.
+    const JawInstrument jaws;
+    const auto reach = [&](const Vec3& target, std::uint32_t instrument) {
+        // The jaws' middle is the tip + (travel + half a jaw) along the shaft + the channel's offset towards the
+        // image's bottom: the tip aimed for twice, the second time with the first pose's bottom.
+        const double travel = 3.0;
+        Vec3 jawsAt = target;
+        DeviceSample to;
+        for (int pass = 0; pass < 2; ++pass) {
+            const Vec3 along = normalized(jawsAt - world->frame().pivotMm);
+            to = sampleAiming(world->frame(), jawsAt - along * (travel + 0.5 * jaws.jawLengthMm));
+            const ScopePose pose = scopePose(world->frame(), world->options().scope, to);
+            const Vec3 up = pose.up - pose.shaft * dot(pose.up, pose.shaft);
+            jawsAt = target + normalized(up) * jaws.channelOffsetMm;
+        }
+        const DeviceSample from = samples.back();
+        to.inflow = from.inflow;
+        to.outflow = from.outflow;
+        to.workingElementMm = travel;
+        to.instrument = instrument;
+        to.buttons = 0;
+        for (int k = 1; k <= 12; ++k) {
+            DeviceSample s = to;
+            const double u = k / 12.0;
+            s.insertionMm = from.insertionMm + (to.insertionMm - from.insertionMm) * u;
+            s.pitchDeg = from.pitchDeg + (to.pitchDeg - from.pitchDeg) * u;
+            s.yawDeg = from.yawDeg + (to.yawDeg - from.yawDeg) * u;
+            s.rollDeg = from.rollDeg + (to.rollDeg - from.rollDeg) * u;
+            stepHeld(*world, s, 0.05, samples);
+        }
+        stepHeld(*world, to, 0.1, samples);
+        const LoopState& now = world->state().loop;
+        EXPECT_EQ(now.instrument, instrument);
+        EXPECT_NEAR(now.jawOpenDeg, jaws.openDeg, 1e-9);
+        std::printf("%s: the jaws' middle %.2f mm from its target\n", std::string(instrumentName(instrument)).c_str(),
+                    distance(now.middleMm + now.axis * (0.5 * now.jawLengthMm), target));
+        return to;
+    };
+    // The scissors on the live polyp tet nearest the scope's tip: their blades closing take it.
+    const TetMesh& rest = world->simulationMesh();
+    const std::int32_t polypRegion = pathologies[static_cast<std::size_t>(polyp)].regionId;
+    const std::shared_ptr<const CutView> cutSoFar = world->snapshot().cut;
+    ASSERT_TRUE(cutSoFar);
+    std::size_t target = rest.tetCount();
+    Vec3 targetMm;
+    for (std::size_t t = 0; t < rest.tetCount(); ++t) {
+        if (rest.regionOf(t) != polypRegion || cutSoFar->removedTets[t])
+            continue;
+        Vec3 c;
+        for (const std::int32_t v : rest.tets[t])
+            c += world->simulationPointsMm()[static_cast<std::size_t>(v)] * 0.25;
+        if (target == rest.tetCount() ||
+            distance(c, world->state().scope.tipMm) < distance(targetMm, world->state().scope.tipMm)) {
+            target = t;
+            targetMm = c;
+        }
+    }
+    ASSERT_LT(target, rest.tetCount());
+    const std::uint64_t eventsBefore = world->metrics().resection.cutEvents;
+    const double polypBefore = world->metrics().resection.pathologies[static_cast<std::size_t>(polyp)].removedMl;
+    const double cuttingBefore = world->metrics().resection.cuttingTimeS;
+    DeviceSample snip = reach(targetMm, kInstrumentScissors);
+    EXPECT_FALSE(world->state().loop.cutting);
+    snip.buttons = kButtonCut;
+    stepHeld(*world, snip, 0.3, samples); // shut after jaws.closeS
+    EXPECT_DOUBLE_EQ(world->state().loop.jawOpenDeg, 0.0);
+    EXPECT_GT(world->metrics().resection.cutEvents, eventsBefore);
+    EXPECT_TRUE(world->snapshot().cut->removedTets[target]) << "the tet between the blades was left";
+    std::printf("scissors: %llu cut events, %.4f mL more of the polyp removed\n",
+                static_cast<unsigned long long>(world->metrics().resection.cutEvents - eventsBefore),
+                world->metrics().resection.pathologies[static_cast<std::size_t>(polyp)].removedMl - polypBefore);
+    EXPECT_GT(world->metrics().resection.pathologies[static_cast<std::size_t>(polyp)].removedMl, polypBefore);
+    EXPECT_GT(world->metrics().resection.cuttingTimeS, cuttingBefore);
+    snip.buttons = 0;
+    stepHeld(*world, snip, 0.3, samples);
+    EXPECT_NEAR(world->state().loop.jawOpenDeg, jaws.openDeg, 1e-9); // let go, they open again
+    EXPECT_EQ(world->health().invertedTets, 0u);
+
+    // The grasper on the chip nearest the scope's tip (the loop, put down, let go of those it held): its jaws
+    // shutting take hold of it; drawn out through the canal, the chip goes with them out of the cavity.
+    const WorldSnapshot beforeGrasp = world->snapshot();
+    ASSERT_FALSE(beforeGrasp.chips.empty());
+    const Chip* nearest = &beforeGrasp.chips.front();
+    for (const Chip& chip : beforeGrasp.chips) {
+        EXPECT_FALSE(chip.hooked);
+        if (distance(chip.positionMm, world->state().scope.tipMm) <
+            distance(nearest->positionMm, world->state().scope.tipMm))
+            nearest = &chip;
+    }
+    DeviceSample grasp = reach(nearest->positionMm, kInstrumentGrasper);
+    const std::uint64_t outBefore = world->metrics().resection.chipsCarriedOut;
+    const std::size_t leftBefore = world->snapshot().chips.size();
+    EXPECT_FALSE(world->state().loop.holding);
+    grasp.buttons = kButtonCut;
+    stepHeld(*world, grasp, 0.3, samples);
+    EXPECT_TRUE(world->state().loop.holding);
+    for (int k = 1; k <= 20; ++k) { // out to 5 mm beyond the pivot over a second
+        DeviceSample s = grasp;
+        s.insertionMm = grasp.insertionMm + (5.0 - grasp.insertionMm) * (k / 20.0);
+        stepHeld(*world, s, 0.05, samples);
+    }
+    EXPECT_EQ(world->metrics().resection.chipsCarriedOut, outBefore + 1);
+    EXPECT_EQ(world->snapshot().chips.size(), leftBefore - 1);
+    EXPECT_FALSE(world->state().loop.holding);
 
     Trial trial;
     trial.header = world->trialHeader();

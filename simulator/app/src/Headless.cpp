@@ -63,6 +63,20 @@ int failWith(const Error& error) {
 
 } // namespace
 
+int writeDemonstration(const SimOptions& options) {
+    auto world = sim::World::load(options.scene, options.world);
+    if (!world)
+        return failWith(world.error());
+    auto planned = sim::demonstrationScript(**world);
+    if (!planned)
+        return failWith(planned.error());
+    if (auto written = sim::writeScript(*planned, options.writeDemoPath); !written)
+        return failWith(written.error());
+    std::cout << "demonstration " << options.writeDemoPath << " (" << planned->keyframes.size() << " key frames, "
+              << static_cast<double>(planned->tickCount()) / sim::kDeviceRateHz << " s)\n";
+    return kExitOk;
+}
+
 int runHeadless(const SimOptions& options) {
     sim::Trial trial;
     sim::TrialReport report;

@@ -107,8 +107,8 @@ bool KeyboardSource::next(std::uint64_t firstTick, std::size_t count, sim::Devic
                 *roll += 360.0;
         }
         m_sample.buttons = (m_markTicksLeft > 0 ? sim::kButtonMark : 0u) | (m_pressTicksLeft > 0 ? m_pressed : 0u);
-        // The pedals work the loop only (a diagnostic scope has nothing to energise).
-        if (m_sample.instrument == sim::kInstrumentLoop)
+        // The pedals work an instrument only (a diagnostic scope alone has nothing to energise or close).
+        if (m_sample.instrument != sim::kInstrumentNone)
             m_sample.buttons |= m_pedals;
         m_markTicksLeft = m_markTicksLeft > 0 ? m_markTicksLeft - 1 : 0;
         m_pressTicksLeft = m_pressTicksLeft > 0 ? m_pressTicksLeft - 1 : 0;

@@ -47,6 +47,8 @@ std::string combinationProblem(const SimOptions& o) {
         return "--replay plays the trial's own samples: it takes no --device";
     if (o.headless && o.scene.empty())
         return "--headless needs a SCENE";
+    if (!o.writeDemoPath.empty() && o.scene.empty())
+        return "--write-demo needs a SCENE";
     if (!o.htmlPath.empty() && o.reportPath.empty() && o.headless)
         return "--html needs --report OUT.json";
     return {};
@@ -144,6 +146,9 @@ ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
         "check runs it headless");
     app.add_option("--record", o.recordPath, "write the trial (every device sample) to this file");
     app.add_option("--replay", o.replayPath, "play a recorded trial back");
+    app.add_option("--write-demo", o.writeDemoPath,
+                   "write the exercise's demonstration as a script (JSON) to this file and quit: edit it, play it with "
+                   "--device scripted:FILE");
     // For the docs' pictures: the window saved after a while, then closed (not in --help).
     app.add_option("--screenshot", o.screenshotPath, "save the window to this image, then quit")->group("");
     app.add_option("--screenshot-after", o.screenshotAfterS, "seconds after the window opened")

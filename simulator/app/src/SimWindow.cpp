@@ -153,11 +153,11 @@ QString SimWindow::keyHelp() {
               "<tr><td>Ctrl+E</td><td>end the trial and show the report</td></tr>"
               "<tr><td>Ctrl+R</td><td>restart the trial</td></tr>"
               "<tr><td>F1</td><td>this help</td></tr></table>") +
-           tr("<p>The resectoscope (polypectomy, myomectomy) and the pump:</p><table>"
-              "<tr><td>R / F</td><td>push the loop out / draw it in (the working element)</td></tr>"
-              "<tr><td>C, held</td><td>the cutting pedal</td></tr>"
+           tr("<p>The instruments (polypectomy, myomectomy) and the pump:</p><table>"
+              "<tr><td>L</td><td>the next instrument: the resectoscope's loop, scissors, grasper, none</td></tr>"
+              "<tr><td>R / F</td><td>push the instrument out / draw it in (the working element)</td></tr>"
+              "<tr><td>C, held</td><td>the cutting pedal (scissors and grasper: close the jaws)</td></tr>"
               "<tr><td>V, held</td><td>the coagulating pedal</td></tr>"
-              "<tr><td>L</td><td>take up or put down the loop</td></tr>"
               "<tr><td>+ / -</td><td>raise / lower the pump's set pressure by 5 mmHg</td></tr></table>");
 }
 
@@ -260,7 +260,7 @@ void SimWindow::startSession(std::unique_ptr<sim::World> world) {
     } else {
         auto keyboard = std::make_unique<KeyboardSource>();
         if (sim::isOperative(m_world->options().exercise))
-            keyboard->setInstrument(sim::kInstrumentLoop); // the resectoscope in hand (L puts it down)
+            keyboard->setInstrument(sim::kInstrumentLoop); // the resectoscope in hand (L exchanges it)
         m_keyboard = keyboard.get();
         m_source = std::move(keyboard);
     }
@@ -509,8 +509,7 @@ bool SimWindow::handleKey(QKeyEvent* event, bool press) {
         return true;
     case Qt::Key_L:
         if (press)
-            m_keyboard->setInstrument(m_keyboard->current().instrument == sim::kInstrumentLoop ? sim::kInstrumentNone
-                                                                                               : sim::kInstrumentLoop);
+            m_keyboard->setInstrument(sim::nextInstrument(m_keyboard->current().instrument));
         return true;
     case Qt::Key_Plus:
     case Qt::Key_Equal:

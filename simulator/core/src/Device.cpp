@@ -17,6 +17,23 @@ double clampedValue(double v, double lo, double hi) {
 
 } // namespace
 
+std::string_view instrumentName(std::uint32_t instrument) {
+    switch (instrument) {
+    case kInstrumentLoop:
+        return "loop";
+    case kInstrumentScissors:
+        return "scissors";
+    case kInstrumentGrasper:
+        return "grasper";
+    default:
+        return "none";
+    }
+}
+
+std::uint32_t nextInstrument(std::uint32_t instrument) {
+    return instrument >= kMaxInstrument ? kInstrumentNone : instrument + 1;
+}
+
 bool isValid(const DeviceSample& s) {
     return within(s.insertionMm, kMinInsertionMm, kMaxInsertionMm) && within(s.pitchDeg, -kMaxPivotDeg, kMaxPivotDeg) &&
            within(s.yawDeg, -kMaxPivotDeg, kMaxPivotDeg) && within(s.rollDeg, -kMaxRollDeg, kMaxRollDeg) &&

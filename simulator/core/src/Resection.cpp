@@ -73,6 +73,25 @@ std::vector<Vec3> loopWire(const LoopElectrode& loop, const Vec3& centreMm, cons
     return wire;
 }
 
+std::vector<Vec3> jawWire(const JawInstrument& jaws, const Vec3& hingeMm, const Vec3& axis, const Vec3& down,
+                          double openDeg) {
+    const Vec3 forward = normalized(axis);
+    const Vec3 d = normalized(down);
+    const double a = std::clamp(openDeg, 0.0, 89.0) * kPi / 180.0;
+    const auto pieces = static_cast<std::size_t>(
+        std::max(1.0, std::ceil(std::max(0.0, jaws.jawLengthMm) / std::max(1e-3, jaws.sampleMm))));
+    const Vec3 up = (forward * std::cos(a) - d * std::sin(a)) * jaws.jawLengthMm;
+    const Vec3 low = (forward * std::cos(a) + d * std::sin(a)) * jaws.jawLengthMm;
+    std::vector<Vec3> wire;
+    wire.reserve(2 * pieces + 1);
+    for (std::size_t k = pieces; k > 0; --k)
+        wire.push_back(hingeMm + up * (static_cast<double>(k) / static_cast<double>(pieces)));
+    wire.push_back(hingeMm);
+    for (std::size_t k = 1; k <= pieces; ++k)
+        wire.push_back(hingeMm + low * (static_cast<double>(k) / static_cast<double>(pieces)));
+    return wire;
+}
+
 Result<Resection> Resection::make(const scene::Scene& scene, const TetMesh& restMm,
                                   const std::vector<Triangle>& boundary, const std::vector<char>& faceCavity) {
     if (faceCavity.size() != boundary.size())
@@ -144,7 +163,7 @@ Result<Resection> Resection::make(const scene::Scene& scene, const TetMesh& rest
     return r;
 }
 
-std::vector<std::size_t> Resection::sweptTets(const mechanics::CorotationalFem& fem, const LoopElectrode& loop,
+std::vector<std::size_t> Resection::sweptTets(const mechanics::CorotationalFem& fem, double sampleMm,
                                               const std::vector<Vec3>& wireFromMm,
                                               const std::vector<Vec3>& wireToMm) const {
     std::vector<std::size_t> hit;
@@ -153,7 +172,7 @@ std::vector<std::size_t> Resection::sweptTets(const mechanics::CorotationalFem& 
         return hit;
     // The swept wire's samples: each point's path cut into pieces no longer than a sample, the wire between them the
     // same.
-    const double sample = std::max(1e-3, loop.sampleMm);
+    const double sample = std::max(1e-3, sampleMm);
     double move = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
         if (!isFinite(wireFromMm[i]) || !isFinite(wireToMm[i]))
@@ -202,11 +221,11 @@ std::vector<std::size_t> Resection::sweptTets(const mechanics::CorotationalFem& 
     return hit;
 }
 
-CutEvent Resection::cut(mechanics::UterusModel& model, const LoopElectrode& loop, const std::vector<Vec3>& wireFromMm,
+CutEvent Resection::cut(mechanics::UterusModel& model, double sampleMm, const std::vector<Vec3>& wireFromMm,
                         const std::vector<Vec3>& wireToMm) {
     const auto started = Clock::now();
     CutEvent event;
-    const std::vector<std::size_t> hit = sweptTets(model.fem, loop, wireFromMm, wireToMm);
+    const std::vector<std::size_t> hit = sweptTets(model.fem, sampleMm, wireFromMm, wireToMm);
     if (hit.empty()) {
         event.topologyMs = std::chrono::duration<double, std::milli>(Clock::now() - started).count();
         return event;

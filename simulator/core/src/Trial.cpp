@@ -127,10 +127,10 @@ std::string sampleProblem(const DeviceSample& s) {
                    numberText(f.hi) + f.unit;
     if (s.buttons & ~kKnownButtons)
         return "buttons " + std::to_string(s.buttons) + " has bits other than " + std::to_string(kKnownButtons) +
-               " (mark, capture, cut, coagulate)";
+               " (mark, capture, cut, coagulate, pump up, pump down)";
     if (s.instrument > kMaxInstrument)
         return "instrument " + std::to_string(s.instrument) + " is outside 0.." + std::to_string(kMaxInstrument) +
-               " (0 none, 1 loop)";
+               " (0 none, 1 loop, 2 scissors, 3 grasper)";
     return {};
 }
 

@@ -1,7 +1,8 @@
 // The resectoscope's loop in the world (docs/simulator.md, "Cutting"): the wire on the working element of the physics'
 // scope, the tets it sweeps with the cutting pedal down removed from the tissue (hs::sim::Resection on the uterus
 // model: the solver's factor downdated, the fluid's volume kept continuous), and the contact surface following the
-// cut in the same step: the faces of removed tets leave it, the faces the cut bared join it.
+// cut in the same step: the faces of removed tets leave it, the faces the cut bared join it. The office scope's
+// scissors cut the same way, the tets their closing blades sweep; its grasper takes hold of chips.
 #include "WorldImpl.h"
 
 #include "hs/core/TriangleGeometry.h"
@@ -22,6 +23,7 @@ LoopState loopStateOf(const ScopeFrame& frame, const ScopeConfig& scope, const L
     const ScopePose pose = scopePose(frame, scope, body);
     LoopState s;
     s.out = true;
+    s.instrument = kInstrumentLoop;
     s.widthMm = loop.widthMm;
     s.travelMm = body.workingElementMm;
     s.middleMm = pose.tipMm + pose.shaft * body.workingElementMm;
@@ -44,19 +46,32 @@ std::vector<Vec3> World::Impl::loopWireMm(const DeviceSample& device, Vec3& midd
 }
 
 void World::Impl::cut(const DeviceSample& device) {
-    const bool pedal = device.instrument == kInstrumentLoop && (device.buttons & kButtonCut) != 0;
-    // The factor rebuilt on its own thread while the pedal is up: started at a fixed step after a cut, taken in a
-    // fixed number of steps later (a replay does the same at the same steps, and gets the same factor).
+    const bool squeezed = (device.buttons & kButtonCut) != 0;
+    const bool pedal = device.instrument == kInstrumentLoop && squeezed;
+    const bool jawsOut = device.instrument == kInstrumentScissors || device.instrument == kInstrumentGrasper;
+    // The factor rebuilt on its own thread while nothing cuts: started at a fixed step after a cut, taken in a fixed
+    // number of steps later (a replay does the same at the same steps, and gets the same factor).
     if (tissue.refactorRunning() && state.step >= rebuildDueStep)
         tissue.finishRefactor(); // dropped when cuts came meanwhile: the next pause starts another
-    if (!pedal && !tissue.refactorRunning() && !tissue.surfacePrecomputed() && tissue.startRefactor())
+    const bool cuttingNow = pedal || (device.instrument == kInstrumentScissors && squeezed);
+    if (!cuttingNow && !tissue.refactorRunning() && !tissue.surfacePrecomputed() && tissue.startRefactor())
         rebuildDueStep = state.step + kRebuildSteps;
     state.loop = LoopState{};
     if (lastPedal && !pedal && stripMl > 0.0)
         releaseStrip(lastLoopMm); // the pedal up: the strip comes off the loop
     lastPedal = pedal;
+    for (Chip& chip : chips) {
+        chip.grasped = chip.grasped && device.instrument == kInstrumentGrasper; // put down with the grasper
+        chip.hooked = chip.hooked && !jawsOut; // the loop exchanged for the office scope's instruments lets go
+    }
+    if (!jawsOut) {
+        lastJawMm.clear();
+        jawOpenDeg = jaws.openDeg; // a new instrument comes out of the channel open
+    }
     if (device.instrument != kInstrumentLoop) {
         lastWireMm.clear();
+        if (jawsOut)
+            moveJaws(device, squeezed);
         moveChips(device);
         return;
     }
@@ -73,59 +88,111 @@ void World::Impl::cut(const DeviceSample& device) {
     if (pedal && !lastWireMm.empty()) {
         m.cuttingTimeS += options.stepS;
         m.loopPathMm += distance(middle, lastLoopMm);
-        const CutEvent event = resection->cut(uterus, loop, lastWireMm, wire);
-        if (!event.removed.empty()) {
-            surfaceAfterCut(event.removed);
-            // The tissue cut away: pieces cut free float off at once, the rest gathers on the loop as its strip.
-            std::vector<char> inPiece(tissue.tetCount(), 0);
-            for (const std::vector<std::size_t>& piece : event.chips) {
-                Chip chip;
-                std::array<double, 5> byTissue{};
-                Vec3 centre;
-                double corners = 0.0;
-                for (const std::size_t t : piece) {
-                    inPiece[t] = 1;
-                    const double ml = tissue.restVolumeM3(t) * 1e6;
-                    chip.volumeMl += ml;
-                    byTissue[static_cast<std::size_t>(resection->tetTissue()[t])] += ml;
-                    for (const std::int32_t v : tissue.tets()[t]) {
-                        centre += pointsMm[static_cast<std::size_t>(v)];
-                        corners += 1.0;
-                    }
-                }
-                chip.positionMm = centre / std::max(corners, 1.0);
-                chip.radiusMm = std::cbrt(3.0 * chip.volumeMl * 1e3 / (4.0 * kPi));
-                chip.tissue = static_cast<clinical::Tissue>(std::max_element(byTissue.begin(), byTissue.end()) -
-                                                            byTissue.begin());
-                chips.push_back(chip);
-                m.chipsMade += 1;
-            }
-            for (const std::size_t t : event.removed)
-                if (!inPiece[t]) {
-                    const double ml = tissue.restVolumeM3(t) * 1e6;
-                    stripMl += ml;
-                    stripByTissue[static_cast<std::size_t>(resection->tetTissue()[t])] += ml;
-                }
-            const ResectionTotals& totals = resection->totals();
-            for (std::size_t k = 0; k < m.pathologies.size() && k < totals.pathologyRemovedMl.size(); ++k) {
-                PathologyResection& p = m.pathologies[k];
-                p.removedMl = totals.pathologyRemovedMl[k];
-                p.removedPercent = p.volumeMl > 0.0 ? 100.0 * p.removedMl / p.volumeMl : 0.0;
-            }
-            m.healthyRemovedMl = totals.healthyMl;
-            m.deepestMyometriumMm = totals.deepestMyometriumMm;
-            m.perforatingCuts = totals.perforations;
-            m.cutEvents = totals.events;
-            m.removedTets = totals.removedTets;
-            m.chips = totals.chips;
-            if (m.firstCutS < 0.0)
-                m.firstCutS = state.timeS;
-            m.resectionTimeS = state.timeS - m.firstCutS;
-        }
+        tookTissue(resection->cut(uterus, loop.sampleMm, lastWireMm, wire), true);
     }
     lastWireMm = std::move(wire);
     lastLoopMm = middle;
     moveChips(device);
+}
+
+void World::Impl::moveJaws(const DeviceSample& device, bool squeezed) {
+    // Out of the working channel (below the optic) as far as the working element pushes it, the jaws in the plane of
+    // the shaft and the image's up; they close at a squeeze's pace while it is held and open again when it is let go.
+    LoopState s = loopStateOf(frame, options.scope, loop, physicsSample(device));
+    s.instrument = device.instrument;
+    s.middleMm += s.down * jaws.channelOffsetMm; // the hinge, out of the working channel
+    s.widthMm = 0.0;
+    s.jawLengthMm = jaws.jawLengthMm;
+    const double before = jawOpenDeg;
+    const double turn = jaws.openDeg / jaws.closeS * options.stepS;
+    jawOpenDeg = squeezed ? std::max(0.0, before - turn) : std::min(jaws.openDeg, before + turn);
+    s.jawOpenDeg = jawOpenDeg;
+    std::vector<Vec3> wire = jawWire(jaws, s.middleMm, s.axis, s.down, jawOpenDeg);
+    const Vec3 between = s.middleMm + s.axis * (0.5 * jaws.jawLengthMm);
+    if (device.instrument == kInstrumentScissors) {
+        // The blades closing cut what lies between them (the tets their edges sweep).
+        s.cutting = squeezed && before > 0.0;
+        if (s.cutting) {
+            metrics.resection.cuttingTimeS += options.stepS;
+            if (!lastJawMm.empty())
+                tookTissue(resection->cut(uterus, jaws.sampleMm, lastJawMm, wire), false);
+        }
+    } else {
+        // The grasper's jaws shutting take the nearest chip within reach; opening lets it go.
+        if (squeezed && before > 0.0 && jawOpenDeg <= 0.0) {
+            std::size_t nearest = chips.size();
+            double best = 1e300;
+            for (std::size_t k = 0; k < chips.size(); ++k) {
+                const double d = distance(chips[k].positionMm, between);
+                if (!chips[k].hooked && d <= chips[k].radiusMm + kChipCatchMm && d < best) {
+                    best = d;
+                    nearest = k;
+                }
+            }
+            if (nearest < chips.size())
+                chips[nearest].grasped = true;
+        }
+        if (!squeezed)
+            for (Chip& chip : chips)
+                chip.grasped = false;
+        for (const Chip& chip : chips)
+            s.holding = s.holding || chip.grasped;
+    }
+    lastJawMm = std::move(wire);
+    state.loop = s;
+}
+
+void World::Impl::tookTissue(const CutEvent& event, bool toStrip) {
+    if (event.removed.empty())
+        return;
+    ResectionMetrics& m = metrics.resection;
+    surfaceAfterCut(event.removed);
+    // The tissue cut away: pieces cut free float off at once, the rest gathers on the loop as its strip.
+    std::vector<char> inPiece(tissue.tetCount(), 0);
+    for (const std::vector<std::size_t>& piece : event.chips) {
+        Chip chip;
+        std::array<double, 5> byTissue{};
+        Vec3 centre;
+        double corners = 0.0;
+        for (const std::size_t t : piece) {
+            inPiece[t] = 1;
+            const double ml = tissue.restVolumeM3(t) * 1e6;
+            chip.volumeMl += ml;
+            byTissue[static_cast<std::size_t>(resection->tetTissue()[t])] += ml;
+            for (const std::int32_t v : tissue.tets()[t]) {
+                centre += pointsMm[static_cast<std::size_t>(v)];
+                corners += 1.0;
+            }
+        }
+        chip.positionMm = centre / std::max(corners, 1.0);
+        chip.radiusMm = std::cbrt(3.0 * chip.volumeMl * 1e3 / (4.0 * kPi));
+        chip.tissue =
+            static_cast<clinical::Tissue>(std::max_element(byTissue.begin(), byTissue.end()) - byTissue.begin());
+        chips.push_back(chip);
+        m.chipsMade += 1;
+    }
+    if (toStrip)
+        for (const std::size_t t : event.removed)
+            if (!inPiece[t]) {
+                const double ml = tissue.restVolumeM3(t) * 1e6;
+                stripMl += ml;
+                stripByTissue[static_cast<std::size_t>(resection->tetTissue()[t])] += ml;
+            }
+    const ResectionTotals& totals = resection->totals();
+    for (std::size_t k = 0; k < m.pathologies.size() && k < totals.pathologyRemovedMl.size(); ++k) {
+        PathologyResection& p = m.pathologies[k];
+        p.removedMl = totals.pathologyRemovedMl[k];
+        p.removedPercent = p.volumeMl > 0.0 ? 100.0 * p.removedMl / p.volumeMl : 0.0;
+    }
+    m.healthyRemovedMl = totals.healthyMl;
+    m.deepestMyometriumMm = totals.deepestMyometriumMm;
+    m.perforatingCuts = totals.perforations;
+    m.cutEvents = totals.events;
+    m.removedTets = totals.removedTets;
+    m.chips = totals.chips;
+    if (m.firstCutS < 0.0)
+        m.firstCutS = state.timeS;
+    m.resectionTimeS = state.timeS - m.firstCutS;
 }
 
 void World::Impl::releaseStrip(const Vec3& whereMm) {
@@ -145,7 +212,8 @@ void World::Impl::moveChips(const DeviceSample& device) {
     ResectionMetrics& m = metrics.resection;
     // The loop drawn in catches the chips at its middle; caught, they go with it and leave the cavity when the tip is
     // drawn back behind the internal os.
-    const bool drawnIn = state.loop.out && device.workingElementMm <= 1.0;
+    const bool drawnIn = state.loop.instrument == kInstrumentLoop && device.workingElementMm <= 1.0;
+    const Vec3 between = state.loop.middleMm + state.loop.axis * (0.5 * state.loop.jawLengthMm);
     const bool outOfCavity = dot(state.scope.tipMm - landmarks.internalOsMm, frame.axis) <= 0.0;
     const Vec3 sink = Vec3{0.0, -kChipSinkMmPerS * options.stepS, 0.0};
     std::size_t kept = 0;
@@ -153,12 +221,15 @@ void World::Impl::moveChips(const DeviceSample& device) {
         Chip chip = chips[k];
         if (!chip.hooked && drawnIn && distance(chip.positionMm, state.loop.middleMm) <= chip.radiusMm + kChipCatchMm)
             chip.hooked = true;
-        if (chip.hooked) {
+        if (chip.hooked || chip.grasped) {
             if (outOfCavity) {
                 m.chipsCarriedOut += 1;
                 continue;
             }
-            chip.positionMm = state.loop.out ? state.loop.middleMm : state.scope.tipMm;
+            if (chip.grasped)
+                chip.positionMm = between;
+            else
+                chip.positionMm = state.loop.instrument == kInstrumentLoop ? state.loop.middleMm : state.scope.tipMm;
         } else {
             // Sinking until it rests on the wall (its surface at the contact surface).
             const Vec3 next = chip.positionMm + sink;

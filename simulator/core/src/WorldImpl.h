@@ -120,7 +120,8 @@ inline constexpr double kCoagulationReachMm = 1.5;
 /// in saline of 1005 kg/m^3, a millimetre-sized piece at a drag-limited speed of millimetres to centimetres a
 /// second: this project's estimate.
 inline constexpr double kChipSinkMmPerS = 5.0;
-/// mm: the loop drawn in (working element at most 1 mm) catches a chip whose surface lies this close to its middle.
+/// mm: the loop drawn in (working element at most 1 mm) catches a chip whose surface lies this close to its middle;
+/// the grasper's jaws shutting take hold of the nearest chip whose surface lies this close to theirs.
 inline constexpr double kChipCatchMm = 2.0;
 
 struct World::Impl {
@@ -174,6 +175,14 @@ struct World::Impl {
     void moveChips(const DeviceSample& device);
     std::vector<Vec3> lastWireMm; ///< the wire where the last step left it (empty: not out)
     Vec3 lastLoopMm;
+    /// A cut event's tissue: pieces cut free float off as chips; the rest gathers on the loop's strip (`toStrip`) or,
+    /// the scissors' kerf, is gone; the resection's metrics follow.
+    void tookTissue(const CutEvent& event, bool toStrip);
+    // The office scope's scissors and grasper (WorldCut.cpp): their jaws close while kButtonCut is held.
+    JawInstrument jaws;
+    double jawOpenDeg = JawInstrument{}.openDeg; ///< each jaw's angle off the shaft now (wide open at first)
+    std::vector<Vec3> lastJawMm;                 ///< the jaws' wire where the last step left it (empty: not out)
+    void moveJaws(const DeviceSample& device, bool squeezed);
     /// The solver's factor rebuilt on its own thread once the pedal is up after a cut (the downdates drop the
     /// surface's precomputed compliance, which the contacts need to stay fast), taken in at this step.
     std::uint64_t rebuildDueStep = 0;

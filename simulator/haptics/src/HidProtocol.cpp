@@ -59,7 +59,7 @@ const std::array<std::uint8_t, 238> kReportDescriptor = {
     0x95, 0x01,                   //   Report Count (1)
     0x81, 0x02,                   //   Input (Data, Variable, Absolute)
     0x09, 0x19,                   //   Usage (0x19: instrument; protocol 2)
-    0x25, 0x01,                   //   Logical Maximum (1)
+    0x25, 0x03,                   //   Logical Maximum (3)
     0x75, 0x10,                   //   Report Size (16)
     0x81, 0x02,                   //   Input (Data, Variable, Absolute)
     0x81, 0x03,                   //   Input (Constant): reserved, 0

@@ -703,22 +703,33 @@ void EndoscopicView::setCutSurface(const std::vector<Vec3>& pointsMm, const std:
 
 void EndoscopicView::setLoop(const sim::LoopState& loop) {
     Impl& d = *m_impl;
-    if (!loop.out || !(loop.widthMm > 0.0)) {
+    const bool jaws = loop.instrument == sim::kInstrumentScissors || loop.instrument == sim::kInstrumentGrasper;
+    if (!loop.out || !(jaws ? loop.jawLengthMm > 0.0 : loop.widthMm > 0.0)) {
         d.loopActor->VisibilityOff();
         return;
     }
-    sim::LoopElectrode electrode;
-    electrode.widthMm = loop.widthMm;
-    const std::vector<Vec3> wire = sim::loopWire(electrode, loop.middleMm, loop.axis, loop.down);
-    if (wire.size() < 2) {
-        d.loopActor->VisibilityOff();
-        return;
-    }
-    // The arms from the wire's ends back along the sheath to its tip, then the wire.
     std::vector<Vec3> path;
-    path.push_back(wire.front() - loop.axis * loop.travelMm);
-    path.insert(path.end(), wire.begin(), wire.end());
-    path.push_back(wire.back() - loop.axis * loop.travelMm);
+    if (jaws) {
+        // The instrument's shaft from the scope's tip to the hinge, then the jaws: one tip, the hinge, the other.
+        sim::JawInstrument instrument;
+        instrument.jawLengthMm = loop.jawLengthMm;
+        const std::vector<Vec3> wire = sim::jawWire(instrument, loop.middleMm, loop.axis, loop.down, loop.jawOpenDeg);
+        path.push_back(loop.middleMm - loop.axis * loop.travelMm);
+        path.push_back(loop.middleMm);
+        path.insert(path.end(), wire.begin(), wire.end());
+    } else {
+        sim::LoopElectrode electrode;
+        electrode.widthMm = loop.widthMm;
+        const std::vector<Vec3> wire = sim::loopWire(electrode, loop.middleMm, loop.axis, loop.down);
+        if (wire.size() < 2) {
+            d.loopActor->VisibilityOff();
+            return;
+        }
+        // The arms from the wire's ends back along the sheath to its tip, then the wire.
+        path.push_back(wire.front() - loop.axis * loop.travelMm);
+        path.insert(path.end(), wire.begin(), wire.end());
+        path.push_back(wire.back() - loop.axis * loop.travelMm);
+    }
     auto points = vtkSmartPointer<vtkPoints>::New();
     auto line = vtkSmartPointer<vtkCellArray>::New();
     line->InsertNextCell(static_cast<int>(path.size()));
@@ -729,7 +740,7 @@ void EndoscopicView::setLoop(const sim::LoopState& loop) {
     polyline->SetLines(line);
     auto tube = vtkSmartPointer<vtkTubeFilter>::New();
     tube->SetInputData(polyline);
-    tube->SetRadius(d.look.loopWireRadiusMm);
+    tube->SetRadius(jaws ? d.look.jawRadiusMm : d.look.loopWireRadiusMm);
     tube->SetNumberOfSides(8);
     tube->Update();
     d.loopGeometry->ShallowCopy(tube->GetOutput());
@@ -737,7 +748,7 @@ void EndoscopicView::setLoop(const sim::LoopState& loop) {
     // metal grey, or the orange of the vapour pocket round a wire carrying current in saline (dimmer coagulating).
     vtkProperty* property = d.loopActor->GetProperty();
     property->LightingOff();
-    if (loop.cutting)
+    if (loop.cutting && !jaws) // cold steel does not glow
         property->SetColor(1.0, 0.78, 0.45);
     else if (loop.coagulating)
         property->SetColor(0.9, 0.62, 0.4);

@@ -65,6 +65,17 @@ HudText hudText(const sim::WorldState& state, const sim::FluidSettings& fluid, c
     else
         hud.status += format("found %.0f/%.0f pathologies", progress.pathologiesFound, progress.pathologies);
     hud.status += "\n" + format("force %4.2f N", state.contact.forceN);
+    if (operative) {
+        // The instrument in hand, and what it does.
+        const sim::LoopState& tool = state.loop;
+        hud.status += "   " + std::string(sim::instrumentName(tool.out ? tool.instrument : sim::kInstrumentNone));
+        if (tool.cutting)
+            hud.status += tool.instrument == sim::kInstrumentLoop ? " cutting" : " closing";
+        else if (tool.coagulating)
+            hud.status += " coagulating";
+        else if (tool.holding)
+            hud.status += " holding a chip";
+    }
     if (state.contact.perforated)
         hud.warning = "PERFORATION";
     else if (f.deficitLimit)

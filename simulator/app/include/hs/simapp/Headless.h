@@ -31,4 +31,8 @@ struct ScriptedRun {
 /// code, printing errors as "hysteroscene-sim: <message>" to stderr.
 int runHeadless(const SimOptions& options);
 
+/// --write-demo: writes the exercise's demonstration on `options.scene` as a script to options.writeDemoPath (to
+/// edit and play as a scripted device); the exit code, errors printed as runHeadless does.
+int writeDemonstration(const SimOptions& options);
+
 } // namespace hs::simapp

@@ -39,6 +39,7 @@ struct SimOptions {
     bool headless = false;      ///< --headless: no window (needs --replay, a scripted device or --demo)
     std::string reportPath;     ///< --report: the report's JSON
     std::string htmlPath;       ///< --html: the report's page
+    std::string writeDemoPath;  ///< --write-demo: write the exercise's demonstration as a script here, then quit
     std::string language;       ///< --lang (also --language): the window's language; empty: HS_LANG, else the system's
     std::string screenshotPath; ///< --screenshot (hidden): save the window here after --screenshot-after, then quit
     double screenshotAfterS = 5.0; ///< --screenshot-after: s of wall clock after the window opened

@@ -7,6 +7,7 @@
 #include "hs/core/Units.h"
 
 #include <cstdint>
+#include <string_view>
 
 namespace hs::sim {
 
@@ -17,7 +18,8 @@ inline constexpr int kDeviceRateHz = 1000;
 enum DeviceButton : std::uint32_t {
     kButtonMark = 1u << 0,      ///< diagnosis: mark the pathology at the centre of the view
     kButtonCapture = 1u << 1,   ///< take a still (recorded as an event; no effect on the world)
-    kButtonCut = 1u << 2,       ///< the resectoscope's cutting pedal: the loop carries cutting current
+    kButtonCut = 1u << 2,       ///< the resectoscope's cutting pedal: the loop carries cutting current (scissors and
+                                ///< grasper: their jaws close)
     kButtonCoagulate = 1u << 3, ///< the coagulating pedal: the loop seals the vessels it touches
     kButtonPumpUp = 1u << 4,    ///< each press raises the pump's set pressure by kPumpStepKpa
     kButtonPumpDown = 1u << 5,  ///< each press lowers it by kPumpStepKpa
@@ -32,15 +34,24 @@ inline constexpr double kPumpStepKpa = 5.0 * units::kKpaPerMmHg;
 enum Instrument : std::uint32_t {
     kInstrumentNone = 0, ///< the diagnostic scope alone (a protocol-v1 device, the exploration)
     kInstrumentLoop = 1, ///< the bipolar resectoscope's loop electrode on its working element
+    /// The office hysteroscope's 5 Fr instruments through its working channel (docs/simulator.md, "The office scope's
+    /// scissors and grasper"), pushed out by the working element; kButtonCut closes their jaws (the handle squeezed).
+    kInstrumentScissors = 2, ///< semi-rigid scissors: the blades closing cut what lies between them
+    kInstrumentGrasper = 3,  ///< grasping forceps: the jaws closing on a chip hold it until they open
 };
-inline constexpr std::uint32_t kMaxInstrument = kInstrumentLoop;
+inline constexpr std::uint32_t kMaxInstrument = kInstrumentGrasper;
+/// "none", "loop", "scissors", "grasper" (an id out of range: "none").
+std::string_view instrumentName(std::uint32_t instrument);
+/// The instrument an exchange brings: loop, scissors, grasper, none, loop again.
+std::uint32_t nextInstrument(std::uint32_t instrument);
 
 /// The allowed range of every field (the HID codec clamps to these; a sample outside them is refused).
 inline constexpr double kMinInsertionMm = -50.0; ///< mm, the tip this far outside the pivot (external os)
 inline constexpr double kMaxInsertionMm = 150.0; ///< mm, longer than any uterus (docs/references.md [Verguts2013])
 inline constexpr double kMaxPivotDeg = 60.0;     ///< degrees, |pitch| and |yaw| about the cervical pivot
 inline constexpr double kMaxRollDeg = 180.0;     ///< degrees, |roll| and |camera roll|
-/// mm, the loop's travel beyond the sheath's tip on the working element (docs/simulator.md, "Instruments").
+/// mm, the loop's travel beyond the sheath's tip on the working element (docs/simulator.md, "The resectoscope in the
+/// simulator").
 inline constexpr double kMaxWorkingElementMm = 20.0;
 
 struct DeviceSample {

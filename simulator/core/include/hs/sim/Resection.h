@@ -35,6 +35,27 @@ struct LoopElectrode {
 /// on the line through the centre normal to both, at most loop.sampleMm apart.
 std::vector<Vec3> loopWire(const LoopElectrode& loop, const Vec3& centreMm, const Vec3& axis, const Vec3& down);
 
+/// The office hysteroscope's 5 Fr mechanical instruments, scissors and grasping forceps, through its working channel
+/// (Bettocchi et al. 2004): two jaws hinged at the instrument's end, in the plane of the shaft and `down`, opening
+/// symmetrically about the shaft (docs/simulator.md, "The office scope's scissors and grasper").
+struct JawInstrument {
+    double shaftMm = 5.0 / 3.0; ///< mm, 5 Fr (the French gauge is the outer diameter in mm times 3)
+    double jawLengthMm = 3.0;   ///< hinge to tip (the project's choice: about twice the shaft)
+    double openDeg = 25.0;      ///< each jaw's angle off the shaft wide open (the project's choice)
+    double closeS = 0.25;       ///< s, wide open to shut (the project's choice: a squeeze of the handle)
+    /// mm, the working channel's axis from the optic's, towards the image's bottom (the project's choice: side by side
+    /// in the 4-5 mm sheath of an office scope); the instrument comes out of the tip there.
+    double channelOffsetMm = 1.5;
+    double sampleMm = 0.2; ///< the jaws and their motion are followed at this spacing
+};
+
+/// The jaws' edges as one wire, mm: from one jaw's tip (on the side away from `down`) through the hinge at `hingeMm`
+/// to the other's, each jaw `openDeg` off `axis` (unit, the shaft's forward; 0: shut) in the plane of `axis` and
+/// `down` (unit, normal to it), at most jaws.sampleMm apart; the same number of points at every opening, so a closing
+/// is a sweep (Resection::sweptTets).
+std::vector<Vec3> jawWire(const JawInstrument& jaws, const Vec3& hingeMm, const Vec3& axis, const Vec3& down,
+                          double openDeg);
+
 /// What one cut event (a step with the pedal on and the loop moved) took.
 struct CutEvent {
     std::vector<std::size_t> removed;            ///< every tet removed, ascending (with chips and manifold repair)
@@ -70,13 +91,13 @@ public:
                                                 const std::vector<char>& faceCavity);
 
     /// The live tets of `fem` (positions as they are now) the wire passes through moving from `wireFromMm` to
-    /// `wireToMm` (the same number of points; a point moving farther than loop.sampleMm is followed in between),
-    /// ascending; none for wires of no points or not finite.
-    std::vector<std::size_t> sweptTets(const mechanics::CorotationalFem& fem, const LoopElectrode& loop,
+    /// `wireToMm` (the same number of points; a point moving farther than `sampleMm` is followed in between),
+    /// ascending; none for wires of no points or not finite. The loop's wire, or the jaws' (jawWire).
+    std::vector<std::size_t> sweptTets(const mechanics::CorotationalFem& fem, double sampleMm,
                                        const std::vector<Vec3>& wireFromMm, const std::vector<Vec3>& wireToMm) const;
     /// Those tets removed from `model`'s solver (UterusModel::cutTets with Refactor::Downdate: the factor follows the
     /// cut, the fluid's volume stays continuous) and accounted. An event with no tet swept changes nothing.
-    CutEvent cut(mechanics::UterusModel& model, const LoopElectrode& loop, const std::vector<Vec3>& wireFromMm,
+    CutEvent cut(mechanics::UterusModel& model, double sampleMm, const std::vector<Vec3>& wireFromMm,
                  const std::vector<Vec3>& wireToMm);
 
     const ResectionTotals& totals() const { return m_totals; }

@@ -77,14 +77,19 @@ struct ContactState {
     bool perforated = false; ///< the tip is beyond the wall
 };
 
-/// The resectoscope's loop as the step left it (the operative exercises), to draw it: loopWire(LoopElectrode with
-/// widthMm, middleMm, axis, down) gives its wire.
+/// The instrument out of the scope as the step left it (the operative exercises), to draw it. The resectoscope's
+/// loop: loopWire(LoopElectrode with widthMm, middleMm, axis, down) gives its wire; scissors and grasper: jawWire(a
+/// JawInstrument of jawLengthMm, middleMm as the hinge, axis, down, jawOpenDeg) their jaws.
 struct LoopState {
-    bool out = false;         ///< the loop is in use (instrument kInstrumentLoop in an operative exercise)
-    bool cutting = false;     ///< the cutting pedal is down
+    bool out = false; ///< an instrument is in use (an operative exercise)
+    std::uint32_t instrument = kInstrumentNone;
+    bool cutting = false;     ///< the cutting pedal is down (the loop), the scissors' blades are closing
     bool coagulating = false; ///< the coagulating pedal is down (and the cutting pedal up)
-    double widthMm = 0.0;
-    double travelMm = 0.0; ///< the working element: the loop's middle this far beyond the sheath's tip
+    double widthMm = 0.0;     ///< the loop's span
+    double travelMm = 0.0;    ///< the working element: the loop's middle (the jaws' hinge) this far beyond the tip
+    double jawLengthMm = 0.0; ///< scissors and grasper
+    double jawOpenDeg = 0.0;  ///< each jaw's angle off the shaft (0: shut)
+    bool holding = false;     ///< the grasper holds a chip
     Vec3 middleMm, axis, down;
 };
 
@@ -117,7 +122,9 @@ struct Chip {
     double volumeMl = 0.0;
     double radiusMm = 0.0; ///< of a sphere of its volume
     clinical::Tissue tissue = clinical::Tissue::Myometrium;
-    bool hooked = false; ///< caught by the drawn-in loop: it leaves the cavity with the scope
+    bool hooked = false;  ///< caught by the drawn-in loop: it leaves the cavity with the scope (let go when the
+                          ///< loop is exchanged for the scissors or the grasper)
+    bool grasped = false; ///< held in the grasper's jaws: it goes where they go until they open
 };
 
 /// The state other threads draw: the simulation mesh's points and the world's state, copied at the end of a step,

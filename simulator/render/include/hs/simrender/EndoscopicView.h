@@ -92,6 +92,7 @@ struct EndoscopicLook {
     std::array<std::array<double, 3>, 5> cutColour{
         {{0.62, 0.30, 0.27}, {0.70, 0.33, 0.30}, {0.72, 0.50, 0.46}, {0.82, 0.74, 0.68}, {0.80, 0.55, 0.48}}};
     double loopWireRadiusMm = 0.15; ///< mm, the loop's wire drawn (a 0.3 mm electrode)
+    double jawRadiusMm = 0.4;       ///< mm, the 5 Fr scissors' and grasper's shaft and jaws drawn (a 0.8 mm jaw)
 };
 
 /// Text of the heads-up display (one line each; empty lines are skipped).
