@@ -304,6 +304,7 @@ Status CorotationalFem::build(const std::vector<Vec3>& pointsM, const std::vecto
     m_compliantIndex.assign(n, -1);
     m_compliance.clear();
     m_compliantCount = 0;
+    m_complianceStale = false;
     buildIncidence();
     m_neighbours.assign(tets.size(), {-1, -1, -1, -1});
     {
@@ -817,6 +818,110 @@ void CorotationalFem::precomputeCompliance(const std::vector<std::int32_t>& poin
     m_compliantCount = list.size();
     m_compliantList = list;
     precomputeInto(*m_factor, m_compliantList, m_fixed, *m_team, m_compliance);
+    m_complianceStride = 3 * m_compliantCount;
+    m_complianceStale = false;
+    m_compliancePointVolume = m_pointVolume;
+    m_staleNear.assign(n, 0);
+    m_refreshPoint = 0;
+    m_refreshDof = 0;
+}
+
+bool CorotationalFem::precomputedAt(std::size_t p) const {
+    return m_compliantIndex[p] >= 0 && (!m_complianceStale || (p < m_staleNear.size() && !m_staleNear[p]));
+}
+
+void CorotationalFem::extendPrecomputedSurface(const std::vector<std::int32_t>& points) {
+    if (m_compliantCount == 0 || !m_factor)
+        return;
+    std::vector<std::int32_t> added;
+    for (const std::int32_t p : points)
+        if (p >= 0 && static_cast<std::size_t>(p) < m_x.size() && m_compliantIndex[static_cast<std::size_t>(p)] < 0 &&
+            std::find(added.begin(), added.end(), p) == added.end())
+            added.push_back(p);
+    if (added.empty())
+        return;
+    const std::size_t m3 = 3 * (m_compliantCount + added.size());
+    if (m3 > m_complianceStride) {
+        // Room for this many more points at once: growing copies the whole block.
+        constexpr std::size_t kGrowPoints = 64;
+        const std::size_t stride = m3 + 3 * kGrowPoints, old = 3 * m_compliantCount;
+        std::vector<double> grown(stride * stride, 0.0);
+        for (std::size_t r = 0; r < old; ++r)
+            std::copy_n(&m_compliance[r * m_complianceStride], old, &grown[r * stride]);
+        m_compliance = std::move(grown);
+        m_complianceStride = stride;
+    }
+    m_factor->surfaceY.clear(); // the list's columns of L^-1 would no longer cover it
+    m_staleNear.resize(m_x.size(), 0);
+    for (const std::int32_t p : added) {
+        m_compliantIndex[static_cast<std::size_t>(p)] = static_cast<std::int32_t>(m_compliantCount++);
+        m_compliantList.push_back(p);
+        m_staleNear[static_cast<std::size_t>(p)] = 1; // its columns are computed by the refresh; until then it solves
+    }
+    m_complianceStale = true;
+}
+
+void CorotationalFem::refreshStaleSurface(int dofs) {
+    if (!m_complianceStale || m_compliantCount == 0)
+        return;
+    const auto started = Clock::now();
+    const std::size_t m = m_compliantCount;
+    std::vector<double> column;
+    while (dofs > 0) {
+        // The next point near a cut, from the cursor on (round the list once).
+        std::size_t k = m_refreshPoint % m, looked = 0;
+        while (looked < m && !m_staleNear[static_cast<std::size_t>(m_compliantList[k])]) {
+            k = (k + 1) % m;
+            m_refreshDof = 0;
+            ++looked;
+        }
+        if (looked == m) {
+            m_complianceStale = false; // every point near a cut has its columns of the factor in use again
+            break;
+        }
+        m_refreshPoint = k;
+        const auto p = static_cast<std::size_t>(m_compliantList[k]);
+        const std::size_t d = m_refreshDof;
+        column.assign(3 * m_x.size(), 0.0);
+        column[3 * p + d] = 1.0;
+        solveWith(*m_factor, m_fixed, *m_team, column);
+        if (m_fixed[p][d])
+            std::fill(column.begin(), column.end(), 0.0);
+        for (std::size_t j = 0; j < m; ++j)
+            for (std::size_t e = 0; e < 3; ++e) {
+                const double c = m_fixed[static_cast<std::size_t>(m_compliantList[j])][e]
+                                     ? 0.0
+                                     : column[3 * static_cast<std::size_t>(m_compliantList[j]) + e];
+                m_compliance[(3 * j + e) * m_complianceStride + 3 * k + d] = c;
+                m_compliance[(3 * k + d) * m_complianceStride + 3 * j + e] = c;
+            }
+        if (++m_refreshDof == 3) {
+            m_refreshDof = 0;
+            m_staleNear[p] = 0;
+            m_refreshPoint = k + 1;
+        }
+        --dofs;
+    }
+    m_timings.solveMs += msSince(started);
+}
+
+void CorotationalFem::markStaleNear(const std::vector<std::size_t>& removed) {
+    const std::size_t n = m_x.size();
+    m_staleNear.resize(n, 0);
+    m_refreshDof = 0; // the point being refreshed, if near this cut too, starts over
+    std::vector<char> touched(n, 0);
+    for (const std::size_t t : removed)
+        for (const std::int32_t p : m_tets[t])
+            touched[static_cast<std::size_t>(p)] = 1;
+    // The tets on those points (the incidence lists every tet of a point) bring their other points in.
+    for (std::size_t p = 0; p < n; ++p) {
+        if (!touched[p])
+            continue;
+        m_staleNear[p] = 1;
+        for (std::size_t k = m_incidenceStart[p]; k < m_incidenceStart[p + 1]; ++k)
+            for (const std::int32_t q : m_tets[m_incidence[k].first])
+                m_staleNear[static_cast<std::size_t>(q)] = 1;
+    }
 }
 
 void CorotationalFem::precomputeInto(Factor& f, const std::vector<std::int32_t>& list,
@@ -968,8 +1073,8 @@ void CorotationalFem::complianceBetween(const std::vector<FemConstraint>& rows, 
     for (std::size_t i = 0; i < k && precomputed; ++i) {
         precomputed = rows[i].points.size() <= kPrecomputedRowPoints;
         for (const std::int32_t p : rows[i].points)
-            precomputed = precomputed &&
-                          (m_compliantIndex[static_cast<std::size_t>(p)] >= 0 || held(static_cast<std::size_t>(p)));
+            precomputed =
+                precomputed && (precomputedAt(static_cast<std::size_t>(p)) || held(static_cast<std::size_t>(p)));
     }
     if (!precomputed) {
         if (!forwarded)
@@ -998,7 +1103,7 @@ void CorotationalFem::complianceBetween(const std::vector<FemConstraint>& rows, 
                     });
         return;
     }
-    const std::size_t m3 = 3 * m_compliantCount;
+    const std::size_t m3 = m_complianceStride;
     const bool warped = m_pointR.size() == m_x.size();
     for (std::size_t i = 0; i < k; ++i)
         for (std::size_t j = i; j < k; ++j) {
@@ -1031,10 +1136,10 @@ bool CorotationalFem::onPrecomputedSurface(const std::vector<FemConstraint>& row
         return false;
     for (const FemConstraint& row : rows)
         for (const std::int32_t p : row.points)
-            if (m_compliantIndex[static_cast<std::size_t>(p)] < 0 && !held(static_cast<std::size_t>(p)))
+            if (!precomputedAt(static_cast<std::size_t>(p)) && !held(static_cast<std::size_t>(p)))
                 return false;
     for (const std::int32_t p : m_forcedPoints)
-        if (m_compliantIndex[static_cast<std::size_t>(p)] < 0 && !held(static_cast<std::size_t>(p)))
+        if (!precomputedAt(static_cast<std::size_t>(p)) && !held(static_cast<std::size_t>(p)))
             return false;
     return true;
 }
@@ -1062,7 +1167,7 @@ void CorotationalFem::surfaceResponse(const std::vector<std::pair<std::int32_t, 
         }
         const std::size_t c = 3 * static_cast<std::size_t>(m_compliantIndex[pi]);
         for (std::size_t row = 0; row < m3; ++row) {
-            const double* s = &m_compliance[row * m3 + c];
+            const double* s = &m_compliance[row * m_complianceStride + c];
             local[row] += s[0] * g.x + s[1] * g.y + s[2] * g.z;
         }
     }
@@ -1160,6 +1265,7 @@ void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector
     const std::size_t n = m_x.size();
     const double h = m_settings.stepS, alpha = m_settings.rayleighMassPerS;
     m_timings = {};
+    refreshStaleSurface(m_settings.surfaceRefreshDofs);
     m_xStart = m_x;
     const std::vector<Vec3> vStart = m_v;
     // Valid rows only (a point out of range would corrupt memory: dropped).
@@ -1248,6 +1354,7 @@ void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector
             // Off the precomputed surface (a volume row's interior points): each row's and the last forces' forward
             // solve on its reach; the last forces' motion along a row is their product (forwardProduct).
             const auto started = Clock::now();
+            m_timings.forwardIterations += 1;
             forwardRows(rows);
             if (!m_forcedPoints.empty()) {
                 forwardForced();
@@ -1719,10 +1826,10 @@ CorotationalFem::Removal CorotationalFem::removeTets(const std::vector<std::size
             if (exact && !downdateTet(t))
                 exact = false;
         if (exact) {
-            // The surface's precomputed compliance was the old factor's.
-            m_compliantIndex.assign(m_x.size(), -1);
-            m_compliantCount = 0;
-            m_compliance.clear();
+            // The surface's precomputed compliance was the old factor's: kept, stale, for rows away from the cut;
+            // its columns of L^-1 are the old factor's and go.
+            m_complianceStale = m_compliantCount > 0;
+            markStaleNear(out.removed);
             m_factor->surfaceY.clear();
             m_factorPointVolume = m_pointVolume;
             m_factorStale = false;
@@ -1781,6 +1888,18 @@ bool CorotationalFem::finishRefactor() {
             m_compliantIndex[static_cast<std::size_t>(m_rebuild->list[k])] = static_cast<std::int32_t>(k);
         m_compliantCount = m_rebuild->list.size();
         m_compliantList = m_rebuild->list;
+        m_complianceStride = 3 * m_compliantCount;
+        // Stale when tets went since the start without a downdate (Refactor::Later): those points then solve.
+        m_complianceStale = m_rebuild->liveTets != m_liveTets;
+        m_compliancePointVolume = m_rebuild->pointVolume;
+        m_staleNear.assign(m_x.size(), 0);
+        if (m_complianceStale) {
+            std::vector<std::size_t> since;
+            for (std::size_t t = 0; t < m_tets.size(); ++t)
+                if (m_removed[t] && !m_rebuild->removed[t])
+                    since.push_back(t);
+            markStaleNear(since);
+        }
     }
     m_factorStale = m_rebuild->liveTets != m_liveTets;
     m_factorPointVolume = std::move(m_rebuild->pointVolume);

@@ -49,13 +49,9 @@ void World::Impl::cut(const DeviceSample& device) {
     const bool squeezed = (device.buttons & kButtonCut) != 0;
     const bool pedal = device.instrument == kInstrumentLoop && squeezed;
     const bool jawsOut = device.instrument == kInstrumentScissors || device.instrument == kInstrumentGrasper;
-    // The factor rebuilt on its own thread while nothing cuts: started at a fixed step after a cut, taken in a fixed
-    // number of steps later (a replay does the same at the same steps, and gets the same factor).
-    if (tissue.refactorRunning() && state.step >= rebuildDueStep)
-        tissue.finishRefactor(); // dropped when cuts came meanwhile: the next pause starts another
-    const bool cuttingNow = pedal || (device.instrument == kInstrumentScissors && squeezed);
-    if (!cuttingNow && !tissue.refactorRunning() && !tissue.surfacePrecomputed() && tissue.startRefactor())
-        rebuildDueStep = state.step + kRebuildSteps;
+    // The solver's factor follows the cuts by downdates, and its surface compliance stays in use away from them
+    // (CorotationalFem::removeTets): nothing is rebuilt during a trial. (A rebuild on a thread of its own, taken in
+    // at a fixed step, waited 0.5-1.6 s for it at that step with both cores stepping: docs/simulator.md, "Cutting".)
     state.loop = LoopState{};
     if (lastPedal && !pedal && stripMl > 0.0)
         releaseStrip(lastLoopMm); // the pedal up: the strip comes off the loop
@@ -309,6 +305,11 @@ void World::Impl::surfaceAfterCut(const std::vector<std::size_t>& removed) {
             faceUnrolled.push_back({std::atan2(dot(r, cavityLeft), dot(r, cavityAnterior)) / kDeg, along, false});
             faceSeen.push_back(0);
         }
+    // The bared faces' points join the solver's precomputed surface (their columns are computed over the next steps).
+    std::vector<std::int32_t> bared;
+    for (std::size_t f = triangles->size(); f < tris->size(); ++f)
+        bared.insert(bared.end(), (*tris)[f].begin(), (*tris)[f].end());
+    tissue.extendPrecomputedSurface(bared);
     triangles = tris;
     contactSurface.triangles = *tris;
     bvh.build(*tris, pointsMm, faceDead);

@@ -91,10 +91,6 @@ std::vector<Vec3> loopWireOf(const ScopeFrame& frame, const ScopeConfig& scope, 
 /// The same loop as a LoopState (out, its middle, the sheath's axis and the side it hangs to; pedals unset).
 LoopState loopStateOf(const ScopeFrame& frame, const ScopeConfig& scope, const LoopElectrode& loop, DeviceSample body);
 
-/// Steps between the start of the factor's rebuild after a cut and its taking in (3 s at 5 ms: the rebuild of the
-/// default scene's factor and surface compliance takes 1-1.5 s on a core of its own; bench_cutting).
-constexpr std::uint64_t kRebuildSteps = 600;
-
 struct Zone {
     std::string name;
     std::vector<std::int32_t> faces;
@@ -183,9 +179,6 @@ struct World::Impl {
     double jawOpenDeg = JawInstrument{}.openDeg; ///< each jaw's angle off the shaft now (wide open at first)
     std::vector<Vec3> lastJawMm;                 ///< the jaws' wire where the last step left it (empty: not out)
     void moveJaws(const DeviceSample& device, bool squeezed);
-    /// The solver's factor rebuilt on its own thread once the pedal is up after a cut (the downdates drop the
-    /// surface's precomputed compliance, which the contacts need to stay fast), taken in at this step.
-    std::uint64_t rebuildDueStep = 0;
 
     // The scope (WorldContact.cpp): the physics' scope's dofs (insertion m, pitch rad, yaw rad), coupled to the device.
     std::array<double, 3> scopeDofs{};

@@ -526,6 +526,91 @@ TEST(Mechanics, AStaleFactorSettlesWhereAFreshOneDoes) {
     EXPECT_LT(apart, 0.01 * sag) << "sag " << sag << " m, apart " << apart << " m";
 }
 
+TEST(Mechanics, ADowndateKeepsTheSurfacesBlockAwayFromTheCutAndTheStepsRefreshItNearTheCut) {
+    // A corner cube of the top layer cut away by downdates. The precomputed surface block is kept: a row far from the
+    // cut still uses it, a row next to it solves, until the steps have computed the columns of the points near the
+    // cut again; those then equal a fresh precompute's. Kept stale, the block still leads a pressed contact far from
+    // the cut to the same equilibrium as a fresh one.
+    const Block block = makeBlock();
+    const std::vector<FemMaterial> materials(block.tets.size(), FemMaterial{30e3, 0.47, 1050.0});
+    std::vector<std::int32_t> top;
+    for (int j = 0; j < block.nx; ++j)
+        for (int i = 0; i < block.nx; ++i)
+            top.push_back(block.at(i, j, block.nz - 1));
+    const std::size_t perLayer = 6 * static_cast<std::size_t>((block.nx - 1) * (block.nx - 1));
+    std::vector<std::size_t> corner;
+    for (std::size_t t = 0; t < 6; ++t)
+        corner.push_back((block.nz - 2) * perLayer + t); // the cube at i = j = 0 of the top layer
+    const auto make = [&](int refreshDofs, bool fresh) {
+        FemSettings settings;
+        settings.surfaceRefreshDofs = refreshDofs;
+        auto fem = std::make_unique<CorotationalFem>();
+        EXPECT_TRUE(fem->build(block.points, block.tets, materials, block.fixed, {}, settings));
+        fem->precomputeCompliance(top);
+        fem->removeTets(corner, CorotationalFem::Refactor::Downdate);
+        if (fresh)
+            fem->precomputeCompliance(top);
+        return fem;
+    };
+    const FemConstraint far =
+        contactRow({top[60], top[61], top[72]}, {0.4, 0.3, 0.3}, Vec3{0.0, 0.0, 1.0}, Vec3{0.0, 0.0, 1e-3});
+    const FemConstraint near =
+        contactRow({top[12], top[13], top[24]}, {0.4, 0.3, 0.3}, Vec3{0.0, 0.0, 1.0}, Vec3{0.0, 0.0, 1e-3});
+    const std::vector<Vec3> none(block.points.size(), Vec3{});
+
+    auto kept = make(1, false);
+    EXPECT_TRUE(kept->surfaceComplianceStale());
+    EXPECT_FALSE(kept->surfacePrecomputed());
+    std::vector<FemConstraint> rows{far};
+    kept->step(none, rows);
+    EXPECT_EQ(kept->lastTimings().forwardIterations, 0); // the kept block
+    rows = {near};
+    kept->step(none, rows);
+    EXPECT_GT(kept->lastTimings().forwardIterations, 0); // forward solves next to the cut
+    int steps = 2;
+    while (!kept->surfacePrecomputed() && steps < 1000) {
+        std::vector<FemConstraint> empty;
+        kept->step(none, empty);
+        ++steps;
+    }
+    std::printf("the points near the cut refreshed in %d steps (a dof a step)\n", steps);
+    ASSERT_TRUE(kept->surfacePrecomputed());
+    EXPECT_FALSE(kept->surfaceComplianceStale());
+    auto fresh = make(1, true);
+    std::vector<FemConstraint> both{near, far}, bothFresh{near, far};
+    kept->step(none, both);
+    fresh->step(none, bothFresh);
+    EXPECT_EQ(kept->lastTimings().forwardIterations, 0);
+    const std::vector<double>& w = kept->lastContactCompliance();
+    const std::vector<double>& wFresh = fresh->lastContactCompliance();
+    ASSERT_EQ(w.size(), 4u);
+    ASSERT_EQ(wFresh.size(), 4u);
+    EXPECT_NEAR(w[0], wFresh[0], 1e-9 * wFresh[0]); // near-near: refreshed
+    EXPECT_NEAR(w[1], wFresh[1], 1e-9 * wFresh[0]); // near-far: refreshed with the near point's columns
+    EXPECT_NEAR(w[3], wFresh[3], 0.01 * wFresh[3]); // far-far: kept from before the cut, within 1 %
+    std::printf("far-far compliance kept %.6g, fresh %.6g\n", w[3], wFresh[3]);
+
+    // Pressed 0.1 mm down far from the cut, the block never refreshed: the fresh block's equilibrium.
+    auto stale = make(0, false);
+    auto exact = make(0, true);
+    const FemConstraint press =
+        contactRow({top[60], top[61], top[72]}, {0.4, 0.3, 0.3}, Vec3{0.0, 0.0, 1.0}, Vec3{0.0, 0.0, -0.1e-3});
+    for (int s = 0; s < 300; ++s) {
+        std::vector<FemConstraint> a{press}, b{press};
+        stale->step(none, a);
+        exact->step(none, b);
+    }
+    EXPECT_TRUE(stale->surfaceComplianceStale());
+    double moved = 0.0, apart = 0.0;
+    for (std::size_t i = 0; i < block.points.size(); ++i) {
+        moved = std::max(moved, norm(exact->positionsM()[i] - block.points[i]));
+        apart = std::max(apart, norm(stale->positionsM()[i] - exact->positionsM()[i]));
+    }
+    std::printf("pressed: moved %.3g m, the stale block's state %.3g m off the fresh one's\n", moved, apart);
+    EXPECT_GT(moved, 0.05e-3);
+    EXPECT_LT(apart, 1e-3 * moved);
+}
+
 TEST(Mechanics, AFactorRebuiltOnItsThreadIsTheCallersBitForBit) {
     // The same removal with the factor rebuilt on its own thread and on the caller's: the same steps after, bit for
     // bit (the surface's compliance precomputed in both).

@@ -39,9 +39,10 @@ struct FemMaterial {
 
 /// Where the last step's time went, ms (wall clock).
 struct FemStepTimings {
-    double forcesMs = 0.0;   ///< the corotated forces (and rotations)
-    double solveMs = 0.0;    ///< the factor's solves
-    double contactsMs = 0.0; ///< the constraints' compliance and their complementarity problem
+    double forcesMs = 0.0;     ///< the corotated forces (and rotations)
+    double solveMs = 0.0;      ///< the factor's solves
+    double contactsMs = 0.0;   ///< the constraints' compliance and their complementarity problem
+    int forwardIterations = 0; ///< iterations whose constraints took forward solves (off the precomputed surface)
 };
 
 struct FemSettings {
@@ -77,6 +78,9 @@ struct FemSettings {
     /// Threads for the force evaluation (each tet's and each point's work is independent, and the sums run in a
     /// fixed order: every thread count gives the same bits).
     int threads = 2;
+    /// Solves per step spent refreshing the precomputed surface compliance near cuts (a dof's column each; see
+    /// removeTets); 0: never (the rows near cuts keep solving until refactor()).
+    int surfaceRefreshDofs = 1;
     /// Evaluate the residual at the end of each step (reactionN, residualN): one more force evaluation per step.
     bool endResidual = true;
     /// No tet's volume falls below this share of its rest volume (0: no such bound). Tissue is nearly incompressible
@@ -170,9 +174,13 @@ public:
     /// refactor() is called. Out-of-range and removed tets are ignored.
     /// Downdate: each removed tet's stiffness is taken out of the factor by rank-one downdates along the elimination
     /// tree's paths (Davis & Hager, SIAM J Matrix Anal Appl 20(3):606-627, 1999): the factor stays the live tets'
-    /// (their masses kept: the matrix a little heavier than the tissue), and the precomputed surface compliance is
-    /// dropped (contact rows take the forward solves on their reach) until refactor(). With the nodal pressure in the
-    /// matrix, or a pivot that would not stay positive, it rebuilds instead.
+    /// (their masses kept: the matrix a little heavier than the tissue). The precomputed surface compliance becomes
+    /// stale until refactor(): contact rows on points within a tet of a removed tet take the forward solves on their
+    /// reach (exact) until step() has computed their columns again (FemSettings::surfaceRefreshDofs a step); rows
+    /// elsewhere keep the block from before the cut, a little stiffer than the tissue now (removing tets only adds
+    /// give): like a stale factor it only slows the convergence of those rows, the steps' residual being the live
+    /// tets' (docs/simulator.md, "Cutting"). With the nodal pressure in the matrix,
+    /// or a pivot that would not stay positive, it rebuilds instead.
     enum class Refactor { Now, Later, Downdate };
     struct Removal {
         std::vector<std::size_t> removed;            ///< every tet this call removed, ascending
@@ -206,7 +214,10 @@ public:
     bool finishRefactor();
     /// Whether the surface's compliance is precomputed for the factor in use (precomputeCompliance; a downdate drops
     /// it, a rebuild restores it).
-    bool surfacePrecomputed() const { return m_compliantList.empty() || m_compliantCount > 0; }
+    bool surfacePrecomputed() const { return m_compliantList.empty() || (m_compliantCount > 0 && !m_complianceStale); }
+    /// Whether the precomputed surface compliance is the one of the factor before the downdates since (kept for the
+    /// contacts away from the cut: see removeTets).
+    bool surfaceComplianceStale() const { return m_complianceStale; }
     /// Points the live tets meet as more than one disk (a singular point of the boundary) or whose live tets' faces
     /// opposite them do not close into one disk or sphere: 0 in a valid solid.
     std::vector<std::int32_t> singularPoints() const;
@@ -227,6 +238,10 @@ public:
     /// step's contact problem costs no solve per contact; rows on other points, or on more than a few dozen points
     /// (the cavity's volume), get their column from a solve.
     void precomputeCompliance(const std::vector<std::int32_t>& points);
+    /// Adds `points` (those not on it yet) to the precomputed surface: faces a cut bared, which a tool now touches.
+    /// Their columns are computed by the steps' refresh (FemSettings::surfaceRefreshDofs); until then rows on them
+    /// solve. Nothing without a precomputed surface.
+    void extendPrecomputedSurface(const std::vector<std::int32_t>& points);
 
     const std::vector<Vec3>& positionsM() const { return m_x; }
     const std::vector<Vec3>& restM() const { return m_rest; }
@@ -378,6 +393,24 @@ private:
     std::vector<std::int32_t> m_forcedPoints; ///< the points those act on
     std::vector<double> m_compliance;         ///< (3 m) x (3 m), row-major
     std::size_t m_compliantCount = 0;
+    /// Downdates since the surface was precomputed: its block is the factor's before them. Rows on points near no
+    /// removed tet keep using it; rows on points near one (m_staleNear) solve until their columns are refreshed.
+    bool m_complianceStale = false;
+    std::vector<double> m_compliancePointVolume; ///< each point's volume when the block was computed
+    /// Per point: a point of a tet removed since its columns were computed, or of a tet sharing a point with one.
+    std::vector<char> m_staleNear;
+    /// Computes `dofs` columns of the block again with the factor in use, for the points near a cut in list order
+    /// (from where the last call stopped: every replay refreshes the same columns at the same step); the block is no
+    /// longer stale once no point near a cut is left.
+    void refreshStaleSurface(int dofs);
+    std::size_t m_complianceStride = 0; ///< the block's row length (3 m and room for points the cuts bare)
+    std::size_t m_refreshPoint = 0;     ///< the list index the refresh goes on from
+    std::size_t m_refreshDof = 0;       ///< and the dof of that point
+    /// Marks the points near the tets removed (`removed`) in m_staleNear.
+    void markStaleNear(const std::vector<std::size_t>& removed);
+    /// Point `p` has a precomputed column that holds for the factor in use, or near enough: on the list, and, with
+    /// the block stale, no removed tet within a tet of it.
+    bool precomputedAt(std::size_t p) const;
     std::vector<double> m_lastW;
     std::size_t m_lastVolumeRows = 0;
     double m_residualNorm = 0.0;

@@ -221,6 +221,7 @@ public:
         double contactSearchMs = 0.0; ///< the scope's contact candidates
         double visibilityMs = 0.0;    ///< what the optic sees, marking
         double cutMs = 0.0; ///< the loop: its cuts (topology, the contact surface), coagulation, the factor's rebuild
+        std::uint64_t forwardContactSteps = 0; ///< steps whose contacts took forward solves (not the surface's block)
     };
     const StepTimings& stepTimings() const;
 
