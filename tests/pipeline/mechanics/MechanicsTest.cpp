@@ -125,6 +125,15 @@ Block makeBlock(int nx = 11, int nz = 6) {
     return b;
 }
 
+/// The block's top points (z = 0), row by row: the surface a tool touches.
+std::vector<std::int32_t> topPoints(const Block& block) {
+    std::vector<std::int32_t> top;
+    for (int j = 0; j < block.nx; ++j)
+        for (int i = 0; i < block.nx; ++i)
+            top.push_back(block.at(i, j, block.nz - 1));
+    return top;
+}
+
 TEST(Mechanics, ContactsPushLikeAHeldPunch) {
     // The four top points round the centre pressed 0.3 mm down, once held (Dirichlet) and once by a rigid plane
     // through contacts: the same force, within the contact solve's tolerance.
@@ -166,10 +175,7 @@ TEST(Mechanics, PrecomputedComplianceGivesTheSameContacts) {
     CorotationalFem onDemand, precomputed;
     ASSERT_TRUE(onDemand.build(block.points, block.tets, materials, block.fixed, {}, settings));
     ASSERT_TRUE(precomputed.build(block.points, block.tets, materials, block.fixed, {}, settings));
-    std::vector<std::int32_t> top;
-    for (int j = 0; j < block.nx; ++j)
-        for (int i = 0; i < block.nx; ++i)
-            top.push_back(block.at(i, j, block.nz - 1));
+    const std::vector<std::int32_t> top = topPoints(block);
     precomputed.precomputeCompliance(top);
     std::vector<FemConstraint> a, b;
     for (int s = 0; s < 200; ++s) {
@@ -533,10 +539,7 @@ TEST(Mechanics, ADowndateKeepsTheSurfacesBlockAwayFromTheCutAndTheStepsRefreshIt
     // the cut to the same equilibrium as a fresh one.
     const Block block = makeBlock();
     const std::vector<FemMaterial> materials(block.tets.size(), FemMaterial{30e3, 0.47, 1050.0});
-    std::vector<std::int32_t> top;
-    for (int j = 0; j < block.nx; ++j)
-        for (int i = 0; i < block.nx; ++i)
-            top.push_back(block.at(i, j, block.nz - 1));
+    const std::vector<std::int32_t> top = topPoints(block);
     const std::size_t perLayer = 6 * static_cast<std::size_t>((block.nx - 1) * (block.nx - 1));
     std::vector<std::size_t> corner;
     for (std::size_t t = 0; t < 6; ++t)
@@ -616,10 +619,7 @@ TEST(Mechanics, AFactorRebuiltOnItsThreadIsTheCallersBitForBit) {
     // bit (the surface's compliance precomputed in both).
     const Block block = makeBlock();
     const std::vector<FemMaterial> materials(block.tets.size(), FemMaterial{30e3, 0.47, 1050.0});
-    std::vector<std::int32_t> top;
-    for (int j = 0; j < block.nx; ++j)
-        for (int i = 0; i < block.nx; ++i)
-            top.push_back(block.at(i, j, block.nz - 1));
+    const std::vector<std::int32_t> top = topPoints(block);
     std::vector<std::size_t> strip;
     for (std::size_t t = 0; t < block.tets.size(); t += 37)
         strip.push_back(t);
@@ -658,10 +658,7 @@ TEST(Mechanics, ARebuildOvertakenByDowndatesIsDroppedAndTheNextRestoresTheSurfac
     // the same bits as a rebuild on the caller's thread.
     const Block block = makeBlock();
     const std::vector<FemMaterial> materials(block.tets.size(), FemMaterial{30e3, 0.47, 1050.0});
-    std::vector<std::int32_t> top;
-    for (int j = 0; j < block.nx; ++j)
-        for (int i = 0; i < block.nx; ++i)
-            top.push_back(block.at(i, j, block.nz - 1));
+    const std::vector<std::int32_t> top = topPoints(block);
     const std::size_t perLayer = 6 * static_cast<std::size_t>((block.nx - 1) * (block.nx - 1));
     const std::vector<std::size_t> first{4 * perLayer + 7}, second{4 * perLayer + 211};
     std::vector<Vec3> load(block.points.size(), Vec3{0.0, 0.0, -2e-4});
