@@ -341,7 +341,7 @@ int main(int argc, char** argv) {
     std::vector<double> stepMs, cuttingStepMs;
     struct StepCost {
         double ms, forcesMs, solvesMs, contactMs, cutMs;
-        bool cut, precomputed, forwarded, touching;
+        bool cut, precomputed, forwarded, volume, touching;
     };
     std::vector<StepCost> cuttingSteps; ///< from the first cut on, with what each step did
     stepMs.reserve(steps);
@@ -365,11 +365,12 @@ int main(int argc, char** argv) {
         if (operative && w.metrics().resection.firstCutS >= 0.0) {
             cuttingStepMs.push_back(stepMs.back()); // from the first cut on
             const hs::sim::World::StepTimings& after = w.stepTimings();
-            cuttingSteps.push_back(
-                {stepMs.back(), after.tissueForcesMs - before.tissueForcesMs,
-                 after.tissueSolvesMs - before.tissueSolvesMs, after.contactSolveMs - before.contactSolveMs,
-                 after.cutMs - before.cutMs, w.metrics().resection.cutEvents > eventsBefore, precomputedBefore,
-                 after.forwardContactSteps > before.forwardContactSteps, w.state().contact.touching});
+            cuttingSteps.push_back({stepMs.back(), after.tissueForcesMs - before.tissueForcesMs,
+                                    after.tissueSolvesMs - before.tissueSolvesMs,
+                                    after.contactSolveMs - before.contactSolveMs, after.cutMs - before.cutMs,
+                                    w.metrics().resection.cutEvents > eventsBefore, precomputedBefore,
+                                    after.forwardContactSteps > before.forwardContactSteps,
+                                    after.volumeRowSteps > before.volumeRowSteps, w.state().contact.touching});
         }
         if (std::getenv("HS_SLOW_TRACE") && !cuttingSteps.empty() && cuttingSteps.back().cutMs > 15.0)
             std::printf("slow: step %llu %.1f ms, loop %.1f ms, cut %d, precomputed before %d after %d\n",
@@ -500,10 +501,11 @@ int main(int argc, char** argv) {
         if (!cuttingSteps.empty()) {
             const double p99 = percentile(cuttingStepMs, 0.99);
             double n = 0, ms = 0, forces = 0, solves = 0, contact = 0, cutMs = 0, cuts = 0, stale = 0, touching = 0;
-            double staleAll = 0, touchingAll = 0, forwarded = 0, forwardedAll = 0;
+            double staleAll = 0, touchingAll = 0, forwarded = 0, forwardedAll = 0, volume = 0, volumeAll = 0;
             for (const StepCost& c : cuttingSteps) {
                 staleAll += c.precomputed ? 0 : 1;
                 forwardedAll += c.forwarded ? 1 : 0;
+                volumeAll += c.volume ? 1 : 0;
                 touchingAll += c.touching ? 1 : 0;
                 if (c.ms < p99)
                     continue;
@@ -516,16 +518,18 @@ int main(int argc, char** argv) {
                 cuts += c.cut ? 1 : 0;
                 stale += c.precomputed ? 0 : 1;
                 forwarded += c.forwarded ? 1 : 0;
+                volume += c.volume ? 1 : 0;
                 touching += c.touching ? 1 : 0;
             }
             const double all = static_cast<double>(cuttingSteps.size());
             std::printf("| the slowest 1 %% of those steps | %.0f steps of %.2f ms mean: tissue forces %.2f ms, solves "
                         "%.2f ms, contact problem %.2f ms, the loop (cuts, rebuilds) %.2f ms; %.0f %% cut, %.0f %% "
                         "with the surface's compliance not precomputed for the factor in use (%.0f %% of all), %.0f %% "
-                        "with the contacts by forward solves (%.0f %% of all), %.0f %% touching (%.0f %% of all) |\n",
+                        "with the contacts by forward solves (%.0f %% of all), %.0f %% with a tet at the volume bound "
+                        "(%.0f %% of all), %.0f %% touching (%.0f %% of all) |\n",
                         n, ms / n, forces / n, solves / n, contact / n, cutMs / n, 100.0 * cuts / n, 100.0 * stale / n,
-                        100.0 * staleAll / all, 100.0 * forwarded / n, 100.0 * forwardedAll / all, 100.0 * touching / n,
-                        100.0 * touchingAll / all);
+                        100.0 * staleAll / all, 100.0 * forwarded / n, 100.0 * forwardedAll / all, 100.0 * volume / n,
+                        100.0 * volumeAll / all, 100.0 * touching / n, 100.0 * touchingAll / all);
         }
         std::printf("| fluid | %s, deficit %.0f mL in %.1f min (%.0f mL/min), intravasation %.0f mL, highest pressure "
                     "%.1f kPa |\n",

@@ -222,6 +222,7 @@ public:
         double visibilityMs = 0.0;    ///< what the optic sees, marking
         double cutMs = 0.0; ///< the loop: its cuts (topology, the contact surface), coagulation, the factor's rebuild
         std::uint64_t forwardContactSteps = 0; ///< steps whose contacts took forward solves (not the surface's block)
+        std::uint64_t volumeRowSteps = 0; ///< steps with a tet at the volume bound among the rows (interior points)
     };
     const StepTimings& stepTimings() const;
 
