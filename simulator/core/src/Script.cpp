@@ -78,9 +78,9 @@ void readKeyFrame(const json& item, const std::string& path, const KeyFrame* pre
         std::uint64_t buttons = out.sample.buttons;
         reader.read("buttons", buttons);
         if (buttons & ~std::uint64_t{kKnownButtons})
-            issues.push_back({reader.pathOf("buttons"), std::to_string(buttons) + " has bits other than " +
-                                                            std::to_string(kKnownButtons) +
-                                                            " (1 mark, 2 capture, 4 cut, 8 coagulate, 16 pump up, 32 pump down)"});
+            issues.push_back({reader.pathOf("buttons"),
+                              std::to_string(buttons) + " has bits other than " + std::to_string(kKnownButtons) +
+                                  " (1 mark, 2 capture, 4 cut, 8 coagulate, 16 pump up, 32 pump down)"});
         else
             out.sample.buttons = static_cast<std::uint32_t>(buttons);
     }
@@ -89,7 +89,8 @@ void readKeyFrame(const json& item, const std::string& path, const KeyFrame* pre
         reader.read("instrument", instrument);
         if (instrument > kMaxInstrument)
             issues.push_back({reader.pathOf("instrument"), std::to_string(instrument) + " is outside 0.." +
-                                                               std::to_string(kMaxInstrument) + " (0 none, 1 loop, 2 scissors, 3 grasper)"});
+                                                               std::to_string(kMaxInstrument) +
+                                                               " (0 none, 1 loop, 2 scissors, 3 grasper)"});
         else
             out.sample.instrument = static_cast<std::uint32_t>(instrument);
     }
