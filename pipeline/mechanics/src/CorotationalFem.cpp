@@ -820,7 +820,6 @@ void CorotationalFem::precomputeCompliance(const std::vector<std::int32_t>& poin
     precomputeInto(*m_factor, m_compliantList, m_fixed, *m_team, m_compliance);
     m_complianceStride = 3 * m_compliantCount;
     m_complianceStale = false;
-    m_compliancePointVolume = m_pointVolume;
     m_staleNear.assign(n, 0);
     m_refreshPoint = 0;
     m_refreshDof = 0;
@@ -1891,7 +1890,6 @@ bool CorotationalFem::finishRefactor() {
         m_complianceStride = 3 * m_compliantCount;
         // Stale when tets went since the start without a downdate (Refactor::Later): those points then solve.
         m_complianceStale = m_rebuild->liveTets != m_liveTets;
-        m_compliancePointVolume = m_rebuild->pointVolume;
         m_staleNear.assign(m_x.size(), 0);
         if (m_complianceStale) {
             std::vector<std::size_t> since;

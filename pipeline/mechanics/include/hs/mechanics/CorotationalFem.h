@@ -396,7 +396,6 @@ private:
     /// Downdates since the surface was precomputed: its block is the factor's before them. Rows on points near no
     /// removed tet keep using it; rows on points near one (m_staleNear) solve until their columns are refreshed.
     bool m_complianceStale = false;
-    std::vector<double> m_compliancePointVolume; ///< each point's volume when the block was computed
     /// Per point: a point of a tet removed since its columns were computed, or of a tet sharing a point with one.
     std::vector<char> m_staleNear;
     /// Computes `dofs` columns of the block again with the factor in use, for the points near a cut in list order
