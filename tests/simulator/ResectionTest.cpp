@@ -86,6 +86,14 @@ bool inside(const Vec3& p, const TetMesh& mesh, std::size_t t) {
            s * dot(a - p, cross(b - p, d - p)) >= eps && s * dot(a - p, cross(c - p, b - p)) >= eps;
 }
 
+/// Adds to `out` every tet of `mesh` that holds a point of `points` (the check's own sweep, finer than the cut's).
+void addTetsContaining(const std::vector<Vec3>& points, const TetMesh& mesh, std::set<std::size_t>& out) {
+    for (const Vec3& p : points)
+        for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+            if (inside(p, mesh, t))
+                out.insert(t);
+}
+
 } // namespace
 
 TEST(Resection, TheLoopsWireIsAHalfCircleAcrossTheSheath) {
@@ -137,10 +145,8 @@ TEST(Resection, TheLoopTakesTheTetsItsWirePassesThroughAndCountsThem) {
     // What the wire passed through (the tissue has not moved: no step was taken).
     std::set<std::size_t> swept;
     for (int s = 0; s <= 4 * 28; ++s)
-        for (const Vec3& p : sim::loopWire(sim::LoopElectrode{4.0, 0.05}, Vec3{7.0 - 0.125 * s, 1.0, 0.5}, axis, down))
-            for (std::size_t t = 0; t < tissue.mesh.tets.size(); ++t)
-                if (inside(p, tissue.mesh, t))
-                    swept.insert(t);
+        addTetsContaining(sim::loopWire(sim::LoopElectrode{4.0, 0.05}, Vec3{7.0 - 0.125 * s, 1.0, 0.5}, axis, down),
+                          tissue.mesh, swept);
     ASSERT_FALSE(swept.empty());
     for (const std::size_t t : swept)
         EXPECT_TRUE(taken.count(t)) << "tet " << t << " was passed through and left";
@@ -209,10 +215,7 @@ TEST(Resection, TheScissorsJawsOpenSymmetricallyAndTheirClosingCutsWhatLiesBetwe
     sim::JawInstrument fine = jaws;
     fine.sampleMm = 0.05;
     for (int s = 0; s <= 100; ++s)
-        for (const Vec3& p : sim::jawWire(fine, hinge, axis, down, jaws.openDeg * (1.0 - 0.01 * s)))
-            for (std::size_t t = 0; t < tissue.mesh.tets.size(); ++t)
-                if (inside(p, tissue.mesh, t))
-                    swept.insert(t);
+        addTetsContaining(sim::jawWire(fine, hinge, axis, down, jaws.openDeg * (1.0 - 0.01 * s)), tissue.mesh, swept);
     ASSERT_FALSE(swept.empty());
     for (const std::size_t t : swept)
         EXPECT_TRUE(taken.count(t)) << "tet " << t << " lay between the blades and was left";
