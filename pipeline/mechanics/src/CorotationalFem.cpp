@@ -54,17 +54,47 @@ struct CorotationalFem::Factor {
     mutable std::array<std::vector<double>, 2> dense;
     mutable std::array<std::vector<std::uint32_t>, 2> mark;
     mutable std::array<std::uint32_t, 2> stamp{};
-    /// y = sum c_k surfaceY[i_k] for (i_k, c_k) `terms`: L^-1 b for a b on the precomputed dofs, its index unsorted.
+    /// y = sum c_k columnY[j_k] for (j_k, c_k) `terms` (dofs in the factor's order, each column computed): L^-1 b,
+    /// its index unsorted. The same bits as long as the terms come in the same order.
     void combine(const std::vector<std::pair<int, double>>& terms, std::size_t s, Sparse& out) const;
-    /// L^-1 P e for each precomputed dof (3 compliant index + axis; empty for a held dof, or none precomputed).
-    std::vector<Sparse> surfaceY;
+    /// Computes the columns of L^-1 of `dofs` (in the factor's order) not computed yet, on the team's threads.
+    void computeColumns(const std::vector<int>& dofs, WorkerTeam& team) const;
+    /// Forgets the columns (the factor changed).
+    void dropColumns() const;
+    /// L^-1 e_j per dof j of the factor's order, computed when first needed and kept while the factor stays as it is:
+    /// a constraint row or force on a few points is then a sum of their columns instead of a forward solve on its
+    /// reach (the contacts touch the same few points step after step). The precomputed surface's are computed with it.
+    mutable std::vector<Sparse> columnY;
+    mutable std::vector<char> columnReady;
     /// The last step's rows and the constraints' last forces through L^-1 (forwardRows, forwardForced); rowB a row's
-    /// entries: (dof in the factor's order, value), or (precomputed dof, value) where rowOnSurface.
+    /// entries: (dof in the factor's order, value).
     mutable std::vector<Sparse> rowY;
     mutable std::vector<std::vector<std::pair<int, double>>> rowB;
-    mutable std::vector<char> rowOnSurface;
     mutable Sparse forcedY;
 };
+
+void CorotationalFem::Factor::computeColumns(const std::vector<int>& dofs, WorkerTeam& team) const {
+    if (columnReady.size() != diag.size()) {
+        columnY.assign(diag.size(), {});
+        columnReady.assign(diag.size(), 0);
+    }
+    std::vector<int> missing;
+    for (const int j : dofs)
+        if (j >= 0 && static_cast<std::size_t>(j) < diag.size() && !columnReady[static_cast<std::size_t>(j)]) {
+            columnReady[static_cast<std::size_t>(j)] = 1;
+            missing.push_back(j);
+        }
+    team.run(missing.size(), std::max<std::size_t>(1, (missing.size() + 1) / 2),
+             [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+                 for (std::size_t i = begin; i < end; ++i)
+                     forward({{missing[i], 1.0}}, chunk, columnY[static_cast<std::size_t>(missing[i])]);
+             });
+}
+
+void CorotationalFem::Factor::dropColumns() const {
+    columnY.clear();
+    columnReady.clear();
+}
 
 void CorotationalFem::Factor::combine(const std::vector<std::pair<int, double>>& terms, std::size_t s,
                                       Sparse& out) const {
@@ -73,7 +103,7 @@ void CorotationalFem::Factor::combine(const std::vector<std::pair<int, double>>&
     std::vector<std::uint32_t>& marks = mark[s];
     out.index.clear();
     for (const auto& [column, c] : terms) {
-        const Sparse& u = surfaceY[static_cast<std::size_t>(column)];
+        const Sparse& u = columnY[static_cast<std::size_t>(column)];
         for (std::size_t t = 0; t < u.index.size(); ++t) {
             const auto j = static_cast<std::size_t>(u.index[t]);
             if (marks[j] != now) {
@@ -544,7 +574,7 @@ void CorotationalFem::buildFactor(const FactorInputs& in, std::vector<int>& part
     }
     const Eigen::VectorXd d = f.ldlt.vectorD();
     f.diag.assign(d.data(), d.data() + d.size());
-    f.surfaceY.clear(); // precomputeCompliance makes them anew
+    f.dropColumns();
     f.parent.assign(3 * n, -1);
     for (std::size_t c = 0; c < 3 * n; ++c)
         for (int k = f.colStart[c]; k < f.colStart[c + 1]; ++k) {
@@ -850,7 +880,6 @@ void CorotationalFem::extendPrecomputedSurface(const std::vector<std::int32_t>& 
         m_compliance = std::move(grown);
         m_complianceStride = stride;
     }
-    m_factor->surfaceY.clear(); // the list's columns of L^-1 would no longer cover it
     m_staleNear.resize(m_x.size(), 0);
     for (const std::int32_t p : added) {
         m_compliantIndex[static_cast<std::size_t>(p)] = static_cast<std::int32_t>(m_compliantCount++);
@@ -940,13 +969,14 @@ void CorotationalFem::precomputeInto(Factor& f, const std::vector<std::int32_t>&
                     compliance[(3 * j + e) * m3 + 3 * k + d] = column[3 * static_cast<std::size_t>(list[j]) + e];
         }
     // And each of their dofs through L^-1 alone, so a row on them pairs with a row elsewhere at the cost of a sum.
-    f.surfaceY.assign(m3, {});
+    std::vector<int> dofs;
     for (std::size_t k = 0; k < list.size(); ++k)
         for (std::size_t d = 0; d < 3; ++d) {
             const std::size_t dof = 3 * static_cast<std::size_t>(list[k]) + d;
             if (!fixed[dof / 3][d])
-                f.forward({{f.oldToNew[dof], 1.0}}, 0, f.surfaceY[3 * k + d]);
+                dofs.push_back(f.oldToNew[dof]);
         }
+    f.computeColumns(dofs, team);
 }
 
 FemConstraint contactRow(const std::array<std::int32_t, 3>& points, const std::array<double, 3>& weights,
@@ -992,41 +1022,22 @@ void CorotationalFem::forwardRows(const std::vector<FemConstraint>& rows) const 
     const std::size_t k = rows.size();
     f.rowY.resize(k);
     f.rowB.resize(k);
-    f.rowOnSurface.assign(k, 0);
-    const bool warped = m_pointR.size() == m_x.size();
     std::vector<std::pair<std::int32_t, Vec3>> gradient;
+    std::vector<int> dofs;
     for (std::size_t i = 0; i < k; ++i) {
         const FemConstraint& row = rows[i];
-        bool onSurface = !f.surfaceY.empty();
-        for (const std::int32_t p : row.points)
-            onSurface =
-                onSurface && (m_compliantIndex[static_cast<std::size_t>(p)] >= 0 || held(static_cast<std::size_t>(p)));
-        f.rowOnSurface[i] = onSurface ? 1 : 0;
-        if (onSurface) {
-            // A sum of the precomputed dofs' columns.
-            f.rowB[i].clear();
-            for (std::size_t a = 0; a < row.points.size(); ++a) {
-                const auto p = static_cast<std::size_t>(row.points[a]);
-                if (m_compliantIndex[p] < 0)
-                    continue; // a held point
-                const Vec3 g = warped ? toRestFrame(m_pointR[p], row.gradient[a]) : row.gradient[a];
-                for (std::size_t d = 0; d < 3; ++d)
-                    if (!m_fixed[p][d] && g[static_cast<int>(d)] != 0.0)
-                        f.rowB[i].emplace_back(3 * m_compliantIndex[p] + static_cast<int>(d), g[static_cast<int>(d)]);
-            }
-            continue;
-        }
         gradient.clear();
         for (std::size_t a = 0; a < row.points.size(); ++a)
             gradient.emplace_back(row.points[a], row.gradient[a]);
         forwardEntries(gradient, f.rowB[i]);
+        for (const auto& entry : f.rowB[i])
+            dofs.push_back(entry.first);
     }
+    // Each row a sum of its dofs' columns (those not computed for this factor yet are, once).
+    f.computeColumns(dofs, *m_team);
     m_team->run(k, std::max<std::size_t>(1, (k + 1) / 2), [&](std::size_t chunk, std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
-            if (f.rowOnSurface[i])
-                f.combine(f.rowB[i], chunk, f.rowY[i]);
-            else
-                f.forward(f.rowB[i], chunk, f.rowY[i]);
+            f.combine(f.rowB[i], chunk, f.rowY[i]);
     });
 }
 
@@ -1037,7 +1048,11 @@ void CorotationalFem::forwardForced() const {
         forces.emplace_back(p, m_constraintForce[static_cast<std::size_t>(p)]);
     std::vector<std::pair<int, double>> b;
     forwardEntries(forces, b);
-    f.forward(b, 0, f.forcedY);
+    std::vector<int> dofs;
+    for (const auto& entry : b)
+        dofs.push_back(entry.first);
+    f.computeColumns(dofs, *m_team);
+    f.combine(b, 0, f.forcedY);
 }
 
 void CorotationalFem::forwardProducts(std::vector<double>& out) const {
@@ -1829,7 +1844,7 @@ CorotationalFem::Removal CorotationalFem::removeTets(const std::vector<std::size
             // its columns of L^-1 are the old factor's and go.
             m_complianceStale = m_compliantCount > 0;
             markStaleNear(out.removed);
-            m_factor->surfaceY.clear();
+            m_factor->dropColumns();
             m_factorPointVolume = m_pointVolume;
             m_factorStale = false;
         } else {

@@ -315,7 +315,7 @@ const TrialMetrics& World::metrics() const {
 }
 
 std::string_view physicsEngine() {
-    return "corotational-fem/6";
+    return "corotational-fem/7";
 }
 
 Status checkReplay(const TrialHeader& trial, const WorldOptions& options) {

@@ -300,7 +300,7 @@ private:
     /// H^-1 b by the factor `f` (the held dofs of `fixed` zero).
     static void solveWith(const Factor& f, const std::vector<std::array<bool, 3>>& fixed, WorkerTeam& team,
                           std::vector<double>& b);
-    /// The dense compliance between the dofs of `list`'s points and their columns of L^-1 (f.surfaceY).
+    /// The dense compliance between the dofs of `list`'s points, and their columns of L^-1 (f.columnY).
     static void precomputeInto(Factor& f, const std::vector<std::int32_t>& list,
                                const std::vector<std::array<bool, 3>>& fixed, WorkerTeam& team,
                                std::vector<double>& compliance);
