@@ -166,6 +166,12 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+/// A row on more points than this (a whole face's load) is not a sum of its points' columns: it takes one forward
+/// solve, and its compliance with the others comes from those solves rather than from the surface's block.
+constexpr std::size_t kColumnRowPoints = 24;
+/// The step's correction sums columns on at most this many points; more take one whole solve.
+constexpr std::size_t kColumnCorrectionPoints = 96;
+
 double msSince(Clock::time_point t) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
 }
@@ -1030,14 +1036,19 @@ void CorotationalFem::forwardRows(const std::vector<FemConstraint>& rows) const 
         for (std::size_t a = 0; a < row.points.size(); ++a)
             gradient.emplace_back(row.points[a], row.gradient[a]);
         forwardEntries(gradient, f.rowB[i]);
-        for (const auto& entry : f.rowB[i])
-            dofs.push_back(entry.first);
+        if (row.points.size() <= kColumnRowPoints)
+            for (const auto& entry : f.rowB[i])
+                dofs.push_back(entry.first);
     }
-    // Each row a sum of its dofs' columns (those not computed for this factor yet are, once).
+    // Each row a sum of its dofs' columns (those not computed for this factor yet are, once); a row on many points
+    // one forward solve.
     f.computeColumns(dofs, *m_team);
     m_team->run(k, std::max<std::size_t>(1, (k + 1) / 2), [&](std::size_t chunk, std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
-            f.combine(f.rowB[i], chunk, f.rowY[i]);
+            if (rows[i].points.size() <= kColumnRowPoints)
+                f.combine(f.rowB[i], chunk, f.rowY[i]);
+            else
+                f.forward(f.rowB[i], chunk, f.rowY[i]);
     });
 }
 
@@ -1048,11 +1059,90 @@ void CorotationalFem::forwardForced() const {
         forces.emplace_back(p, m_constraintForce[static_cast<std::size_t>(p)]);
     std::vector<std::pair<int, double>> b;
     forwardEntries(forces, b);
+    if (forces.size() > kColumnCorrectionPoints) {
+        f.forward(b, 0, f.forcedY);
+        return;
+    }
     std::vector<int> dofs;
     for (const auto& entry : b)
         dofs.push_back(entry.first);
     f.computeColumns(dofs, *m_team);
     f.combine(b, 0, f.forcedY);
+}
+
+bool CorotationalFem::correctByColumns(const std::vector<std::pair<std::int32_t, Vec3>>& change,
+                                       const std::vector<FemConstraint>& rows, std::vector<Vec3>& x) const {
+    // The points moved exactly: those the forces changed on and the rows' own (so every row holds at the step's end).
+    std::vector<std::int32_t> exact;
+    for (const auto& entry : change)
+        exact.push_back(entry.first);
+    for (const FemConstraint& row : rows) {
+        if (row.points.size() > kColumnRowPoints)
+            return false;
+        exact.insert(exact.end(), row.points.begin(), row.points.end());
+    }
+    std::sort(exact.begin(), exact.end());
+    exact.erase(std::unique(exact.begin(), exact.end()), exact.end());
+    if (exact.size() > kColumnCorrectionPoints)
+        return false;
+    const Factor& f = *m_factor;
+    // z = L^-1 P R^T df; a dof j's motion is then (R H^-1 R^T df)_j = R (y_j^T D^-1 z) with y_j its column.
+    std::vector<std::pair<int, double>> b;
+    forwardEntries(change, b);
+    std::vector<int> dofs;
+    for (const auto& entry : b)
+        dofs.push_back(entry.first);
+    for (const std::int32_t p : exact)
+        for (std::size_t d = 0; d < 3; ++d)
+            if (!m_fixed[static_cast<std::size_t>(p)][d])
+                dofs.push_back(f.oldToNew[3 * static_cast<std::size_t>(p) + d]);
+    f.computeColumns(dofs, *m_team);
+    Factor::Sparse z;
+    f.combine(b, 0, z);
+    f.nextStamp(0);                           // sizes the scratch
+    std::vector<double>& scaled = f.dense[0]; // zero between uses
+    for (std::size_t t = 0; t < z.index.size(); ++t) {
+        const auto j = static_cast<std::size_t>(z.index[t]);
+        scaled[j] = z.value[t] / f.diag[j];
+    }
+    const bool warped = m_pointR.size() == m_x.size();
+    std::vector<Vec3> moved(exact.size());
+    for (std::size_t k = 0; k < exact.size(); ++k) {
+        const auto p = static_cast<std::size_t>(exact[k]);
+        Vec3 u{};
+        for (std::size_t d = 0; d < 3; ++d) {
+            if (m_fixed[p][d])
+                continue;
+            const Factor::Sparse& y = f.columnY[static_cast<std::size_t>(f.oldToNew[3 * p + d])];
+            double sum = 0.0;
+            for (std::size_t t = 0; t < y.index.size(); ++t)
+                sum += y.value[t] * scaled[static_cast<std::size_t>(y.index[t])];
+            u[static_cast<int>(d)] = sum;
+        }
+        if (warped) {
+            const Mat3& r = m_pointR[p];
+            u = {r[0] * u.x + r[1] * u.y + r[2] * u.z, r[3] * u.x + r[4] * u.y + r[5] * u.z,
+                 r[6] * u.x + r[7] * u.y + r[8] * u.z};
+        }
+        moved[k] = u;
+    }
+    for (const int j : z.index)
+        scaled[static_cast<std::size_t>(j)] = 0.0;
+    // The rest of the precomputed surface through its block (the change's part on it), then the exact points.
+    if (m_compliantCount > 0) {
+        std::vector<Vec3> response;
+        surfaceResponse(change, response);
+        for (std::size_t k = 0; k < m_compliantCount; ++k)
+            x[static_cast<std::size_t>(m_compliantList[k])] += response[k];
+        for (std::size_t k = 0; k < exact.size(); ++k) {
+            const std::int32_t index = m_compliantIndex[static_cast<std::size_t>(exact[k])];
+            if (index >= 0)
+                x[static_cast<std::size_t>(exact[k])] -= response[static_cast<std::size_t>(index)];
+        }
+    }
+    for (std::size_t k = 0; k < exact.size(); ++k)
+        x[static_cast<std::size_t>(exact[k])] += moved[k];
+    return true;
 }
 
 void CorotationalFem::forwardProducts(std::vector<double>& out) const {
@@ -1080,12 +1170,11 @@ void CorotationalFem::complianceBetween(const std::vector<FemConstraint>& rows, 
     // Rows of a few points on the precomputed surface: W_ij = sum g_ia^T R_a S_ab R_b^T g_jb from the block S.
     // Otherwise W = G R H^-1 R^T G^T = Y^T D^-1 Y with Y = L^-1 P R^T G^T, each row's column of Y by a forward solve
     // on its reach (forwardRows): the rows' own entries of H^-1 without a whole solve for each.
-    constexpr std::size_t kPrecomputedRowPoints = 24;
     const std::size_t k = rows.size();
     w.assign(k * k, 0.0);
     bool precomputed = m_compliantCount > 0;
     for (std::size_t i = 0; i < k && precomputed; ++i) {
-        precomputed = rows[i].points.size() <= kPrecomputedRowPoints;
+        precomputed = rows[i].points.size() <= kColumnRowPoints;
         for (const std::int32_t p : rows[i].points)
             precomputed =
                 precomputed && (precomputedAt(static_cast<std::size_t>(p)) || held(static_cast<std::size_t>(p)));
@@ -1419,6 +1508,9 @@ void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector
             surfaceResponse(change, response);
             for (std::size_t k = 0; k < m_compliantCount; ++k)
                 x[static_cast<std::size_t>(m_compliantList[k])] += response[k];
+        } else if (!m_settings.wholeCorrection && correctByColumns(change, rows, x)) {
+            // Off the precomputed surface: exact on the points the forces act on and the rows', through the block
+            // on the rest of the surface; the interior follows in the next step's free motion.
         } else {
             std::fill(rhs.begin(), rhs.end(), 0.0);
             for (const auto& [p, f] : change)
@@ -1836,9 +1928,19 @@ CorotationalFem::Removal CorotationalFem::removeTets(const std::vector<std::size
     if (refactorMode == Refactor::Downdate) {
         // A rebuild running meanwhile works on its own copy; it is dropped when it ends (finishRefactor).
         bool exact = !(m_settings.nodalPressure && m_settings.nodalPressureMatrix);
-        for (const std::size_t t : out.removed)
-            if (exact && !downdateTet(t))
-                exact = false;
+        // A tet whose points all lost their last live tet (inside a chip) couples only points now held, which no
+        // live point's row or column of the factor reaches once the tets between them and live points are out: its
+        // stiffness can stay in the factor without changing a solve on the live points (the held ones are zero).
+        for (const std::size_t t : out.removed) {
+            const Tet& tet = m_tets[t];
+            if (!live[static_cast<std::size_t>(tet[0])] && !live[static_cast<std::size_t>(tet[1])] &&
+                !live[static_cast<std::size_t>(tet[2])] && !live[static_cast<std::size_t>(tet[3])])
+                continue;
+            if (!exact)
+                break;
+            exact = downdateTet(t);
+            out.downdated += exact ? 1 : 0;
+        }
         if (exact) {
             // The surface's precomputed compliance was the old factor's: kept, stale, for rows away from the cut;
             // its columns of L^-1 are the old factor's and go.

@@ -279,6 +279,54 @@ TEST(Mechanics, RowsOffTheSurfaceGetTheFactorsOwnCompliance) {
         }
 }
 
+TEST(Mechanics, TheCorrectionByColumnsMovesTheRowsPointsAsTheWholeSolveDoesAndSettlesTheSame) {
+    // Two contact rows on interior points pressed in. The step's correction by the rows' columns of L^-1 must move
+    // the rows' points (and those the forces changed on) exactly as a whole solve does; the other points follow in
+    // the next steps, and the two settle to the same equilibrium.
+    const Block block = makeBlock();
+    const std::vector<FemMaterial> materials(block.tets.size(), FemMaterial{30e3, 0.47, 1050.0});
+    const std::int32_t inside = block.at(5, 5, 3), beside = block.at(6, 5, 3);
+    const auto rowsAt = [&] {
+        return std::vector<FemConstraint>{
+            contactRow({inside, inside, inside}, {1.0, 0.0, 0.0}, Vec3{0.0, 0.0, 1.0},
+                       block.points[static_cast<std::size_t>(inside)] - Vec3{0.0, 0.0, 2e-4}),
+            contactRow({beside, inside, beside}, {0.7, 0.3, 0.0}, normalized(Vec3{0.3, 0.0, 1.0}),
+                       block.points[static_cast<std::size_t>(beside)] - Vec3{0.0, 0.0, 1e-4})};
+    };
+    std::vector<std::vector<Vec3>> first, settled;
+    for (const bool whole : {true, false}) {
+        FemSettings settings;
+        settings.iterations = 1; // as the simulator steps: with more, the next iteration starts from another x
+        settings.wholeCorrection = whole;
+        CorotationalFem fem;
+        ASSERT_TRUE(fem.build(block.points, block.tets, materials, block.fixed, {}, settings));
+        for (int s = 0; s < 300; ++s) {
+            std::vector<FemConstraint> rows = rowsAt();
+            fem.step({}, rows);
+            if (s == 0)
+                first.push_back(fem.positionsM());
+        }
+        EXPECT_EQ(fem.recoveries(), 0u);
+        settled.push_back(fem.positionsM());
+    }
+    double moved = 0.0, atRows = 0.0, elsewhere = 0.0, apart = 0.0;
+    for (std::size_t i = 0; i < block.points.size(); ++i) {
+        moved = std::max(moved, norm(settled[0][i] - block.points[i]));
+        const double d = norm(first[1][i] - first[0][i]);
+        if (static_cast<std::int32_t>(i) == inside || static_cast<std::int32_t>(i) == beside)
+            atRows = std::max(atRows, d);
+        else
+            elsewhere = std::max(elsewhere, d);
+        apart = std::max(apart, norm(settled[1][i] - settled[0][i]));
+    }
+    std::printf("correction by columns: first step at the rows %.3g, elsewhere %.3g, settled %.3g of %.3g m\n", atRows,
+                elsewhere, apart, moved);
+    EXPECT_GT(moved, 5e-5);
+    EXPECT_LT(atRows, 1e-9 * moved);    // the same motion but for rounding
+    EXPECT_GT(elsewhere, 1e-3 * moved); // the rest waits for the next step: the columns' path was taken
+    EXPECT_LT(apart, 1e-6 * moved);
+}
+
 TEST(Mechanics, AContactInsideReleasedGivesStepsWithNoRows) {
     // A row on interior points that acted, then no row at all: the step corrects the last forces away with no row to
     // solve (an empty problem, once a division by zero in its split over threads).
@@ -557,6 +605,49 @@ TEST(Mechanics, AStaleFactorSettlesWhereAFreshOneDoes) {
     EXPECT_GT(sag, 1e-5);
     // Measured 0.3 % of the sag (the kept factor's steps still moving 3e-9 m a step; the rebuilt one's 1e-19).
     EXPECT_LT(apart, 0.01 * sag) << "sag " << sag << " m, apart " << apart << " m";
+}
+
+TEST(Mechanics, AChipCutFreeByDowndatesLeavesItsInsideInTheFactorAndTheTissueMovesAsIfRebuilt) {
+    // The block's fourth layer of cubes cut through by downdates frees the top layer as a chip. The cut layer's tets
+    // touch the live third layer and go out of the factor; the chip's own tets touch only points left without a live
+    // tet (held), so they stay in it: no live point's solve reaches them. The tissue left then moves as with the
+    // factor rebuilt from the live tets.
+    const Block block = makeBlock();
+    const std::vector<FemMaterial> materials(block.tets.size(), FemMaterial{30e3, 0.47, 1050.0});
+    const std::size_t perLayer = 6 * static_cast<std::size_t>((block.nx - 1) * (block.nx - 1));
+    std::vector<std::size_t> layer;
+    for (std::size_t t = 3 * perLayer; t < 4 * perLayer; ++t)
+        layer.push_back(t);
+    const std::vector<Vec3> load(block.points.size(), Vec3{0.0, 0.0, -2e-4});
+    std::vector<FemConstraint> none;
+    std::vector<std::vector<Vec3>> after;
+    for (const auto mode : {CorotationalFem::Refactor::Now, CorotationalFem::Refactor::Downdate}) {
+        CorotationalFem fem;
+        ASSERT_TRUE(fem.build(block.points, block.tets, materials, block.fixed, {}, FemSettings{}));
+        for (int s = 0; s < 100; ++s)
+            fem.step(load, none);
+        const CorotationalFem::Removal removal = fem.removeTets(layer, mode);
+        ASSERT_EQ(removal.chips.size(), 1u);
+        EXPECT_EQ(removal.removed.size(), 2 * perLayer);
+        EXPECT_FALSE(fem.factorStale());
+        if (mode == CorotationalFem::Refactor::Downdate)
+            EXPECT_EQ(removal.downdated, perLayer); // the cut layer; the chip's tets stay in the factor
+        else
+            EXPECT_EQ(removal.downdated, 0u);
+        for (int s = 0; s < 50; ++s)
+            fem.step(load, none);
+        EXPECT_EQ(fem.recoveries(), 0u);
+        after.push_back(fem.positionsM());
+    }
+    double sag = 0.0, apart = 0.0;
+    for (std::size_t i = 0; i < block.points.size(); ++i) {
+        sag = std::max(sag, norm(after[0][i] - block.points[i]));
+        apart = std::max(apart, norm(after[1][i] - after[0][i]));
+    }
+    std::printf("chip by downdates: %.3g of the sag from the rebuilt factor's\n", apart / sag);
+    EXPECT_GT(sag, 1e-5);
+    // As the strip's downdate above: the rebuilt factor's motion but for the removed tets' masses.
+    EXPECT_LT(apart, 1e-6 * sag);
 }
 
 TEST(Mechanics, ADowndateKeepsTheSurfacesBlockAwayFromTheCutAndTheStepsRefreshItNearTheCut) {

@@ -83,13 +83,20 @@ struct FemSettings {
     int surfaceRefreshDofs = 1;
     /// Evaluate the residual at the end of each step (reactionN, residualN): one more force evaluation per step.
     bool endResidual = true;
+    /// The correction of constraint rows off the precomputed surface (a volume row's interior points, rows near a
+    /// cut) by one whole solve on every point. Off (the default), it is exact only on the points the rows and the
+    /// changed forces touch (their columns of L^-1) and goes through the block on the rest of the surface; the
+    /// other interior points follow in the next step's free motion, as they do for rows on the surface. The
+    /// equilibrium is the same; the whole solve costs about as much as the step's chord solve.
+    bool wholeCorrection = false;
     /// No tet's volume falls below this share of its rest volume (0: no such bound). Tissue is nearly incompressible
     /// (Poisson ratio 0.45-0.49), but the nodal-averaged pressure above lets a single tet lose its volume at little
     /// cost (the average nodal pressure tet's spurious modes), so a load concentrated on a point of a coarse mesh (a
     /// scope's tip on a node) can push that point through the tets behind it. Each tet that comes within
     /// `volumeGuardBand` of the bound is a unilateral constraint row (its volume ratio >= the bound), solved with the
     /// contacts by the same complementarity problem: it carries what the collapsing tet cannot, so the load spreads
-    /// to its neighbours as an incompressible material's would. Rows on interior points cost a solve each.
+    /// to its neighbours as an incompressible material's would. Rows on interior points sum their points' columns of
+    /// L^-1 (a forward solve each, the first time a row meets the point after a change of the factor).
     double minVolumeRatio = 0.0;
     double volumeGuardBand = 0.25;
 };
@@ -187,6 +194,9 @@ public:
         std::vector<std::vector<std::size_t>> chips; ///< the pieces cut free, each ascending, by their first tet
         std::size_t manifoldTets = 0;                ///< of `removed`, the tets taken to keep the boundary a manifold
         std::size_t danglingTets = 0;                ///< of `removed`, tets the cut left held by one face or none
+        /// Of `removed`, the tets taken out of the factor by downdates (Refactor::Downdate): a chip's inside, whose
+        /// points all lost their last live tet, stays in it (it reaches no live point's solve).
+        std::size_t downdated = 0;
     };
     Removal removeTets(const std::vector<std::size_t>& tets, Refactor refactor = Refactor::Now);
     bool tetRemoved(std::size_t tet) const { return tet < m_removed.size() && m_removed[tet] != 0; }
@@ -346,6 +356,11 @@ private:
     /// Each row's gradient times R H^-1 R^T f_last: the last forces' motion along the row (after forwardRows and
     /// forwardForced).
     void forwardProducts(std::vector<double>& out) const;
+    /// The step's correction off the precomputed surface: x moves by R H^-1 R^T df exactly on the points of `change`
+    /// (df) and of `rows`, from their columns of L^-1, and by the block on the rest of the surface (false, nothing
+    /// moved: too many points or a row on many, which take one whole solve).
+    bool correctByColumns(const std::vector<std::pair<std::int32_t, Vec3>>& change,
+                          const std::vector<FemConstraint>& rows, std::vector<Vec3>& x) const;
     /// The volume rows (settings.minVolumeRatio) of the tets within the guard band of the bound at positions x.
     void volumeRows(const std::vector<Vec3>& x, std::vector<FemConstraint>& rows) const;
     bool onPrecomputedSurface(const std::vector<FemConstraint>& rows) const;
