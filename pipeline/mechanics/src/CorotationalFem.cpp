@@ -1167,71 +1167,78 @@ void CorotationalFem::forwardProducts(std::vector<double>& out) const {
 
 void CorotationalFem::complianceBetween(const std::vector<FemConstraint>& rows, bool forwarded,
                                         std::vector<double>& w) {
-    // Rows of a few points on the precomputed surface: W_ij = sum g_ia^T R_a S_ab R_b^T g_jb from the block S.
-    // Otherwise W = G R H^-1 R^T G^T = Y^T D^-1 Y with Y = L^-1 P R^T G^T, each row's column of Y by a forward solve
-    // on its reach (forwardRows): the rows' own entries of H^-1 without a whole solve for each.
+    // Two rows of a few points on the precomputed surface: W_ij = sum g_ia^T R_a S_ab R_b^T g_jb from the block S.
+    // A pair with a row elsewhere: W = G R H^-1 R^T G^T = Y^T D^-1 Y with Y = L^-1 P R^T G^T, each row's column of Y
+    // a sum of its points' columns of L^-1 (forwardRows): the rows' own entries of H^-1 without a whole solve each.
     const std::size_t k = rows.size();
     w.assign(k * k, 0.0);
-    bool precomputed = m_compliantCount > 0;
-    for (std::size_t i = 0; i < k && precomputed; ++i) {
-        precomputed = rows[i].points.size() <= kColumnRowPoints;
+    std::vector<char> onBlock(k, 0);
+    bool all = true;
+    for (std::size_t i = 0; i < k; ++i) {
+        bool on = m_compliantCount > 0 && rows[i].points.size() <= kColumnRowPoints;
         for (const std::int32_t p : rows[i].points)
-            precomputed =
-                precomputed && (precomputedAt(static_cast<std::size_t>(p)) || held(static_cast<std::size_t>(p)));
-    }
-    if (!precomputed) {
-        if (!forwarded)
-            forwardRows(rows);
-        const Factor& f = *m_factor;
-        m_team->run(k, std::max<std::size_t>(1, (k + 1) / 2),
-                    [&](std::size_t chunk, std::size_t begin, std::size_t end) {
-                        f.nextStamp(chunk);                           // sizes the scratch
-                        std::vector<double>& scaled = f.dense[chunk]; // zero between uses
-                        for (std::size_t i = begin; i < end; ++i) {
-                            const Factor::Sparse& yi = f.rowY[i];
-                            for (std::size_t t = 0; t < yi.index.size(); ++t)
-                                scaled[static_cast<std::size_t>(yi.index[t])] =
-                                    yi.value[t] / f.diag[static_cast<std::size_t>(yi.index[t])];
-                            for (std::size_t j = i; j < k; ++j) {
-                                const Factor::Sparse& yj = f.rowY[j];
-                                double s = 0.0;
-                                for (std::size_t t = 0; t < yj.index.size(); ++t)
-                                    s += yj.value[t] * scaled[static_cast<std::size_t>(yj.index[t])];
-                                w[i * k + j] = s;
-                                w[j * k + i] = s;
-                            }
-                            for (const int index : yi.index)
-                                scaled[static_cast<std::size_t>(index)] = 0.0;
-                        }
-                    });
-        return;
+            on = on && (precomputedAt(static_cast<std::size_t>(p)) || held(static_cast<std::size_t>(p)));
+        onBlock[i] = on ? 1 : 0;
+        all = all && on;
     }
     const std::size_t m3 = m_complianceStride;
     const bool warped = m_pointR.size() == m_x.size();
-    for (std::size_t i = 0; i < k; ++i)
-        for (std::size_t j = i; j < k; ++j) {
-            double s = 0.0;
-            for (std::size_t a = 0; a < rows[i].points.size(); ++a) {
-                const auto pa = static_cast<std::size_t>(rows[i].points[a]);
-                if (m_compliantIndex[pa] < 0)
-                    continue; // a held point: it does not move
-                const Vec3 ga = warped ? toRestFrame(m_pointR[pa], rows[i].gradient[a]) : rows[i].gradient[a];
-                const std::size_t ra = 3 * static_cast<std::size_t>(m_compliantIndex[pa]);
-                for (std::size_t b = 0; b < rows[j].points.size(); ++b) {
-                    const auto pb = static_cast<std::size_t>(rows[j].points[b]);
-                    if (m_compliantIndex[pb] < 0)
-                        continue;
-                    const Vec3 gb = warped ? toRestFrame(m_pointR[pb], rows[j].gradient[b]) : rows[j].gradient[b];
-                    const std::size_t cb = 3 * static_cast<std::size_t>(m_compliantIndex[pb]);
-                    for (std::size_t r = 0; r < 3; ++r)
-                        for (std::size_t c = 0; c < 3; ++c)
-                            s += ga[static_cast<int>(r)] * m_compliance[(ra + r) * m3 + cb + c] *
-                                 gb[static_cast<int>(c)];
-                }
+    const auto blockEntry = [&](std::size_t i, std::size_t j) {
+        double s = 0.0;
+        for (std::size_t a = 0; a < rows[i].points.size(); ++a) {
+            const auto pa = static_cast<std::size_t>(rows[i].points[a]);
+            if (m_compliantIndex[pa] < 0)
+                continue; // a held point: it does not move
+            const Vec3 ga = warped ? toRestFrame(m_pointR[pa], rows[i].gradient[a]) : rows[i].gradient[a];
+            const std::size_t ra = 3 * static_cast<std::size_t>(m_compliantIndex[pa]);
+            for (std::size_t b = 0; b < rows[j].points.size(); ++b) {
+                const auto pb = static_cast<std::size_t>(rows[j].points[b]);
+                if (m_compliantIndex[pb] < 0)
+                    continue;
+                const Vec3 gb = warped ? toRestFrame(m_pointR[pb], rows[j].gradient[b]) : rows[j].gradient[b];
+                const std::size_t cb = 3 * static_cast<std::size_t>(m_compliantIndex[pb]);
+                for (std::size_t r = 0; r < 3; ++r)
+                    for (std::size_t c = 0; c < 3; ++c)
+                        s += ga[static_cast<int>(r)] * m_compliance[(ra + r) * m3 + cb + c] * gb[static_cast<int>(c)];
             }
-            w[i * k + j] = s;
-            w[j * k + i] = s;
         }
+        return s;
+    };
+    if (!all && !forwarded)
+        forwardRows(rows);
+    const Factor* f = all ? nullptr : m_factor.get();
+    m_team->run(k, std::max<std::size_t>(1, (k + 1) / 2), [&](std::size_t chunk, std::size_t begin, std::size_t end) {
+        std::vector<double>* scaled = nullptr; // zero between uses
+        if (f) {
+            f->nextStamp(chunk); // sizes the scratch
+            scaled = &f->dense[chunk];
+        }
+        for (std::size_t i = begin; i < end; ++i) {
+            const Factor::Sparse* yi = f ? &f->rowY[i] : nullptr;
+            bool spread = false;
+            for (std::size_t j = i; j < k; ++j) {
+                double s = 0.0;
+                if (onBlock[i] && onBlock[j]) {
+                    s = blockEntry(i, j);
+                } else {
+                    if (!spread) {
+                        for (std::size_t t = 0; t < yi->index.size(); ++t)
+                            (*scaled)[static_cast<std::size_t>(yi->index[t])] =
+                                yi->value[t] / f->diag[static_cast<std::size_t>(yi->index[t])];
+                        spread = true;
+                    }
+                    const Factor::Sparse& yj = f->rowY[j];
+                    for (std::size_t t = 0; t < yj.index.size(); ++t)
+                        s += yj.value[t] * (*scaled)[static_cast<std::size_t>(yj.index[t])];
+                }
+                w[i * k + j] = s;
+                w[j * k + i] = s;
+            }
+            if (spread)
+                for (const int index : yi->index)
+                    (*scaled)[static_cast<std::size_t>(index)] = 0.0;
+        }
+    });
 }
 
 bool CorotationalFem::onPrecomputedSurface(const std::vector<FemConstraint>& rows) const {

@@ -341,8 +341,8 @@ private:
     double stiffeningArgument(std::size_t tet, const std::array<double, 9>& s) const;
     /// R^T F of tet `t` at the current positions (its rotation found from the last one, which stays as it was).
     std::array<double, 9> corotatedStretch(std::size_t t, int iterations) const;
-    /// W = J R H^-1 R^T J^T of the rows: from the precomputed surface block, or from the rows' forward solves
-    /// (forwardRows; `forwarded`: already done for these rows).
+    /// W = J R H^-1 R^T J^T of the rows: between two rows on the precomputed surface from its block, for a pair with
+    /// a row elsewhere from the rows' columns of L^-1 (forwardRows; `forwarded`: already done for these rows).
     void complianceBetween(const std::vector<FemConstraint>& rows, bool forwarded, std::vector<double>& w);
     void solveContacts(std::vector<FemConstraint>& rows, std::size_t external, const ObstacleCompliance& obstacle,
                        const std::vector<double>& gap, bool forwarded, std::vector<double>& lambda);
