@@ -24,7 +24,8 @@ constexpr double kMaxContactForceN = 4.0 * kPerforationForceN;
 /// far outside the material and inside what a step's linearization holds.
 constexpr double kMinTetVolumeRatio = 0.2;
 /// A tet gets its volume row when its ratio is within this of the bound after a step's free motion. Each row on an
-/// interior point costs a solve; 0.1 ran the 60 s rough trial at 176 Hz mean instead of 141 but let 3 tets invert
+/// interior point costs its points' columns of L^-1 (once per factor); 0.1 ran the 60 s rough trial at 176 Hz mean
+/// instead of 141 (when each such row cost a solve) but let 3 tets invert
 /// (ratio -0.497) over its 10 minutes, where 0.25 kept every tet above 0.19 (docs/simulator.md, "The volume bound").
 constexpr double kVolumeGuardBand = 0.25;
 
