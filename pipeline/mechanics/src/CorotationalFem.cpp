@@ -1515,9 +1515,12 @@ void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector
             surfaceResponse(change, response);
             for (std::size_t k = 0; k < m_compliantCount; ++k)
                 x[static_cast<std::size_t>(m_compliantList[k])] += response[k];
-        } else if (!m_settings.wholeCorrection && correctByColumns(change, rows, x)) {
+        } else if (const auto started = Clock::now();
+                   !m_settings.wholeCorrection && correctByColumns(change, rows, x)) {
             // Off the precomputed surface: exact on the points the forces act on and the rows', through the block
-            // on the rest of the surface; the interior follows in the next step's free motion.
+            // on the rest of the surface; the interior follows in the next step's free motion. Counted with the
+            // solves, as the whole solve it replaces was.
+            m_timings.solveMs += msSince(started);
         } else {
             std::fill(rhs.begin(), rhs.end(), 0.0);
             for (const auto& [p, f] : change)
@@ -1957,6 +1960,7 @@ CorotationalFem::Removal CorotationalFem::removeTets(const std::vector<std::size
             m_factorPointVolume = m_pointVolume;
             m_factorStale = false;
         } else {
+            out.downdated = 0; // the factor is rebuilt from the live tets instead
             refactorMode = Refactor::Now;
         }
     }
