@@ -37,6 +37,7 @@ hs::sim::TrialReport sampleReport() {
     hs::sim::TrialReport r;
     r.header.sceneSha256 = std::string(64, 'a');
     r.header.seed = 7;
+    r.header.physics.engine = "corotational-fem/8";
     r.header.device = "scripted:<test>.json"; // escaped in the page
     r.header.startedUtc = "2026-01-02T03:04:05Z";
     r.samples = 60000;
@@ -48,7 +49,8 @@ hs::sim::TrialReport sampleReport() {
     r.metrics.pathologies = {{"myoma-1", "myoma", true, true, 40.0}};
     r.metrics.peakForceN = 0.1 + 0.2; // 0.30000000000000004: needs 17 digits
     for (int i = 0; i <= 600; ++i)
-        r.series.push_back({i / 10.0, 0.5 + 0.5 * std::sin(i / 20.0), 9.0 + std::cos(i / 30.0), i * 0.5});
+        r.series.push_back({i / 10.0, 0.5 + 0.5 * std::sin(i / 20.0), 9.0 + std::cos(i / 30.0), i * 0.5, 0.0,
+                            i < 300 ? 10.7 : 11.4}); // the pump raised half way
     for (int i = 0; i < 3000; ++i)
         r.surface.push_back({-180.0 + (i % 72) * 5.0, (i / 72) * 1.0, (i % 7) != 0});
     return r;
@@ -102,6 +104,110 @@ TEST(TrialReport, PageNamesAMissingChartLibrary) {
     auto page = hs::sim::reportHtml(sampleReport(), "/nonexistent/chart.min.js");
     ASSERT_FALSE(page.ok());
     EXPECT_NE(page.error().message().find("/nonexistent/chart.min.js"), std::string::npos);
+}
+
+TEST(TrialReport, ReadsBackToTheSameBytes) {
+    // The workstation reviews a trial from its report: what it reads is what was written, to the last bit.
+    hs::sim::TrialReport operative = sampleReport();
+    operative.header.exercise = hs::sim::Exercise::Myomectomy;
+    operative.metrics.resection.pathologies = {{"myoma-1", "myoma", 4.19, 3.77, 90.0}};
+    operative.metrics.resection.firstCutS = 12.25;
+    operative.metrics.resection.chipsLeft = 3;
+    for (const hs::sim::TrialReport& r : {sampleReport(), operative}) {
+        const std::string json = hs::sim::reportJson(r);
+        auto read = hs::sim::parseReport(json, "r.json");
+        ASSERT_TRUE(read) << read.error().detail;
+        EXPECT_EQ(hs::sim::reportJson(*read), json);
+    }
+    hs::test::TempDir tmp;
+    ASSERT_TRUE(hs::sim::writeReport(operative, tmp.file("r.json")).ok());
+    auto read = hs::sim::readReport(tmp.file("r.json"));
+    ASSERT_TRUE(read) << read.error().detail;
+    EXPECT_EQ(read->metrics.resection.chipsLeft, 3u);
+    EXPECT_EQ(read->series.size(), 601u);
+    auto missing = hs::sim::readReport(tmp.file("none.json"));
+    ASSERT_FALSE(missing);
+    EXPECT_NE(missing.error().detail.find("none.json"), std::string::npos) << missing.error().detail;
+}
+
+/// `json` with the first `from` replaced by `to` (the test fails when `from` is not there).
+std::string edited(std::string json, const std::string& from, const std::string& to) {
+    const auto at = json.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return at == std::string::npos ? json : json.replace(at, from.size(), to);
+}
+
+TEST(TrialReport, RefusesABadReportNamingTheFileTheFieldAndTheRange) {
+    const std::string json = hs::sim::reportJson(sampleReport());
+    const struct {
+        std::string from, to, expected;
+    } cases[] = {
+        {"\"cavitySurfaceVisualizedPercent\":72.5", "\"cavitySurfaceVisualizedPercent\":172.5",
+         "/metrics/cavitySurfaceVisualizedPercent: 172.5 is outside 0-100 %"},
+        {"\"firstSeenS\":-1", "\"firstSeenS\":-0.5", "/metrics/targets/1/firstSeenS"},
+        {"\"format\":\"hysteroscene-trial-report\"", "\"format\":\"hysteroscene-trial\"", "/format"},
+        {"\"version\":2", "\"version\":3", "/version: 3 is not a version this build reads (1-2)"},
+        {"\"exercise\":\"exploration\"", "\"exercise\":\"surgery\"", "/header/exercise"},
+        {"\"forceN\":[", "\"forceN\":[0.5,", "/series/forceN: 602 entries where the first column has 601"},
+        {"\"timeS\":[0,", "\"timeS\":[0.2,", "/series/timeS/1: times must increase"},
+        {"\"seen\":[", "\"seen\":[3,", "/surface/seen/0"},
+        {"\"wallContacts\":0", "\"wallContacts\":-4", "/metrics/wallContacts"},
+        {"\"samples\":60000", "\"samples\":60000,\"extra\":1", "unknown field \"extra\""},
+        {"\"sceneSha256\":\"aaaa", "\"sceneSha256\":\"AAAA", "header.sceneSha256"},
+    };
+    for (const auto& c : cases) {
+        auto read = hs::sim::parseReport(edited(json, c.from, c.to), "bad.json");
+        ASSERT_FALSE(read) << c.to;
+        EXPECT_NE(read.error().detail.find("bad.json"), std::string::npos) << read.error().detail;
+        EXPECT_NE(read.error().detail.find(c.expected), std::string::npos) << read.error().detail;
+    }
+    hs::sim::ReportReadLimits small;
+    small.maxSeries = 100;
+    auto tooLong = hs::sim::parseReport(json, "long.json", small);
+    ASSERT_FALSE(tooLong);
+    EXPECT_NE(tooLong.error().detail.find("/series/timeS: 601 entries, more than the 100"), std::string::npos)
+        << tooLong.error().detail;
+    for (const std::string& garbage :
+         {std::string(), std::string("[]"), std::string("{\"format\":"), json.substr(0, 900)})
+        EXPECT_FALSE(hs::sim::parseReport(garbage, "g.json"));
+}
+
+TEST(TrialReport, AFirstVersionReportReadsWithThePumpWhereItsHeaderSetIt) {
+    // Version 1 had no pump column: its pump line is the header's set pressure, as that report's page drew it.
+    std::string json = hs::sim::reportJson(sampleReport());
+    json = edited(json, "\"version\":2", "\"version\":1");
+    const auto pump = json.find(",\"pumpSetKpa\":[");
+    ASSERT_NE(pump, std::string::npos);
+    json.erase(pump, json.find(']', pump) + 1 - pump);
+    auto read = hs::sim::parseReport(json, "v1.json");
+    ASSERT_TRUE(read) << read.error().detail;
+    ASSERT_EQ(read->series.size(), 601u);
+    EXPECT_EQ(read->series.back().pumpSetKpa, read->header.fluid.pumpPressureKpa);
+    // A version 2 report must have it.
+    auto missing = hs::sim::parseReport(edited(json, "\"version\":1", "\"version\":2"), "v2.json");
+    ASSERT_FALSE(missing);
+    EXPECT_NE(missing.error().detail.find("/series/pumpSetKpa: required field is missing"), std::string::npos)
+        << missing.error().detail;
+}
+
+TEST(TrialReport, ThePumpLineFollowsTheSetPressureAsTheTraineeMovedIt) {
+    // The tables and plots the page and the workstation share: the pump's line is the set pressure at each moment,
+    // not the one the trial started with.
+    const auto plots = hs::sim::reportPlots(sampleReport());
+    ASSERT_EQ(plots.size(), 3u); // force, pressure, deficit: no blood loss outside the operative exercises
+    ASSERT_EQ(plots[1].lines.size(), 3u);
+    const hs::sim::ReportLine& pump = plots[1].lines[2];
+    EXPECT_EQ(pump.label, "pump set pressure");
+    ASSERT_EQ(pump.points.size(), 601u);
+    EXPECT_EQ(pump.points.front().second, 10.7);
+    EXPECT_EQ(pump.points.back().second, 11.4);
+    const auto tables = hs::sim::reportTables(sampleReport());
+    ASSERT_FALSE(tables.empty());
+    EXPECT_EQ(tables.front().section, "Overview");
+    bool fluid = false;
+    for (const auto& t : tables)
+        fluid = fluid || t.section == "Fluid";
+    EXPECT_TRUE(fluid);
 }
 
 /// The page's DOM after headless Chromium has run its scripts (exit code 0 and the DOM on success).

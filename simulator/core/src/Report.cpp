@@ -19,7 +19,7 @@ using io::fixedText;
 using io::htmlEscape;
 using nlohmann::ordered_json;
 
-constexpr int kReportVersion = 1;
+constexpr int kReportVersion = 2; // 2: the series has the pump's set pressure
 /// The visualized-surface plot draws at most this many faces (evenly strided); the JSON keeps them all.
 constexpr std::size_t kMaxPlottedSurfaceSamples = 20000;
 
@@ -240,10 +240,10 @@ std::string seconds(double s) {
 }
 
 /// A two-column table of (name, value) rows.
-std::string keyValueTable(const std::vector<std::pair<std::string, std::string>>& rows) {
+std::string keyValueTable(const std::vector<std::vector<std::string>>& rows) {
     std::string h = "<table class=\"kv\">\n";
-    for (const auto& [name, value] : rows)
-        h += "<tr><th>" + htmlEscape(name) + "</th><td>" + htmlEscape(value) + "</td></tr>\n";
+    for (const auto& row : rows)
+        h += "<tr><th>" + htmlEscape(row.at(0)) + "</th><td>" + htmlEscape(row.at(1)) + "</td></tr>\n";
     return h + "</table>\n";
 }
 
@@ -265,114 +265,57 @@ std::string pressure(double kpa) {
     return fixedText(kpa, 2) + " kPa (" + fixedText(kpa / units::kKpaPerMmHg, 0) + " mmHg)";
 }
 
+using Rows = std::vector<std::vector<std::string>>;
+
+ReportTable keyValues(std::string section, Rows rows) {
+    return {std::move(section), {}, std::move(rows)};
+}
+
 std::string sectionsHtml(const TrialReport& r) {
-    const TrialMetrics& m = r.metrics;
-    std::string h = "<h2>Overview</h2>\n" +
-                    keyValueTable({{"exercise", std::string(toString(r.header.exercise))},
-                                   {"time", seconds(m.timeS)},
-                                   {"device samples", std::to_string(r.samples)},
-                                   {"path length inside the body", fixedText(m.pathLengthMm, 0) + " mm"},
-                                   {"cavity surface visualized", fixedText(m.cavitySurfaceVisualizedPercent, 1) + " %"},
-                                   {"horizon error (mean / max)", fixedText(m.horizonErrorMeanDeg, 1) + "° / " +
-                                                                      fixedText(m.horizonErrorMaxDeg, 1) + "°"},
-                                   {"exploration complete", yesNo(r.explorationComplete)},
-                                   {"diagnosis complete", yesNo(r.diagnosisComplete)}});
-    std::vector<std::vector<std::string>> targets;
-    for (const ExplorationTarget& t : m.targets)
-        targets.push_back({t.name, fixedText(t.visualizedPercent, 1) + " %", yesNo(t.seen), seconds(t.firstSeenS)});
-    h += "<h2>Exploration</h2>\n" + table({"target", "visualized", "seen", "first seen"}, targets);
-    h += "<h2>Safety</h2>\n" + keyValueTable({{"wall contacts", std::to_string(m.wallContacts)},
-                                              {"peak force", fixedText(m.peakForceN, 2) + " N"},
-                                              {"time in contact", seconds(m.contactTimeS)},
-                                              {"perforations", std::to_string(m.perforations.size())}});
-    if (!m.perforations.empty()) {
-        std::vector<std::vector<std::string>> rows;
-        for (const Perforation& p : m.perforations)
-            rows.push_back({seconds(p.timeS), p.falsePassage ? p.region + " (false passage)" : p.region,
-                            fixedText(p.depthMm, 1) + " mm",
-                            fixedText(p.locationMm.x, 1) + ", " + fixedText(p.locationMm.y, 1) + ", " +
-                                fixedText(p.locationMm.z, 1)});
-        h += table({"time", "region", "depth", "where (mm)"}, rows);
-    }
-    h += "<h2>Fluid</h2>\n" +
-         keyValueTable(
-             {{"medium", std::string(toString(r.header.fluid.medium)) +
-                             (r.header.fluid.elderlyOrComorbid ? " (elderly or comorbid patient)" : "")},
-              {"pump pressure (set at the start / at the end)",
-               pressure(r.header.fluid.pumpPressureKpa) + " / " + pressure(m.finalPumpPressureKpa)},
-              {"mean arterial pressure", pressure(r.header.fluid.meanArterialPressureKpa)},
-              {"highest intrauterine pressure", pressure(m.maxPressureKpa)},
-              {"time above mean arterial pressure", seconds(m.timeAboveMeanArterialPressureS)},
-              {"inflow / outflow", fixedText(m.inflowMl, 0) + " mL / " + fixedText(m.outflowMl, 0) + " mL"},
-              {"deficit", fixedText(m.deficitMl, 0) + " mL (warning at " +
-                              fixedText(r.header.fluid.deficitWarningMl, 0) + " mL, limit " +
-                              fixedText(r.header.fluid.deficitLimitMl, 0) + " mL)"},
-              {"deficit warning / limit reached", yesNo(m.deficitWarning) + " / " + yesNo(m.deficitLimitReached)},
-              {"intravasation", fixedText(m.intravasationMl, 0) + " mL"},
-              {"blood loss", fixedText(m.bloodLossMl, 1) + " mL"},
-              {"red-out time", seconds(m.redOutTimeS)}});
-    std::vector<std::vector<std::string>> findings;
-    for (const PathologyFinding& p : m.pathologies)
-        findings.push_back({p.id, p.kind, yesNo(p.seen), yesNo(p.found), seconds(p.foundS)});
-    h += "<h2>Diagnosis</h2>\n" + table({"pathology", "kind", "seen", "marked", "marked at"}, findings) +
-         "<p>Marks on no pathology: " + std::to_string(m.falseMarks) + "</p>\n";
-    const ResectionMetrics& cut = m.resection;
-    if (!cut.pathologies.empty()) {
-        std::vector<std::vector<std::string>> removed;
-        for (const PathologyResection& p : cut.pathologies)
-            removed.push_back({p.id, p.kind, fixedText(p.volumeMl, 3) + " mL", fixedText(p.removedMl, 3) + " mL",
-                               fixedText(p.removedPercent, 1) + " %"});
-        h += "<h2>Resection</h2>\n" + table({"pathology", "kind", "volume", "removed", "removed (%)"}, removed) +
-             keyValueTable(
-                 {{"healthy tissue removed", fixedText(cut.healthyRemovedMl, 3) + " mL"},
-                  {"deepest cut into the myometrium", fixedText(cut.deepestMyometriumMm, 1) + " mm"},
-                  {"cuts through the serosa", std::to_string(cut.perforatingCuts)},
-                  {"resection time (first to last cut)", seconds(cut.resectionTimeS)},
-                  {"cutting time (pedal down)", seconds(cut.cuttingTimeS)},
-                  {"loop path with the pedal down", fixedText(cut.loopPathMm, 0) + " mm"},
-                  {"coagulating time (pedal down)", seconds(cut.coagulationTimeS)},
-                  {"cut events / pieces cut free", std::to_string(cut.cutEvents) + " / " + std::to_string(cut.chips)},
-                  {"chips made / carried out / left in the cavity", std::to_string(cut.chipsMade) + " / " +
-                                                                        std::to_string(cut.chipsCarriedOut) + " / " +
-                                                                        std::to_string(cut.chipsLeft)}});
+    std::string h;
+    for (const ReportTable& t : reportTables(r)) {
+        if (!t.section.empty())
+            h += "<h2>" + htmlEscape(t.section) + "</h2>\n";
+        h += t.head.empty() ? keyValueTable(t.rows) : table(t.head, t.rows);
     }
     return h;
 }
 
-ordered_json lineChart(const std::string& title, const std::string& yTitle,
-                       const std::vector<std::pair<std::string, ordered_json>>& series) {
+ordered_json lineChart(const ReportPlot& plot) {
     auto datasets = ordered_json::array();
-    for (const auto& [label, points] : series)
-        datasets.push_back({{"label", label},
-                            {"data", points},
+    for (const ReportLine& line : plot.lines) {
+        auto points = ordered_json::array();
+        for (const auto& [x, y] : line.points)
+            points.push_back({{"x", x}, {"y", y}});
+        datasets.push_back({{"label", line.label},
+                            {"data", std::move(points)},
                             {"borderColor", io::chartColour(datasets.size())},
                             {"backgroundColor", io::chartColour(datasets.size(), 0.3)},
                             {"pointRadius", 0},
                             {"borderWidth", 1.5}});
-    ordered_json options = io::chartOptions(title);
+    }
+    ordered_json options = io::chartOptions(plot.title);
     options["parsing"] = false;
     options["scales"] = {{"x", {{"type", "linear"}, {"title", {{"display", true}, {"text", "time (s)"}}}}},
-                         {"y", {{"title", {{"display", true}, {"text", yTitle}}}}}};
+                         {"y", {{"title", {{"display", true}, {"text", plot.yTitle}}}}}};
     return {{"type", "line"}, {"data", {{"datasets", datasets}}}, {"options", options}};
 }
 
-/// {x: time, y: value} points of one field of the series.
+/// (time, value) points of one field of the series.
 template <class Get>
-ordered_json points(const std::vector<SeriesPoint>& series, Get get) {
-    auto list = ordered_json::array();
+std::vector<std::pair<double, double>> points(const std::vector<SeriesPoint>& series, Get get) {
+    std::vector<std::pair<double, double>> list;
+    list.reserve(series.size());
     for (const SeriesPoint& p : series)
-        list.push_back({{"x", p.timeS}, {"y", get(p)}});
+        list.emplace_back(p.timeS, get(p));
     return list;
 }
 
 /// A constant line over the trial's time (a limit).
-ordered_json level(const std::vector<SeriesPoint>& series, double value) {
-    auto list = ordered_json::array();
-    if (!series.empty()) {
-        list.push_back({{"x", series.front().timeS}, {"y", value}});
-        list.push_back({{"x", series.back().timeS}, {"y", value}});
-    }
-    return list;
+std::vector<std::pair<double, double>> level(const std::vector<SeriesPoint>& series, double value) {
+    if (series.empty())
+        return {};
+    return {{series.front().timeS, value}, {series.back().timeS, value}};
 }
 
 ordered_json surfaceChart(const std::vector<SurfaceSample>& surface) {
@@ -401,22 +344,10 @@ ordered_json surfaceChart(const std::vector<SurfaceSample>& surface) {
 }
 
 ordered_json chartConfigs(const TrialReport& r) {
-    const auto& s = r.series;
     auto charts = ordered_json::array();
-    charts.push_back(
-        lineChart("Contact force", "N", {{"force", points(s, [](const SeriesPoint& p) { return p.forceN; })}}));
-    charts.push_back(lineChart("Intrauterine pressure", "kPa",
-                               {{"pressure", points(s, [](const SeriesPoint& p) { return p.pressureKpa; })},
-                                {"mean arterial pressure", level(s, r.header.fluid.meanArterialPressureKpa)},
-                                {"pump", level(s, r.header.fluid.pumpPressureKpa)}}));
-    charts.push_back(lineChart("Fluid deficit", "mL",
-                               {{"deficit", points(s, [](const SeriesPoint& p) { return p.deficitMl; })},
-                                {"warning", level(s, r.header.fluid.deficitWarningMl)},
-                                {"limit", level(s, r.header.fluid.deficitLimitMl)}}));
-    charts.push_back(surfaceChart(r.surface));
-    if (!r.metrics.resection.pathologies.empty()) // canvas 4, with the plots over time
-        charts.push_back(
-            lineChart("Blood loss", "mL", {{"blood", points(s, [](const SeriesPoint& p) { return p.bloodLossMl; })}}));
+    for (const ReportPlot& plot : reportPlots(r))
+        charts.push_back(lineChart(plot));
+    charts.push_back(surfaceChart(r.surface)); // the last canvas, below the plots over time
     return charts;
 }
 
@@ -435,15 +366,111 @@ std::string pageHtml(const TrialReport& r, const std::string& library) {
         (r.header.startedUtc.empty() ? std::string() : ", started " + htmlEscape(r.header.startedUtc)) + ".</p>\n";
     if (library.empty())
         h += "<p>No plots: the chart library (Debian's libjs-chart.js) is not installed.</p>\n";
-    h += "<h2>Over time</h2>\n<div class=\"charts\">\n" + io::chartCanvas(0) + io::chartCanvas(1) + io::chartCanvas(2) +
-         (r.metrics.resection.pathologies.empty() ? std::string() : io::chartCanvas(4)) +
-         "</div>\n<h2>Visualized surface</h2>\n" + io::chartCanvas(3, "wide");
+    const std::size_t plots = reportPlots(r).size();
+    h += "<h2>Over time</h2>\n<div class=\"charts\">\n";
+    for (std::size_t i = 0; i < plots; ++i)
+        h += io::chartCanvas(static_cast<int>(i));
+    h += "</div>\n<h2>Visualized surface</h2>\n" + io::chartCanvas(static_cast<int>(plots), "wide");
     h += sectionsHtml(r);
     h += io::chartScripts(library, chartConfigs(r));
     return h + "</body></html>\n";
 }
 
 } // namespace
+
+std::vector<ReportTable> reportTables(const TrialReport& r) {
+    const TrialMetrics& m = r.metrics;
+    std::vector<ReportTable> tables;
+    tables.push_back(
+        keyValues("Overview", {{"exercise", std::string(toString(r.header.exercise))},
+                               {"time", seconds(m.timeS)},
+                               {"device samples", std::to_string(r.samples)},
+                               {"path length inside the body", fixedText(m.pathLengthMm, 0) + " mm"},
+                               {"cavity surface visualized", fixedText(m.cavitySurfaceVisualizedPercent, 1) + " %"},
+                               {"horizon error (mean / max)", fixedText(m.horizonErrorMeanDeg, 1) + "° / " +
+                                                                  fixedText(m.horizonErrorMaxDeg, 1) + "°"},
+                               {"exploration complete", yesNo(r.explorationComplete)},
+                               {"diagnosis complete", yesNo(r.diagnosisComplete)}}));
+    Rows targets;
+    for (const ExplorationTarget& t : m.targets)
+        targets.push_back({t.name, fixedText(t.visualizedPercent, 1) + " %", yesNo(t.seen), seconds(t.firstSeenS)});
+    tables.push_back({"Exploration", {"target", "visualized", "seen", "first seen"}, std::move(targets)});
+    tables.push_back(keyValues("Safety", {{"wall contacts", std::to_string(m.wallContacts)},
+                                          {"peak force", fixedText(m.peakForceN, 2) + " N"},
+                                          {"time in contact", seconds(m.contactTimeS)},
+                                          {"perforations", std::to_string(m.perforations.size())}}));
+    if (!m.perforations.empty()) {
+        Rows rows;
+        for (const Perforation& p : m.perforations)
+            rows.push_back({seconds(p.timeS), p.falsePassage ? p.region + " (false passage)" : p.region,
+                            fixedText(p.depthMm, 1) + " mm",
+                            fixedText(p.locationMm.x, 1) + ", " + fixedText(p.locationMm.y, 1) + ", " +
+                                fixedText(p.locationMm.z, 1)});
+        tables.push_back({{}, {"time", "region", "depth", "where (mm)"}, std::move(rows)});
+    }
+    tables.push_back(keyValues(
+        "Fluid",
+        {{"medium", std::string(toString(r.header.fluid.medium)) +
+                        (r.header.fluid.elderlyOrComorbid ? " (elderly or comorbid patient)" : "")},
+         {"pump pressure (set at the start / at the end)",
+          pressure(r.header.fluid.pumpPressureKpa) + " / " + pressure(m.finalPumpPressureKpa)},
+         {"mean arterial pressure", pressure(r.header.fluid.meanArterialPressureKpa)},
+         {"highest intrauterine pressure", pressure(m.maxPressureKpa)},
+         {"time above mean arterial pressure", seconds(m.timeAboveMeanArterialPressureS)},
+         {"inflow / outflow", fixedText(m.inflowMl, 0) + " mL / " + fixedText(m.outflowMl, 0) + " mL"},
+         {"deficit", fixedText(m.deficitMl, 0) + " mL (warning at " + fixedText(r.header.fluid.deficitWarningMl, 0) +
+                         " mL, limit " + fixedText(r.header.fluid.deficitLimitMl, 0) + " mL)"},
+         {"deficit warning / limit reached", yesNo(m.deficitWarning) + " / " + yesNo(m.deficitLimitReached)},
+         {"intravasation", fixedText(m.intravasationMl, 0) + " mL"},
+         {"blood loss", fixedText(m.bloodLossMl, 1) + " mL"},
+         {"red-out time", seconds(m.redOutTimeS)}}));
+    Rows findings;
+    for (const PathologyFinding& p : m.pathologies)
+        findings.push_back({p.id, p.kind, yesNo(p.seen), yesNo(p.found), seconds(p.foundS)});
+    tables.push_back({"Diagnosis", {"pathology", "kind", "seen", "marked", "marked at"}, std::move(findings)});
+    tables.push_back(keyValues({}, {{"marks on no pathology", std::to_string(m.falseMarks)}}));
+    const ResectionMetrics& cut = m.resection;
+    if (!cut.pathologies.empty()) {
+        Rows removed;
+        for (const PathologyResection& p : cut.pathologies)
+            removed.push_back({p.id, p.kind, fixedText(p.volumeMl, 3) + " mL", fixedText(p.removedMl, 3) + " mL",
+                               fixedText(p.removedPercent, 1) + " %"});
+        tables.push_back({"Resection", {"pathology", "kind", "volume", "removed", "removed (%)"}, std::move(removed)});
+        tables.push_back(keyValues(
+            {}, {{"healthy tissue removed", fixedText(cut.healthyRemovedMl, 3) + " mL"},
+                 {"deepest cut into the myometrium", fixedText(cut.deepestMyometriumMm, 1) + " mm"},
+                 {"cuts through the serosa", std::to_string(cut.perforatingCuts)},
+                 {"resection time (first to last cut)", seconds(cut.resectionTimeS)},
+                 {"cutting time (pedal down)", seconds(cut.cuttingTimeS)},
+                 {"loop path with the pedal down", fixedText(cut.loopPathMm, 0) + " mm"},
+                 {"coagulating time (pedal down)", seconds(cut.coagulationTimeS)},
+                 {"cut events / pieces cut free", std::to_string(cut.cutEvents) + " / " + std::to_string(cut.chips)},
+                 {"chips made / carried out / left in the cavity", std::to_string(cut.chipsMade) + " / " +
+                                                                       std::to_string(cut.chipsCarriedOut) + " / " +
+                                                                       std::to_string(cut.chipsLeft)}}));
+    }
+    return tables;
+}
+
+std::vector<ReportPlot> reportPlots(const TrialReport& r) {
+    const auto& s = r.series;
+    std::vector<ReportPlot> plots;
+    plots.push_back({"Contact force", "N", {{"force", points(s, [](const SeriesPoint& p) { return p.forceN; })}}});
+    plots.push_back({"Intrauterine pressure",
+                     "kPa",
+                     {{"pressure", points(s, [](const SeriesPoint& p) { return p.pressureKpa; })},
+                      {"mean arterial pressure", level(s, r.header.fluid.meanArterialPressureKpa)},
+                      {"pump set pressure", points(s, [](const SeriesPoint& p) { return p.pumpSetKpa; })}}});
+    plots.push_back({"Fluid deficit",
+                     "mL",
+                     {{"deficit", points(s, [](const SeriesPoint& p) { return p.deficitMl; })},
+                      {"warning", level(s, r.header.fluid.deficitWarningMl)},
+                      {"limit", level(s, r.header.fluid.deficitLimitMl)}}});
+    if (!r.metrics.resection.pathologies.empty())
+        plots.push_back(
+            {"Blood loss", "mL", {{"blood", points(s, [](const SeriesPoint& p) { return p.bloodLossMl; })}}});
+    return plots;
+}
 
 std::string reportJson(const TrialReport& report) {
     JsonWriter w;
@@ -462,6 +489,7 @@ std::string reportJson(const TrialReport& report) {
     w.column("pressureKpa", report.series, [](const SeriesPoint& p) { return p.pressureKpa; });
     w.column("deficitMl", report.series, [](const SeriesPoint& p) { return p.deficitMl; });
     w.column("bloodLossMl", report.series, [](const SeriesPoint& p) { return p.bloodLossMl; });
+    w.column("pumpSetKpa", report.series, [](const SeriesPoint& p) { return p.pumpSetKpa; });
     w.close('}');
     w.key("surface");
     w.open('{');

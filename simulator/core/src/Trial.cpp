@@ -1,6 +1,8 @@
 // Trial files: the device samples of a session with what replays it (Trial.h has the layout).
 #include "hs/sim/Trial.h"
 
+#include "TrialJson.h"
+
 #include "hs/io/AtomicFile.h"
 #include "hs/scene/JsonText.h"
 
@@ -151,28 +153,6 @@ bool isLowerHex64(const std::string& text) {
                                             [](char c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'); });
 }
 
-Status checkHeader(const TrialHeader& h, const std::string& name) {
-    if (!isLowerHex64(h.sceneSha256))
-        return invalid(name, "header.sceneSha256", "must be 64 lower-case hex digits (the manifest's SHA-256)");
-    if (h.device.size() > kMaxTextField)
-        return invalid(name, "header.device", "is longer than " + std::to_string(kMaxTextField) + " bytes");
-    if (h.startedUtc.size() > kMaxTextField)
-        return invalid(name, "header.startedUtc", "is longer than " + std::to_string(kMaxTextField) + " bytes");
-    if (h.physics.engine.empty() || h.physics.engine.size() > kMaxTextField)
-        return invalid(name, "header.physics.engine", "must be 1-" + std::to_string(kMaxTextField) + " bytes");
-    const double ticks = h.physics.stepS * kDeviceRateHz;
-    if (!std::isfinite(h.physics.stepS) || h.physics.stepS < 0.001 || h.physics.stepS > 0.02 ||
-        std::abs(ticks - std::round(ticks)) > 1e-9)
-        return invalid(name, "header.physics.stepS", "must be 0.001-0.02 s, a whole number of 1 ms device ticks");
-    if (h.physics.solverIterations < 1 || h.physics.solverIterations > 50)
-        return invalid(name, "header.physics.solverIterations", "must be 1-50");
-    if (Status s = checkScopeConfig(h.scope); !s)
-        return Error{ErrorCode::InvalidInput, name + ": header." + s.error().detail};
-    if (Status s = checkFluidSettings(h.fluid); !s)
-        return Error{ErrorCode::InvalidInput, name + ": header." + s.error().detail};
-    return {};
-}
-
 std::string headerJson(const TrialHeader& h) {
     ordered_json j;
     j["format"] = kHeaderFormat;
@@ -207,44 +187,7 @@ void readHeaderFields(const json& document, TrialHeader& h, scene::JsonIssues& i
     if (root.member("version") && version != kHeaderVersion)
         issues.push_back({"/version", std::to_string(version) + " is not the version this build reads (" +
                                           std::to_string(kHeaderVersion) + ")"});
-    root.read("sceneSha256", h.sceneSha256, true);
-    root.read("seed", h.seed, true);
-    if (const json* p = root.member("physics", true)) {
-        scene::ObjectReader physics(*p, "/physics", issues);
-        physics.read("engine", h.physics.engine, true);
-        physics.read("stepS", h.physics.stepS, true);
-        physics.read("solverIterations", h.physics.solverIterations, true);
-        physics.finish();
-    }
-    if (const json* e = root.member("exercise", true)) {
-        if (!e->is_string() || !fromString(e->get_ref<const std::string&>(), h.exercise))
-            issues.push_back({"/exercise", "must be \"exploration\" or \"diagnosis\""});
-    }
-    if (const json* s = root.member("scope", true)) {
-        scene::ObjectReader scope(*s, "/scope", issues);
-        scope.read("opticDeg", h.scope.opticDeg, true);
-        scope.read("diameterMm", h.scope.diameterMm, true);
-        scope.read("fieldOfViewDeg", h.scope.fieldOfViewDeg, true);
-        scope.read("focusNearMm", h.scope.focusNearMm, true);
-        scope.read("focusFarMm", h.scope.focusFarMm, true);
-        scope.finish();
-    }
-    if (const json* f = root.member("fluid", true)) {
-        scene::ObjectReader fluid(*f, "/fluid", issues);
-        fluid.read("pumpPressureKpa", h.fluid.pumpPressureKpa, true);
-        fluid.read("meanArterialPressureKpa", h.fluid.meanArterialPressureKpa, true);
-        fluid.read("deficitWarningMl", h.fluid.deficitWarningMl, true);
-        fluid.read("deficitLimitMl", h.fluid.deficitLimitMl, true);
-        // Trials recorded before the medium was chosen ran on saline in a healthy patient.
-        if (const json* m = fluid.member("medium")) {
-            if (!m->is_string() || !fromString(m->get_ref<const std::string&>(), h.fluid.medium))
-                issues.push_back({"/fluid/medium", "must be \"saline\" or \"glycine\""});
-        }
-        fluid.read("elderlyOrComorbid", h.fluid.elderlyOrComorbid);
-        fluid.finish();
-    }
-    root.read("device", h.device, true);
-    root.read("startedUtc", h.startedUtc);
+    detail::readHeaderMembers(root, h);
     root.finish();
 }
 
@@ -256,7 +199,7 @@ Result<TrialHeader> parseHeader(const std::string& text, const std::string& name
     auto header = scene::parseJsonDocument<TrialHeader>(text, name + ": header", limits, readHeaderFields);
     if (!header)
         return header.failure();
-    HS_TRY(checkHeader(*header, name));
+    HS_TRY(detail::checkHeader(*header, name));
     return header;
 }
 
@@ -400,6 +343,75 @@ Status writeTo(std::FILE* file, const Trial& trial, const std::string& header, c
 
 } // namespace
 
+namespace detail {
+
+Status checkHeader(const TrialHeader& h, const std::string& name) {
+    if (!isLowerHex64(h.sceneSha256))
+        return invalid(name, "header.sceneSha256", "must be 64 lower-case hex digits (the manifest's SHA-256)");
+    if (h.device.size() > kMaxTextField)
+        return invalid(name, "header.device", "is longer than " + std::to_string(kMaxTextField) + " bytes");
+    if (h.startedUtc.size() > kMaxTextField)
+        return invalid(name, "header.startedUtc", "is longer than " + std::to_string(kMaxTextField) + " bytes");
+    if (h.physics.engine.empty() || h.physics.engine.size() > kMaxTextField)
+        return invalid(name, "header.physics.engine", "must be 1-" + std::to_string(kMaxTextField) + " bytes");
+    const double ticks = h.physics.stepS * kDeviceRateHz;
+    if (!std::isfinite(h.physics.stepS) || h.physics.stepS < 0.001 || h.physics.stepS > 0.02 ||
+        std::abs(ticks - std::round(ticks)) > 1e-9)
+        return invalid(name, "header.physics.stepS", "must be 0.001-0.02 s, a whole number of 1 ms device ticks");
+    if (h.physics.solverIterations < 1 || h.physics.solverIterations > 50)
+        return invalid(name, "header.physics.solverIterations", "must be 1-50");
+    if (Status s = checkScopeConfig(h.scope); !s)
+        return Error{ErrorCode::InvalidInput, name + ": header." + s.error().detail};
+    if (Status s = checkFluidSettings(h.fluid); !s)
+        return Error{ErrorCode::InvalidInput, name + ": header." + s.error().detail};
+    return {};
+}
+
+void readHeaderMembers(scene::ObjectReader& root, TrialHeader& h) {
+    scene::JsonIssues& issues = root.issues();
+    root.read("sceneSha256", h.sceneSha256, true);
+    root.read("seed", h.seed, true);
+    if (const json* p = root.member("physics", true)) {
+        scene::ObjectReader physics(*p, root.pathOf("physics"), issues);
+        physics.read("engine", h.physics.engine, true);
+        physics.read("stepS", h.physics.stepS, true);
+        physics.read("solverIterations", h.physics.solverIterations, true);
+        physics.finish();
+    }
+    if (const json* e = root.member("exercise", true)) {
+        if (!e->is_string() || !fromString(e->get_ref<const std::string&>(), h.exercise))
+            issues.push_back(
+                {root.pathOf("exercise"), "must be \"exploration\", \"diagnosis\", \"polypectomy\" or \"myomectomy\""});
+    }
+    if (const json* s = root.member("scope", true)) {
+        scene::ObjectReader scope(*s, root.pathOf("scope"), issues);
+        scope.read("opticDeg", h.scope.opticDeg, true);
+        scope.read("diameterMm", h.scope.diameterMm, true);
+        scope.read("fieldOfViewDeg", h.scope.fieldOfViewDeg, true);
+        scope.read("focusNearMm", h.scope.focusNearMm, true);
+        scope.read("focusFarMm", h.scope.focusFarMm, true);
+        scope.finish();
+    }
+    if (const json* f = root.member("fluid", true)) {
+        scene::ObjectReader fluid(*f, root.pathOf("fluid"), issues);
+        fluid.read("pumpPressureKpa", h.fluid.pumpPressureKpa, true);
+        fluid.read("meanArterialPressureKpa", h.fluid.meanArterialPressureKpa, true);
+        fluid.read("deficitWarningMl", h.fluid.deficitWarningMl, true);
+        fluid.read("deficitLimitMl", h.fluid.deficitLimitMl, true);
+        // Trials recorded before the medium was chosen ran on saline in a healthy patient.
+        if (const json* m = fluid.member("medium")) {
+            if (!m->is_string() || !fromString(m->get_ref<const std::string&>(), h.fluid.medium))
+                issues.push_back({fluid.pathOf("medium"), "must be \"saline\" or \"glycine\""});
+        }
+        fluid.read("elderlyOrComorbid", h.fluid.elderlyOrComorbid);
+        fluid.finish();
+    }
+    root.read("device", h.device, true);
+    root.read("startedUtc", h.startedUtc);
+}
+
+} // namespace detail
+
 std::string_view toString(Exercise exercise) {
     switch (exercise) {
     case Exercise::Exploration:
@@ -482,7 +494,7 @@ Status checkFluidSettings(const FluidSettings& f) {
 }
 
 Status writeTrial(const Trial& trial, const std::string& path) {
-    HS_TRY(checkHeader(trial.header, path));
+    HS_TRY(detail::checkHeader(trial.header, path));
     for (std::size_t i = 0; i < trial.samples.size(); ++i)
         HS_TRY(checkSample(trial.samples[i], i, path));
     const std::string header = headerJson(trial.header);

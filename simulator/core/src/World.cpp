@@ -207,7 +207,7 @@ Status World::step(const DeviceSample* samples, std::size_t count) {
     const auto seen = std::chrono::steady_clock::now();
     w.timings.visibilityMs += std::chrono::duration<double, std::milli>(seen - seeing).count();
     if (w.state.timeS + 1e-9 >= w.nextSeriesS) {
-        w.series.push_back({w.state.timeS, w.seriesForceN, f.pressureKpa, f.deficitMl, f.bloodLossMl});
+        w.series.push_back({w.state.timeS, w.seriesForceN, f.pressureKpa, f.deficitMl, f.bloodLossMl, f.pumpSetKpa});
         w.seriesForceN = 0.0;
         w.nextSeriesS += kSeriesPeriodS;
     }

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace hs::sim {
@@ -48,6 +49,7 @@ struct SeriesPoint {
     double pressureKpa = 0.0; ///< intrauterine pressure, kPa
     double deficitMl = 0.0;   ///< fluid deficit, mL
     double bloodLossMl = 0.0; ///< blood from the cut vessels so far, mL
+    double pumpSetKpa = 0.0;  ///< the pump's set pressure then, kPa (its buttons move it during the trial)
 };
 
 /// One face of the cavity's surface, unrolled about the cavity's axis, for the visualized-surface plot.
@@ -122,6 +124,30 @@ struct TrialReport {
     std::vector<SurfaceSample> surface;
 };
 
+/// One table of the report. The HTML page and the workstation's review show the same tables, made here once.
+struct ReportTable {
+    std::string section;                        ///< the heading it opens ("Fluid"); empty: it continues the one above
+    std::vector<std::string> head;              ///< column names; empty: each row is a (name, value) pair
+    std::vector<std::vector<std::string>> rows; ///< values as text, with their units
+};
+/// The report's tables in order: overview, exploration, safety, fluid, diagnosis and, in the operative exercises,
+/// resection.
+std::vector<ReportTable> reportTables(const TrialReport& report);
+
+/// One line of a plot over the trial's time: (time s, value) points.
+struct ReportLine {
+    std::string label;
+    std::vector<std::pair<double, double>> points;
+};
+struct ReportPlot {
+    std::string title;
+    std::string yTitle; ///< the value's unit ("kPa")
+    std::vector<ReportLine> lines;
+};
+/// The plots over time: contact force; intrauterine pressure with the mean arterial pressure and the pump's set
+/// pressure; the fluid deficit with its warning and limit; and, in the operative exercises, the blood loss.
+std::vector<ReportPlot> reportPlots(const TrialReport& report);
+
 /// JSON of the report (docs/file-formats.md, "Trial reports"). Doubles are written with 17 significant digits so
 /// two replays compare bit for bit.
 std::string reportJson(const TrialReport& report);
@@ -131,6 +157,21 @@ std::string reportJson(const TrialReport& report);
 /// the file when the library is missing.
 [[nodiscard]] Result<std::string>
 reportHtml(const TrialReport& report, const std::string& chartLibrary = "/usr/share/javascript/chart.js/chart.min.js");
+
+/// Limits for reading untrusted reports.
+struct ReportReadLimits {
+    std::int64_t maxBytes = 256ll * 1024 * 1024;
+    std::size_t maxSeries = 4u * 3600 * 10;    ///< four hours at 10 Hz
+    std::size_t maxSurface = 4u * 1000 * 1000; ///< faces of the cavity
+    std::size_t maxListed = 100000;            ///< targets, perforations, pathologies
+};
+/// Reads a report written by reportJson (version 1 or 2) and checks every field: its type, its range and that the
+/// columns have equal lengths. Errors name `name`, the field's JSON pointer and the allowed range. Reports of
+/// version 1 have no pump column: their series get the header's set pressure.
+[[nodiscard]] Result<TrialReport> parseReport(std::string_view text, const std::string& name,
+                                              const ReportReadLimits& limits = {});
+/// The same from a file (IoError or LimitExceeded naming the file).
+[[nodiscard]] Result<TrialReport> readReport(const std::string& path, const ReportReadLimits& limits = {});
 
 /// Writes the JSON (and, when htmlPath is not empty, the page) atomically.
 [[nodiscard]] Status writeReport(const TrialReport& report, const std::string& jsonPath,
