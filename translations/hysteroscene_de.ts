@@ -207,6 +207,14 @@
         <source>The trial was recorded with other settings.</source>
         <translation>Der Versuch wurde mit anderen Einstellungen aufgezeichnet.</translation>
     </message>
+    <message>
+        <source>Demonstration</source>
+        <translation>Demonstration</translation>
+    </message>
+    <message>
+        <source>The demonstration could not be planned.</source>
+        <translation>Die Demonstration konnte nicht geplant werden.</translation>
+    </message>
 </context>
 <context>
     <name>hs::widgets</name>
@@ -1987,6 +1995,97 @@
     </message>
 </context>
 <context>
+    <name>hs::widgets::TrialReportView</name>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Exploration</source>
+        <translation>Erkundung</translation>
+    </message>
+    <message>
+        <source>Diagnosis</source>
+        <translation>Diagnose</translation>
+    </message>
+    <message>
+        <source>Polypectomy</source>
+        <translation>Polypektomie</translation>
+    </message>
+    <message>
+        <source>Myomectomy</source>
+        <translation>Myomektomie</translation>
+    </message>
+    <message>
+        <source>&amp;Metrics</source>
+        <translation>&amp;Messwerte</translation>
+    </message>
+    <message>
+        <source>&amp;Over Time</source>
+        <translation>&amp;Zeitverlauf</translation>
+    </message>
+    <message>
+        <source>&amp;Visualized Surface</source>
+        <translation>&amp;Gesehene Oberfläche</translation>
+    </message>
+    <message>
+        <source>%1 trial, %2</source>
+        <translation>Durchlauf %1, %2</translation>
+    </message>
+    <message>
+        <source>Scene %1, seed %2, %3° optic, %4 mm scope; device %5; physics %6.</source>
+        <translation>Szene %1, Startwert %2, %3°-Optik, %4-mm-Hysteroskop; Gerät %5; Physik %6.</translation>
+    </message>
+    <message>
+        <source>Started %1 (UTC).</source>
+        <translation>Begonnen %1 (UTC).</translation>
+    </message>
+    <message>
+        <source>Report: %1</source>
+        <translation>Bericht: %1</translation>
+    </message>
+    <message>
+        <source>Open the trial&apos;s scene package for review (File &gt; Review Scene Package) to see its organ beside the report.</source>
+        <translation>Öffnen Sie das Szenenpaket des Durchlaufs zur Begutachtung (Datei &gt; Szenenpaket begutachten), um sein Organ neben dem Bericht zu sehen.</translation>
+    </message>
+    <message>
+        <source>This trial ran on the scene under review.</source>
+        <translation>Dieser Durchlauf lief auf der begutachteten Szene.</translation>
+    </message>
+    <message>
+        <source>This trial ran on another scene than the one under review (%1, not %2).</source>
+        <translation>Dieser Durchlauf lief auf einer anderen Szene als der begutachteten (%1, nicht %2).</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>Zeit (s)</translation>
+    </message>
+    <message>
+        <source>Cavity surface, unrolled about the canal&apos;s axis</source>
+        <translation>Oberfläche des Cavums, um die Achse des Kanals abgerollt</translation>
+    </message>
+    <message>
+        <source>seen</source>
+        <translation>gesehen</translation>
+    </message>
+    <message>
+        <source>not seen</source>
+        <translation>nicht gesehen</translation>
+    </message>
+    <message>
+        <source>around the axis (degrees; 0 anterior, +90 the patient&apos;s left)</source>
+        <translation>um die Achse (Grad; 0 anterior, +90 links der Patientin)</translation>
+    </message>
+    <message>
+        <source>from the internal os (mm)</source>
+        <translation>vom inneren Muttermund (mm)</translation>
+    </message>
+</context>
+<context>
     <name>hs::widgets::VariantsView</name>
     <message>
         <source>How far every scope&apos;s tip is beyond its external os (mm)</source>
@@ -2531,6 +2630,34 @@
         <source>The case file %1 is gone from disk; Save writes it again.</source>
         <translation>Die Falldatei %1 ist nicht mehr auf der Festplatte; Speichern schreibt sie erneut.</translation>
     </message>
+    <message>
+        <source>Review Trial Report</source>
+        <translation>Durchlaufbericht begutachten</translation>
+    </message>
+    <message>
+        <source>The trial report cannot be read: it is missing or breaks its format (see the details).</source>
+        <translation>Der Durchlaufbericht kann nicht gelesen werden: Er fehlt oder verletzt sein Format (siehe Details).</translation>
+    </message>
+    <message>
+        <source>Review Trial Re&amp;port...</source>
+        <translation>D&amp;urchlaufbericht begutachten...</translation>
+    </message>
+    <message>
+        <source>Show a simulator trial&apos;s metrics and plots from its report</source>
+        <translation>Die Messwerte und Verläufe eines Simulator-Durchlaufs aus seinem Bericht zeigen</translation>
+    </message>
+    <message>
+        <source>Trial reports (*.json);;All files (*)</source>
+        <translation>Durchlaufberichte (*.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Reading the trial report</source>
+        <translation>Durchlaufbericht wird gelesen</translation>
+    </message>
+    <message>
+        <source>Trial Report - %1</source>
+        <translation>Durchlaufbericht - %1</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -2541,10 +2668,6 @@
     <message>
         <source>file</source>
         <translation>Datei</translation>
-    </message>
-    <message>
-        <source>A case file (.json) to author, a scene package (a folder) to review, or a surface or tetrahedral mesh to open.</source>
-        <translation>Eine Falldatei (.json) zum Bearbeiten, ein Szenenpaket (ein Ordner) zur Begutachtung oder eine Oberfläche bzw. ein Tetraedernetz zum Öffnen.</translation>
     </message>
     <message>
         <source>User-interface language (de, fr, it, en); default: HS_LANG, else the system locale.</source>
@@ -2565,6 +2688,10 @@
     <message>
         <source>Open a tetrahedral mesh cut open.</source>
         <translation>Ein Tetraedernetz aufgeschnitten öffnen.</translation>
+    </message>
+    <message>
+        <source>A case file (.json) to author, a scene package (a folder) or a simulator&apos;s trial report (.json) to review, or a surface or tetrahedral mesh to open.</source>
+        <translation>Eine Falldatei (.json) zum Bearbeiten, ein Szenenpaket (ein Ordner) oder ein Durchlaufbericht des Simulators (.json) zur Begutachtung oder eine Oberfläche bzw. ein Tetraedernetz zum Öffnen.</translation>
     </message>
 </context>
 </TS>

@@ -207,6 +207,14 @@
         <source>The trial was recorded with other settings.</source>
         <translation>L’essai a été enregistré avec d’autres réglages.</translation>
     </message>
+    <message>
+        <source>Demonstration</source>
+        <translation>Démonstration</translation>
+    </message>
+    <message>
+        <source>The demonstration could not be planned.</source>
+        <translation>La démonstration n&apos;a pas pu être planifiée.</translation>
+    </message>
 </context>
 <context>
     <name>hs::widgets</name>
@@ -1987,6 +1995,97 @@
     </message>
 </context>
 <context>
+    <name>hs::widgets::TrialReportView</name>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Exploration</source>
+        <translation>Exploration</translation>
+    </message>
+    <message>
+        <source>Diagnosis</source>
+        <translation>Diagnostic</translation>
+    </message>
+    <message>
+        <source>Polypectomy</source>
+        <translation>Polypectomie</translation>
+    </message>
+    <message>
+        <source>Myomectomy</source>
+        <translation>Myomectomie</translation>
+    </message>
+    <message>
+        <source>&amp;Metrics</source>
+        <translation>&amp;Mesures</translation>
+    </message>
+    <message>
+        <source>&amp;Over Time</source>
+        <translation>&amp;Au fil du temps</translation>
+    </message>
+    <message>
+        <source>&amp;Visualized Surface</source>
+        <translation>&amp;Surface visualisée</translation>
+    </message>
+    <message>
+        <source>%1 trial, %2</source>
+        <translation>Essai %1, %2</translation>
+    </message>
+    <message>
+        <source>Scene %1, seed %2, %3° optic, %4 mm scope; device %5; physics %6.</source>
+        <translation>Scène %1, graine %2, optique %3°, hystéroscope de %4 mm ; appareil %5 ; physique %6.</translation>
+    </message>
+    <message>
+        <source>Started %1 (UTC).</source>
+        <translation>Commencé %1 (UTC).</translation>
+    </message>
+    <message>
+        <source>Report: %1</source>
+        <translation>Rapport : %1</translation>
+    </message>
+    <message>
+        <source>Open the trial&apos;s scene package for review (File &gt; Review Scene Package) to see its organ beside the report.</source>
+        <translation>Ouvrez le paquet de scène de l&apos;essai pour examen (Fichier &gt; Examiner un paquet de scène) pour voir son organe à côté du rapport.</translation>
+    </message>
+    <message>
+        <source>This trial ran on the scene under review.</source>
+        <translation>Cet essai s&apos;est déroulé sur la scène examinée.</translation>
+    </message>
+    <message>
+        <source>This trial ran on another scene than the one under review (%1, not %2).</source>
+        <translation>Cet essai s&apos;est déroulé sur une autre scène que celle examinée (%1, pas %2).</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>temps (s)</translation>
+    </message>
+    <message>
+        <source>Cavity surface, unrolled about the canal&apos;s axis</source>
+        <translation>Surface de la cavité, déroulée autour de l&apos;axe du canal</translation>
+    </message>
+    <message>
+        <source>seen</source>
+        <translation>vu</translation>
+    </message>
+    <message>
+        <source>not seen</source>
+        <translation>non vu</translation>
+    </message>
+    <message>
+        <source>around the axis (degrees; 0 anterior, +90 the patient&apos;s left)</source>
+        <translation>autour de l&apos;axe (degrés ; 0 antérieur, +90 à gauche de la patiente)</translation>
+    </message>
+    <message>
+        <source>from the internal os (mm)</source>
+        <translation>depuis l&apos;orifice interne (mm)</translation>
+    </message>
+</context>
+<context>
     <name>hs::widgets::VariantsView</name>
     <message>
         <source>How far every scope&apos;s tip is beyond its external os (mm)</source>
@@ -2531,6 +2630,34 @@
         <source>The case file %1 is gone from disk; Save writes it again.</source>
         <translation>Le fichier du cas %1 a disparu du disque ; Enregistrer le réécrit.</translation>
     </message>
+    <message>
+        <source>Review Trial Report</source>
+        <translation>Examiner un rapport d&apos;essai</translation>
+    </message>
+    <message>
+        <source>The trial report cannot be read: it is missing or breaks its format (see the details).</source>
+        <translation>Le rapport d&apos;essai ne peut pas être lu : il est absent ou enfreint son format (voir les détails).</translation>
+    </message>
+    <message>
+        <source>Review Trial Re&amp;port...</source>
+        <translation>Examiner un ra&amp;pport d&apos;essai...</translation>
+    </message>
+    <message>
+        <source>Show a simulator trial&apos;s metrics and plots from its report</source>
+        <translation>Afficher les mesures et les courbes d&apos;un essai du simulateur à partir de son rapport</translation>
+    </message>
+    <message>
+        <source>Trial reports (*.json);;All files (*)</source>
+        <translation>Rapports d&apos;essai (*.json);;Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <source>Reading the trial report</source>
+        <translation>Lecture du rapport d&apos;essai</translation>
+    </message>
+    <message>
+        <source>Trial Report - %1</source>
+        <translation>Rapport d&apos;essai - %1</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -2541,10 +2668,6 @@
     <message>
         <source>file</source>
         <translation>fichier</translation>
-    </message>
-    <message>
-        <source>A case file (.json) to author, a scene package (a folder) to review, or a surface or tetrahedral mesh to open.</source>
-        <translation>Un fichier de cas (.json) à éditer, un paquet de scène (un dossier) à examiner, ou une surface ou un maillage tétraédrique à ouvrir.</translation>
     </message>
     <message>
         <source>User-interface language (de, fr, it, en); default: HS_LANG, else the system locale.</source>
@@ -2565,6 +2688,10 @@
     <message>
         <source>Open a tetrahedral mesh cut open.</source>
         <translation>Ouvrir un maillage tétraédrique coupé.</translation>
+    </message>
+    <message>
+        <source>A case file (.json) to author, a scene package (a folder) or a simulator&apos;s trial report (.json) to review, or a surface or tetrahedral mesh to open.</source>
+        <translation>Un fichier de cas (.json) à éditer, un paquet de scène (un dossier) ou un rapport d&apos;essai du simulateur (.json) à examiner, ou une surface ou un maillage tétraédrique à ouvrir.</translation>
     </message>
 </context>
 </TS>

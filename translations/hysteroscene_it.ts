@@ -207,6 +207,14 @@
         <source>The trial was recorded with other settings.</source>
         <translation>La prova è stata registrata con altre impostazioni.</translation>
     </message>
+    <message>
+        <source>Demonstration</source>
+        <translation>Dimostrazione</translation>
+    </message>
+    <message>
+        <source>The demonstration could not be planned.</source>
+        <translation>Non è stato possibile pianificare la dimostrazione.</translation>
+    </message>
 </context>
 <context>
     <name>hs::widgets</name>
@@ -1987,6 +1995,97 @@
     </message>
 </context>
 <context>
+    <name>hs::widgets::TrialReportView</name>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Exploration</source>
+        <translation>Esplorazione</translation>
+    </message>
+    <message>
+        <source>Diagnosis</source>
+        <translation>Diagnosi</translation>
+    </message>
+    <message>
+        <source>Polypectomy</source>
+        <translation>Polipectomia</translation>
+    </message>
+    <message>
+        <source>Myomectomy</source>
+        <translation>Miomectomia</translation>
+    </message>
+    <message>
+        <source>&amp;Metrics</source>
+        <translation>&amp;Misure</translation>
+    </message>
+    <message>
+        <source>&amp;Over Time</source>
+        <translation>&amp;Nel tempo</translation>
+    </message>
+    <message>
+        <source>&amp;Visualized Surface</source>
+        <translation>&amp;Superficie visualizzata</translation>
+    </message>
+    <message>
+        <source>%1 trial, %2</source>
+        <translation>Prova %1, %2</translation>
+    </message>
+    <message>
+        <source>Scene %1, seed %2, %3° optic, %4 mm scope; device %5; physics %6.</source>
+        <translation>Scena %1, seme %2, ottica %3°, isteroscopio da %4 mm; dispositivo %5; fisica %6.</translation>
+    </message>
+    <message>
+        <source>Started %1 (UTC).</source>
+        <translation>Iniziata %1 (UTC).</translation>
+    </message>
+    <message>
+        <source>Report: %1</source>
+        <translation>Rapporto: %1</translation>
+    </message>
+    <message>
+        <source>Open the trial&apos;s scene package for review (File &gt; Review Scene Package) to see its organ beside the report.</source>
+        <translation>Aprire il pacchetto di scena della prova per la revisione (File &gt; Rivedi pacchetto di scena) per vederne l&apos;organo accanto al rapporto.</translation>
+    </message>
+    <message>
+        <source>This trial ran on the scene under review.</source>
+        <translation>Questa prova si è svolta sulla scena in revisione.</translation>
+    </message>
+    <message>
+        <source>This trial ran on another scene than the one under review (%1, not %2).</source>
+        <translation>Questa prova si è svolta su un&apos;altra scena rispetto a quella in revisione (%1, non %2).</translation>
+    </message>
+    <message>
+        <source>time (s)</source>
+        <translation>tempo (s)</translation>
+    </message>
+    <message>
+        <source>Cavity surface, unrolled about the canal&apos;s axis</source>
+        <translation>Superficie della cavità, srotolata attorno all&apos;asse del canale</translation>
+    </message>
+    <message>
+        <source>seen</source>
+        <translation>vista</translation>
+    </message>
+    <message>
+        <source>not seen</source>
+        <translation>non vista</translation>
+    </message>
+    <message>
+        <source>around the axis (degrees; 0 anterior, +90 the patient&apos;s left)</source>
+        <translation>attorno all&apos;asse (gradi; 0 anteriore, +90 a sinistra della paziente)</translation>
+    </message>
+    <message>
+        <source>from the internal os (mm)</source>
+        <translation>dall&apos;orifizio uterino interno (mm)</translation>
+    </message>
+</context>
+<context>
     <name>hs::widgets::VariantsView</name>
     <message>
         <source>How far every scope&apos;s tip is beyond its external os (mm)</source>
@@ -2531,6 +2630,34 @@
         <source>The case file %1 is gone from disk; Save writes it again.</source>
         <translation>Il file del caso %1 non è più sul disco; Salva lo riscrive.</translation>
     </message>
+    <message>
+        <source>Review Trial Report</source>
+        <translation>Rivedi rapporto della prova</translation>
+    </message>
+    <message>
+        <source>The trial report cannot be read: it is missing or breaks its format (see the details).</source>
+        <translation>Il rapporto della prova non può essere letto: manca o viola il suo formato (vedere i dettagli).</translation>
+    </message>
+    <message>
+        <source>Review Trial Re&amp;port...</source>
+        <translation>Rivedi ra&amp;pporto della prova...</translation>
+    </message>
+    <message>
+        <source>Show a simulator trial&apos;s metrics and plots from its report</source>
+        <translation>Mostrare le misure e i grafici di una prova del simulatore dal suo rapporto</translation>
+    </message>
+    <message>
+        <source>Trial reports (*.json);;All files (*)</source>
+        <translation>Rapporti delle prove (*.json);;Tutti i file (*)</translation>
+    </message>
+    <message>
+        <source>Reading the trial report</source>
+        <translation>Lettura del rapporto della prova</translation>
+    </message>
+    <message>
+        <source>Trial Report - %1</source>
+        <translation>Rapporto della prova - %1</translation>
+    </message>
 </context>
 <context>
     <name>main</name>
@@ -2541,10 +2668,6 @@
     <message>
         <source>file</source>
         <translation>file</translation>
-    </message>
-    <message>
-        <source>A case file (.json) to author, a scene package (a folder) to review, or a surface or tetrahedral mesh to open.</source>
-        <translation>Un file di caso (.json) da modificare, un pacchetto di scena (una cartella) da esaminare, o una superficie o una mesh tetraedrica da aprire.</translation>
     </message>
     <message>
         <source>User-interface language (de, fr, it, en); default: HS_LANG, else the system locale.</source>
@@ -2565,6 +2688,10 @@
     <message>
         <source>Open a tetrahedral mesh cut open.</source>
         <translation>Apri una mesh tetraedrica sezionata.</translation>
+    </message>
+    <message>
+        <source>A case file (.json) to author, a scene package (a folder) or a simulator&apos;s trial report (.json) to review, or a surface or tetrahedral mesh to open.</source>
+        <translation>Un file di caso (.json) da modificare, un pacchetto di scena (una cartella) o un rapporto di prova del simulatore (.json) da rivedere, oppure una superficie o una mesh tetraedrica da aprire.</translation>
     </message>
 </context>
 </TS>

@@ -1,13 +1,16 @@
 // hysteroscene: the workstation. Opens the mesh given on the command line.
 #include "hs/translations/Translations.h"
 #include "hs/widgets/common/MessageBox.h"
+#include "hs/widgets/panels/TrialReportView.h"
 #include "hs/widgets/view/VtkView.h"
 #include "hs/workstation/MainWindow.h"
 
 #include <QAction>
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QDir>
 #include <QFileInfo>
+#include <QTabWidget>
 #include <QTextStream>
 #include <QTimer>
 
@@ -54,8 +57,10 @@ int main(int argc, char** argv) {
     parser.addVersionOption();
     parser.addPositionalArgument(
         QCoreApplication::translate("main", "file"),
-        QCoreApplication::translate("main", "A case file (.json) to author, a scene package (a folder) to review, or a "
-                                            "surface or tetrahedral mesh to open."));
+        QCoreApplication::translate("main",
+                                    "A case file (.json) to author, a scene package (a folder) or a simulator's "
+                                    "trial report (.json) to review, or a surface or tetrahedral mesh to "
+                                    "open."));
     const QCommandLineOption languageOption(
         QStringLiteral("lang"),
         QCoreApplication::translate("main", "User-interface language (de, fr, it, en); default: HS_LANG, else the "
@@ -86,8 +91,26 @@ int main(int argc, char** argv) {
                          [&window, image] { screenshotAndQuit(window, image, false); });
         QObject::connect(&window, &hs::workstation::MainWindow::reviewOpened, &window,
                          [&window, image] { screenshotAndQuit(window, image, true); });
+        // A trial report: the picture is of its own window.
+        QObject::connect(&window, &hs::workstation::MainWindow::trialReportOpened, &window, [&window, image] {
+            // The metrics to `image`, the plots over time beside it ("<image>-over-time.png").
+            QTimer::singleShot(300, &window, [&window, image] {
+                hs::widgets::TrialReportView* view = window.trialReportView();
+                bool saved = view->grab().save(image);
+                view->tabs()->setCurrentIndex(1);
+                QTimer::singleShot(300, &window, [view, image, saved] {
+                    const QFileInfo info(image);
+                    const QString plots =
+                        info.dir().filePath(info.completeBaseName() + QStringLiteral("-over-time.") + info.suffix());
+                    QCoreApplication::exit(saved && view->grab().save(plots) ? 0 : 1);
+                });
+            });
+        });
+        if (hs::workstation::MainWindow::isTrialReport(file)) // a report that cannot be read: its message, and out
+            QTimer::singleShot(30000, &window, [&window, image] { screenshotAndQuit(window, image, false); });
         // A case opens at once: the picture once the window has drawn it.
-        if (file.isEmpty() || QFileInfo(file).suffix().compare(QStringLiteral("json"), Qt::CaseInsensitive) == 0)
+        if (file.isEmpty() || (QFileInfo(file).suffix().compare(QStringLiteral("json"), Qt::CaseInsensitive) == 0 &&
+                               !hs::workstation::MainWindow::isTrialReport(file)))
             QTimer::singleShot(500, &window, [&window, image] { screenshotAndQuit(window, image, true); });
     }
     if (parser.isSet(clipOption))

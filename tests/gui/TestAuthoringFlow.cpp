@@ -5,12 +5,14 @@
 #include "LayoutCheck.h"
 #include "hs/scene/Review.h"
 #include "hs/scene/ScenePackage.h"
+#include "hs/sim/Metrics.h"
 #include "hs/widgets/common/FileDialog.h"
 #include "hs/widgets/common/MessageBox.h"
 #include "hs/widgets/jobs/GenerationSession.h"
 #include "hs/widgets/panels/PathologyPanel.h"
 #include "hs/widgets/panels/ReviewPanel.h"
 #include "hs/widgets/panels/SceneTree.h"
+#include "hs/widgets/panels/TrialReportView.h"
 #include "hs/widgets/view/HysteroscopicPreview.h"
 #include "hs/widgets/view/MeshDisplay.h"
 #include "hs/widgets/view/SceneParts.h"
@@ -566,6 +568,25 @@ void TestAuthoringFlow::aClinicianReviewsTheExportedPackage() {
     QCOMPARE(*review->pathologies[0].rating.score, 5);
     QVERIFY(hs::scene::verifyScenePackage(QFile::encodeName(m_exported).toStdString()).ok());
     shot("workstation-review", "reviewDock");
+    // A trial on this scene (its report names the package's manifest by its SHA-256), dropped during the review: it
+    // opens in its own window beside the review, which stays, and says that it ran on the scene under review.
+    auto identity = hs::scene::packageIdentity(QFile::encodeName(m_exported).toStdString());
+    QVERIFY(identity.ok());
+    hs::sim::TrialReport trial;
+    trial.header.sceneSha256 = *identity;
+    trial.header.physics.engine = "corotational-fem/8";
+    const QString trialReport = m_dir.filePath("trial-report.json");
+    QVERIFY(hs::sim::writeReport(trial, trialReport.toStdString()).ok());
+    QSignalSpy reportOpened(m_window.get(), &MainWindow::trialReportOpened);
+    {
+        QMimeData data;
+        data.setUrls({QUrl::fromLocalFile(trialReport)});
+        QDropEvent drop(QPointF(m_window->rect().center()), Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(m_window.get(), &drop);
+    }
+    QVERIFY(reportOpened.wait(20000));
+    QVERIFY(m_window->isReviewing());
+    QCOMPARE(m_window->trialReportView()->sceneNote(), QString("This trial ran on the scene under review."));
     // The review's tables, filled, fit a 1366 x 768 screen as every other panel does.
     m_window->resize(1366, 768);
     QTRY_COMPARE(m_window->size(), QSize(1366, 768));
@@ -596,6 +617,9 @@ void TestAuthoringFlow::aClinicianReviewsTheExportedPackage() {
     QVERIFY(MessageBox::takeRecorded().isEmpty());
     find<QAction>("actionCloseReview")->trigger();
     QVERIFY(!m_window->isReviewing());
+    QVERIFY2(m_window->trialReportView()->sceneNote().contains("Review Scene Package"),
+             qPrintable(m_window->trialReportView()->sceneNote()));
+    m_window->trialReportView()->close();
     QVERIFY(find<QPushButton>("meshButton")->isEnabled());
     QVERIFY(find<QAction>("actionUndo")->isEnabled());
     QVERIFY(find<QAction>("actionNewCase")->isEnabled());

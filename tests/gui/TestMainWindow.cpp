@@ -3,8 +3,10 @@
 #include "GuiTestMeshes.h"
 #include "LayoutCheck.h"
 #include "hs/io/MeshIO.h"
+#include "hs/sim/Metrics.h"
 #include "hs/widgets/common/FileDialog.h"
 #include "hs/widgets/common/MessageBox.h"
+#include "hs/widgets/panels/TrialReportView.h"
 #include "hs/widgets/view/ClipPlaneWidget.h"
 #include "hs/widgets/view/MeshDisplay.h"
 #include "hs/widgets/view/VtkView.h"
@@ -12,6 +14,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QChartView>
 #include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
@@ -20,10 +23,12 @@
 #include <QFileInfo>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLineSeries>
 #include <QListWidget>
 #include <QLocale>
 #include <QMenu>
 #include <QMimeData>
+#include <QScatterSeries>
 #include <QScrollArea>
 #include <QSettings>
 #include <QSignalSpy>
@@ -31,6 +36,7 @@
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTreeWidget>
 #include <QUrl>
 
 #include <vtkCamera.h>
@@ -85,6 +91,7 @@ private slots:
     void aDropOpensACaseOrAMeshAndSaysWhyItRefusesAnythingElse();
     void aCaseChangedOnDiskIsOfferedToReloadAndOurOwnSaveIsNot();
     void theHysteroscopicViewDetachesAndEnlarges();
+    void aTrialReportShowsTheReportsFiguresInAWindowOfItsOwn();
     void nothingIsCutOffOnASmallScreen_data();
     void nothingIsCutOffOnASmallScreen();
 
@@ -681,6 +688,126 @@ void TestMainWindow::theHysteroscopicViewDetachesAndEnlarges() {
     QTRY_VERIFY2(dock->widget()->width() > std::max(docked, 800), qPrintable(QString::number(dock->widget()->width())));
     dock->setFloating(false);
     QTRY_VERIFY(!dock->isFloating());
+}
+
+namespace {
+
+/// An operative trial's report: two minutes of series with the pump raised half way, a resection, a surface.
+hs::sim::TrialReport operativeReport() {
+    hs::sim::TrialReport r;
+    r.header.sceneSha256 = std::string(64, 'c');
+    r.header.seed = 5;
+    r.header.physics.engine = "corotational-fem/8";
+    r.header.exercise = hs::sim::Exercise::Polypectomy;
+    r.header.device = "demo";
+    r.samples = 120000;
+    r.metrics.timeS = 120.0;
+    r.metrics.finalPumpPressureKpa = 12.0;
+    r.metrics.resection.pathologies = {{"polyp-1", "polyp", 0.2410, 0.2393, 99.3}};
+    r.metrics.resection.healthyRemovedMl = 0.060;
+    r.metrics.resection.chipsLeft = 2;
+    for (int i = 0; i <= 1200; ++i)
+        r.series.push_back({i / 10.0, 0.1, 9.0, i * 0.1, i * 0.001, i < 600 ? 10.7 : 12.0});
+    for (int i = 0; i < 500; ++i)
+        r.surface.push_back({-180.0 + (i % 72) * 5.0, (i / 72) * 2.0, i % 3 != 0});
+    return r;
+}
+
+/// The texts of `tree`'s rows below its section `section`, each row's columns joined by " | ".
+QStringList sectionRows(QTreeWidget* tree, const QString& section) {
+    QStringList rows;
+    for (int i = 0; i < tree->topLevelItemCount(); ++i) {
+        QTreeWidgetItem* top = tree->topLevelItem(i);
+        if (top->text(0) != section)
+            continue;
+        for (int c = 0; c < top->childCount(); ++c) {
+            QStringList columns;
+            for (int k = 0; k < tree->columnCount(); ++k)
+                if (!top->child(c)->text(k).isEmpty())
+                    columns << top->child(c)->text(k);
+            rows << columns.join(" | ");
+        }
+    }
+    return rows;
+}
+
+} // namespace
+
+void TestMainWindow::aTrialReportShowsTheReportsFiguresInAWindowOfItsOwn() {
+    // File > Review Trial Report: the simulator's report, its tables and plots as the report's page has them, in a
+    // window of its own beside whatever the workstation has open.
+    const QString path = fixture("trial-report.json");
+    QVERIFY(hs::sim::writeReport(operativeReport(), path.toStdString()).ok());
+    QSignalSpy opened(m_window.get(), &MainWindow::trialReportOpened);
+    FileDialog::setNextFileName(path);
+    find<QAction>("actionReviewTrialReport")->trigger();
+    QVERIFY(opened.wait(kLoadTimeoutMs));
+    hs::widgets::TrialReportView* view = m_window->trialReportView();
+    QVERIFY(view && view->isVisible() && view->isWindow());
+    QVERIFY(view->windowTitle().contains("trial-report.json"));
+    QCOMPARE(view->path(), QFileInfo(path).absoluteFilePath());
+    // Every section of the report, with its rows.
+    QStringList sections;
+    for (int i = 0; i < view->metrics()->topLevelItemCount(); ++i)
+        sections << view->metrics()->topLevelItem(i)->text(0);
+    QCOMPARE(sections, QStringList({"Overview", "Exploration", "Safety", "Fluid", "Diagnosis", "Resection"}));
+    const QStringList resection = sectionRows(view->metrics(), "Resection");
+    QVERIFY2(resection.contains("polyp-1 | polyp | 0.241 mL | 0.239 mL | 99.3 %"), qPrintable(resection.join("\n")));
+    QVERIFY2(resection.contains("healthy tissue removed | 0.060 mL"), qPrintable(resection.join("\n")));
+    QVERIFY2(resection.contains("chips made / carried out / left in the cavity | 0 / 0 / 2"),
+             qPrintable(resection.join("\n")));
+    const QStringList fluid = sectionRows(view->metrics(), "Fluid");
+    QVERIFY2(
+        fluid.contains("pump pressure (set at the start / at the end) | 10.70 kPa (80 mmHg) / 12.00 kPa (90 mmHg)"),
+        qPrintable(fluid.join("\n")));
+    // Force, pressure, deficit and blood loss over time; the pump's line steps where the trainee raised it.
+    QCOMPARE(view->plots().size(), 4);
+    QChart* pressure = view->plots()[1]->chart();
+    QCOMPARE(pressure->title(), QString("Intrauterine pressure"));
+    auto* pump = qobject_cast<QLineSeries*>(pressure->series().value(2));
+    QVERIFY(pump && pump->name() == "pump set pressure");
+    QCOMPARE(pump->count(), 1201);
+    QCOMPARE(pump->at(0).y(), 10.7);
+    QCOMPARE(pump->at(1200).y(), 12.0);
+    int surfacePoints = 0;
+    for (QAbstractSeries* series : view->surfacePlot()->chart()->series())
+        surfacePoints += qobject_cast<QScatterSeries*>(series)->count();
+    QCOMPARE(surfacePoints, 500);
+    QVERIFY2(view->sceneNote().contains("Review Scene Package"), qPrintable(view->sceneNote()));
+    for (int tab = 0; tab < view->tabs()->count(); ++tab) { // each page paints
+        view->tabs()->setCurrentIndex(tab);
+        QTest::qWait(50);
+    }
+
+    // The command line's and a drop's report open as a report, not as a case.
+    const std::string caseBefore = hs::scene::toJson(m_window->document().spec());
+    m_window->openArgument(path);
+    QVERIFY(opened.wait(kLoadTimeoutMs));
+    QVERIFY(dropOn(m_window.get(), path));
+    QVERIFY(opened.wait(kLoadTimeoutMs));
+    QCOMPARE(hs::scene::toJson(m_window->document().spec()), caseBefore);
+
+    // A report that breaks its format is refused with a message naming the file and the field; the shown report stays.
+    QFile in(path);
+    QVERIFY(in.open(QIODevice::ReadOnly));
+    QByteArray bytes = in.readAll();
+    in.close();
+    bytes.replace("\"removedPercent\":99.299999999999997", "\"removedPercent\":199.3");
+    const QString bad = fixture("bad-report.json");
+    QFile out(bad);
+    QVERIFY(out.open(QIODevice::WriteOnly));
+    out.write(bytes);
+    out.close();
+    MessageBox::takeRecorded();
+    m_window->openArgument(bad);
+    QList<MessageBox::Message> messages;
+    QTRY_VERIFY((messages += MessageBox::takeRecorded(), !messages.isEmpty()));
+    QVERIFY2(messages.front().details.contains("bad-report.json") &&
+                 messages.front().details.contains("/metrics/resection/pathologies/0/removedPercent: 199.3 is outside "
+                                                   "0-100 %"),
+             qPrintable(messages.front().details));
+    QCOMPARE(view->path(), QFileInfo(path).absoluteFilePath());
+    view->close();
 }
 
 void TestMainWindow::nothingIsCutOffOnASmallScreen_data() {

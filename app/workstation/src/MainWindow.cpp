@@ -136,6 +136,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                                       "format (see the details)."),
                              QString::fromStdString(error.message()));
     });
+    connect(&m_trialJobs, &widgets::JobRunner::failed, this, [this](const QString&, const Error& error) {
+        // The report is untrusted too: the details name the file, the field and the allowed range.
+        MessageBox::critical(this, tr("Review Trial Report"),
+                             tr("The trial report cannot be read: it is missing or breaks its format (see the "
+                                "details)."),
+                             QString::fromStdString(error.message()));
+    });
     connect(m_pathologyPanel, &widgets::PathologyPanel::placingChanged, this, &MainWindow::showResults);
     connect(m_pathologyPanel, &widgets::PathologyPanel::currentChanged, this, &MainWindow::updateHandles);
     // A handle dropped is one edit: the seat moves along the wall (seated as a click there is), or the size changes.
@@ -152,6 +159,7 @@ MainWindow::~MainWindow() {
     m_loadWatcher.waitForFinished();
     m_session.runner().cancel();
     m_reviewJobs.cancel();
+    m_trialJobs.cancel();
     // The undo stack clears itself as the document goes, after the window's actions and their list.
     m_document.undoStack()->disconnect(this);
 }
@@ -279,6 +287,12 @@ void MainWindow::createActions() {
     m_compareAction->setStatusTip(tr("Show the variants of a case side by side, as the scope sees them"));
     connect(m_compareAction, &QAction::triggered, this, &MainWindow::onCompareVariants);
 
+    m_trialReportAction = new QAction(tr("Review Trial Re&port..."), this);
+    m_trialReportAction->setObjectName("actionReviewTrialReport");
+    m_trialReportAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T));
+    m_trialReportAction->setStatusTip(tr("Show a simulator trial's metrics and plots from its report"));
+    connect(m_trialReportAction, &QAction::triggered, this, &MainWindow::onReviewTrialReport);
+
     m_aboutAction = new QAction(tr("&About Hysteroscene"), this);
     m_aboutAction->setObjectName("actionAbout");
     m_aboutAction->setMenuRole(QAction::AboutRole);
@@ -302,6 +316,7 @@ void MainWindow::createMenus() {
     fileMenu->addAction(m_reviewAction);
     fileMenu->addAction(m_closeReviewAction);
     fileMenu->addAction(m_compareAction);
+    fileMenu->addAction(m_trialReportAction);
     fileMenu->addSeparator();
     fileMenu->addAction(m_quitAction);
 

@@ -98,9 +98,22 @@ void MainWindow::onOpen() {
     openFile(path);
 }
 
+bool MainWindow::isTrialReport(const QString& path) {
+    const QFileInfo info(path);
+    if (info.isDir() || info.suffix().compare(QStringLiteral("json"), Qt::CaseInsensitive) != 0)
+        return false;
+    QFile file(info.absoluteFilePath());
+    if (!file.open(QIODevice::ReadOnly))
+        return false;
+    const QByteArray head = file.read(256).simplified().replace(' ', QByteArray());
+    return head.startsWith(QByteArrayLiteral("{\"format\":\"hysteroscene-trial-report\""));
+}
+
 void MainWindow::openArgument(const QString& path) {
     const QFileInfo info(path);
-    if (info.isDir())
+    if (isTrialReport(path))
+        reviewTrialReport(path);
+    else if (info.isDir())
         reviewPackage(path);
     else if (info.fileName() == QLatin1String(scene::kManifestName.data(), int(scene::kManifestName.size())))
         reviewPackage(info.absolutePath()); // a package's manifest stands for its package, not for a case
@@ -113,6 +126,10 @@ void MainWindow::openArgument(const QString& path) {
 bool MainWindow::openDropped(const QString& path) {
     const QFileInfo info(path);
     const QString name = QDir::toNativeSeparators(info.absoluteFilePath());
+    if (isTrialReport(path)) { // read-only beside the review or the case: always welcome
+        reviewTrialReport(path);
+        return true;
+    }
     if (isReviewing()) {
         MessageBox::information(this, tr("Open"),
                                 tr("A scene package is being reviewed, read-only: close the review (File > Close "

@@ -8,6 +8,7 @@
 #include "hs/widgets/common/MessageBox.h"
 #include "hs/widgets/panels/MaterialsPanel.h"
 #include "hs/widgets/panels/ReviewPanel.h"
+#include "hs/widgets/panels/TrialReportView.h"
 #include "hs/widgets/view/HysteroscopicPreview.h"
 #include "hs/widgets/view/MeshDisplay.h"
 #include "hs/widgets/view/VariantsView.h"
@@ -90,6 +91,8 @@ void MainWindow::reviewPackage(const QString& folder) {
             m_reviewDock->raise();
             m_preview->setScene(opened.scene);
             m_preview->setInsertion(0.0);
+            if (m_trialReportView)
+                m_trialReportView->setOpenScene(opened.identity);
             std::map<std::int32_t, std::string> names; // the legend names the package's own regions
             for (const scene::SceneRegion& region : opened.scene->regions)
                 names[region.id] = widgets::regionName(region).toStdString();
@@ -168,10 +171,43 @@ void MainWindow::compareVariants(const QString& folder) {
         });
 }
 
+void MainWindow::onReviewTrialReport() {
+    const QString path = FileDialog::getOpenFileName(this, tr("Review Trial Report"), m_lastFolder,
+                                                     tr("Trial reports (*.json);;All files (*)"));
+    if (!path.isEmpty())
+        reviewTrialReport(path);
+}
+
+void MainWindow::reviewTrialReport(const QString& path) {
+    // Beside a package under review or a case being authored: the report is read-only and changes neither.
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    m_trialJobs.start<sim::TrialReport>(
+        tr("Reading the trial report"), 0,
+        [absolute](Progress&) -> Result<sim::TrialReport> {
+            return sim::readReport(QFile::encodeName(absolute).toStdString());
+        },
+        [this, absolute](sim::TrialReport&& report) {
+            if (!m_trialReportView) {
+                m_trialReportView = new widgets::TrialReportView(this);
+                m_trialReportView->setWindowFlag(Qt::Window);
+                m_trialReportView->resize(1100, 760);
+            }
+            m_trialReportView->setWindowTitle(tr("Trial Report - %1").arg(QDir::toNativeSeparators(absolute)));
+            m_trialReportView->showReport(std::move(report), absolute);
+            m_trialReportView->setOpenScene(isReviewing() ? m_reviewPanel->packageSha256() : QString());
+            m_trialReportView->show();
+            m_trialReportView->raise();
+            m_lastFolder = QFileInfo(absolute).absolutePath();
+            emit trialReportOpened(absolute);
+        });
+}
+
 void MainWindow::onCloseReview() {
     if (!maybeSaveReview())
         return;
     m_reviewPanel->close();
+    if (m_trialReportView)
+        m_trialReportView->setOpenScene({});
     for (QDockWidget* dock : m_authoringDocks)
         dock->setEnabled(true);
     updateAuthoringActions();

@@ -43,6 +43,7 @@ class PathologyPanel;
 class PatientPanel;
 class ReviewPanel;
 class TexturePanel;
+class TrialReportView;
 } // namespace hs::widgets
 
 namespace hs::workstation {
@@ -64,12 +65,16 @@ public:
 
     /// Starts loading `path` on a worker thread; fileLoaded or loadFailed follows on the GUI thread.
     void openFile(const QString& path);
-    /// What `hysteroscene PATH` opens: a case file (.json) as the case being authored, a scene package (a folder
-    /// with a manifest.json, or that manifest.json itself) for review, anything else as a mesh (openFile).
+    /// What `hysteroscene PATH` opens: a case file (.json) as the case being authored, a simulator's trial report
+    /// (.json beginning with its format, "hysteroscene-trial-report") for review, a scene package (a folder with a
+    /// manifest.json, or that manifest.json itself) for review, anything else as a mesh (openFile).
     void openArgument(const QString& path);
     /// Opens a dropped file or folder as openArgument does; while a package is reviewed, or for a file this program
     /// does not open, says why instead. Returns whether it was opened.
     bool openDropped(const QString& path);
+    /// Whether `path` is a simulator's trial report: a .json file that begins with its format (reportJson writes it
+    /// first). Only the file's beginning is read; the report's reader checks the rest.
+    static bool isTrialReport(const QString& path);
     bool isLoading() const;
     /// The file shown now; empty before the first successful load.
     QString currentFile() const { return m_currentFile; }
@@ -92,6 +97,10 @@ public:
     /// shows up to VariantsView::kMaxVariants side by side in their own window; variantsOpened follows.
     void compareVariants(const QString& folder);
     widgets::VariantsView* variantsView() const { return m_variantsView; }
+    /// Reads the simulator's trial report `path` (hysteroscene-sim --report) on a worker thread and shows its metrics
+    /// and plots in a window of its own; trialReportOpened or a message box naming the file and the field follows.
+    void reviewTrialReport(const QString& path);
+    widgets::TrialReportView* trialReportView() const { return m_trialReportView; }
     /// Where autosave writes the case being edited (default: the application's data folder, "recovery").
     QString recoveryFolder() const { return m_recoveryFolder; }
     void setRecoveryFolder(const QString& folder) { m_recoveryFolder = folder; }
@@ -118,6 +127,7 @@ public:
 signals:
     void reviewOpened(const QString& folder);
     void variantsOpened(int count);
+    void trialReportOpened(const QString& path);
     void fileLoaded(const QString& path);
     void loadFailed(const QString& path);
 
@@ -146,6 +156,7 @@ private slots:
     void onReviewPackage();
     void onCloseReview();
     void onCompareVariants();
+    void onReviewTrialReport();
 
 private:
     void createActions();
@@ -222,10 +233,13 @@ private:
     QDockWidget* m_reviewDock = nullptr;
     std::vector<QDockWidget*> m_authoringDocks; ///< disabled while a package is reviewed
     widgets::JobRunner m_reviewJobs;
+    widgets::JobRunner m_trialJobs; ///< reads trial reports
     QAction* m_reviewAction = nullptr;
     QAction* m_closeReviewAction = nullptr;
     QAction* m_compareAction = nullptr;
     widgets::VariantsView* m_variantsView = nullptr; ///< a window of its own, made on first use
+    QAction* m_trialReportAction = nullptr;
+    widgets::TrialReportView* m_trialReportView = nullptr; ///< a window of its own, made on first use
     QMenu* m_panelsMenu = nullptr;
     QMenu* m_stagesMenu = nullptr;
     QAction* m_cancelPlacingAction = nullptr;
