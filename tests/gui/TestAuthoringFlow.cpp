@@ -581,6 +581,9 @@ void TestAuthoringFlow::aClinicianReviewsTheExportedPackage() {
     {
         QMimeData data;
         data.setUrls({QUrl::fromLocalFile(trialReport)});
+        QDragEnterEvent enter(m_window->rect().center(), Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(m_window.get(), &enter);
+        QVERIFY(enter.isAccepted());
         QDropEvent drop(QPointF(m_window->rect().center()), Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
         QCoreApplication::sendEvent(m_window.get(), &drop);
     }
