@@ -109,4 +109,71 @@ TEST(Fluid, ThePumpsSetPressureMovesAndStaysInItsRange) {
     EXPECT_TRUE(std::isfinite(fluid.state().pressureKpa));
 }
 
+/// The flux of the fluid's flow out through a sphere of `radiusMm` about `centreMm`, mL/s, by the midpoint rule on a
+/// latitude-longitude grid of n x 2n cells.
+double fluxThroughSphere(const hs::Vec3& centreMm, double radiusMm, const hs::Vec3& tipMm, const hs::Vec3& shaft,
+                         double inflow, double outflow, double coreMm, int n) {
+    constexpr double kPi = 3.14159265358979323846;
+    double flux = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const double theta = (i + 0.5) * kPi / n;
+        for (int j = 0; j < 2 * n; ++j) {
+            const double phi = (j + 0.5) * kPi / n;
+            const hs::Vec3 normal{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
+            const double area = radiusMm * radiusMm * std::sin(theta) * (kPi / n) * (kPi / n);
+            const hs::Vec3 u = flowVelocityMmPerS(centreMm + normal * radiusMm, tipMm, shaft, inflow, outflow, coreMm);
+            flux += hs::dot(u, normal) * area;
+        }
+    }
+    return flux / 1000.0; // mm^3/s -> mL/s
+}
+
+TEST(Fluid, TheFlowThatCarriesChipsIsASourceAtTheTipAndASinkAtTheOutflowHoles) {
+    // Verified against the analytic flow of a point source and a point sink (Batchelor): its speed Q / (4 pi r^2)
+    // along the line from each, its flux through any sphere what the sphere holds, its divergence zero between them.
+    const hs::Vec3 tip{1.0, -2.0, 30.0};
+    const hs::Vec3 shaft = hs::normalized(hs::Vec3{0.1, 0.2, 1.0});
+    const double inflow = 5.0, outflow = 3.5, core = 1.45; // mL/s; mm, the 2.9 mm sheath's radius
+    // The source alone, 10 mm ahead of the tip: 5000 mm^3/s over 4 pi 100 mm^2, away from the tip.
+    const hs::Vec3 ahead = flowVelocityMmPerS(tip + shaft * 10.0, tip, shaft, inflow, 0.0, core);
+    EXPECT_NEAR(hs::dot(ahead, shaft), 5000.0 / (4.0 * M_PI * 100.0), 1e-12);
+    EXPECT_NEAR(hs::norm(ahead - shaft * hs::dot(ahead, shaft)), 0.0, 1e-12);
+    // Inside the sheath's radius the speed is that at its radius.
+    const hs::Vec3 near = flowVelocityMmPerS(tip + shaft * 0.1, tip, shaft, inflow, 0.0, core);
+    EXPECT_NEAR(hs::norm(near), 5000.0 / (4.0 * M_PI * core * core), 1e-9);
+    // Gauss: a sphere round the tip alone passes the inflow; one round both, inflow less outflow; one round neither,
+    // nothing. (The sink lies kOutflowBehindTipMm behind the tip.)
+    const hs::Vec3 holes = tip - shaft * kOutflowBehindTipMm;
+    const double aroundTip = fluxThroughSphere(tip, 3.0, tip, shaft, inflow, outflow, core, 400);
+    const double aroundBoth = fluxThroughSphere(tip, 30.0, tip, shaft, inflow, outflow, core, 400);
+    const double aroundHoles = fluxThroughSphere(holes, 3.0, tip, shaft, inflow, outflow, core, 400);
+    const double aroundNeither = fluxThroughSphere(tip + shaft * 20.0, 5.0, tip, shaft, inflow, outflow, core, 400);
+    std::printf("flux out through spheres: round the tip %.5f mL/s, round both %.5f, round the holes %.5f, round "
+                "neither %.2e\n",
+                aroundTip, aroundBoth, aroundHoles, aroundNeither);
+    EXPECT_NEAR(aroundTip, inflow, 1e-3 * inflow);
+    EXPECT_NEAR(aroundBoth, inflow - outflow, 1e-3 * inflow);
+    EXPECT_NEAR(aroundHoles, -outflow, 1e-3 * inflow);
+    EXPECT_NEAR(aroundNeither, 0.0, 1e-3 * inflow);
+    // Divergence by central differences at points between and round them: zero against the field's own gradients.
+    for (const hs::Vec3 at : {tip + shaft * 5.0, tip + hs::Vec3{6.0, 0.0, 0.0}, holes + hs::Vec3{0.0, -4.0, -3.0}}) {
+        const double h = 1e-3;
+        double divergence = 0.0, scale = 0.0;
+        for (int axis = 0; axis < 3; ++axis) {
+            hs::Vec3 e{};
+            (axis == 0 ? e.x : axis == 1 ? e.y : e.z) = h;
+            const hs::Vec3 plus = flowVelocityMmPerS(at + e, tip, shaft, inflow, outflow, core);
+            const hs::Vec3 minus = flowVelocityMmPerS(at - e, tip, shaft, inflow, outflow, core);
+            const double dPlus = axis == 0 ? plus.x : axis == 1 ? plus.y : plus.z;
+            const double dMinus = axis == 0 ? minus.x : axis == 1 ? minus.y : minus.z;
+            divergence += (dPlus - dMinus) / (2.0 * h);
+            scale += std::abs(dPlus - dMinus) / (2.0 * h);
+        }
+        EXPECT_LT(std::abs(divergence), 1e-5 * scale);
+    }
+    // Closed valves, no flow; not finite flows are none.
+    EXPECT_EQ(hs::norm(flowVelocityMmPerS(tip + shaft * 5.0, tip, shaft, 0.0, 0.0, core)), 0.0);
+    EXPECT_EQ(hs::norm(flowVelocityMmPerS(tip + shaft * 5.0, tip, shaft, std::nan(""), INFINITY, core)), 0.0);
+}
+
 } // namespace

@@ -502,14 +502,20 @@ TEST(World, TheLoopCutsThePolypAndTheContactSurfaceFollowsTheCut) {
         stepHeld(*world, held, 0.05, samples);
     }
     stepHeld(*world, held, 0.5, samples);
-    // Meanwhile the chips sank towards the patient's back (-y) or rest on the wall; none rose (or the loop holds it).
+    // Meanwhile the fluid's flow from the tip to the sheath's outflow holes carried the free chips while they sank
+    // (docs/simulator.md, "Chips"): one at least moved other than straight down, as sinking alone would move it.
     const WorldSnapshot later = world->snapshot();
     ASSERT_GE(later.chips.size(), afterCut.chips.size());
+    double drifted = 0.0; // mm, the largest move of a free chip across the sinking direction
     for (std::size_t k = 0; k < afterCut.chips.size(); ++k) {
-        if (!later.chips[k].hooked) {
-            EXPECT_LE(later.chips[k].positionMm.y, afterCut.chips[k].positionMm.y + 1e-12) << "chip " << k;
+        if (!later.chips[k].hooked && !afterCut.chips[k].hooked) {
+            const Vec3 moved = later.chips[k].positionMm - afterCut.chips[k].positionMm;
+            drifted = std::max(drifted, std::hypot(moved.x, moved.z));
         }
     }
+    std::printf("chips: %zu left after the cut, the farthest carried %.2f mm across the sinking in 0.7 s\n",
+                afterCut.chips.size(), drifted);
+    EXPECT_GT(drifted, 0.1);
     EXPECT_NEAR(world->state().fluid.pumpSetKpa, world->options().fluid.pumpPressureKpa - 2.0 * kPumpStepKpa, 1e-12);
     EXPECT_LT(world->state().fluid.pressureKpa, cutFluid.pressureKpa);
     EXPECT_GT(world->state().fluid.bleedingMlPerS, cutFluid.bleedingMlPerS);

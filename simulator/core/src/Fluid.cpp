@@ -92,4 +92,25 @@ double FluidModel::step(double dt, double inflowValve, double outflowValve, doub
     return p;
 }
 
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+} // namespace
+
+Vec3 flowVelocityMmPerS(const Vec3& pointMm, const Vec3& tipMm, const Vec3& shaft, double inflowMlPerS,
+                        double outflowMlPerS, double coreMm) {
+    const double core = std::max(coreMm, 1e-3);
+    // One point source of `mlPerS` at `atMm` (a sink for a negative one): Q / (4 pi r^2) along r, r at least `core`.
+    const auto source = [&](const Vec3& atMm, double mlPerS) {
+        if (!std::isfinite(mlPerS) || mlPerS == 0.0)
+            return Vec3{};
+        const Vec3 r = pointMm - atMm;
+        const double distance = norm(r);
+        if (!(distance > 0.0))
+            return Vec3{};
+        const double reach = std::max(distance, core);
+        return r * (1000.0 * mlPerS / (4.0 * kPi * reach * reach * distance));
+    };
+    return source(tipMm, inflowMlPerS) + source(tipMm - shaft * kOutflowBehindTipMm, -outflowMlPerS);
+}
+
 } // namespace hs::sim::detail

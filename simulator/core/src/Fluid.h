@@ -54,4 +54,17 @@ private:
     double m_fluidMl = 0.0; ///< the fluid in the cavity beyond the cavity's rest volume
 };
 
+/// mm, how far behind the tip the outer sheath's outflow holes draw the fluid in (a continuous-flow sheath's holes lie
+/// round its last centimetre; this project's choice of their centre).
+inline constexpr double kOutflowBehindTipMm = 8.0;
+
+/// The distension fluid's velocity at `pointMm`, mm/s: the inflow leaving the scope's tip as a point source and the
+/// outflow drawn into the sheath's holes, kOutflowBehindTipMm behind the tip along `shaft` (unit, handle to tip), as
+/// a point sink; the irrotational flow of a source and a sink in unbounded fluid ([Batchelor1967]): each gives
+/// Q / (4 pi r^2) along the line from it. Flows in mL/s (1 mL = 1000 mm^3). Closer than `coreMm` to either (inside
+/// the sheath, where the cavity's fluid is not) the speed is that at `coreMm`, so the field stays bounded. Walls are
+/// not in it: a chip stops where the wall stops it (World::Impl::moveChips).
+Vec3 flowVelocityMmPerS(const Vec3& pointMm, const Vec3& tipMm, const Vec3& shaft, double inflowMlPerS,
+                        double outflowMlPerS, double coreMm);
+
 } // namespace hs::sim::detail

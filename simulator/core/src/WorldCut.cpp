@@ -227,10 +227,25 @@ void World::Impl::moveChips(const DeviceSample& device) {
             else
                 chip.positionMm = state.loop.instrument == kInstrumentLoop ? state.loop.middleMm : state.scope.tipMm;
         } else {
-            // Sinking until it rests on the wall (its surface at the contact surface).
-            const Vec3 next = chip.positionMm + sink;
-            if (clearanceMm(pointsMm, bvh, next, chip.radiusMm + 1.0) >= chip.radiusMm)
-                chip.positionMm = next;
+            // Carried by the fluid's flow from the tip to the sheath's outflow holes while it sinks, until the wall
+            // stops it (its surface at the contact surface): a chip follows the flow as a tracer would.
+            const Vec3 drift = detail::flowVelocityMmPerS(chip.positionMm, state.scope.tipMm, state.scope.shaft,
+                                                          state.fluid.inflowMlPerS, state.fluid.outflowMlPerS,
+                                                          0.5 * options.scope.diameterMm) *
+                               options.stepS;
+            // Resting on the wall, the flow still takes it along the wall or away from it; one that came off the loop
+            // overlapping the wall goes where that does not press it further in.
+            const double reach = chip.radiusMm + 1.0;
+            const double clear = std::min(clearanceMm(pointsMm, bvh, chip.positionMm, reach), chip.radiusMm);
+            const Vec3 move = drift + sink;
+            const auto free = [&](const Vec3& at) { return clearanceMm(pointsMm, bvh, at, reach) >= clear; };
+            if (free(chip.positionMm + move)) {
+                chip.positionMm = chip.positionMm + move;
+            } else { // against the wall: it slides, axis by axis, where the wall lets it
+                for (const Vec3& part : {Vec3{move.x, 0.0, 0.0}, Vec3{0.0, move.y, 0.0}, Vec3{0.0, 0.0, move.z}})
+                    if (free(chip.positionMm + part))
+                        chip.positionMm = chip.positionMm + part;
+            }
         }
         chips[kept++] = chip;
     }
