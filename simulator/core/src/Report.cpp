@@ -320,9 +320,8 @@ std::vector<std::pair<double, double>> level(const std::vector<SeriesPoint>& ser
 
 ordered_json surfaceChart(const std::vector<SurfaceSample>& surface) {
     auto seen = ordered_json::array(), unseen = ordered_json::array();
-    const std::size_t stride = surface.size() / kMaxPlottedSurfaceSamples + 1;
-    for (std::size_t i = 0; i < surface.size(); i += stride)
-        (surface[i].seen ? seen : unseen).push_back({{"x", surface[i].aroundDeg}, {"y", surface[i].alongMm}});
+    for (const SurfaceSample& face : surface)
+        (face.seen ? seen : unseen).push_back({{"x", face.aroundDeg}, {"y", face.alongMm}});
     ordered_json options = io::chartOptions("Cavity surface, unrolled about the canal's axis");
     options["parsing"] = false;
     options["scales"] = {
@@ -347,7 +346,7 @@ ordered_json chartConfigs(const TrialReport& r) {
     auto charts = ordered_json::array();
     for (const ReportPlot& plot : reportPlots(r))
         charts.push_back(lineChart(plot));
-    charts.push_back(surfaceChart(r.surface)); // the last canvas, below the plots over time
+    charts.push_back(surfaceChart(plottedSurface(r))); // the last canvas, below the plots over time
     return charts;
 }
 
@@ -450,6 +449,16 @@ std::vector<ReportTable> reportTables(const TrialReport& r) {
                                                                        std::to_string(cut.chipsLeft)}}));
     }
     return tables;
+}
+
+std::vector<SurfaceSample> plottedSurface(const TrialReport& report) {
+    const std::vector<SurfaceSample>& surface = report.surface;
+    const std::size_t stride = surface.size() / kMaxPlottedSurfaceSamples + 1;
+    std::vector<SurfaceSample> plotted;
+    plotted.reserve(surface.size() / stride + 1);
+    for (std::size_t i = 0; i < surface.size(); i += stride)
+        plotted.push_back(surface[i]);
+    return plotted;
 }
 
 std::vector<ReportPlot> reportPlots(const TrialReport& r) {

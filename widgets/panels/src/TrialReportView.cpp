@@ -25,8 +25,6 @@ namespace hs::widgets {
 
 namespace {
 
-/// The surface plot draws at most this many faces, evenly strided (the report's page does the same).
-constexpr std::size_t kMaxPlottedSurfaceSamples = 20000;
 /// The metrics' tree has as many columns as the widest table of the report.
 constexpr int kMetricColumns = 5;
 
@@ -258,12 +256,10 @@ void TrialReportView::fillSurface() {
     seen->setColor(QColor(46, 139, 87));
     unseen->setColor(QColor(200, 60, 60));
     QList<QPointF> seenPoints, unseenPoints;
-    const std::vector<sim::SurfaceSample>& surface = m_report.surface;
-    const std::size_t stride = surface.size() / kMaxPlottedSurfaceSamples + 1;
     Bounds bounds;
-    for (std::size_t i = 0; i < surface.size(); i += stride) {
-        (surface[i].seen ? seenPoints : unseenPoints).append(QPointF(surface[i].aroundDeg, surface[i].alongMm));
-        bounds.add(surface[i].aroundDeg, surface[i].alongMm);
+    for (const sim::SurfaceSample& face : sim::plottedSurface(m_report)) { // as the report's page plots it
+        (face.seen ? seenPoints : unseenPoints).append(QPointF(face.aroundDeg, face.alongMm));
+        bounds.add(face.aroundDeg, face.alongMm);
     }
     seen->replace(seenPoints);
     unseen->replace(unseenPoints);

@@ -148,6 +148,10 @@ struct ReportPlot {
 /// pressure; the fluid deficit with its warning and limit; and, in the operative exercises, the blood loss.
 std::vector<ReportPlot> reportPlots(const TrialReport& report);
 
+/// The faces of the visualized-surface plot: all of the report's, or at most 20000 evenly strided (a plot of more
+/// draws no better and slower; the JSON keeps them all).
+std::vector<SurfaceSample> plottedSurface(const TrialReport& report);
+
 /// JSON of the report (docs/file-formats.md, "Trial reports"). Doubles are written with 17 significant digits so
 /// two replays compare bit for bit.
 std::string reportJson(const TrialReport& report);
