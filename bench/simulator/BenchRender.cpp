@@ -4,11 +4,14 @@
 // detail (full: the maps; light: the albedo alone, what a software rasterizer gets) and shading. The simulator aims
 // at 30 fps or more for the default scene.
 //   bench_render SCENE_DIR [--frames N] [--sizes 640x480,960x720] [--repeat N] [--rows mal] [--light-reduction R]
-//                [--png OUT.png]
+//                [--cut-face] [--png OUT.png]
 // --repeat measures each row N times and keeps the run with the least CPU time (on a machine busy with other work);
 // --rows keeps the full-detail rows with the maps (m), with the albedo (a), the light-detail rows (l);
 // --light-reduction R decimates the light detail's surface by R (EndoscopicLook::lightReduction).
 // --edge-magnification M sets the optic's barrel distortion in every mode (EndoscopicLook::edgeMagnification; 1: none).
+// --cut-face adds, for each row, the same row with a myoma's cut face filling the field 6 mm ahead of the lens, flat
+// (EndoscopicLook::cutPatternContrast 0) and under its solid texture (the default contrast): the worst case of the
+// cut surface's fragment shader, every pixel inside the optic's circle running it.
 //   bench_render SCENE_DIR --still FRACTION ROLL_DEG --png OUT.png [--sizes WxH] [--full | --light]
 // --still draws one picture of the surface at rest in clear saline: the 30 degree optic's tip FRACTION of the way
 // from the internal os to the fundus, aimed about the pivot, rolled by ROLL_DEG (the docs' picture), with the detail
@@ -20,6 +23,7 @@
 // older lamp falloff); a table of the mean luminance, clipped and highlight shares inside the optic's circle per
 // phase of the exploration and over all of it. --png writes PREFIX-camera-N.png and PREFIX-before-N.png at a few
 // moments; --trace prints every frame's figures.
+#include "hs/clinical/Tissue.h"
 #include "hs/scene/ScenePackage.h"
 #include "hs/scene/ScopePassage.h"
 #include "hs/sim/Scope.h"
@@ -76,8 +80,9 @@ double threadCpuSeconds() {
     return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
+/// `cutContrast` < 0: no cut face; otherwise a myoma's cut face 6 mm ahead of the lens with that pattern contrast.
 Row measure(const hs::scene::Scene& scene, const hs::scene::ScopeLandmarks& landmarks, const hs::sim::ScopeFrame& frame,
-            Size size, Kind kind, double lightReduction, int frames, const std::string& png) {
+            Size size, Kind kind, double lightReduction, int frames, const std::string& png, double cutContrast) {
     vtkNew<vtkRenderWindow> window;
     window->SetOffScreenRendering(1);
     window->SetMultiSamples(0);
@@ -89,6 +94,7 @@ Row measure(const hs::scene::Scene& scene, const hs::scene::ScopeLandmarks& land
     look.materialMaps = kind.maps;
     look.detail = kind.detail;
     look.lightReduction = lightReduction;
+    look.cutPatternContrast = std::max(cutContrast, 0.0);
     hs::simrender::EndoscopicView view(renderer, look);
     view.setSurface(scene.surface);
     view.setOuterSurfaceVisible(false); // the scope is inside the body
@@ -121,6 +127,17 @@ Row measure(const hs::scene::Scene& scene, const hs::scene::ScopeLandmarks& land
         state.timeS = i / 60.0;
         state.scope = poseAt(i);
         view.setPose(hs::simrender::cameraPose(state.scope, config));
+        if (cutContrast >= 0.0) {
+            // A square 60 mm across, square to the view 6 mm ahead: it fills the optic's circle. Its rest square
+            // stays where it is, so the pattern slides over it as the scope turns (the shader's work is the same).
+            const hs::Vec3 d = state.scope.direction, up = state.scope.up, side = hs::cross(d, up);
+            const hs::Vec3 c = state.scope.tipMm + d * 6.0;
+            const std::vector<hs::Vec3> face{c - side * 30.0 - up * 30.0, c + side * 30.0 - up * 30.0,
+                                             c + side * 30.0 + up * 30.0, c - side * 30.0 + up * 30.0};
+            static const std::vector<hs::Vec3> restFace{{0, -30, -30}, {0, 30, -30}, {0, 30, 30}, {0, -30, 30}};
+            view.setCutSurface(face, restFace, {{0, 1, 2}, {0, 2, 3}},
+                               {hs::clinical::Tissue::Myoma, hs::clinical::Tissue::Myoma});
+        }
         view.setFluid(0.2 * (i % 5) / 4.0, 0.0);
         view.setHud(hs::simrender::hudText(state, {}, progress));
         deformS += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -364,7 +381,7 @@ std::vector<Size> parseSizes(const std::string& text) {
 int main(int argc, char** argv) {
     if (argc < 2) {
         std::fprintf(stderr, "usage: bench_render SCENE_DIR [--frames N] [--sizes 640x480,960x720] [--repeat N] "
-                             "[--rows mal] [--light-reduction R] [--png OUT.png]\n");
+                             "[--rows mal] [--light-reduction R] [--cut-face] [--png OUT.png]\n");
         return 2;
     }
     int frames = 120;
@@ -376,6 +393,7 @@ int main(int argc, char** argv) {
     bool stillPicture = false;
     bool explore = false;
     bool trace = false;
+    bool cutFace = false;
     double fps = 15.0;
     hs::simrender::ViewDetail detail = hs::simrender::ViewDetail::Automatic;
     double pose[2] = {0, 0};
@@ -401,6 +419,8 @@ int main(int argc, char** argv) {
             explore = true;
         else if (a == "--fps" && i + 1 < argc)
             fps = std::clamp(std::atof(argv[++i]), 1.0, 200.0);
+        else if (a == "--cut-face")
+            cutFace = true;
         else if (a == "--full")
             detail = hs::simrender::ViewDetail::Full;
         else if (a == "--light")
@@ -432,8 +452,8 @@ int main(int argc, char** argv) {
         return still(*scene, *landmarks, *frame, sizes.front(), pose, detail, png);
     std::printf("endoscopic view of %s: %zu points, %zu triangles, %d frames per row\n", argv[1],
                 scene->surface.mesh.points.size(), scene->surface.mesh.triangles.size(), frames);
-    std::printf("%-10s %-6s %-8s %-9s %9s %8s %10s %12s %14s %9s\n", "size", "detail", "shading", "surface",
-                "triangles", "fps", "ms/frame", "ms deform", "cpu ms/frame", "cpu main");
+    std::printf("%-10s %-6s %-8s %-9s %-9s %9s %8s %10s %12s %14s %9s\n", "size", "detail", "shading", "surface",
+                "cut face", "triangles", "fps", "ms/frame", "ms deform", "cpu ms/frame", "cpu main");
     using hs::simrender::ViewDetail;
     const Kind kinds[] = {{ViewDetail::Full, true, true},
                           {ViewDetail::Full, false, true},
@@ -445,19 +465,26 @@ int main(int argc, char** argv) {
             if (!only.empty() && only.find(light ? 'l' : kind.maps ? 'm' : 'a') == std::string::npos)
                 continue;
             const bool first = &size == &sizes.front() && &kind == &kinds[0];
-            Row r;
-            for (int k = 0; k < repeat; ++k) { // the least CPU time: the run that other work disturbed least
-                const Row run =
-                    measure(*scene, *landmarks, *frame, size, kind, lightReduction, frames, first ? png : "");
-                if (k == 0 || run.cpuMsPerFrame < r.cpuMsPerFrame)
-                    r = run;
+            const double contrast = hs::simrender::EndoscopicLook{}.cutPatternContrast;
+            for (double cut : cutFace ? std::vector<double>{-1.0, 0.0, contrast} : std::vector<double>{-1.0}) {
+                Row r;
+                for (int k = 0; k < repeat; ++k) { // the least CPU time: the run that other work disturbed least
+                    const Row run = measure(*scene, *landmarks, *frame, size, kind, lightReduction, frames,
+                                            first && cut < 0.0 ? png : "", cut);
+                    if (k == 0 || run.cpuMsPerFrame < r.cpuMsPerFrame)
+                        r = run;
+                }
+                char label[32];
+                std::snprintf(label, sizeof label, "%dx%d", size.width, size.height);
+                std::printf("%-10s %-6s %-8s %-9s %-9s %9zu %8.1f %10.2f %12.2f %14.2f %9.2f\n", label,
+                            light ? "light" : "full", kind.maps && !light ? "maps" : "albedo",
+                            kind.deform ? "deformed" : "static",
+                            cut < 0.0   ? "-"
+                            : cut > 0.0 ? "textured"
+                                        : "flat",
+                            r.triangles, r.fps, r.msPerFrame, r.msDeform, r.cpuMsPerFrame, r.mainCpuMsPerFrame);
+                std::fflush(stdout);
             }
-            char label[32];
-            std::snprintf(label, sizeof label, "%dx%d", size.width, size.height);
-            std::printf("%-10s %-6s %-8s %-9s %9zu %8.1f %10.2f %12.2f %14.2f %9.2f\n", label, light ? "light" : "full",
-                        kind.maps && !light ? "maps" : "albedo", kind.deform ? "deformed" : "static", r.triangles,
-                        r.fps, r.msPerFrame, r.msDeform, r.cpuMsPerFrame, r.mainCpuMsPerFrame);
-            std::fflush(stdout);
         }
     return 0;
 }

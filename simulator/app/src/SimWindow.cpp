@@ -326,9 +326,10 @@ void SimWindow::onRenderTick() {
         }
         m_endoscope->setChips(frame->snapshot.chips);
         if (cut)
-            m_endoscope->setCutSurface(frame->snapshot.simulationPointsMm, cut->faces, cut->faceTissue);
+            m_endoscope->setCutSurface(frame->snapshot.simulationPointsMm, m_world->simulationMesh().points, cut->faces,
+                                       cut->faceTissue);
         else
-            m_endoscope->setCutSurface({}, {}, {});
+            m_endoscope->setCutSurface({}, {}, {}, {});
         m_endoscope->setLoop(state.loop);
         m_endoscope->setTime(state.timeS); // the camera adapts on the trial's clock
         // The heads-up text is redrawn a few times a second (its glyphs cost a third of the GUI thread's time when

@@ -69,6 +69,117 @@ constexpr const char* kFluidShader = R"(//VTK::TCoord::Impl
   }
 )";
 
+/// The faces a cut bares are carved from a block of their tissue: a solid texture of the rest position (Peachey,
+/// "Solid texturing of complex surfaces", and Perlin, "An image synthesizer", SIGGRAPH 1985), so the pattern stays
+/// with the tissue as it moves, and a later cut through the same place shows the same pattern one layer deeper. It
+/// modulates each face's tissue colour (cutColour) before the lighting, after the gross pathology's descriptions of
+/// cut surfaces (docs/references.md [Robbins2020]): a myoma's fascicles of smooth muscle in whorls round centres a
+/// few millimetres apart, darker bands in a pale ground; a polyp's oedematous stroma with dilated glands (pale round
+/// spaces) and thick-walled vessels (dark red points); the myometrium's interlacing bundles as streaks; the
+/// endometrium's glands, smaller and denser; the cervix's fibrous stroma, faint streaks. Value noise and its
+/// turbulence (Perlin 1985) bend the bands, jittered feature points (Worley, "A cellular texture basis function",
+/// SIGGRAPH 1996) place whorls, glands and vessels. hsPatternVSOutput is the clinical::Tissue value (-1: plain).
+constexpr const char* kCutVertexDec = R"(//VTK::Color::Dec
+in vec3 hsRestMC;
+in float hsPatternMC;
+out vec3 hsRestVSOutput;
+out float hsPatternVSOutput;
+)";
+constexpr const char* kCutVertexImpl = R"(//VTK::Color::Impl
+  hsRestVSOutput = hsRestMC;
+  hsPatternVSOutput = hsPatternMC;
+)";
+constexpr const char* kCutFragmentDec = R"(//VTK::Color::Dec
+in vec3 hsRestVSOutput;
+in float hsPatternVSOutput;
+float hsHash(vec3 p) {
+  p = fract(p * vec3(0.1031, 0.1030, 0.0973));
+  p += dot(p, p.yxz + 33.33);
+  return fract((p.x + p.y) * p.z);
+}
+vec3 hsHash3(vec3 p) {
+  return vec3(hsHash(p), hsHash(p + vec3(17.0, 59.0, 23.0)), hsHash(p + vec3(41.0, 7.0, 89.0)));
+}
+float hsNoise(vec3 x) {
+  vec3 i = floor(x);
+  vec3 f = fract(x);
+  vec3 u = f * f * (3.0 - 2.0 * f);
+  return mix(mix(mix(hsHash(i), hsHash(i + vec3(1.0, 0.0, 0.0)), u.x),
+                 mix(hsHash(i + vec3(0.0, 1.0, 0.0)), hsHash(i + vec3(1.0, 1.0, 0.0)), u.x), u.y),
+             mix(mix(hsHash(i + vec3(0.0, 0.0, 1.0)), hsHash(i + vec3(1.0, 0.0, 1.0)), u.x),
+                 mix(hsHash(i + vec3(0.0, 1.0, 1.0)), hsHash(i + vec3(1.0, 1.0, 1.0)), u.x), u.y), u.z);
+}
+float hsTurbulence(vec3 p) {
+  float t = 0.0;
+  float a = 0.5;
+  for (int k = 0; k < 4; ++k) {
+    t += a * abs(2.0 * hsNoise(p) - 1.0);
+    p = p * 2.03 + vec3(5.1, 1.7, 3.3);
+    a *= 0.5;
+  }
+  return t;
+}
+// The distance (in cells) from p to the nearest feature point of a unit lattice with one jittered point per cell;
+// `cell` the nearest point's cell.
+float hsCells(vec3 p, out vec3 cell) {
+  vec3 i = floor(p);
+  float best = 8.0;
+  cell = i;
+  for (int z = -1; z <= 1; ++z)
+    for (int y = -1; y <= 1; ++y)
+      for (int x = -1; x <= 1; ++x) {
+        vec3 c = i + vec3(float(x), float(y), float(z));
+        float d = length(c + hsHash3(c) - p);
+        if (d < best) {
+          best = d;
+          cell = c;
+        }
+      }
+  return best;
+}
+// Round spaces `sizeMm` apart, radius rMm to 2 rMm each: 1 inside, 0 outside.
+float hsSpaces(vec3 p, float sizeMm, float rMm, vec3 seed) {
+  vec3 cell;
+  float dMm = sizeMm * hsCells(p / sizeMm + seed, cell);
+  float r = rMm * (1.0 + hsHash(cell + vec3(11.0)));
+  return 1.0 - smoothstep(0.8 * r, r, dMm);
+}
+// The tissue's colour factor at rest position p (mm); 1 where the ground shows.
+vec3 hsCutPattern(vec3 p, float kind, float contrast) {
+  vec3 ground = vec3(1.0);
+  if (kind < -0.5 || contrast <= 0.0)
+    return ground;
+  float mottle = 1.0 + contrast * 0.3 * (hsNoise(p * 1.7) - 0.5);
+  if (kind > 2.5 && kind < 3.5) { // myoma: whorled fascicles round centres 4 mm apart
+    vec3 cell;
+    float rMm = 4.0 * hsCells(p / 4.0, cell);
+    float band = 0.5 + 0.5 * sin(6.2831853 * (rMm / 0.9 + 2.0 * hsTurbulence(p / 2.0)));
+    return mottle * mix(ground, vec3(0.78, 0.70, 0.70), contrast * 1.4 * smoothstep(0.3, 0.9, band));
+  }
+  if (kind > 3.5) { // polyp: oedematous stroma, dilated glands, thick-walled vessels
+    float gland = hsSpaces(p, 1.0, 0.12, vec3(3.1, 0.0, 0.0));
+    float vessel = hsSpaces(p, 2.2, 0.07, vec3(0.0, 7.3, 0.0));
+    vec3 c = mix(ground, vec3(1.18, 1.22, 1.20), min(1.0, contrast * 2.0) * gland);
+    return mottle * mix(c, vec3(0.60, 0.28, 0.28), min(1.0, contrast * 3.0) * vessel);
+  }
+  if (kind > 0.5 && kind < 1.5) { // endometrium: glands, smaller and denser
+    float gland = hsSpaces(p, 0.5, 0.06, vec3(0.0, 0.0, 5.7));
+    return mottle * mix(ground, vec3(1.15, 1.17, 1.15), min(1.0, contrast * 2.0) * gland);
+  }
+  // myometrium and cervix: interlacing bundles, the cervix's fainter
+  float streak = 0.5 + 0.5 * sin(6.2831853 * (dot(p, vec3(0.55, 0.35, 0.76)) / 1.1 + 2.0 * hsTurbulence(p / 2.5)));
+  float depth = kind > 1.5 ? 0.7 : 1.2;
+  return mottle * mix(ground, vec3(0.80, 0.76, 0.78), depth * contrast * smoothstep(0.3, 1.0, streak));
+}
+)";
+constexpr const char* kCutFragmentImpl = R"(//VTK::Color::Impl
+  {
+    vec3 hsPattern = hsCutPattern(hsRestVSOutput, hsPatternVSOutput, hsCutContrast);
+    diffuseColor *= hsPattern;
+    ambientColor *= hsPattern;
+  }
+)";
+
 /// The optic's barrel distortion, applied to the tissue's vertices after VTK's projection (a vertex-shader lens
 /// model: the visual surface is refined to about a millimetre where the scope sees it, so its triangles stay small
 /// against the curvature of the map). In units of the optic's circle (rho = 1 at its edge; hsFieldScale turns the
@@ -330,8 +441,10 @@ EndoscopicView::EndoscopicView(vtkRenderer* renderer, const EndoscopicLook& look
     d.cutGeometry = vtkSmartPointer<vtkPolyData>::New();
     auto cutMapper = vtkSmartPointer<vtkPolyDataMapper>::New();
     cutMapper->SetInputData(d.cutGeometry);
-    cutMapper->SetScalarModeToUseCellData();
+    cutMapper->SetScalarModeToUsePointData();
     cutMapper->SetColorModeToDirectScalars();
+    cutMapper->MapDataArrayToVertexAttribute("hsRestMC", "restMm", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+    cutMapper->MapDataArrayToVertexAttribute("hsPatternMC", "pattern", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
     d.cutActor = vtkSmartPointer<vtkActor>::New();
     d.cutActor->SetMapper(cutMapper);
     d.cutActor->GetProperty()->BackfaceCullingOff();
@@ -340,6 +453,10 @@ EndoscopicView::EndoscopicView(vtkRenderer* renderer, const EndoscopicLook& look
     vtkShaderProperty* cutShader = d.cutActor->GetShaderProperty();
     cutShader->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true, kFluidShader, false);
     cutShader->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true, kOpticVertexShader, false);
+    cutShader->AddVertexShaderReplacement("//VTK::Color::Dec", true, kCutVertexDec, false);
+    cutShader->AddVertexShaderReplacement("//VTK::Color::Impl", true, kCutVertexImpl, false);
+    cutShader->AddFragmentShaderReplacement("//VTK::Color::Dec", true, kCutFragmentDec, false);
+    cutShader->AddFragmentShaderReplacement("//VTK::Color::Impl", true, kCutFragmentImpl, false);
     renderer->AddActor(d.cutActor);
 
     // The loop: a wire in front of the lens, metal, glowing while it carries current.
@@ -640,19 +757,26 @@ void EndoscopicView::setChips(const std::vector<sim::Chip>& chips) {
     m_impl->chips = chips;
 }
 
-void EndoscopicView::setCutSurface(const std::vector<Vec3>& pointsMm, const std::vector<Triangle>& faces,
-                                   const std::vector<clinical::Tissue>& tissue) {
+void EndoscopicView::setCutSurface(const std::vector<Vec3>& pointsMm, const std::vector<Vec3>& restPointsMm,
+                                   const std::vector<Triangle>& faces, const std::vector<clinical::Tissue>& tissue) {
     Impl& d = *m_impl;
     if ((faces.empty() || tissue.size() != faces.size()) && d.chips.empty()) {
         d.cutActor->VisibilityOff();
         return;
     }
-    // The faces' own points (a few hundred faces: built anew each frame).
+    // The faces' own points (a few hundred faces: built anew each frame), each with its rest position, which the
+    // solid texture reads (kCutFragmentDec), and its tissue.
     auto points = vtkSmartPointer<vtkPoints>::New();
     points->SetDataTypeToFloat();
     auto cells = vtkSmartPointer<vtkCellArray>::New();
     auto colours = vtkSmartPointer<vtkUnsignedCharArray>::New();
     colours->SetNumberOfComponents(3);
+    auto rest = vtkSmartPointer<vtkFloatArray>::New();
+    rest->SetName("restMm");
+    rest->SetNumberOfComponents(3);
+    auto pattern = vtkSmartPointer<vtkFloatArray>::New();
+    pattern->SetName("pattern");
+    pattern->SetNumberOfComponents(1);
     const auto colourOf = [&](clinical::Tissue kind) {
         const std::array<double, 3>& c =
             d.look.cutColour[std::min(static_cast<std::size_t>(kind), d.look.cutColour.size() - 1)];
@@ -662,42 +786,52 @@ void EndoscopicView::setCutSurface(const std::vector<Vec3>& pointsMm, const std:
             static_cast<unsigned char>(std::lround(255.0 * std::clamp(c[1], 0.0, 1.0))),
             static_cast<unsigned char>(std::lround(255.0 * std::clamp(c[2], 0.0, 1.0)))};
     };
-    const std::size_t faceCount = tissue.size() == faces.size() ? faces.size() : 0;
+    const auto addPoint = [&](const Vec3& at, const Vec3& restAt, clinical::Tissue kind) {
+        const vtkIdType id = points->InsertNextPoint(at.x, at.y, at.z);
+        colours->InsertNextTypedTuple(colourOf(kind).data());
+        const float r[3] = {static_cast<float>(restAt.x), static_cast<float>(restAt.y), static_cast<float>(restAt.z)};
+        rest->InsertNextTypedTuple(r);
+        pattern->InsertNextValue(static_cast<float>(static_cast<int>(kind)));
+        return id;
+    };
+    const std::size_t faceCount =
+        tissue.size() == faces.size() && restPointsMm.size() == pointsMm.size() ? faces.size() : 0;
     for (std::size_t f = 0; f < faceCount; ++f) {
-        vtkIdType ids[3];
         bool inside = true;
-        for (int k = 0; k < 3; ++k) {
-            const auto p = static_cast<std::size_t>(faces[f][static_cast<std::size_t>(k)]);
-            inside = inside && p < pointsMm.size();
-            if (inside)
-                ids[k] = points->InsertNextPoint(pointsMm[p].x, pointsMm[p].y, pointsMm[p].z);
-        }
+        for (int k = 0; k < 3; ++k)
+            inside = inside && static_cast<std::size_t>(faces[f][static_cast<std::size_t>(k)]) < pointsMm.size();
         if (!inside)
             continue;
+        vtkIdType ids[3];
+        for (int k = 0; k < 3; ++k) {
+            const auto p = static_cast<std::size_t>(faces[f][static_cast<std::size_t>(k)]);
+            ids[k] = addPoint(pointsMm[p], restPointsMm[p], tissue[f]);
+        }
         cells->InsertNextCell(3, ids);
-        colours->InsertNextTypedTuple(colourOf(tissue[f]).data());
     }
-    // Each chip an octahedron of its radius (eight faces: enough for a piece a millimetre or two across).
+    // Each chip an octahedron of its radius (eight faces: enough for a piece a millimetre or two across), its pattern
+    // carried with it: the corners' offsets from its centre, placed in the block by its volume (a chip's own).
     for (const sim::Chip& chip : d.chips) {
         const double r = std::max(chip.radiusMm, 0.05);
         const Vec3& c = chip.positionMm;
-        const Vec3 corner[6] = {c + Vec3{r, 0, 0}, c - Vec3{r, 0, 0}, c + Vec3{0, r, 0},
-                                c - Vec3{0, r, 0}, c + Vec3{0, 0, r}, c - Vec3{0, 0, r}};
+        const Vec3 offset[6] = {Vec3{r, 0, 0},  Vec3{-r, 0, 0}, Vec3{0, r, 0},
+                                Vec3{0, -r, 0}, Vec3{0, 0, r},  Vec3{0, 0, -r}};
+        const Vec3 inBlock{std::fmod(chip.volumeMl * 7.3e4, 97.0), std::fmod(chip.volumeMl * 3.1e4, 89.0), 0.0};
         vtkIdType id[6];
         for (int k = 0; k < 6; ++k)
-            id[k] = points->InsertNextPoint(corner[k].x, corner[k].y, corner[k].z);
+            id[k] = addPoint(c + offset[k], inBlock + offset[k], chip.tissue);
         const int octahedron[8][3] = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
                                       {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
-        const auto rgb = colourOf(chip.tissue);
         for (const auto& f : octahedron) {
             const vtkIdType tri[3] = {id[f[0]], id[f[1]], id[f[2]]};
             cells->InsertNextCell(3, tri);
-            colours->InsertNextTypedTuple(rgb.data());
         }
     }
     d.cutGeometry->SetPoints(points);
     d.cutGeometry->SetPolys(cells);
-    d.cutGeometry->GetCellData()->SetScalars(colours);
+    d.cutGeometry->GetPointData()->SetScalars(colours);
+    d.cutGeometry->GetPointData()->AddArray(rest);
+    d.cutGeometry->GetPointData()->AddArray(pattern);
     d.cutActor->SetVisibility(cells->GetNumberOfCells() > 0);
 }
 
@@ -917,6 +1051,8 @@ void EndoscopicView::Impl::updateUniforms() {
         u->SetUniform3f("hsWhite", gains);
         u->SetUniformf("hsKnee", static_cast<float>(std::clamp(look.toneKnee, 0.05, 0.99)));
     }
+    cutActor->GetShaderProperty()->GetFragmentCustomUniforms()->SetUniformf(
+        "hsCutContrast", static_cast<float>(std::clamp(look.cutPatternContrast, 0.0, 1.0)));
 }
 
 void EndoscopicView::Impl::measureFrame() {

@@ -91,6 +91,9 @@ struct EndoscopicLook {
     /// polyp's stroma pink, the muscle red).
     std::array<std::array<double, 3>, 5> cutColour{
         {{0.62, 0.30, 0.27}, {0.70, 0.33, 0.30}, {0.72, 0.50, 0.46}, {0.82, 0.74, 0.68}, {0.80, 0.55, 0.48}}};
+    /// 0-1: how far the cut faces' solid texture (a myoma's whorls, a polyp's glands and vessels, the muscle's
+    /// bundles: docs/simulator.md, "The cut in the picture") darkens or pales their colour; 0: flat colours.
+    double cutPatternContrast = 0.35;
     double loopWireRadiusMm = 0.15; ///< mm, the loop's wire drawn (a 0.3 mm electrode)
     double jawRadiusMm = 0.4;       ///< mm, the 5 Fr scissors' and grasper's shaft and jaws drawn (a 0.8 mm jaw)
 };
@@ -135,10 +138,12 @@ public:
     /// Hides the faces on the visual surface's points flagged in `hidden` (their tet was cut away:
     /// sim::World::visualPointsCut); empty: nothing hidden.
     void setHiddenPoints(const std::vector<char>& hidden);
-    /// The faces the cuts bared (`faces` in indices of `simulationPointsMm`), coloured by `tissue` (cutColour),
-    /// through the same fluid and optic as the tissue; no faces: none drawn.
-    void setCutSurface(const std::vector<Vec3>& simulationPointsMm, const std::vector<Triangle>& faces,
-                       const std::vector<clinical::Tissue>& tissue);
+    /// The faces the cuts bared (`faces` in indices of `simulationPointsMm`, the simulation mesh's current points;
+    /// `restPointsMm` the same points at rest, as many), coloured by `tissue` (cutColour) under its solid texture
+    /// (cutPatternContrast) of the rest positions, through the same fluid and optic as the tissue; no faces, or rest
+    /// points that are not as many: none drawn.
+    void setCutSurface(const std::vector<Vec3>& simulationPointsMm, const std::vector<Vec3>& restPointsMm,
+                       const std::vector<Triangle>& faces, const std::vector<clinical::Tissue>& tissue);
     /// The chips in the fluid, drawn as small polyhedra of their size in their tissue's colour with the cut faces
     /// (call before setCutSurface, which draws both).
     void setChips(const std::vector<sim::Chip>& chips);
