@@ -447,5 +447,48 @@ TEST_F(EndoscopicViewTest, ACutFaceShowsItsTissuesSolidTextureCarriedWithTheTiss
     EXPECT_LT(bestError, 0.05 * inPlace);
 }
 
+TEST_F(EndoscopicViewTest, ABloodCloudDarkensTheWallBehindItAndNothingBeside) {
+    // Blood not yet mixed (sim::BloodCloud): 0.125 uL spread with a 1 mm standard deviation 8 mm ahead, between the
+    // lens and the wall 20 mm away. Along the axis the light crosses 1000 mm^3/mL x 0.000125 mL / (2 pi 1 mm^2) =
+    // 0.0199 mm of whole blood each way, which leaves exp(-2 x 23 / mm x 0.0199 mm) = 0.40 of the wall's green light
+    // and 0.987 of its red (Prahl). The light the saline scatters back from near the lens does not cross the cloud.
+    const scene::VisualSurface surface = sphere();
+    EndoscopicLook look;
+    look.detail = ViewDetail::Full;
+    look.hud = false;
+    look.autoExposure = false;
+    look.exposure = 36.0; // the wall below the tone curve's knee: the picture linear in the light
+    EndoscopicView view(m_renderer, look);
+    view.setSurface(surface);
+    draw(view);
+    const int redClear = red(80, 60), greenClear = channel(80, 60, 1);
+    const int besideClear = channel(80 + 45, 60, 1);
+    // The scattered light in green (kFluidShader's): the lamp's r0 = 2 mm, the wall 20 mm ahead.
+    const double r0 = std::sqrt(look.lampAttenuation[0] / look.lampAttenuation[2]);
+    const double scattered =
+        255.0 * look.exposure * look.fogColour[1] * (1.0 - std::exp(-look.clearFogPerMm * r0 * std::atan(20.0 / r0)));
+    sim::BloodClouds blood;
+    blood.count = 1;
+    blood.clouds[0].centreMm = {8.0, 0.0, 0.0};
+    blood.clouds[0].sigmaMm = 1.0;
+    blood.clouds[0].bloodMl = 0.000125;
+    view.setBloodClouds(blood);
+    draw(view);
+    const double path = 1000.0 * 0.000125 / (2.0 * 3.14159265358979 * 1.0);
+    const double expected = scattered + (greenClear - scattered) * std::exp(-2.0 * look.bloodAbsorptionPerMm[1] * path);
+    std::printf("behind the cloud: green %d -> %d (expected %.1f: %.1f scattered before it), red %d -> %d; 45 pixels "
+                "beside it: green %d -> %d\n",
+                greenClear, channel(80, 60, 1), expected, scattered, redClear, red(80, 60), besideClear,
+                channel(80 + 45, 60, 1));
+    ASSERT_GT(greenClear, 40);
+    EXPECT_NEAR(channel(80, 60, 1), expected, 3.0);
+    EXPECT_GE(red(80, 60), redClear - 3);
+    EXPECT_NEAR(channel(80 + 45, 60, 1), besideClear, 1); // the line 4.5 standard deviations from the cloud
+    // Gone (mixed in, or washed out): the picture as before.
+    view.setBloodClouds({});
+    draw(view);
+    EXPECT_NEAR(channel(80, 60, 1), greenClear, 1);
+}
+
 } // namespace
 } // namespace hs::simrender

@@ -24,7 +24,7 @@ void settle(FluidModel& fluid, double seconds, double outflow, const OpenVessels
 TEST(Fluid, ACutBleedsInProportionToHowFarThePressureIsBelowTheMeanArterialPressureAndNotAboveIt) {
     FluidSettings settings;
     const double map = settings.meanArterialPressureKpa;
-    const OpenVessels vessels{0.05, 0.0};
+    const OpenVessels vessels{0.05, 0.0, {}};
     for (const double pump : {4.0, 6.0, 8.0, 10.0}) {
         settings.pumpPressureKpa = pump;
         FluidModel fluid;
@@ -50,7 +50,7 @@ TEST(Fluid, TheCutsVenulesTakeFluidInProportionToTheirConductanceAndThePressureA
     for (const double gv : {0.01, 0.02, 0.04}) {
         FluidModel fluid;
         fluid.reset(settings);
-        settle(fluid, 20.0, 0.5, {0.0, gv});
+        settle(fluid, 20.0, 0.5, {0.0, gv, {}});
         const FluidState& s = fluid.state();
         ASSERT_GT(s.pressureKpa, kVenulePressureKpa);
         EXPECT_NEAR(s.cutIntravasationMlPerS, gv * (s.pressureKpa - kVenulePressureKpa), 1e-12);
@@ -62,7 +62,7 @@ TEST(Fluid, TheCutsVenulesTakeFluidInProportionToTheirConductanceAndThePressureA
     settings.pumpPressureKpa = 2.7;
     FluidModel low;
     low.reset(settings);
-    settle(low, 20.0, 1.0, {0.0, 0.04}, 0.5);
+    settle(low, 20.0, 1.0, {0.0, 0.04, {}}, 0.5);
     ASSERT_LT(low.state().pressureKpa, kVenulePressureKpa);
     EXPECT_EQ(low.state().cutIntravasationMlPerS, 0.0);
 }
@@ -72,7 +72,7 @@ TEST(Fluid, TheFluidBalancesAndTheBloodWashesOutOnceTheBleedingStops) {
     settings.pumpPressureKpa = 6.0;
     FluidModel fluid;
     fluid.reset(settings);
-    settle(fluid, 10.0, 0.5, {0.05, 0.02});
+    settle(fluid, 10.0, 0.5, {0.05, 0.02, {}});
     const FluidState bleeding = fluid.state();
     EXPECT_GT(bleeding.bloodLossMl, 0.0);
     EXPECT_GT(bleeding.bloodFraction, 0.0);
@@ -83,7 +83,7 @@ TEST(Fluid, TheFluidBalancesAndTheBloodWashesOutOnceTheBleedingStops) {
     const double volume = bleeding.distensionMl;
     const double leaving = bleeding.outflowMlPerS + bleeding.intravasationMlPerS;
     const double halfLife = volume * std::log(2.0) / leaving;
-    settle(fluid, halfLife, 0.5, {0.0, 0.0});
+    settle(fluid, halfLife, 0.5, {0.0, 0.0, {}});
     const double ratio = fluid.state().bloodInCavityMl / bleeding.bloodInCavityMl;
     std::printf("blood in the cavity %.4f mL of %.2f mL fluid; after the half-life %.2f s: ratio %.3f\n",
                 bleeding.bloodInCavityMl, volume, halfLife, ratio);
@@ -105,7 +105,7 @@ TEST(Fluid, ThePumpsSetPressureMovesAndStaysInItsRange) {
     fluid.setPumpPressure(std::nan(""));
     EXPECT_EQ(fluid.state().pumpSetKpa, 2.7);
     // Not finite conductances are no vessels.
-    fluid.step(kDt, 1.0, 0.5, 0.0, kCompliance, 0.0, {std::nan(""), INFINITY});
+    fluid.step(kDt, 1.0, 0.5, 0.0, kCompliance, 0.0, {std::nan(""), INFINITY, {}});
     EXPECT_TRUE(std::isfinite(fluid.state().pressureKpa));
 }
 
@@ -174,6 +174,83 @@ TEST(Fluid, TheFlowThatCarriesChipsIsASourceAtTheTipAndASinkAtTheOutflowHoles) {
     // Closed valves, no flow; not finite flows are none.
     EXPECT_EQ(hs::norm(flowVelocityMmPerS(tip + shaft * 5.0, tip, shaft, 0.0, 0.0, core)), 0.0);
     EXPECT_EQ(hs::norm(flowVelocityMmPerS(tip + shaft * 5.0, tip, shaft, std::nan(""), INFINITY, core)), 0.0);
+}
+
+} // namespace
+
+namespace {
+
+TEST(Fluid, BloodLeavesACutVesselAsCloudsThatDriftWithTheFlowSpreadAndMixIn) {
+    // A vessel 6 mm ahead of the tip bleeding 0.02 mL/s for 3 s, then sealed; the cavity's blood washes out at
+    // 0.1 / s (the fluid model's well-mixed washout), in 10 mL of fluid.
+    const hs::Vec3 tip{0.0, 0.0, 30.0}, shaft{0.0, 0.0, 1.0};
+    const hs::Vec3 vessel = tip + hs::Vec3{0.0, 6.0, 0.0};
+    const FlowField flow{tip, shaft, 2.0, 1.5, 1.45};
+    const double volumeMl = 10.0, washoutPerS = 0.1, bleedMlPerS = 0.02;
+    BloodClouds blood;
+    double total = 0.0;
+    const auto step = [&](double bleeding) {
+        const double bled = kDt * bleeding;
+        const double keep = 1.0 / (1.0 + kDt * washoutPerS);
+        total = (total + bled) * keep;
+        advanceBloodClouds(blood, kDt, bled, vessel, flow, keep, total, total / volumeMl);
+    };
+    const auto inClouds = [&] {
+        double sum = 0.0;
+        for (std::size_t i = 0; i < blood.count; ++i)
+            sum += blood.clouds[i].bloodMl;
+        return sum;
+    };
+    for (int k = 0; k < 600; ++k) { // 3 s
+        step(bleedMlPerS);
+        // Clouds and mixed blood together are the cavity's blood.
+        ASSERT_NEAR(inClouds() + blood.mixedFraction * volumeMl, total, 1e-12);
+    }
+    // A cloud every 0.5 s: six, the newest at the vessel, the oldest spread as sigma^2 = 0.25 + 2 D t and carried
+    // by the flow away from the vessel.
+    ASSERT_EQ(blood.count, 6u);
+    const BloodCloud& oldest = blood.clouds[0];
+    const BloodCloud& newest = blood.clouds[blood.count - 1];
+    EXPECT_LT(hs::distance(newest.centreMm, vessel), kBloodCloudIntervalS * 4.0); // at most 0.5 s of drift away
+    EXPECT_NEAR(oldest.sigmaMm,
+                std::sqrt(kBloodCloudStartMm * kBloodCloudStartMm + 2.0 * kBloodEddyDiffusivityMm2PerS * oldest.ageS),
+                1e-9);
+    const hs::Vec3 drift = flowVelocityMmPerS(vessel, tip, shaft, flow.inflowMlPerS, flow.outflowMlPerS, 1.45);
+    std::printf("after 3 s of bleeding: %zu clouds, the oldest %.2f s old, %.2f mm wide, %.2f mm from the vessel "
+                "(the flow there %.2f mm/s); %.4f mL in clouds, %.4f mL mixed\n",
+                blood.count, oldest.ageS, oldest.sigmaMm, hs::distance(oldest.centreMm, vessel), hs::norm(drift),
+                inClouds(), blood.mixedFraction * volumeMl);
+    // Where a tracer leaving the vessel is after the oldest cloud's age (the flow's path by fourth-order Runge-Kutta
+    // in steps a tenth of the world's).
+    hs::Vec3 tracer = vessel;
+    const auto velocity = [&](const hs::Vec3& at) {
+        return flowVelocityMmPerS(at, tip, shaft, flow.inflowMlPerS, flow.outflowMlPerS, 1.45);
+    };
+    const double h = 0.1 * kDt;
+    for (int k = 0; k < static_cast<int>(std::lround(oldest.ageS / h)); ++k) {
+        const hs::Vec3 a = velocity(tracer), b = velocity(tracer + a * (0.5 * h));
+        const hs::Vec3 c = velocity(tracer + b * (0.5 * h)), d = velocity(tracer + c * h);
+        tracer = tracer + (a + b * 2.0 + c * 2.0 + d) * (h / 6.0);
+    }
+    EXPECT_GT(hs::distance(tracer, vessel), 3.0);
+    EXPECT_LT(hs::distance(oldest.centreMm, tracer), 0.05);
+    // Nothing has mixed yet: a cloud takes (6^2 - 0.5^2) / (2 D) = 4.5 s to reach the cavity's half-width.
+    EXPECT_NEAR(blood.mixedFraction, 0.0, 1e-12);
+    // Sealed: no new cloud; 4.5 s later every cloud has mixed in.
+    for (int k = 0; k < 900; ++k)
+        step(0.0);
+    EXPECT_EQ(blood.count, 0u);
+    EXPECT_NEAR(blood.mixedFraction, total / volumeMl, 1e-12);
+    EXPECT_GT(total, 0.0);
+    // Not finite blood is none. However long the bleeding, it keeps one cloud per kBloodCloudIntervalS over the
+    // time a cloud takes to mix (4.5 s: 9), within kMaxBloodClouds.
+    advanceBloodClouds(blood, kDt, std::nan(""), vessel, flow, 1.0, total, total / volumeMl);
+    EXPECT_EQ(blood.count, 0u);
+    for (int k = 0; k < 4000; ++k)
+        advanceBloodClouds(blood, 0.05, 0.001, vessel, flow, 1.0, 1.0, 0.1);
+    EXPECT_GE(blood.count, 8u);
+    EXPECT_LE(blood.count, 10u);
+    static_assert(kMaxBloodClouds >= 10);
 }
 
 } // namespace

@@ -520,6 +520,24 @@ TEST(World, TheLoopCutsThePolypAndTheContactSurfaceFollowsTheCut) {
     EXPECT_LT(world->state().fluid.pressureKpa, cutFluid.pressureKpa);
     EXPECT_GT(world->state().fluid.bleedingMlPerS, cutFluid.bleedingMlPerS);
     EXPECT_NEAR(arterial(), openBefore, 1e-12 * openBefore); // no cut, no seal: the same vessels are open
+    // The cut's blood leaves it as clouds (docs/simulator.md, "Blood clouds"): the newest one by the faces the cut
+    // bared, all of them together no more blood than the cavity holds.
+    const BloodClouds& clouds = later.state.blood;
+    ASSERT_GT(clouds.count, 0u);
+    double inClouds = 0.0;
+    for (std::size_t i = 0; i < clouds.count; ++i)
+        inClouds += clouds.clouds[i].bloodMl;
+    EXPECT_GT(inClouds, 0.0);
+    EXPECT_LE(inClouds, later.state.fluid.bloodInCavityMl * (1.0 + 1e-12));
+    ASSERT_TRUE(later.cut);
+    double cloudToCut = 1e300; // mm, from the newest cloud to the nearest point of a bared face
+    for (const Triangle& face : later.cut->faces)
+        for (const std::int32_t q : face)
+            cloudToCut = std::min(cloudToCut, distance(clouds.clouds[clouds.count - 1].centreMm,
+                                                       later.simulationPointsMm[static_cast<std::size_t>(q)]));
+    std::printf("blood clouds: %zu holding %.4f of the cavity's %.4f mL, the newest %.2f mm from the cut\n",
+                clouds.count, inClouds, later.state.fluid.bloodInCavityMl, cloudToCut);
+    EXPECT_LT(cloudToCut, 5.0);
     // The last half second of cutting once more with the coagulating pedal instead: the loop passes over the faces
     // it bared and seals their vessels, less is open.
     std::size_t lastCut = 0;

@@ -315,7 +315,8 @@ void SimWindow::onRenderTick() {
         m_world->visualPoints(frame->snapshot.simulationPointsMm, m_visualPoints, m_endoscope->sourcePointsInUse());
         m_endoscope->setPoints(m_visualPoints);
         m_endoscope->setPose(simrender::cameraPose(state.scope, m_options.world.scope));
-        m_endoscope->setFluid(state.fluid.turbidity, state.fluid.redOut, state.fluid.bloodFraction);
+        m_endoscope->setFluid(state.fluid.turbidity, state.fluid.redOut, state.blood.mixedFraction);
+        m_endoscope->setBloodClouds(state.blood);
         // The cut: the visual surface's faces in removed tets hide (anew once per cut event), the bared faces and
         // the loop are drawn.
         const sim::CutView* cut = frame->snapshot.cut.get();

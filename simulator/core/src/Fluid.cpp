@@ -113,4 +113,47 @@ Vec3 flowVelocityMmPerS(const Vec3& pointMm, const Vec3& tipMm, const Vec3& shaf
     return source(tipMm, inflowMlPerS) + source(tipMm - shaft * kOutflowBehindTipMm, -outflowMlPerS);
 }
 
+void advanceBloodClouds(BloodClouds& blood, double dt, double bledMl, const Vec3& bleedingMm, const FlowField& flow,
+                        double keep, double bloodInCavityMl, double bloodFraction) {
+    const double k = std::isfinite(keep) ? std::clamp(keep, 0.0, 1.0) : 1.0;
+    const double spread = 2.0 * kBloodEddyDiffusivityMm2PerS * dt;
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < blood.count; ++i) {
+        BloodCloud c = blood.clouds[i];
+        c.centreMm = c.centreMm + flowVelocityMmPerS(c.centreMm, flow.tipMm, flow.shaft, flow.inflowMlPerS,
+                                                     flow.outflowMlPerS, flow.coreMm) *
+                                      dt;
+        c.sigmaMm = std::sqrt(c.sigmaMm * c.sigmaMm + spread);
+        c.bloodMl *= k;
+        c.ageS += dt;
+        if (c.sigmaMm < kBloodCloudMixedMm) // wider: mixed through the cavity
+            blood.clouds[kept++] = c;
+    }
+    blood.count = kept;
+    if (bledMl > 0.0 && std::isfinite(bledMl)) {
+        if (blood.count == 0 || blood.clouds[blood.count - 1].ageS >= kBloodCloudIntervalS) {
+            if (blood.count == kMaxBloodClouds) { // the oldest mixes to make room
+                std::copy(blood.clouds.begin() + 1, blood.clouds.end(), blood.clouds.begin());
+                blood.count -= 1;
+            }
+            BloodCloud fresh;
+            fresh.centreMm = bleedingMm;
+            fresh.sigmaMm = kBloodCloudStartMm;
+            blood.clouds[blood.count++] = fresh;
+        }
+        blood.clouds[blood.count - 1].bloodMl += bledMl * k;
+    }
+    // The clouds hold at most the cavity's blood; the rest of it is mixed.
+    double inClouds = 0.0;
+    for (std::size_t i = 0; i < blood.count; ++i)
+        inClouds += blood.clouds[i].bloodMl;
+    const double total = std::max(bloodInCavityMl, 0.0);
+    if (inClouds > total && inClouds > 0.0) {
+        for (std::size_t i = 0; i < blood.count; ++i)
+            blood.clouds[i].bloodMl *= total / inClouds;
+        inClouds = total;
+    }
+    blood.mixedFraction = total > 0.0 ? std::clamp(bloodFraction * (total - inClouds) / total, 0.0, 1.0) : 0.0;
+}
+
 } // namespace hs::sim::detail

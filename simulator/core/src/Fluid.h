@@ -33,6 +33,8 @@ inline constexpr double kVenulePressureKpa = 10.0 * units::kKpaPerMmHg;
 struct OpenVessels {
     double arterialMlPerSKpa = 0.0;
     double venousMlPerSKpa = 0.0;
+    /// mm, where the arterioles bleed: the open faces' centroids weighted by their arterial conductance.
+    Vec3 bleedingMm;
 };
 
 class FluidModel {
@@ -66,5 +68,34 @@ inline constexpr double kOutflowBehindTipMm = 8.0;
 /// not in it: a chip stops where the wall stops it (World::Impl::moveChips).
 Vec3 flowVelocityMmPerS(const Vec3& pointMm, const Vec3& tipMm, const Vec3& shaft, double inflowMlPerS,
                         double outflowMlPerS, double coreMm);
+
+/// Blood clouds (docs/simulator.md, "Blood clouds"). Blood leaves a cut arteriole as a thin jet and spreads through
+/// the fluid the pump keeps stirring; a cloud starts as wide as kBloodCloudStartMm at the bleeding point, spreads as
+/// sigma^2 += 2 D dt with an eddy diffusivity D, and counts as mixed through the cavity once kBloodCloudMixedMm
+/// wide (about the distended cavity's half-width). D is this project's choice: no measurement of the mixing in a
+/// distended cavity was found (Zatonyi et al. 2005 solve the flow instead); with it a cloud takes about 4 s to mix.
+inline constexpr double kBloodCloudStartMm = 0.5;
+inline constexpr double kBloodEddyDiffusivityMm2PerS = 4.0;
+inline constexpr double kBloodCloudMixedMm = 6.0;
+/// s of bleeding each cloud gathers before the next one starts.
+inline constexpr double kBloodCloudIntervalS = 0.5;
+
+/// The distension fluid's flow as a step leaves it (flowVelocityMmPerS's arguments).
+struct FlowField {
+    Vec3 tipMm;
+    Vec3 shaft;
+    double inflowMlPerS = 0.0;
+    double outflowMlPerS = 0.0;
+    double coreMm = 1.0;
+};
+
+/// One step of `dt` s of the blood clouds. The `bledMl` the vessels gave over the step joins the newest cloud while it
+/// is younger than kBloodCloudIntervalS, else a new one at `bleedingMm`; every cloud drifts with the flow at its
+/// centre and spreads; the outflow washes out the same share of every cloud's blood as of the cavity's (`keep`, the
+/// share of the cavity's blood that stays over the step); a cloud as wide as kBloodCloudMixedMm (or the oldest, to
+/// make room) joins the mixed blood. `bloodInCavityMl` and `bloodFraction` are the fluid's after the step (its
+/// clouds' and its mixed blood together): the mixed share is what the clouds do not hold.
+void advanceBloodClouds(BloodClouds& blood, double dt, double bledMl, const Vec3& bleedingMm, const FlowField& flow,
+                        double keep, double bloodInCavityMl, double bloodFraction);
 
 } // namespace hs::sim::detail

@@ -155,9 +155,21 @@ Status World::step(const DeviceSample* samples, std::size_t count) {
     // The fluid's pressure for this step from the cavity as the tissue lies (two-way coupling), then the tissue and
     // the scope under it; state.scope is then the physics' scope, held off the wall by the tissue.
     const double cavityMl = w.uterus.cavityVolumeMl(w.pointsMm) - w.uterus.restCavityMl;
-    const double pressureKpa = w.fluid.step(dt, last.inflow, last.outflow, cavityMl, w.cavityComplianceMlPerKpa,
-                                            w.state.contact.forceN, w.openVessels());
+    const double bloodBeforeMl = w.fluid.state().bloodInCavityMl;
+    const detail::OpenVessels open = w.openVessels();
+    const double pressureKpa =
+        w.fluid.step(dt, last.inflow, last.outflow, cavityMl, w.cavityComplianceMlPerKpa, w.state.contact.forceN, open);
     w.state.fluid = w.fluid.state();
+    {
+        // The blood the vessels gave this step leaves them as a cloud, carried and spread by the fluid.
+        const FluidState& f = w.state.fluid;
+        const double bledMl = dt * f.bleedingMlPerS;
+        const double held = bloodBeforeMl + bledMl; // what the washout acted on
+        const detail::FlowField flow{w.state.scope.tipMm, w.state.scope.shaft, f.inflowMlPerS, f.outflowMlPerS,
+                                     0.5 * w.options.scope.diameterMm};
+        detail::advanceBloodClouds(w.state.blood, dt, bledMl, open.bleedingMm, flow,
+                                   held > 0.0 ? f.bloodInCavityMl / held : 1.0, f.bloodInCavityMl, f.bloodFraction);
+    }
     w.physics(last, pressureKpa);
     w.state.step += 1;
     w.state.timeS = static_cast<double>(w.state.step) * dt;

@@ -257,13 +257,21 @@ detail::OpenVessels World::Impl::openVessels() const {
     detail::OpenVessels open;
     if (tetVessels.empty())
         return open;
+    Vec3 weighted;
     for (std::size_t f = firstCutFace; f < faceCut.size(); ++f) {
         if (faceDead[f] || faceSealed[f])
             continue;
         const VesselDensity& v = tetVessels[static_cast<std::size_t>(faceTet[f])];
-        open.arterialMlPerSKpa += faceArea[f] * v.arterialPerMm2;
+        const double arterial = faceArea[f] * v.arterialPerMm2;
+        open.arterialMlPerSKpa += arterial;
         open.venousMlPerSKpa += faceArea[f] * v.venousPerMm2;
+        const Triangle& t = (*triangles)[f];
+        weighted = weighted + (pointsMm[static_cast<std::size_t>(t[0])] + pointsMm[static_cast<std::size_t>(t[1])] +
+                               pointsMm[static_cast<std::size_t>(t[2])]) *
+                                  (arterial / 3.0);
     }
+    if (open.arterialMlPerSKpa > 0.0)
+        open.bleedingMm = weighted * (1.0 / open.arterialMlPerSKpa);
     return open;
 }
 

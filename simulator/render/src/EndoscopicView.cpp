@@ -56,6 +56,7 @@ constexpr double kPi = 3.14159265358979323846;
 /// x / (1 + x) in units of the headroom, Reinhard et al. 2002, that nears full scale without reaching it).
 constexpr const char* kFluidShader = R"(//VTK::TCoord::Impl
   {
+    gl_FragData[0].rgb *= exp(-hsBloodAbsorption * 2.0 * hsCloudPath(vertexVC.xyz, hsCloudCentre, hsCloudBlood));
     float hsNdcZ = gl_FragCoord.z * 2.0 - 1.0;
     float hsDepth = 2.0 * hsNear * hsFar / (hsFar + hsNear - hsNdcZ * (hsFar - hsNear));
     float hsTransmitted = exp(-hsFogPerMm * hsDepth);
@@ -179,6 +180,38 @@ constexpr const char* kCutFragmentImpl = R"(//VTK::Color::Impl
     ambientColor *= hsPattern;
   }
 )";
+
+/// The blood clouds (sim::BloodCloud, docs/simulator.md "Blood clouds") on the way from the lens to a fragment: each a
+/// Gaussian of its blood (mL) about its centre (view coordinates, mm; w its standard deviation), whose integral along
+/// the ray from the lens (the origin) to the fragment at `rayVC` is the blood's share of the fluid times the path,
+/// in mm: exp(-b^2 / 2 s^2) / (2 pi s^2) across the ray at the distance b of the centre from it, times the part of the
+/// Gaussian between the lens and the fragment along it (erf by docs/references.md [AbramowitzStegun1964], 7.1.26: error
+/// below 2e-7). It absorbs as that much whole blood would, on the lamp's way there and back (hsBloodAbsorption, 1/mm).
+constexpr const char* kBloodCloudDec = R"(//VTK::Light::Dec
+float hsErf(float x) {
+  float t = 1.0 / (1.0 + 0.3275911 * abs(x));
+  float y = 1.0 - (((((1.061405429 * t - 1.453152027) * t) + 1.421413741) * t - 0.284496736) * t + 0.254829592) *
+                      t * exp(-x * x);
+  return sign(x) * y;
+}
+float hsCloudPath(vec3 rayVC, vec4 centre[12], float blood[12]) {
+  float len = length(rayVC);
+  vec3 dir = rayVC / max(len, 1.0e-6);
+  float path = 0.0;
+  for (int i = 0; i < 12; ++i) {
+    if (blood[i] <= 0.0)
+      continue;
+    float s = max(centre[i].w, 1.0e-3);
+    float t0 = dot(centre[i].xyz, dir);
+    float b2 = max(dot(centre[i].xyz, centre[i].xyz) - t0 * t0, 0.0);
+    float across = exp(-0.5 * b2 / (s * s)) / (6.2831853 * s * s);
+    float along = 0.5 * (hsErf((len - t0) / (1.4142136 * s)) + hsErf(t0 / (1.4142136 * s)));
+    path += 1000.0 * blood[i] * across * along;
+  }
+  return path;
+}
+)";
+static_assert(sim::kMaxBloodClouds == 12, "kBloodCloudDec's arrays hold kMaxBloodClouds clouds");
 
 /// The optic's barrel distortion, applied to the tissue's vertices after VTK's projection (a vertex-shader lens
 /// model: the visual surface is refined to about a millimetre where the scope sees it, so its triangles stay small
@@ -377,6 +410,8 @@ struct EndoscopicView::Impl {
     void buildOccluder(int width, int height);
     void fitOccluder();
     void updateUniforms();
+    sim::BloodClouds clouds; ///< setBloodClouds
+    void updateClouds();
     void setNormals(const std::vector<Vec3>& normals, std::size_t count); ///< the first `count` points'
 
     // The cut (setCut, setCutSurface) and the loop (setLoop).
@@ -434,6 +469,7 @@ EndoscopicView::EndoscopicView(vtkRenderer* renderer, const EndoscopicLook& look
     d.actor->GetProperty()->BackfaceCullingOff(); // inside the organ the scope sees the backs of surfaces too
     vtkShaderProperty* shader = d.actor->GetShaderProperty();
     shader->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true, kFluidShader, false);
+    shader->AddFragmentShaderReplacement("//VTK::Light::Dec", true, kBloodCloudDec, false);
     shader->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true, kOpticVertexShader, false);
     renderer->AddActor(d.actor);
 
@@ -452,6 +488,7 @@ EndoscopicView::EndoscopicView(vtkRenderer* renderer, const EndoscopicLook& look
     d.cutActor->VisibilityOff();
     vtkShaderProperty* cutShader = d.cutActor->GetShaderProperty();
     cutShader->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true, kFluidShader, false);
+    cutShader->AddFragmentShaderReplacement("//VTK::Light::Dec", true, kBloodCloudDec, false);
     cutShader->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true, kOpticVertexShader, false);
     cutShader->AddVertexShaderReplacement("//VTK::Color::Dec", true, kCutVertexDec, false);
     cutShader->AddVertexShaderReplacement("//VTK::Color::Impl", true, kCutVertexImpl, false);
@@ -501,6 +538,7 @@ EndoscopicView::EndoscopicView(vtkRenderer* renderer, const EndoscopicLook& look
         auto* impl = static_cast<Impl*>(client);
         impl->probeRenderer();
         impl->fitOverlays();
+        impl->updateClouds(); // in the camera's coordinates as this render has it
     });
     d.startTag = renderer->AddObserver(vtkCommand::StartEvent, d.startObserver);
     // The camera head meters the frame just drawn (before the window shows it).
@@ -1005,6 +1043,35 @@ void EndoscopicView::setFluid(double turbidity, double redOut, double bloodFract
     d.updateBackground();
 }
 
+void EndoscopicView::setBloodClouds(const sim::BloodClouds& clouds) {
+    m_impl->clouds = clouds;
+    m_impl->updateClouds();
+}
+
+void EndoscopicView::Impl::updateClouds() {
+    // The centres in the camera's view coordinates (the fragment shader's vertexVC), unused entries without blood.
+    float centre[sim::kMaxBloodClouds][4] = {};
+    float blood[sim::kMaxBloodClouds] = {};
+    vtkMatrix4x4* view = renderer->GetActiveCamera()->GetViewTransformMatrix();
+    for (std::size_t i = 0; i < std::min(clouds.count, sim::kMaxBloodClouds); ++i) {
+        const sim::BloodCloud& c = clouds.clouds[i];
+        if (!(c.bloodMl > 0.0) || !std::isfinite(c.bloodMl) || !(c.sigmaMm > 0.0) || !std::isfinite(c.sigmaMm))
+            continue;
+        const double world[4] = {c.centreMm.x, c.centreMm.y, c.centreMm.z, 1.0};
+        double inView[4];
+        view->MultiplyPoint(world, inView);
+        for (int k = 0; k < 3; ++k)
+            centre[i][k] = static_cast<float>(inView[k]);
+        centre[i][3] = static_cast<float>(c.sigmaMm);
+        blood[i] = static_cast<float>(c.bloodMl);
+    }
+    for (vtkShaderProperty* property : fluidShaders()) {
+        vtkUniforms* u = property->GetFragmentCustomUniforms();
+        u->SetUniform4fv("hsCloudCentre", static_cast<int>(sim::kMaxBloodClouds), centre);
+        u->SetUniform1fv("hsCloudBlood", static_cast<int>(sim::kMaxBloodClouds), blood);
+    }
+}
+
 void EndoscopicView::Impl::updateBackground() {
     // Where no surface is drawn the medium itself is seen, through the same camera.
     double background[3];
@@ -1043,6 +1110,10 @@ void EndoscopicView::Impl::updateUniforms() {
                                 static_cast<float>(bloodFraction * look.bloodAbsorptionPerMm[1]),
                                 static_cast<float>(bloodFraction * look.bloodAbsorptionPerMm[2])};
         u->SetUniform3f("hsBloodPerMm", blood);
+        const float absorption[3] = {static_cast<float>(look.bloodAbsorptionPerMm[0]),
+                                     static_cast<float>(look.bloodAbsorptionPerMm[1]),
+                                     static_cast<float>(look.bloodAbsorptionPerMm[2])};
+        u->SetUniform3f("hsBloodAbsorption", absorption);
         u->SetUniformf("hsRedOut", static_cast<float>(redOut));
         u->SetUniformf("hsLampMm", static_cast<float>(lampSourceMm()));
         u->SetUniformf("hsExposure", static_cast<float>(autoExposure.exposure()));

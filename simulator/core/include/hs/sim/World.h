@@ -21,6 +21,7 @@
 #include "hs/sim/Script.h"
 #include "hs/sim/Trial.h"
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -94,6 +95,23 @@ struct LoopState {
 };
 
 /// What one step left: the scope, the fluid, the contact.
+/// Blood from the cut vessels not yet mixed through the cavity's fluid (docs/simulator.md, "Blood clouds"): each a
+/// Gaussian cloud, its blood `bloodMl` spread about `centreMm` with the standard deviation `sigmaMm`.
+struct BloodCloud {
+    Vec3 centreMm;
+    double sigmaMm = 0.0;
+    double bloodMl = 0.0;
+    double ageS = 0.0; ///< s since the vessels began giving its blood
+};
+inline constexpr std::size_t kMaxBloodClouds = 12;
+struct BloodClouds {
+    std::array<BloodCloud, kMaxBloodClouds> clouds{}; ///< the first `count`, oldest first
+    std::size_t count = 0;
+    /// The blood in the cavity outside the clouds, mixed through the fluid: its share of the fluid, 0..1 (the view's
+    /// even reddening; FluidState::bloodFraction counts the clouds' blood too).
+    double mixedFraction = 0.0;
+};
+
 struct WorldState {
     std::uint64_t step = 0;
     double timeS = 0.0;
@@ -105,6 +123,7 @@ struct WorldState {
     bool inCavity = false;        ///< the tip is beyond the internal os
     double cavityOpeningMl = 0.0; ///< mL, the cavity's volume in the deformed tissue beyond its volume at rest
     LoopState loop;
+    BloodClouds blood;
 };
 
 /// What the cuts have done to the tissue so far, to draw it: shared between threads, never changed once published

@@ -132,8 +132,11 @@ public:
     /// of the inner faces alone while the outer surface is hidden. A caller that computes the deformed points may
     /// compute just these (sim::World::visualPoints); the others may be left as they were.
     const std::vector<std::int32_t>& sourcePointsInUse() const;
-    /// Turbidity 0 (clear) .. 1 (opaque); red-out 0 .. 1; blood's share of the fluid 0 .. 1 (FluidState).
+    /// Turbidity 0 (clear) .. 1 (opaque); red-out 0 .. 1; blood's share of the fluid 0 .. 1, mixed through it
+    /// (BloodClouds::mixedFraction; FluidState::bloodFraction without clouds).
     void setFluid(double turbidity, double redOut, double bloodFraction = 0.0);
+    /// The blood not yet mixed through the fluid: clouds that absorb the light on its way through them (none: none).
+    void setBloodClouds(const sim::BloodClouds& clouds);
     void setHud(const HudText& text);
     /// Hides the faces on the visual surface's points flagged in `hidden` (their tet was cut away:
     /// sim::World::visualPointsCut); empty: nothing hidden.
