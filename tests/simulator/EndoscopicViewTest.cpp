@@ -452,7 +452,10 @@ TEST_F(EndoscopicViewTest, ABloodCloudDarkensTheWallBehindItAndNothingBeside) {
     // lens and the wall 20 mm away. Along the axis the light crosses 1000 mm^3/mL x 0.000125 mL / (2 pi 1 mm^2) =
     // 0.0199 mm of whole blood each way, which leaves exp(-2 x 23 / mm x 0.0199 mm) = 0.40 of the wall's green light
     // and 0.987 of its red (Prahl). The light the saline scatters back from near the lens does not cross the cloud.
-    const scene::VisualSurface surface = sphere();
+    // The view evaluates the clouds at the vertices: a sphere with vertices 0.7 mm apart (the visual surface's are
+    // about a millimetre), so the vertices round the middle pixel's ray lie within a third of the cloud's width of it.
+    scene::VisualSurface surface;
+    surface.mesh = test::latitudeSphere(90, 180, false);
     EndoscopicLook look;
     look.detail = ViewDetail::Full;
     look.hud = false;

@@ -56,7 +56,7 @@ constexpr double kPi = 3.14159265358979323846;
 /// x / (1 + x) in units of the headroom, Reinhard et al. 2002, that nears full scale without reaching it).
 constexpr const char* kFluidShader = R"(//VTK::TCoord::Impl
   {
-    gl_FragData[0].rgb *= exp(-hsBloodAbsorption * 2.0 * hsCloudPath(vertexVC.xyz, hsCloudCentre, hsCloudBlood));
+    gl_FragData[0].rgb *= exp(-hsBloodAbsorption * 2.0 * hsCloudPathVSOutput);
     float hsNdcZ = gl_FragCoord.z * 2.0 - 1.0;
     float hsDepth = 2.0 * hsNear * hsFar / (hsFar + hsNear - hsNdcZ * (hsFar - hsNear));
     float hsTransmitted = exp(-hsFogPerMm * hsDepth);
@@ -181,29 +181,35 @@ constexpr const char* kCutFragmentImpl = R"(//VTK::Color::Impl
   }
 )";
 
-/// The blood clouds (sim::BloodCloud, docs/simulator.md "Blood clouds") on the way from the lens to a fragment: each a
+/// The blood clouds (sim::BloodCloud, docs/simulator.md "Blood clouds") on the way from the lens to a vertex: each a
 /// Gaussian of its blood (mL) about its centre (view coordinates, mm; w its standard deviation), whose integral along
-/// the ray from the lens (the origin) to the fragment at `rayVC` is the blood's share of the fluid times the path,
-/// in mm: exp(-b^2 / 2 s^2) / (2 pi s^2) across the ray at the distance b of the centre from it, times the part of the
-/// Gaussian between the lens and the fragment along it (erf by docs/references.md [AbramowitzStegun1964], 7.1.26: error
-/// below 2e-7). It absorbs as that much whole blood would, on the lamp's way there and back (hsBloodAbsorption, 1/mm).
-constexpr const char* kBloodCloudDec = R"(//VTK::Light::Dec
+/// the ray from the lens (the origin) to the vertex at `rayVC` is the blood's share of the fluid times the path, in
+/// mm: exp(-b^2 / 2 s^2) / (2 pi s^2) across the ray at the distance b of the centre from it, times the part of the
+/// Gaussian between the lens and the vertex along it (erf by docs/references.md [AbramowitzStegun1964], 7.1.26: error
+/// below 2e-7); rays more than 5 s from a centre skip it (exp(-12.5)). The fragments interpolate it between the
+/// vertices (a cloud is at least 0.5 mm wide, the surface's triangles about a millimetre: per fragment it cost half
+/// the frame on a software rasterizer) and absorb as that much whole blood would, on the lamp's way there and back
+/// (hsBloodAbsorption, 1/mm).
+constexpr const char* kBloodCloudVertexDec = R"(//VTK::Light::Dec
+out float hsCloudPathVSOutput;
 float hsErf(float x) {
   float t = 1.0 / (1.0 + 0.3275911 * abs(x));
   float y = 1.0 - (((((1.061405429 * t - 1.453152027) * t) + 1.421413741) * t - 0.284496736) * t + 0.254829592) *
                       t * exp(-x * x);
   return sign(x) * y;
 }
-float hsCloudPath(vec3 rayVC, vec4 centre[12], float blood[12]) {
+float hsCloudPath(vec3 rayVC, vec4 centre[12], float blood[12], int count) {
   float len = length(rayVC);
   vec3 dir = rayVC / max(len, 1.0e-6);
   float path = 0.0;
   for (int i = 0; i < 12; ++i) {
-    if (blood[i] <= 0.0)
-      continue;
+    if (i >= count)
+      break;
     float s = max(centre[i].w, 1.0e-3);
     float t0 = dot(centre[i].xyz, dir);
     float b2 = max(dot(centre[i].xyz, centre[i].xyz) - t0 * t0, 0.0);
+    if (b2 > 25.0 * s * s || blood[i] <= 0.0)
+      continue;
     float across = exp(-0.5 * b2 / (s * s)) / (6.2831853 * s * s);
     float along = 0.5 * (hsErf((len - t0) / (1.4142136 * s)) + hsErf(t0 / (1.4142136 * s)));
     path += 1000.0 * blood[i] * across * along;
@@ -211,7 +217,10 @@ float hsCloudPath(vec3 rayVC, vec4 centre[12], float blood[12]) {
   return path;
 }
 )";
-static_assert(sim::kMaxBloodClouds == 12, "kBloodCloudDec's arrays hold kMaxBloodClouds clouds");
+constexpr const char* kBloodCloudFragmentDec = R"(//VTK::Light::Dec
+in float hsCloudPathVSOutput;
+)";
+static_assert(sim::kMaxBloodClouds == 12, "kBloodCloudVertexDec's arrays hold kMaxBloodClouds clouds");
 
 /// The optic's barrel distortion, applied to the tissue's vertices after VTK's projection (a vertex-shader lens
 /// model: the visual surface is refined to about a millimetre where the scope sees it, so its triangles stay small
@@ -229,6 +238,7 @@ constexpr const char* kOpticVertexShader = R"(//VTK::PositionVC::Impl
     if (hsRho > 1.0e-6)
       gl_Position.xy *= mix(1.0, atan(hsBarrel * hsRho) / (atan(hsBarrel) * hsRho), hsFade);
   }
+  hsCloudPathVSOutput = hsCloudPath(vertexVCVSOutput.xyz, hsCloudCentre, hsCloudBlood, hsCloudCount);
 )";
 
 /// mm of depth over which the optic's distortion fades in from the near plane (kOpticVertexShader).
@@ -469,7 +479,8 @@ EndoscopicView::EndoscopicView(vtkRenderer* renderer, const EndoscopicLook& look
     d.actor->GetProperty()->BackfaceCullingOff(); // inside the organ the scope sees the backs of surfaces too
     vtkShaderProperty* shader = d.actor->GetShaderProperty();
     shader->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true, kFluidShader, false);
-    shader->AddFragmentShaderReplacement("//VTK::Light::Dec", true, kBloodCloudDec, false);
+    shader->AddFragmentShaderReplacement("//VTK::Light::Dec", true, kBloodCloudFragmentDec, false);
+    shader->AddVertexShaderReplacement("//VTK::Light::Dec", true, kBloodCloudVertexDec, false);
     shader->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true, kOpticVertexShader, false);
     renderer->AddActor(d.actor);
 
@@ -488,7 +499,8 @@ EndoscopicView::EndoscopicView(vtkRenderer* renderer, const EndoscopicLook& look
     d.cutActor->VisibilityOff();
     vtkShaderProperty* cutShader = d.cutActor->GetShaderProperty();
     cutShader->AddFragmentShaderReplacement("//VTK::TCoord::Impl", true, kFluidShader, false);
-    cutShader->AddFragmentShaderReplacement("//VTK::Light::Dec", true, kBloodCloudDec, false);
+    cutShader->AddFragmentShaderReplacement("//VTK::Light::Dec", true, kBloodCloudFragmentDec, false);
+    cutShader->AddVertexShaderReplacement("//VTK::Light::Dec", true, kBloodCloudVertexDec, false);
     cutShader->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true, kOpticVertexShader, false);
     cutShader->AddVertexShaderReplacement("//VTK::Color::Dec", true, kCutVertexDec, false);
     cutShader->AddVertexShaderReplacement("//VTK::Color::Impl", true, kCutVertexImpl, false);
@@ -1052,6 +1064,7 @@ void EndoscopicView::Impl::updateClouds() {
     // The centres in the camera's view coordinates (the fragment shader's vertexVC), unused entries without blood.
     float centre[sim::kMaxBloodClouds][4] = {};
     float blood[sim::kMaxBloodClouds] = {};
+    int count = 0; // the first `count` entries carry the clouds
     vtkMatrix4x4* view = renderer->GetActiveCamera()->GetViewTransformMatrix();
     for (std::size_t i = 0; i < std::min(clouds.count, sim::kMaxBloodClouds); ++i) {
         const sim::BloodCloud& c = clouds.clouds[i];
@@ -1064,11 +1077,13 @@ void EndoscopicView::Impl::updateClouds() {
             centre[i][k] = static_cast<float>(inView[k]);
         centre[i][3] = static_cast<float>(c.sigmaMm);
         blood[i] = static_cast<float>(c.bloodMl);
+        count = static_cast<int>(i) + 1;
     }
     for (vtkShaderProperty* property : fluidShaders()) {
-        vtkUniforms* u = property->GetFragmentCustomUniforms();
+        vtkUniforms* u = property->GetVertexCustomUniforms();
         u->SetUniform4fv("hsCloudCentre", static_cast<int>(sim::kMaxBloodClouds), centre);
         u->SetUniform1fv("hsCloudBlood", static_cast<int>(sim::kMaxBloodClouds), blood);
+        u->SetUniformi("hsCloudCount", count);
     }
 }
 
