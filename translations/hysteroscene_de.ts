@@ -2084,6 +2084,18 @@
         <source>from the internal os (mm)</source>
         <translation>vom inneren Muttermund (mm)</translation>
     </message>
+    <message>
+        <source>&amp;Replay in the Simulator...</source>
+        <translation>Im Simulator &amp;wiedergeben...</translation>
+    </message>
+    <message>
+        <source>Play the recorded trial again in the simulator, on its scene package.</source>
+        <translation>Den aufgezeichneten Durchlauf im Simulator erneut abspielen, auf seinem Szenenpaket.</translation>
+    </message>
+    <message>
+        <source>No recorded trial (%1.trial) beside the report: the simulator writes one with the report when a trial ends.</source>
+        <translation>Kein aufgezeichneter Durchlauf (%1.trial) neben dem Bericht: der Simulator schreibt ihn mit dem Bericht, wenn ein Durchlauf endet.</translation>
+    </message>
 </context>
 <context>
     <name>hs::widgets::VariantsView</name>
@@ -2657,6 +2669,30 @@
     <message>
         <source>Trial Report - %1</source>
         <translation>Durchlaufbericht - %1</translation>
+    </message>
+    <message>
+        <source>Replay</source>
+        <translation>Wiedergabe</translation>
+    </message>
+    <message>
+        <source>The simulator is not installed beside the workstation.</source>
+        <translation>Der Simulator ist nicht neben der Workstation installiert.</translation>
+    </message>
+    <message>
+        <source>No executable %1.</source>
+        <translation>Keine ausführbare Datei %1.</translation>
+    </message>
+    <message>
+        <source>The Scene Package the Trial Ran On</source>
+        <translation>Das Szenenpaket des Durchlaufs</translation>
+    </message>
+    <message>
+        <source>The simulator did not start.</source>
+        <translation>Der Simulator ist nicht gestartet.</translation>
+    </message>
+    <message>
+        <source>Replaying %1 in the simulator.</source>
+        <translation>%1 wird im Simulator wiedergegeben.</translation>
     </message>
 </context>
 <context>

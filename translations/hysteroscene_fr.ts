@@ -2084,6 +2084,18 @@
         <source>from the internal os (mm)</source>
         <translation>depuis l&apos;orifice interne (mm)</translation>
     </message>
+    <message>
+        <source>&amp;Replay in the Simulator...</source>
+        <translation>&amp;Rejouer dans le simulateur...</translation>
+    </message>
+    <message>
+        <source>Play the recorded trial again in the simulator, on its scene package.</source>
+        <translation>Rejouer l&apos;essai enregistré dans le simulateur, sur son paquet de scène.</translation>
+    </message>
+    <message>
+        <source>No recorded trial (%1.trial) beside the report: the simulator writes one with the report when a trial ends.</source>
+        <translation>Aucun essai enregistré (%1.trial) à côté du rapport : le simulateur l&apos;écrit avec le rapport à la fin d&apos;un essai.</translation>
+    </message>
 </context>
 <context>
     <name>hs::widgets::VariantsView</name>
@@ -2657,6 +2669,30 @@
     <message>
         <source>Trial Report - %1</source>
         <translation>Rapport d&apos;essai - %1</translation>
+    </message>
+    <message>
+        <source>Replay</source>
+        <translation>Relecture</translation>
+    </message>
+    <message>
+        <source>The simulator is not installed beside the workstation.</source>
+        <translation>Le simulateur n&apos;est pas installé à côté de la station de travail.</translation>
+    </message>
+    <message>
+        <source>No executable %1.</source>
+        <translation>Aucun exécutable %1.</translation>
+    </message>
+    <message>
+        <source>The Scene Package the Trial Ran On</source>
+        <translation>Le paquet de scène de l&apos;essai</translation>
+    </message>
+    <message>
+        <source>The simulator did not start.</source>
+        <translation>Le simulateur n&apos;a pas démarré.</translation>
+    </message>
+    <message>
+        <source>Replaying %1 in the simulator.</source>
+        <translation>Relecture de %1 dans le simulateur.</translation>
     </message>
 </context>
 <context>

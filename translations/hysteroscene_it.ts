@@ -2084,6 +2084,18 @@
         <source>from the internal os (mm)</source>
         <translation>dall&apos;orifizio uterino interno (mm)</translation>
     </message>
+    <message>
+        <source>&amp;Replay in the Simulator...</source>
+        <translation>&amp;Riproduci nel simulatore...</translation>
+    </message>
+    <message>
+        <source>Play the recorded trial again in the simulator, on its scene package.</source>
+        <translation>Riproduce la prova registrata nel simulatore, sul suo pacchetto di scena.</translation>
+    </message>
+    <message>
+        <source>No recorded trial (%1.trial) beside the report: the simulator writes one with the report when a trial ends.</source>
+        <translation>Nessuna prova registrata (%1.trial) accanto al rapporto: il simulatore la scrive con il rapporto alla fine di una prova.</translation>
+    </message>
 </context>
 <context>
     <name>hs::widgets::VariantsView</name>
@@ -2657,6 +2669,30 @@
     <message>
         <source>Trial Report - %1</source>
         <translation>Rapporto della prova - %1</translation>
+    </message>
+    <message>
+        <source>Replay</source>
+        <translation>Riproduzione</translation>
+    </message>
+    <message>
+        <source>The simulator is not installed beside the workstation.</source>
+        <translation>Il simulatore non è installato accanto alla workstation.</translation>
+    </message>
+    <message>
+        <source>No executable %1.</source>
+        <translation>Nessun eseguibile %1.</translation>
+    </message>
+    <message>
+        <source>The Scene Package the Trial Ran On</source>
+        <translation>Il pacchetto di scena della prova</translation>
+    </message>
+    <message>
+        <source>The simulator did not start.</source>
+        <translation>Il simulatore non si è avviato.</translation>
+    </message>
+    <message>
+        <source>Replaying %1 in the simulator.</source>
+        <translation>Riproduzione di %1 nel simulatore.</translation>
     </message>
 </context>
 <context>

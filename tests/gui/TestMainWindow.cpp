@@ -28,6 +28,7 @@
 #include <QLocale>
 #include <QMenu>
 #include <QMimeData>
+#include <QPushButton>
 #include <QScatterSeries>
 #include <QScrollArea>
 #include <QSettings>
@@ -92,6 +93,7 @@ private slots:
     void aCaseChangedOnDiskIsOfferedToReloadAndOurOwnSaveIsNot();
     void theHysteroscopicViewDetachesAndEnlarges();
     void aTrialReportShowsTheReportsFiguresInAWindowOfItsOwn();
+    void aReviewedTrialReplaysInTheSimulator();
     void nothingIsCutOffOnASmallScreen_data();
     void nothingIsCutOffOnASmallScreen();
 
@@ -807,6 +809,54 @@ void TestMainWindow::aTrialReportShowsTheReportsFiguresInAWindowOfItsOwn() {
                                                    "0-100 %"),
              qPrintable(messages.front().details));
     QCOMPARE(view->path(), QFileInfo(path).absoluteFilePath());
+    view->close();
+}
+
+void TestMainWindow::aReviewedTrialReplaysInTheSimulator() {
+    // A report written with its trial (NAME.json and NAME.trial, as the simulator's End Trial writes them): the
+    // review's "Replay in the Simulator" starts the simulator on the package the user names, with the trial.
+    const QString report = fixture("replayed.json");
+    QVERIFY(hs::sim::writeReport(operativeReport(), report.toStdString()).ok());
+    QSignalSpy opened(m_window.get(), &MainWindow::trialReportOpened);
+    m_window->openArgument(report);
+    QVERIFY(opened.wait(kLoadTimeoutMs));
+    hs::widgets::TrialReportView* view = m_window->trialReportView();
+    QVERIFY(view);
+    QVERIFY(!view->replayButton()->isEnabled()); // no trial beside it, and the button says why
+    QVERIFY2(view->replayButton()->toolTip().contains("replayed.trial"), qPrintable(view->replayButton()->toolTip()));
+    QFile trial(fixture("replayed.trial"));
+    QVERIFY(trial.open(QIODevice::WriteOnly));
+    trial.write("recorded\n");
+    trial.close();
+    m_window->openArgument(report);
+    QVERIFY(opened.wait(kLoadTimeoutMs));
+    QVERIFY(view->replayButton()->isEnabled());
+    // The simulator here: a script that writes down its arguments.
+    const QString arguments = fixture("simulator-arguments.txt");
+    const QString simulator = fixture("fake-simulator.sh");
+    QFile script(simulator);
+    QVERIFY(script.open(QIODevice::WriteOnly));
+    script.write(
+        QString("#!/bin/sh\nprintf '%s\\n' \"$@\" > '%1.part' && mv '%1.part' '%1'\n").arg(arguments).toUtf8());
+    script.close();
+    QVERIFY(script.setPermissions(script.permissions() | QFileDevice::ExeOwner));
+    m_window->setSimulatorProgram(simulator);
+    const QString package = fixture("the-trials-package");
+    QVERIFY(QDir().mkpath(package));
+    FileDialog::setNextFileName(package); // not under review: the user names the trial's package
+    view->replayButton()->click();
+    QTRY_VERIFY_WITH_TIMEOUT(QFileInfo::exists(arguments), 10000);
+    QFile written(arguments);
+    QVERIFY(written.open(QIODevice::ReadOnly));
+    const QStringList lines = QString::fromUtf8(written.readAll()).split('\n', Qt::SkipEmptyParts);
+    QCOMPARE(lines, QStringList({package, "--replay", QFileInfo(trial.fileName()).absoluteFilePath()}));
+    // No simulator where it is looked for: a message naming the place; nothing started.
+    m_window->setSimulatorProgram(fixture("no-such-simulator"));
+    MessageBox::takeRecorded();
+    QVERIFY(!m_window->replayTrial(trial.fileName()));
+    const QList<MessageBox::Message> messages = MessageBox::takeRecorded();
+    QVERIFY(!messages.isEmpty());
+    QVERIFY2(messages.front().details.contains("no-such-simulator"), qPrintable(messages.front().details));
     view->close();
 }
 

@@ -14,11 +14,13 @@
 #include "hs/widgets/view/VariantsView.h"
 
 #include <QAction>
+#include <QCoreApplication>
 #include <QDir>
 #include <QDockWidget>
 #include <QFile>
 #include <QFileInfo>
 #include <QMenu>
+#include <QProcess>
 #include <QStatusBar>
 
 #include <map>
@@ -191,6 +193,8 @@ void MainWindow::reviewTrialReport(const QString& path) {
                 m_trialReportView = new widgets::TrialReportView(this);
                 m_trialReportView->setWindowFlag(Qt::Window);
                 m_trialReportView->resize(1100, 760);
+                connect(m_trialReportView, &widgets::TrialReportView::replayRequested, this,
+                        [this](const QString& trial) { replayTrial(trial); });
             }
             m_trialReportView->setWindowTitle(tr("Trial Report - %1").arg(QDir::toNativeSeparators(absolute)));
             m_trialReportView->showReport(std::move(report), absolute);
@@ -200,6 +204,41 @@ void MainWindow::reviewTrialReport(const QString& path) {
             m_lastFolder = QFileInfo(absolute).absolutePath();
             emit trialReportOpened(absolute);
         });
+}
+
+QString MainWindow::simulatorProgram() const {
+    return m_simulatorProgram.isEmpty() ? QDir(QCoreApplication::applicationDirPath()).filePath("hysteroscene-sim")
+                                        : m_simulatorProgram;
+}
+
+bool MainWindow::replayTrial(const QString& trialPath) {
+    const QString program = simulatorProgram();
+    if (!QFileInfo(program).isExecutable()) {
+        MessageBox::critical(m_trialReportView ? static_cast<QWidget*>(m_trialReportView) : this, tr("Replay"),
+                             tr("The simulator is not installed beside the workstation."),
+                             tr("No executable %1.").arg(QDir::toNativeSeparators(program)));
+        return false;
+    }
+    // The trial's scene: the package under review when the trial ran on it, else the one the user names (the
+    // simulator refuses a package whose scene is not the trial's, and says so).
+    QString package;
+    if (isReviewing() && m_trialReportView && m_trialReportView->ranOnOpenScene())
+        package = m_reviewPanel->packageFolder();
+    else
+        package = FileDialog::getExistingDirectory(m_trialReportView ? static_cast<QWidget*>(m_trialReportView) : this,
+                                                   tr("The Scene Package the Trial Ran On"),
+                                                   QFileInfo(trialPath).absolutePath());
+    if (package.isEmpty())
+        return false;
+    const QStringList arguments{package, QStringLiteral("--replay"), trialPath};
+    if (!QProcess::startDetached(program, arguments)) {
+        MessageBox::critical(m_trialReportView ? static_cast<QWidget*>(m_trialReportView) : this, tr("Replay"),
+                             tr("The simulator did not start."),
+                             QDir::toNativeSeparators(program) + QLatin1Char(' ') + arguments.join(QLatin1Char(' ')));
+        return false;
+    }
+    statusBar()->showMessage(tr("Replaying %1 in the simulator.").arg(QFileInfo(trialPath).fileName()), 5000);
+    return true;
 }
 
 void MainWindow::onCloseReview() {

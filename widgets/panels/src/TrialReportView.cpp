@@ -6,11 +6,13 @@
 #include <QChartView>
 #include <QFileInfo>
 #include <QGridLayout>
+#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineSeries>
 #include <QList>
 #include <QPointF>
+#include <QPushButton>
 #include <QScatterSeries>
 #include <QTabWidget>
 #include <QTreeWidget>
@@ -133,11 +135,49 @@ TrialReportView::TrialReportView(QWidget* parent) : QWidget(parent) {
     m_tabs->addTab(m_plotPage, tr("&Over Time"));
     m_tabs->addTab(m_surface, tr("&Visualized Surface"));
 
+    m_replay = new QPushButton(tr("&Replay in the Simulator..."), this);
+    m_replay->setObjectName("trialReplay");
+    m_replay->setEnabled(false);
+    connect(m_replay, &QPushButton::clicked, this, [this] {
+        const QString trial = trialPath();
+        if (!trial.isEmpty())
+            emit replayRequested(trial);
+        else
+            updateReplay(); // gone since: say so on the button
+    });
+
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(m_heading);
     layout->addWidget(m_details);
-    layout->addWidget(m_sceneNote);
+    auto* sceneRow = new QHBoxLayout;
+    sceneRow->addWidget(m_sceneNote, 1);
+    sceneRow->addWidget(m_replay);
+    layout->addLayout(sceneRow);
     layout->addWidget(m_tabs, 1);
+}
+
+QString TrialReportView::trialPath() const {
+    if (m_path.isEmpty())
+        return {};
+    QString base = m_path;
+    if (base.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive))
+        base.chop(5);
+    const QString trial = base + QStringLiteral(".trial");
+    return QFileInfo(trial).isFile() ? trial : QString();
+}
+
+bool TrialReportView::ranOnOpenScene() const {
+    return !m_openScene.isEmpty() && m_openScene == text(m_report.header.sceneSha256);
+}
+
+void TrialReportView::updateReplay() {
+    const bool trial = !trialPath().isEmpty();
+    m_replay->setEnabled(trial);
+    QString base = QFileInfo(m_path).completeBaseName();
+    m_replay->setToolTip(trial ? tr("Play the recorded trial again in the simulator, on its scene package.")
+                               : tr("No recorded trial (%1.trial) beside the report: the simulator writes one "
+                                    "with the report when a trial ends.")
+                                     .arg(base));
 }
 
 void TrialReportView::showReport(sim::TrialReport report, const QString& path) {
@@ -159,6 +199,7 @@ void TrialReportView::showReport(sim::TrialReport report, const QString& path) {
     fillPlots();
     fillSurface();
     updateSceneNote();
+    updateReplay();
 }
 
 void TrialReportView::setOpenScene(const QString& packageSha256) {

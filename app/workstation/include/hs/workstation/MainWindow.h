@@ -101,6 +101,13 @@ public:
     /// and plots in a window of its own; trialReportOpened or a message box naming the file and the field follows.
     void reviewTrialReport(const QString& path);
     widgets::TrialReportView* trialReportView() const { return m_trialReportView; }
+    /// Plays the recorded trial `trialPath` in the simulator (`SIMULATOR PACKAGE --replay TRIAL`, a process of its
+    /// own): on the package under review when the trial ran on it, otherwise on the package the user picks. Says why
+    /// when the simulator is not there or does not start. Returns whether it started.
+    bool replayTrial(const QString& trialPath);
+    /// The simulator's executable replayTrial starts (default: hysteroscene-sim beside this program's).
+    QString simulatorProgram() const;
+    void setSimulatorProgram(const QString& program) { m_simulatorProgram = program; }
     /// Where autosave writes the case being edited (default: the application's data folder, "recovery").
     QString recoveryFolder() const { return m_recoveryFolder; }
     void setRecoveryFolder(const QString& folder) { m_recoveryFolder = folder; }
@@ -240,6 +247,7 @@ private:
     widgets::VariantsView* m_variantsView = nullptr; ///< a window of its own, made on first use
     QAction* m_trialReportAction = nullptr;
     widgets::TrialReportView* m_trialReportView = nullptr; ///< a window of its own, made on first use
+    QString m_simulatorProgram;                            ///< empty: hysteroscene-sim beside this program
     QMenu* m_panelsMenu = nullptr;
     QMenu* m_stagesMenu = nullptr;
     QAction* m_cancelPlacingAction = nullptr;

@@ -11,6 +11,7 @@
 
 class QChartView;
 class QLabel;
+class QPushButton;
 class QTabWidget;
 class QTreeWidget;
 
@@ -37,6 +38,17 @@ public:
     /// Whether the trial ran on the open scene, in words.
     QString sceneNote() const;
     QTabWidget* tabs() const { return m_tabs; }
+    /// The trial the report was written with: NAME.trial beside NAME.json, as the simulator's End Trial writes them
+    /// (empty: there is none).
+    QString trialPath() const;
+    /// The report's scene (its SHA-256) is the open one.
+    bool ranOnOpenScene() const;
+    /// "Replay in the Simulator": enabled while the report's trial file is there.
+    QPushButton* replayButton() const { return m_replay; }
+
+signals:
+    /// The user asked to watch the trial again in the simulator (`trialPath`: the recorded trial).
+    void replayRequested(const QString& trialPath);
 
 private:
     void fillMetrics();
@@ -50,6 +62,8 @@ private:
     QLabel* m_heading = nullptr;
     QLabel* m_details = nullptr;
     QLabel* m_sceneNote = nullptr;
+    QPushButton* m_replay = nullptr;
+    void updateReplay();
     QTabWidget* m_tabs = nullptr;
     QTreeWidget* m_metrics = nullptr;
     QWidget* m_plotPage = nullptr;
