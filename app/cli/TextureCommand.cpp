@@ -40,7 +40,9 @@ struct BakeOptions {
     std::string label = "region";
     std::vector<std::int32_t> myoma;
     std::vector<std::int32_t> polyp;
-    std::string exemplarEndometrium, exemplarMyoma, exemplarPolyp;
+    std::string canalLabel = "tissue";
+    std::vector<std::int32_t> canal;
+    std::string exemplarEndometrium, exemplarMyoma, exemplarPolyp, exemplarCanal;
     bool noVessels = false;
     std::string endometrium = "proliferative";
     CommonOptions common;
@@ -63,7 +65,8 @@ Result<texture::Appearance> appearanceFromName(const std::string& name) {
     for (texture::Appearance a : texture::kAppearances)
         if (texture::appearanceName(a) == name)
             return a;
-    return fail(ErrorCode::InvalidInput, "--tissue '" + name + "': expected endometrium, myoma or polyp");
+    return fail(ErrorCode::InvalidInput,
+                "--tissue '" + name + "': expected endometrium, myoma, polyp or cervical-canal");
 }
 
 Result<ImageU8> loadExemplar(const SynthOptions& o) {
@@ -151,7 +154,9 @@ int runBake(const BakeOptions& o) {
     params.labels.appearanceLabel = o.label;
     params.labels.myomaValues = o.myoma;
     params.labels.polypValues = o.polyp;
-    params.exemplarFiles = {o.exemplarEndometrium, o.exemplarMyoma, o.exemplarPolyp};
+    params.labels.canalLabel = o.canalLabel;
+    params.labels.canalValues = o.canal;
+    params.exemplarFiles = {o.exemplarEndometrium, o.exemplarMyoma, o.exemplarPolyp, o.exemplarCanal};
     auto result = texture::bakeAppearance(*surface, params);
     if (!result.ok())
         return reportError("texture bake", result.error());
@@ -184,7 +189,7 @@ int runBake(const BakeOptions& o) {
     std::cout << "wrote " << o.outDir << " (albedo, normal, roughness " << o.size << "^2; surface.vtp, surface.obj)\n"
               << "surface     " << surface->points.size() << " vertices, " << surface->triangles.size() << " faces ("
               << s.facesPerClass[0] << " endometrium, " << s.facesPerClass[1] << " myoma, " << s.facesPerClass[2]
-              << " polyp)\n"
+              << " polyp, " << s.facesPerClass[3] << " cervical canal)\n"
               << "atlas       " << s.atlas.charts << " charts, L2 stretch " << s.atlas.l2Stretch << ", max "
               << s.atlas.maxStretch << ", " << s.atlas.texelsPerMm << " texels/mm, fill " << s.atlas.fill
               << ", padding " << s.atlas.padding << '\n'
@@ -274,7 +279,8 @@ void addTextureCommand(CLI::App& app, int& exitCode) {
     auto synth = std::make_shared<SynthOptions>();
     auto* s = texture->add_subcommand("synth", "Synthesize a tileable texture from an exemplar image");
     auto* ex = s->add_option("--exemplar", synth->exemplar, "exemplar image (PNG, JPEG, EXR; sides 16..4096)");
-    s->add_option("--tissue", synth->tissue, "procedural default exemplar instead: endometrium, myoma, polyp")
+    s->add_option("--tissue", synth->tissue,
+                  "procedural default exemplar instead: endometrium, myoma, polyp, cervical-canal")
         ->excludes(ex);
     s->add_option("-o,--output", synth->output, "output image (.png .jpg .exr .tif)")->required();
     s->add_option("--size", synth->size, "output side in pixels (16..8192)")->capture_default_str();
@@ -295,9 +301,13 @@ void addTextureCommand(CLI::App& app, int& exitCode) {
     b->add_option("--label", bake->label, "face label naming the tissue of each face")->capture_default_str();
     b->add_option("--myoma", bake->myoma, "values of --label that are myoma (e.g. --myoma 1 2)");
     b->add_option("--polyp", bake->polyp, "values of --label that are polyp");
+    b->add_option("--canal-label", bake->canalLabel, "face label saying which faces line the cervical canal")
+        ->capture_default_str();
+    b->add_option("--canal", bake->canal, "values of --canal-label that are the cervical canal (e.g. --canal 3)");
     b->add_option("--exemplar-endometrium", bake->exemplarEndometrium, "exemplar image for the endometrium");
     b->add_option("--exemplar-myoma", bake->exemplarMyoma, "exemplar image for myomas");
     b->add_option("--exemplar-polyp", bake->exemplarPolyp, "exemplar image for polyps");
+    b->add_option("--exemplar-canal", bake->exemplarCanal, "exemplar image for the cervical canal");
     b->add_flag("--no-vessels", bake->noVessels, "do not grow vessels");
     b->add_option("--endometrium", bake->endometrium, "the endometrium's look: the cycle phase or atrophic")
         ->check(CLI::IsMember({"proliferative", "secretory", "menstrual", "atrophic"}))
@@ -315,7 +325,8 @@ void addTextureCommand(CLI::App& app, int& exitCode) {
     q->callback([quality, &exitCode] { exitCode = runQuality(*quality); });
 
     auto exemplars = std::make_shared<ExemplarOptions>();
-    auto* e = texture->add_subcommand("exemplars", "Write the procedural default exemplars (endometrium, myoma, polyp; "
+    auto* e = texture->add_subcommand("exemplars", "Write the procedural default exemplars (endometrium, myoma, polyp, "
+                                                   "cervical canal; "
                                                    "the endometrium's secretory, menstrual and atrophic looks)");
     e->add_option("-o,--output", exemplars->outDir, "output folder")->required();
     e->add_option("--size", exemplars->size, "side in pixels (32..4096)")->capture_default_str();

@@ -16,7 +16,8 @@
 // 3 mm to 15 mm ahead, 0.5 mm to 6 mm wide, as a steady bleed leaves them (9 over its 4.5 s of mixing).
 //   bench_render SCENE_DIR --still FRACTION ROLL_DEG --png OUT.png [--sizes WxH] [--full | --light]
 // --still draws one picture of the surface at rest in clear saline: the 30 degree optic's tip FRACTION of the way
-// from the internal os to the fundus, aimed about the pivot, rolled by ROLL_DEG (the docs' picture), with the detail
+// from the internal os to the fundus (negative: that share of the way down the cervical canal from the internal
+// os), aimed about the pivot, rolled by ROLL_DEG (the docs' picture), with the detail
 // the view picks for the GL renderer, or the full or the light one, once the camera's exposure has settled on it.
 //   bench_render SCENE_DIR --exploration [--sizes WxH] [--fps F] [--png PREFIX] [--trace]
 // --exploration plays the built-in exploration (sim::explorationScript, 60 s) on the world and draws it F times a
@@ -202,7 +203,10 @@ int still(const hs::scene::Scene& scene, const hs::scene::ScopeLandmarks& landma
     hs::simrender::EndoscopicView view(renderer, look);
     view.setSurface(scene.surface);
     hs::sim::ScopeConfig config;
-    const hs::Vec3 tip = landmarks.internalOsMm + (landmarks.fundusMm - landmarks.internalOsMm) * pose[0];
+    // A negative fraction puts the tip that share of the way down the cervical canal, towards the external os.
+    const hs::Vec3 tip = pose[0] >= 0.0
+                             ? landmarks.internalOsMm + (landmarks.fundusMm - landmarks.internalOsMm) * pose[0]
+                             : landmarks.internalOsMm + (landmarks.externalOsMm - landmarks.internalOsMm) * -pose[0];
     hs::sim::WorldState state;
     state.scope = hs::sim::scopePose(frame, config, hs::sim::sampleAiming(frame, tip, pose[1]));
     state.fluid.pressureKpa = 10.0;

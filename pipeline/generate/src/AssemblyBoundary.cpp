@@ -6,6 +6,7 @@
 #include "hs/clinical/Tissue.h"
 #include "hs/core/LabelTransfer.h"
 #include "hs/core/Subdivision.h"
+#include "hs/scene/ScopePassage.h"
 
 #include <algorithm>
 #include <map>
@@ -116,6 +117,30 @@ std::vector<texture::DarkSpot> ostiumDarkSpots(const std::vector<OstiumOpening>&
     for (const auto& o : ostia)
         spots.push_back({o.centreMm, 1.5 * kOstiumRadiusMm, 0.85});
     return spots;
+}
+
+std::optional<texture::CanalFrame> canalFrame(const SurfaceMesh& boundary) {
+    const std::vector<std::int32_t> canal =
+        facesWith(boundary, clinical::kSurfaceTissueLabel, detail::kTissueCervicalCanal);
+    const std::vector<std::int32_t> ostia = facesWith(boundary, clinical::kSurfaceTissueLabel, kTissueOstium);
+    if (canal.empty() || ostia.empty())
+        return std::nullopt;
+    const auto ends = scene::findScopeLandmarks(boundary, canal, ostia);
+    if (!ends || distance(ends->externalOsMm, ends->internalOsMm) < 1.0)
+        return std::nullopt;
+    texture::CanalFrame frame;
+    frame.externalOsMm = ends->externalOsMm;
+    frame.internalOsMm = ends->internalOsMm;
+    frame.anterior = Vec3{0.0, 1.0, 0.0};
+    const Vec3 axis = normalized(frame.internalOsMm - frame.externalOsMm);
+    for (const std::int32_t f : canal)
+        for (const std::int32_t v : boundary.triangles[static_cast<std::size_t>(f)]) {
+            const Vec3 q = boundary.points[static_cast<std::size_t>(v)] - frame.externalOsMm;
+            frame.radiusMm = std::max(frame.radiusMm, norm(q - axis * dot(q, axis)));
+        }
+    if (norm(frame.anterior - axis * dot(frame.anterior, axis)) < 1e-3 || frame.radiusMm <= 0.0)
+        return std::nullopt;
+    return frame;
 }
 
 texture::CloseUpParams closeUpParamsFor(const SurfaceMesh& boundary, const std::vector<OstiumOpening>& ostia) {

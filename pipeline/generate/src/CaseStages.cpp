@@ -1,5 +1,6 @@
 #include "hs/generate/CaseStages.h"
 
+#include "hs/clinical/Tissue.h"
 #include "hs/core/Resources.h"
 #include "hs/generate/Seeds.h"
 
@@ -127,6 +128,10 @@ texture::BakeParams bakeParamsFor(const scene::CaseSpec& spec, std::optional<int
     p.labels.appearanceLabel = kAppearanceLabel;
     p.labels.myomaValues = {1};
     p.labels.polypValues = {2};
+    p.labels.canalLabel = clinical::kSurfaceTissueLabel;
+    // The ectocervix's rim looks like the canal it leads into (pale pink), not like the cavity's endometrium.
+    p.labels.canalValues = {clinical::labelValue(clinical::SurfaceTissue::CervicalCanal),
+                            clinical::labelValue(clinical::SurfaceTissue::Ectocervix)};
     p.exemplarFiles[static_cast<std::size_t>(texture::Appearance::Endometrium)] =
         spec.texture.exemplars.endometrium.value_or("");
     p.exemplarFiles[static_cast<std::size_t>(texture::Appearance::Myoma)] = spec.texture.exemplars.myoma.value_or("");

@@ -85,6 +85,7 @@ Status runTexture(Generated& g, const GenerateParams& params, Progress& progress
     const auto ostia = ostiumOpenings(boundary);
     texture::BakeParams bake = bakeParamsFor(g.spec, params.threads);
     bake.darkSpots = ostiumDarkSpots(ostia);
+    bake.canal = canalFrame(boundary);
     auto baked = texture::bakeAppearance(boundary, bake, progress);
     if (!baked)
         return baked.failure();

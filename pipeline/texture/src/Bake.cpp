@@ -29,6 +29,20 @@ Status checkParams(const BakeParams& p) {
         return fail(ErrorCode::InvalidInput, "blendMm " + std::to_string(p.blendMm) + " outside 0..50 mm");
     if (!(p.bumpMm >= 0.0 && p.bumpMm <= 5.0))
         return fail(ErrorCode::InvalidInput, "bumpMm " + std::to_string(p.bumpMm) + " outside 0..5 mm");
+    if (p.canal) {
+        const CanalFrame& c = *p.canal;
+        const double length = distance(c.externalOsMm, c.internalOsMm);
+        const Vec3 axis = (c.internalOsMm - c.externalOsMm) / std::max(length, 1e-12);
+        const double across = norm(c.anterior - axis * dot(c.anterior, axis));
+        if (!(length >= 1.0 && length <= 200.0))
+            return fail(ErrorCode::InvalidInput, "canal: the external and internal os lie " + std::to_string(length) +
+                                                     " mm apart, outside 1..200 mm");
+        if (!(across > 1e-3 * std::max(1.0, norm(c.anterior))))
+            return fail(ErrorCode::InvalidInput, "canal: the anterior direction runs along the canal's axis");
+        if (!(c.radiusMm > 0.0 && c.radiusMm <= 50.0))
+            return fail(ErrorCode::InvalidInput,
+                        "canal: radiusMm " + std::to_string(c.radiusMm) + " outside 0..50 mm (above 0)");
+    }
     return {};
 }
 
@@ -55,17 +69,22 @@ Result<ImageU8> readExemplarFile(const std::string& path) {
 
 std::vector<Appearance> classifyFaces(const SurfaceMesh& surface, const AppearanceLabels& labels) {
     std::vector<Appearance> out(surface.triangles.size(), Appearance::Endometrium);
-    const auto it = surface.faceLabels.find(labels.appearanceLabel);
-    if (it == surface.faceLabels.end() || it->second.size() != surface.triangles.size())
-        return out;
+    const auto labelOf = [&](const std::string& name) -> const std::vector<std::int32_t>* {
+        const auto it = surface.faceLabels.find(name);
+        return it == surface.faceLabels.end() || it->second.size() != surface.triangles.size() ? nullptr : &it->second;
+    };
     const auto contains = [](const std::vector<std::int32_t>& list, std::int32_t v) {
         return std::find(list.begin(), list.end(), v) != list.end();
     };
+    const std::vector<std::int32_t>* canal = labels.canalValues.empty() ? nullptr : labelOf(labels.canalLabel);
+    const std::vector<std::int32_t>* kind = labelOf(labels.appearanceLabel);
     for (std::size_t f = 0; f < out.size(); ++f) {
-        if (contains(labels.polypValues, it->second[f]))
+        if (kind && contains(labels.polypValues, (*kind)[f]))
             out[f] = Appearance::Polyp;
-        else if (contains(labels.myomaValues, it->second[f]))
+        else if (kind && contains(labels.myomaValues, (*kind)[f]))
             out[f] = Appearance::Myoma;
+        else if (canal && contains(labels.canalValues, (*canal)[f]))
+            out[f] = Appearance::CervicalCanal;
     }
     return out;
 }

@@ -1,7 +1,9 @@
 // Procedural default exemplars. Colours are chosen after published hysteroscopic descriptions: the normal
 // endometrium is pink to red with punctate glandular openings; a submucous myoma is paler, whitish, with
 // larger, regular surface vessels; a polyp is smooth, glossy, pink (e.g. Bettocchi et al., "Operative office
-// hysteroscopy", 2004; van Dongen et al., "Diagnostic hysteroscopy and saline infusion sonography", 2008).
+// hysteroscopy", 2004; van Dongen et al., "Diagnostic hysteroscopy and saline infusion sonography", 2008); the
+// endocervix is whitish pink, thrown into papillae between clefts, with fine branched vessels (Mhaskar, "Hysteroscopy",
+// chapter 1; docs/texture.md, "The cervical canal").
 #include "hs/texture/Exemplars.h"
 
 #include "hs/core/Rng.h"
@@ -252,6 +254,31 @@ ImageU8 polyp(int size, Rng& rng) {
     return canvas.toImage();
 }
 
+/// The endocervical mucosa: whitish pink, papillae crowded between narrow darker clefts (the folds themselves are the
+/// bake's relief, drawn from the canal's frame; the vessels are grown on the surface).
+ImageU8 endocervix(int size, Rng& rng) {
+    Canvas canvas(size);
+    const Fbm low(3, 3, rng), clefts(std::max(1, size / 16), 2, rng), grain(size / 8, 2, rng);
+    const Rgb rose{0.84, 0.46, 0.46}, white{0.94, 0.74, 0.72}, cleft{0.64, 0.26, 0.29};
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const double u = (x + 0.5) / size, v = (y + 0.5) / size;
+            const double t = std::clamp(0.45 + 0.35 * low(u, v) + 0.05 * grain(u, v), 0.0, 1.0);
+            Rgb c = mix(rose, white, t);
+            // Clefts: the noise's zero crossings, a network of narrow furrows between the papillae.
+            const double furrow = std::clamp(1.0 - std::abs(clefts(u, v)) * 6.0, 0.0, 1.0);
+            c = mix(c, cleft, 0.5 * furrow * furrow);
+            canvas.at(x, y) = c;
+        }
+    // Papillae: small pale rounded tips, densely packed (about one per 6 x 6 pixels at 256).
+    const int papillae = size * size / 36;
+    for (int i = 0; i < papillae; ++i)
+        canvas.disc(rng.uniform(0, size), rng.uniform(0, size), rng.uniform(1.0, 2.0) * size / 256.0, white,
+                    rng.uniform(0.2, 0.45));
+    canvas.blur3();
+    return canvas.toImage();
+}
+
 } // namespace
 
 std::string appearanceName(Appearance appearance) {
@@ -262,6 +289,8 @@ std::string appearanceName(Appearance appearance) {
         return "myoma";
     case Appearance::Polyp:
         return "polyp";
+    case Appearance::CervicalCanal:
+        return "cervical-canal";
     }
     return "unknown";
 }
@@ -305,6 +334,8 @@ Result<ImageU8> makeExemplar(Appearance appearance, int size, std::uint64_t seed
         return myoma(size, rng);
     case Appearance::Polyp:
         return polyp(size, rng);
+    case Appearance::CervicalCanal:
+        return endocervix(size, rng);
     }
     return fail(ErrorCode::InvalidInput, "unknown appearance class");
 }

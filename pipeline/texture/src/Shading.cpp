@@ -2,9 +2,11 @@
 #include "BakeSteps.h"
 
 #include "hs/core/Parallel.h"
+#include "hs/core/Units.h"
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace hs::texture::detail {
 
@@ -15,7 +17,93 @@ struct ClassLook {
     float roughness; ///< 0..1
     float bump;      ///< factor on BakeParams::bumpMm
 };
-constexpr std::array<ClassLook, kAppearanceCount> kLooks{{{0.42f, 1.0f}, {0.62f, 0.45f}, {0.22f, 0.2f}}};
+/// The endocervix's mucus glistens like the polyp's surface, rougher than it (papillae and clefts).
+constexpr std::array<ClassLook, kAppearanceCount> kLooks{{{0.42f, 1.0f}, {0.62f, 0.45f}, {0.22f, 0.2f}, {0.30f, 0.8f}}};
+
+/// The canal's folds (docs/texture.md, "The cervical canal"): a longitudinal ridge on the anterior and on the
+/// posterior wall with oblique palmate folds branching upwards and outwards from it, the posterior ones between the
+/// anterior ones rather than opposite them (Gray 1918); the folds die out on the lateral walls and towards the
+/// isthmus, whose mucosa is smooth (Mhaskar). Heights and spacing are drawn to read at the scope's distance: about
+/// ten folds a side over the canal, their slopes gentle enough that the lamp at 2 mm does not turn them black.
+constexpr double kRidgeHalfWidthMm = 0.7;   ///< the longitudinal ridge's 1/e half-width
+constexpr double kRidgeHeightMm = 0.1;      ///< the ridge's height
+constexpr double kFoldSpacingMm = 2.6;      ///< between neighbouring palmate folds along the canal
+constexpr double kFoldRisePerMm = 0.8;      ///< a fold climbs this many mm along the canal per mm away from the ridge
+constexpr double kFoldHeightMm = 0.05;      ///< a palmate fold's height
+constexpr double kFoldFullRad = 0.8;        ///< folds at full height up to this angle from their ridge ...
+constexpr double kFoldEndRad = 1.35;        ///< ... and gone at this one (the lateral walls are smooth)
+constexpr double kSmoothIsthmusShare = 0.2; ///< the top fifth of the canal smooths out towards the internal os
+constexpr double kOsRingHalfWidthMm = 0.9;  ///< the internal os's ring, its 1/e half-width along the canal
+constexpr double kOsRingHeightMm = 0.08;    ///< the ring's fold height
+constexpr float kOsRingPallor = 0.35f;      ///< the ring's blend towards the pale fibrous colour at its middle
+constexpr float kFoldPallor = 0.25f;        ///< a fold's crest blends this far towards the pale colour ...
+constexpr float kCleftShade = 0.18f;        ///< ... and its clefts darken by this share
+constexpr std::array<float, 3> kPaleMucosa{0.94f, 0.80f, 0.78f};
+
+double smoothstep(double edge0, double edge1, double x) {
+    const double t = std::clamp((x - edge0) / (edge1 - edge0), 0.0, 1.0);
+    return t * t * (3.0 - 2.0 * t);
+}
+
+/// The canal's frame in the form the texels need it.
+struct CanalAxes {
+    Vec3 origin, axis, anterior, lateral;
+    double lengthMm = 0.0, radiusMm = 0.0;
+};
+
+CanalAxes canalAxes(const CanalFrame& c) {
+    CanalAxes a;
+    a.origin = c.externalOsMm;
+    a.lengthMm = distance(c.externalOsMm, c.internalOsMm);
+    a.axis = normalized(c.internalOsMm - c.externalOsMm);
+    a.anterior = normalized(c.anterior - a.axis * dot(c.anterior, a.axis));
+    a.lateral = cross(a.axis, a.anterior);
+    a.radiusMm = c.radiusMm;
+    return a;
+}
+
+/// What the canal's relief does at p: its height (mm), how much of it is folds (0..1) and where the crests are
+/// (0 cleft .. 1 crest), and the internal os's ring (0..1); how close p lies to the canal's lumen (1 within its
+/// width + 1 mm of the axis, 0 beyond + 2 mm) and the canal's share of the mucosa there by the distance along the
+/// axis (1 below the internal os, 0 above it, over 1.5 mm either side).
+struct CanalRelief {
+    double foldHeightMm = 0.0, ringHeightMm = 0.0;
+    float folds = 0.0f, crest = 0.0f, ring = 0.0f;
+    float lumen = 0.0f, canalShare = 0.0f;
+};
+
+CanalRelief canalRelief(const CanalAxes& a, const Vec3& p) {
+    CanalRelief r;
+    const Vec3 q = p - a.origin;
+    const double s = dot(q, a.axis);
+    const double x = dot(q, a.lateral), y = dot(q, a.anterior);
+    const double rho = std::sqrt(x * x + y * y);
+    if (rho > a.radiusMm + 2.0)
+        return r; // the serosa, the cavity's sides: not the canal's lumen
+    r.lumen = static_cast<float>(1.0 - smoothstep(a.radiusMm + 1.0, a.radiusMm + 2.0, rho));
+    r.canalShare = static_cast<float>(1.0 - smoothstep(a.lengthMm - 1.5, a.lengthMm + 1.5, s));
+    const double ring = std::exp(-((s - a.lengthMm) / kOsRingHalfWidthMm) * ((s - a.lengthMm) / kOsRingHalfWidthMm));
+    r.ring = static_cast<float>(ring);
+    r.ringHeightMm = kOsRingHeightMm * ring;
+    if (s <= 0.0 || s >= a.lengthMm)
+        return r;
+    const double theta = std::atan2(x, y); // 0 anterior, +-pi posterior
+    const bool anteriorWall = std::abs(theta) < 0.5 * units::kPi;
+    const double fromRidge = anteriorWall ? std::abs(theta) : units::kPi - std::abs(theta);
+    const double arcMm = fromRidge * std::max(rho, 0.5);
+    const double along =
+        smoothstep(0.0, 1.5, s) * (1.0 - smoothstep((1.0 - kSmoothIsthmusShare) * a.lengthMm, a.lengthMm, s));
+    const double ridge = std::exp(-(arcMm / kRidgeHalfWidthMm) * (arcMm / kRidgeHalfWidthMm));
+    const double phase = (s - kFoldRisePerMm * arcMm) / kFoldSpacingMm + (anteriorWall ? 0.0 : 0.5);
+    const double wave = 0.5 + 0.5 * std::cos(2.0 * units::kPi * (phase - std::floor(phase)));
+    const double fold = wave * wave * (1.0 - smoothstep(kFoldFullRad, kFoldEndRad, fromRidge));
+    const double reach = std::max(ridge, 1.0 - smoothstep(kFoldFullRad, kFoldEndRad, fromRidge));
+    const double height = kRidgeHeightMm * ridge + kFoldHeightMm * fold;
+    r.foldHeightMm = along * height;
+    r.folds = static_cast<float>(along * reach);
+    r.crest = static_cast<float>(std::clamp(height / kRidgeHeightMm, 0.0, 1.0));
+    return r;
+}
 
 /// Triplanar sample of a tile at p with normal n (Geiss 2007): three planar projections blended by |n|^4.
 void triplanar(const Tile& tile, const Vec3& p, const Vec3& n, double tileMm, float* out) {
@@ -69,7 +157,9 @@ std::vector<Weights3> vertexWeights(const SurfaceMesh& mesh, const std::vector<A
         edgeSum += distance(mesh.points[static_cast<std::size_t>(t[0])], mesh.points[static_cast<std::size_t>(t[1])]);
     }
     for (auto& x : w) {
-        const float s = x[0] + x[1] + x[2];
+        float s = 0.0f;
+        for (const float c : x)
+            s += c;
         for (auto& c : x)
             c = s > 0 ? c / s : 0.0f;
         if (s <= 0)
@@ -117,7 +207,12 @@ Shading shade(const SurfaceMesh& mesh, const TexelMap& map, const std::vector<Ve
     out.height.assign(static_cast<std::size_t>(n) * n, 0.0f);
     out.covered.assign(static_cast<std::size_t>(n) * n, 0);
     const double cellHalf = vessels.query;
-    std::array<float, kAppearanceCount> relief{1.0f, 1.0f, 1.0f};
+    const std::optional<CanalAxes> canal =
+        params.canal ? std::optional<CanalAxes>(canalAxes(*params.canal)) : std::nullopt;
+    constexpr auto kCanal = static_cast<std::size_t>(Appearance::CervicalCanal);
+    constexpr auto kEndometrium = static_cast<std::size_t>(Appearance::Endometrium);
+    std::array<float, kAppearanceCount> relief{};
+    relief.fill(1.0f);
     relief[static_cast<std::size_t>(Appearance::Endometrium)] =
         static_cast<float>(endometrialSurface(params.endometrium).relief);
     parallelChunks(static_cast<std::size_t>(n), evenChunk(static_cast<std::size_t>(n), threads), threads,
@@ -142,6 +237,19 @@ Shading shade(const SurfaceMesh& mesh, const TexelMap& map, const std::vector<Ve
                                        w[c] += weights[v][c] * b[k];
                                }
                                nrm = normalized(nrm);
+                               // Near the canal, where its faces meet the cavity's, the classes split by the place
+                               // along the canal rather than by the faces' weights (which would draw the faces'
+                               // outline across the wall).
+                               const float lumen = w[kCanal] + w[kEndometrium];
+                               std::optional<CanalRelief> cr;
+                               if (canal && lumen > 1e-3f) {
+                                   cr = canalRelief(*canal, p);
+                                   if (tiles[kCanal].size > 0) {
+                                       const float wc = w[kCanal] + (lumen * cr->canalShare - w[kCanal]) * cr->lumen;
+                                       w[kCanal] = wc;
+                                       w[kEndometrium] = lumen - wc;
+                                   }
+                               }
                                float rgb[3] = {0, 0, 0};
                                float rough = 0.0f, bump = 0.0f;
                                for (std::size_t c = 0; c < kAppearanceCount; ++c) {
@@ -154,6 +262,16 @@ Shading shade(const SurfaceMesh& mesh, const TexelMap& map, const std::vector<Ve
                                        rgb[k] += w[c] * s[k];
                                    rough += w[c] * (kLooks[c].roughness + 0.25f * (tiles[c].meanLum - lum));
                                    bump += w[c] * kLooks[c].bump * relief[c] * (lum - tiles[c].meanLum);
+                               }
+                               double canalHeightMm = 0.0;
+                               if (cr) {
+                                   const float folds = w[kCanal] * cr->folds, ring = lumen * cr->ring;
+                                   for (int k = 0; k < 3; ++k) {
+                                       rgb[k] *= 1.0f - kCleftShade * folds * (1.0f - cr->crest);
+                                       rgb[k] += (kPaleMucosa[k] - rgb[k]) *
+                                                 std::min(1.0f, kFoldPallor * folds * cr->crest + kOsRingPallor * ring);
+                                   }
+                                   canalHeightMm = w[kCanal] * cr->foldHeightMm + lumen * cr->ringHeightMm;
                                }
                                const VesselSample v = sampleVessels(vessels, p, texelMm, cellHalf);
                                if (v.cover > 0.0f) {
@@ -177,7 +295,7 @@ Shading shade(const SurfaceMesh& mesh, const TexelMap& map, const std::vector<Ve
                                        static_cast<std::uint8_t>(std::lround(std::clamp(rgb[k], 0.0f, 1.0f) * 255.0f));
                                out.roughness.at(x, y) =
                                    static_cast<std::uint8_t>(std::lround(std::clamp(rough, 0.02f, 1.0f) * 255.0f));
-                               out.height[i] = static_cast<float>(params.bumpMm) * bump + v.height;
+                               out.height[i] = static_cast<float>(params.bumpMm * bump + canalHeightMm) + v.height;
                                out.covered[i] = 1;
                            }
                    });

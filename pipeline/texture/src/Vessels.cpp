@@ -126,7 +126,7 @@ std::vector<Vec3> roots(const SurfaceMesh& mesh, const ClassSurface& cs, Appeara
         const int count = cls == Appearance::Polyp
                               ? 1
                               : std::max(1, static_cast<int>(std::lround(cs.componentArea[c] * cp.rootsPerMm2)));
-        if (cls != Appearance::Endometrium && !border.empty()) {
+        if ((cls == Appearance::Polyp || cls == Appearance::Myoma) && !border.empty()) {
             if (cls == Appearance::Polyp) {
                 // The stalk: the border vertex nearest the centre of the border ring.
                 Vec3 centre;
@@ -247,6 +247,8 @@ std::array<VesselClassParams, kAppearanceCount> VesselParams::defaultVesselClass
     p[1] = {0.12, 0.004, 0.7, 5.0, 1.2, 0.045, 0.45, 0.55, 0.85};
     // Polyp: one central vessel from the stalk with thin branches.
     p[2] = {0.10, 0.0, 0.6, 6.0, 1.2, 0.035, 0.30, 0.15, 0.75};
+    // Cervical canal: fine branched vessels over the papillae (Mhaskar), sparser and fainter than the endometrium's.
+    p[3] = {0.25, 0.004, 0.5, 2.5, 0.7, 0.022, 0.10, 0.25, 0.35};
     return p;
 }
 

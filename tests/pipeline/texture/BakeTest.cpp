@@ -36,6 +36,78 @@ bool coveredAt(const ImageU8& coverage, double u, double v) {
     return coverage.at(x, y) != 0;
 }
 
+/// A cervical canal and the start of the cavity as one open tube along +z, seen from inside: the canal (face label
+/// "tissue" 3) from the external os at z = 0 to the internal os at z = kCanalMm, the cavity (2) above it; +y
+/// anterior. Angle theta runs from +y (anterior) towards +x.
+struct CanalTube {
+    static constexpr double kRadiusMm = 2.5, kCanalMm = 24.0, kCavityMm = 10.0, kRingMm = 0.5;
+    static constexpr int kAround = 32;
+    SurfaceMesh mesh;
+    int rings = 0;
+
+    CanalTube() {
+        rings = static_cast<int>(std::lround((kCanalMm + kCavityMm) / kRingMm)) + 1;
+        for (int i = 0; i < rings; ++i)
+            for (int j = 0; j < kAround; ++j) {
+                const double theta = 2.0 * M_PI * j / kAround;
+                mesh.points.push_back({kRadiusMm * std::sin(theta), kRadiusMm * std::cos(theta), i * kRingMm});
+            }
+        std::vector<std::int32_t> tissue;
+        for (int i = 0; i + 1 < rings; ++i)
+            for (int j = 0; j < kAround; ++j) {
+                const std::int32_t p00 = at(i, j), p01 = at(i, j + 1), p10 = at(i + 1, j), p11 = at(i + 1, j + 1);
+                mesh.triangles.push_back({p00, p11, p01}); // normals into the lumen
+                mesh.triangles.push_back({p00, p10, p11});
+                const std::int32_t t = (i + 0.5) * kRingMm < kCanalMm ? 3 : 2;
+                tissue.push_back(t);
+                tissue.push_back(t);
+            }
+        mesh.faceLabels["tissue"] = tissue;
+    }
+    std::int32_t at(int i, int j) const { return i * kAround + (j % kAround + kAround) % kAround; }
+
+    CanalFrame frame() const {
+        CanalFrame f;
+        f.externalOsMm = {0.0, 0.0, 0.0};
+        f.internalOsMm = {0.0, 0.0, kCanalMm};
+        f.anterior = {0.0, 1.0, 0.0};
+        f.radiusMm = kRadiusMm;
+        return f;
+    }
+
+    /// The albedo's luma (0..1) at height z and angle theta (radians from anterior) on the tube.
+    double lumaAt(const BakeResult& bake, double z, double theta) const {
+        const double fi = z / kRingMm, fj = theta / (2.0 * M_PI) * kAround;
+        const int i = std::clamp(static_cast<int>(std::floor(fi)), 0, rings - 2);
+        const int j = static_cast<int>(std::floor(fj));
+        const double t = fi - i, u = fj - j;
+        const std::size_t quad = static_cast<std::size_t>(i * kAround + (j % kAround + kAround) % kAround);
+        // Face 2q is (p00, p11, p01), u >= t; face 2q+1 is (p00, p10, p11).
+        const std::size_t f = u >= t ? 2 * quad : 2 * quad + 1;
+        const std::array<double, 3> w =
+            u >= t ? std::array<double, 3>{1.0 - u, t, u - t} : std::array<double, 3>{1.0 - t, t - u, u};
+        double uu = 0.0, vv = 0.0;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const UvVertex& q = bake.atlas.uvVertices[static_cast<std::size_t>(bake.atlas.uvTriangles[f][k])];
+            uu += w[k] * q.u;
+            vv += w[k] * q.v;
+        }
+        const int x = std::clamp(static_cast<int>(uu * bake.albedo.width()), 0, bake.albedo.width() - 1);
+        const int y = std::clamp(static_cast<int>((1.0 - vv) * bake.albedo.height()), 0, bake.albedo.height() - 1);
+        return (0.2126 * bake.albedo.at(x, y, 0) + 0.7152 * bake.albedo.at(x, y, 1) +
+                0.0722 * bake.albedo.at(x, y, 2)) /
+               255.0;
+    }
+};
+
+BakeParams canalBake() {
+    BakeParams p = smallBake(5);
+    p.size = 1024;
+    p.vessels = false; // the vessels would cross the folds the test reads
+    p.labels.canalValues = {3};
+    return p;
+}
+
 } // namespace
 
 TEST(TextureBake, LeavesNoPartOfTheTetMeshBoundaryUnmapped) {
@@ -147,4 +219,89 @@ TEST(TextureVessels, FollowMurraysLawAndAreLargerOverMyomas) {
     EXPECT_EQ(net->roots[2], 1); // one central vessel per polyp
     EXPECT_GT(maxR[1], maxR[0]);
     EXPECT_GT(net->nodes[0], 100);
+}
+
+TEST(TextureBake, TheCanalHasItsOwnLookOnlyWhereTheLabelSaysSo) {
+    const CanalTube tube;
+    const auto canal = classifyFaces(tube.mesh, canalBake().labels);
+    const auto plain = classifyFaces(tube.mesh, smallBake().labels); // no canal values: all endometrium
+    for (std::size_t f = 0; f < canal.size(); ++f) {
+        const bool isCanal = tube.mesh.faceLabels.at("tissue")[f] == 3;
+        ASSERT_EQ(canal[f], isCanal ? Appearance::CervicalCanal : Appearance::Endometrium) << "face " << f;
+        ASSERT_EQ(plain[f], Appearance::Endometrium) << "face " << f;
+    }
+    // A pathology's label wins over the canal's (a polyp hanging into the canal keeps its look).
+    SurfaceMesh withPolyp = tube.mesh;
+    withPolyp.faceLabels["region"] = std::vector<std::int32_t>(withPolyp.triangles.size(), 0);
+    withPolyp.faceLabels["region"][10] = 2;
+    EXPECT_EQ(classifyFaces(withPolyp, canalBake().labels)[10], Appearance::Polyp);
+}
+
+TEST(TextureBake, TheCanalShowsThePlicaePalmataeAndTheInternalOsItsRing) {
+    // docs/texture.md, "The cervical canal": an anterior and a posterior longitudinal ridge with oblique folds
+    // branching upwards from each, the posterior ones between the anterior ones (Gray 1918); smooth lateral walls; a
+    // paler ring at the internal os (Mhaskar). The folds' crests are paler than their clefts, so the albedo shows them
+    // on the light detail too (no normal map there).
+    const CanalTube tube;
+    BakeParams p = canalBake();
+    p.canal = tube.frame();
+    const auto bake = bakeAppearance(tube.mesh, p);
+    ASSERT_TRUE(bake.ok()) << bake.error().message();
+    BakeParams flat = canalBake(); // the same canal look without the frame: no folds, no ring
+    const auto plain = bakeAppearance(tube.mesh, flat);
+    ASSERT_TRUE(plain.ok());
+
+    constexpr double kSpacingMm = 2.6, kRise = 0.8; // the folds as Shading.cpp draws them
+    // Along a line beside each ridge (1-1.5 mm of arc off it), the crests' places against the clefts' places (half a
+    // fold further), over the lower two thirds of the canal, on both sides of both ridges.
+    const auto contrast = [&](const BakeResult& b, bool anteriorWall, double phaseShift, double offMm = 0.0) {
+        double crests = 0.0, clefts = 0.0;
+        int n = 0;
+        for (double arcMm : {offMm + 1.0, offMm + 1.25, offMm + 1.5})
+            for (double side : {-1.0, 1.0})
+                for (int k = 1; k <= 6; ++k) {
+                    const double theta = (anteriorWall ? 0.0 : M_PI) + side * arcMm / CanalTube::kRadiusMm;
+                    const double crestZ = (k + phaseShift) * kSpacingMm + kRise * arcMm;
+                    crests += tube.lumaAt(b, crestZ, theta);
+                    clefts += tube.lumaAt(b, crestZ + 0.5 * kSpacingMm, theta);
+                    ++n;
+                }
+        return (crests - clefts) / n;
+    };
+    const double anterior = contrast(*bake, true, 0.0);
+    const double posteriorBetween = contrast(*bake, false, 0.5); // the posterior crests lie half a fold up
+    const double posteriorOpposite = contrast(*bake, false, 0.0);
+    const double none = contrast(*plain, true, 0.0);
+    // The lateral walls, a quarter turn from the ridges (1.57 rad, beyond the folds' 1.35): where the folds would
+    // continue, nothing.
+    const double lateral = contrast(*bake, true, 0.0, 0.5 * M_PI * CanalTube::kRadiusMm - 1.25);
+    // The ring: the luma around the internal os against the canal 4 mm below it and the cavity 5 mm above it.
+    const auto ringLuma = [&](const BakeResult& b, double z) {
+        double sum = 0.0;
+        for (int j = 0; j < 16; ++j)
+            sum += tube.lumaAt(b, z, 2.0 * M_PI * (j + 0.5) / 16);
+        return sum / 16;
+    };
+    const double os = ringLuma(*bake, CanalTube::kCanalMm), below = ringLuma(*bake, CanalTube::kCanalMm - 4.0),
+                 above = ringLuma(*bake, CanalTube::kCanalMm + 5.0);
+    const double osPlain = ringLuma(*plain, CanalTube::kCanalMm);
+    std::printf("crest - cleft luma: anterior %.4f, posterior between %.4f, posterior opposite %.4f, no frame %.4f, "
+                "lateral wall %.4f\n"
+                "ring luma %.3f (no frame %.3f), canal below %.3f, cavity above %.3f\n",
+                anterior, posteriorBetween, posteriorOpposite, none, lateral, os, osPlain, below, above);
+    // Crests paler than clefts, by more than the mucosa's own texture gives at the same places without the folds.
+    EXPECT_GT(anterior, 0.03);
+    EXPECT_GT(posteriorBetween, 0.03);
+    EXPECT_LT(posteriorOpposite, 0.0); // opposite the anterior crests, the posterior wall has its clefts
+    EXPECT_LT(std::abs(none), 0.5 * anterior);
+    EXPECT_LT(std::abs(lateral), 0.5 * anterior); // folds on the front and back walls, smooth lateral walls
+    EXPECT_GT(os, below + 0.03);
+    EXPECT_GT(os, above + 0.03);
+    EXPECT_GT(os, osPlain + 0.03);
+
+    // A frame that cannot be a canal is refused by name.
+    p.canal->internalOsMm = p.canal->externalOsMm;
+    const auto bad = bakeAppearance(tube.mesh, p);
+    ASSERT_FALSE(bad.ok());
+    EXPECT_NE(bad.error().detail.find("canal"), std::string::npos) << bad.error().detail;
 }

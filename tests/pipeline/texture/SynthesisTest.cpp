@@ -187,5 +187,20 @@ TEST(TextureExemplars, TheEndometriumFollowsTheCycleAndTheMenopause) {
     EXPECT_EQ(endometrialStateName(EndometrialState::Atrophic), "atrophic");
 }
 
+TEST(TextureExemplars, TheEndocervixIsWhitishPinkBesideTheEndometrium) {
+    // "The endocervical mucosa is whitish pink" (docs/texture.md, "The cervical canal"): paler and less saturated
+    // than the proliferative endometrium, still pink (red above green and blue).
+    const Look canal = lookOf(makeExemplar(Appearance::CervicalCanal, 256, 3).value());
+    const Look endometrium = lookOf(makeExemplar(Appearance::Endometrium, 256, 3).value());
+    std::printf("cervical canal luma %.3f  G/R %.3f  saturation %.3f\n", canal.luma, canal.greenPerRed,
+                canal.saturation);
+    EXPECT_GT(canal.luma, endometrium.luma + 0.05);
+    EXPECT_LT(canal.saturation, endometrium.saturation - 0.05);
+    EXPECT_LT(canal.greenPerRed, 0.9); // pink, not white
+    EXPECT_EQ(appearanceName(Appearance::CervicalCanal), "cervical-canal");
+    EXPECT_EQ(makeExemplar(Appearance::CervicalCanal, 64, 3).value().data(),
+              makeExemplar(Appearance::CervicalCanal, 64, 3, EndometrialState::Atrophic).value().data());
+}
+
 } // namespace
 } // namespace hs::texture

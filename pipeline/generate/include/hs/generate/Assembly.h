@@ -16,6 +16,7 @@
 #include "hs/scene/Scene.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -80,6 +81,10 @@ struct OstiumOpening {
 std::vector<OstiumOpening> ostiumOpenings(const SurfaceMesh& boundary);
 /// The albedo's dark spots over the openings (the funnel's inside, which the scope's light does not reach).
 std::vector<texture::DarkSpot> ostiumDarkSpots(const std::vector<OstiumOpening>& ostia);
+/// The cervical canal's frame for the bake's folds and the internal os's ring: the ora of the canal's faces
+/// (scene::findScopeLandmarks), the organ's anterior (+y, docs/anatomy.md) and the canal's largest distance from its
+/// axis. None when the boundary has no canal or no ostium faces to tell the ora apart.
+std::optional<texture::CanalFrame> canalFrame(const SurfaceMesh& boundary);
 
 /// The texture stage's close-up refinement of `boundary`: visualSurfaceLevels, the seen faces faired by Taubin
 /// smoothing within kMaxVisualFairingMm; a funnel (kOstiumRadiusMm, kOstiumDepthMm) at each of `ostia`.

@@ -12,6 +12,8 @@
 ///    else endometrium.
 ///  - `contactLabel` (default "contact"): a non-zero value marks a face at a pathology contact; its appearance is
 ///    blended half-and-half with the endometrium before smoothing.
+///  - `canalLabel` (default "tissue"): values listed in canalValues are the cervical canal (unless the appearance
+///    label makes the face a pathology).
 
 #include "hs/core/Image.h"
 #include "hs/core/Progress.h"
@@ -25,6 +27,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +38,18 @@ struct AppearanceLabels {
     std::vector<std::int32_t> myomaValues;  ///< values of appearanceLabel that are myoma
     std::vector<std::int32_t> polypValues;  ///< values of appearanceLabel that are polyp
     std::string contactLabel = "contact";   ///< face label marking contact faces (non-zero)
+    std::string canalLabel = "tissue";      ///< face label that says which faces line the cervical canal
+    std::vector<std::int32_t> canalValues;  ///< values of canalLabel that are the canal; empty: no canal
+};
+
+/// The cervical canal's frame, for the relief the bake draws on the canal's faces (docs/texture.md, "The cervical
+/// canal"): the anterior and posterior longitudinal ridges with the oblique palmate folds branching from them (the
+/// plicae palmatae, the arbor vitae), smoothing out towards the isthmus, and the internal os as a paler ring.
+struct CanalFrame {
+    Vec3 externalOsMm;   ///< centre of the external os
+    Vec3 internalOsMm;   ///< centre of the internal os
+    Vec3 anterior;       ///< towards the anterior wall (need not be perpendicular to the canal's axis)
+    double radiusMm = 0; ///< the canal's largest distance from its axis: the os's ring reaches this + 2 mm from it
 };
 
 /// A round spot whose albedo darkens towards its centre (an opening whose depth the light does not reach: the tubal
@@ -61,6 +76,7 @@ struct BakeParams {
     double bumpMm = 0.06;            ///< height of the mucosa bumps from the base texture's luminance, mm
     double normalStrength = 1.0;     ///< scale of the slopes in the normal map
     std::vector<DarkSpot> darkSpots; ///< applied to the albedo after the vessels
+    std::optional<CanalFrame> canal; ///< the canal's folds and the internal os's ring; none: the canal's look only
     std::uint64_t seed = 1;          ///< same seed, same maps
     int threads = 0;                 ///< 0: all cores; the maps do not depend on it
 };

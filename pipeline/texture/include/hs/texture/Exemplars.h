@@ -19,11 +19,15 @@ enum class Appearance : std::int32_t {
     Endometrium = 0, ///< healthy mucosa: pink-red, glandular openings, fine capillary network
     Myoma = 1,       ///< submucous myoma surface: paler, whitish, with larger tortuous vessels
     Polyp = 2,       ///< endometrial polyp: smooth, glossy, pink, a central vessel
+    /// endocervix: whitish pink, papillae between clefts, fine branched vessels; its folds (plicae palmatae) are the
+    /// bake's relief (BakeParams::canal)
+    CervicalCanal = 3,
 };
-inline constexpr std::array<Appearance, 3> kAppearances{Appearance::Endometrium, Appearance::Myoma, Appearance::Polyp};
-inline constexpr int kAppearanceCount = 3;
+inline constexpr std::array<Appearance, 4> kAppearances{Appearance::Endometrium, Appearance::Myoma, Appearance::Polyp,
+                                                        Appearance::CervicalCanal};
+inline constexpr int kAppearanceCount = 4;
 
-/// "endometrium", "myoma", "polyp".
+/// "endometrium", "myoma", "polyp", "cervical-canal".
 std::string appearanceName(Appearance appearance);
 
 /// The endometrium's look on the day of the hysteroscopy, after published hysteroscopic descriptions
@@ -48,8 +52,8 @@ struct EndometrialSurface {
 EndometrialSurface endometrialSurface(EndometrialState state);
 
 /// A procedural exemplar of `size` x `size` RGB pixels (32..4096), the same for the same seed. Without vessels on
-/// endometrium and polyp (vessels are grown on the surface); the myoma exemplar carries faint fibre streaks. The
-/// endometrium's follows `state` (the others do not depend on it); Proliferative is the look of earlier versions.
+/// endometrium, polyp and canal (vessels are grown on the surface); the myoma exemplar carries faint fibre streaks.
+/// The endometrium's follows `state` (the others do not depend on it); Proliferative is the look of earlier versions.
 Result<ImageU8> makeExemplar(Appearance appearance, int size = 256, std::uint64_t seed = 1,
                              EndometrialState state = EndometrialState::Proliferative);
 
