@@ -9,6 +9,7 @@
 // --rows keeps the full-detail rows with the maps (m), with the albedo (a), the light-detail rows (l);
 // --light-reduction R decimates the light detail's surface by R (EndoscopicLook::lightReduction).
 // --edge-magnification M sets the optic's barrel distortion in every mode (EndoscopicLook::edgeMagnification; 1: none).
+// --no-depth-of-field draws every mode without the optic's depth of field (EndoscopicLook::depthOfField).
 // --cut-face adds, for each row, the same row with a myoma's cut face filling the field 6 mm ahead of the lens, flat
 // (EndoscopicLook::cutPatternContrast 0) and under its solid texture (the default contrast): the worst case of the
 // cut surface's fragment shader, every pixel inside the optic's circle running it.
@@ -54,6 +55,8 @@ namespace {
 
 /// The optic's barrel distortion every view of this run draws with (--edge-magnification).
 double edgeMagnification = hs::simrender::EndoscopicLook{}.edgeMagnification;
+/// Whether the views of this run draw the optic's depth of field (--no-depth-of-field).
+bool depthOfField = hs::simrender::EndoscopicLook{}.depthOfField;
 
 struct Size {
     int width = 0, height = 0;
@@ -95,6 +98,7 @@ Row measure(const hs::scene::Scene& scene, const hs::scene::ScopeLandmarks& land
     window->AddRenderer(renderer);
     hs::simrender::EndoscopicLook look;
     look.edgeMagnification = edgeMagnification;
+    look.depthOfField = depthOfField;
     look.materialMaps = kind.maps;
     look.detail = kind.detail;
     look.lightReduction = lightReduction;
@@ -199,6 +203,7 @@ int still(const hs::scene::Scene& scene, const hs::scene::ScopeLandmarks& landma
     window->AddRenderer(renderer);
     hs::simrender::EndoscopicLook look;
     look.edgeMagnification = edgeMagnification;
+    look.depthOfField = depthOfField;
     look.detail = detail;
     hs::simrender::EndoscopicView view(renderer, look);
     view.setSurface(scene.surface);
@@ -288,6 +293,8 @@ int exploration(const std::string& folder, Size size, double fps, const std::str
         l.window->AddRenderer(l.renderer);
         hs::simrender::EndoscopicLook look;
         look.edgeMagnification = edgeMagnification;
+        look.depthOfField = depthOfField;
+        look.depthOfField = depthOfField;
         look.hud = false; // the circle's statistics of the picture alone
         if (k == 1) {     // as the view drew before the camera head
             look.autoExposure = false;
@@ -428,6 +435,8 @@ int main(int argc, char** argv) {
             lightReduction = std::atof(argv[++i]);
         else if (a == "--edge-magnification" && i + 1 < argc)
             edgeMagnification = std::atof(argv[++i]);
+        else if (a == "--no-depth-of-field")
+            depthOfField = false;
         else if (a == "--rows" && i + 1 < argc)
             only = argv[++i];
         else if (a == "--sizes" && i + 1 < argc)

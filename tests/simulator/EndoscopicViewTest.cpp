@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <vector>
 
 namespace hs::simrender {
 namespace {
@@ -503,6 +504,87 @@ TEST_F(EndoscopicViewTest, ABloodCloudDarkensTheWallBehindItAndNothingBeside) {
     view.setBloodClouds({});
     draw(view);
     EXPECT_NEAR(channel(80, 60, 1), greenClear, 1);
+}
+
+/// The middle row (red minus blue, per column) of a 640x480 picture of a flat wall `distanceMm` ahead, red left of the
+/// axis and blue right of it (image right: looking along +x with +z up), with or without the optic's depth of field.
+std::vector<int> edgeRow(vtkRenderWindow* window, vtkRenderer* renderer, double distanceMm, bool depthOfField) {
+    scene::VisualSurface surface;
+    const int n = 40;
+    const double step = distanceMm / 10.0; // the wall spans twice its distance either side: beyond the 90-degree field
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) {
+            surface.mesh.points.push_back({distanceMm, (20.0 - i) * step, (20.0 - j) * step});
+            surface.uvs.push_back({static_cast<float>(i) / n, static_cast<float>(j) / n});
+        }
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const std::int32_t a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+            surface.mesh.triangles.push_back({a, b, d});
+            surface.mesh.triangles.push_back({a, d, c});
+        }
+    surface.albedo = ImageU8::create(400, 8, 3).value();
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 400; ++x) {
+            surface.albedo.at(x, y, 0) = x < 200 ? 230 : 20;
+            surface.albedo.at(x, y, 2) = x < 200 ? 20 : 230;
+        }
+    EndoscopicLook look;
+    look.detail = ViewDetail::Light;
+    look.hud = false;
+    look.autoExposure = false;
+    // The same brightness at every distance: the lamp's falloff 1 / (1 + (d / 2 mm)^2) divided out.
+    look.exposure = 1.5 * (1.0 + distanceMm * distanceMm / 4.0);
+    look.lightReduction = 0.0;
+    look.depthOfField = depthOfField;
+    window->SetSize(640, 480);
+    EndoscopicView view(renderer, look);
+    view.setSurface(surface);
+    view.setPose({{0, 0, 0}, {1, 0, 0}, {0, 0, 1}, 90.0, 2.0, 50.0});
+    window->Render();
+    vtkNew<vtkUnsignedCharArray> row;
+    window->GetRGBACharPixelData(0, 240, 639, 240, 0, row);
+    std::vector<int> out(640);
+    for (int x = 0; x < 640; ++x)
+        out[static_cast<std::size_t>(x)] = row->GetValue(4 * x) - row->GetValue(4 * x + 2);
+    return out;
+}
+
+/// Columns over which the row passes from 90 % to 10 % of its step between the sides (the edge's 10-90 width).
+int edgeWidth(const std::vector<int>& row) {
+    const double left = row[240], right = row[400]; // well inside either side at any distance tested
+    const double hi = right + 0.9 * (left - right), lo = right + 0.1 * (left - right);
+    int first = -1, last = -1;
+    for (int x = 240; x <= 400; ++x) {
+        if (first < 0 && row[static_cast<std::size_t>(x)] < hi)
+            first = x;
+        if (row[static_cast<std::size_t>(x)] > lo)
+            last = x;
+    }
+    return first < 0 ? 0 : last - first + 1;
+}
+
+// The optic's depth of field (docs/simulator.md, "Depth of field"): a fixed-focus optic sharp from 2 to 50 mm draws a
+// wall 10 mm ahead as it would without it, and blurs one 0.5 mm ahead by its circle of confusion: 7.25 times the
+// sharp circle (|2/0.5 - 1/2 - 1/50| / (1/2 - 1/50)), one line of a 480-line picture, so a blur of radius
+// (7.25 - 1) / 2 = 3.1 pixels here; an edge's 10-90 width grows from about a pixel to several.
+TEST_F(EndoscopicViewTest, TheOpticsDepthOfFieldBlursWhatIsCloserThanItsFocusRangeAndNothingWithinIt) {
+    const std::vector<int> sharpFar = edgeRow(m_window, m_renderer, 10.0, false);
+    const std::vector<int> blurFar = edgeRow(m_window, m_renderer, 10.0, true);
+    const std::vector<int> sharpNear = edgeRow(m_window, m_renderer, 0.5, false);
+    const std::vector<int> blurNear = edgeRow(m_window, m_renderer, 0.5, true);
+    std::printf("edge's 10-90 width, pixels: at 10 mm %d without the depth of field, %d with it; at 0.5 mm %d, %d "
+                "(left %d, right %d)\n",
+                edgeWidth(sharpFar), edgeWidth(blurFar), edgeWidth(sharpNear), edgeWidth(blurNear), sharpNear[240],
+                sharpNear[400]);
+    ASSERT_GT(sharpNear[240] - sharpNear[400], 100) << "the wall's two colours";
+    EXPECT_EQ(blurFar, sharpFar) << "within the focus range the picture is untouched";
+    EXPECT_LE(edgeWidth(sharpNear), 2);
+    EXPECT_GE(edgeWidth(blurNear), 4); // a disc of radius 3.1 px: the 10-90 width of its edge response is 4-5 px
+    EXPECT_NEAR(circleOfConfusionShare(0.5, 2.0, 50.0), 7.25, 1e-9);
+    EXPECT_NEAR(circleOfConfusionShare(2.0, 2.0, 50.0), 1.0, 1e-12);
+    EXPECT_NEAR(circleOfConfusionShare(50.0, 2.0, 50.0), 1.0, 1e-12);
+    EXPECT_LT(circleOfConfusionShare(10.0, 2.0, 50.0), 1.0);
 }
 
 } // namespace

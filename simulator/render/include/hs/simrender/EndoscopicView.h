@@ -35,6 +35,8 @@ struct CameraPose {
     Vec3 direction{0, 0, 1};     ///< unit, where the optic looks
     Vec3 up{0, 1, 0};            ///< unit, the image's up
     double fieldOfViewDeg = 90.; ///< degrees, the full angle across the optic's circular field
+    double focusNearMm = 2.0;    ///< mm, the nearest sharp distance (sim::scopeFocusNearMm)
+    double focusFarMm = 50.0;    ///< mm, the farthest sharp distance (sim::scopeFocusFarMm)
 };
 /// The simulator's scope: at the tip, looking along the optic, the field of view of the configuration.
 CameraPose cameraPose(const sim::ScopePose& pose, const sim::ScopeConfig& config);
@@ -77,10 +79,17 @@ struct EndoscopicLook {
     /// rod-lens endoscopes show an image at the periphery at 52 % of its size in the middle (docs/references.md
     /// [RigidEndoscopeDistortion2015]); 1: a rectilinear image. The field's angle stays at the circle's edge.
     double edgeMagnification = 0.52;
-    bool opticMask = true;        ///< the circular field and its vignetting
-    bool hud = true;              ///< the heads-up text
-    double clearFogPerMm = 0.004; ///< 1/mm, extinction of clear saline (a faint haze at the cavity's far end)
-    double turbidFogPerMm = 0.12; ///< 1/mm, added at turbidity 1 (blood and debris: opaque beyond ~2 cm)
+    /// The optic's depth of field: what lies outside the pose's focus range blurs by its circle of confusion (a thin
+    /// lens focused between the range's limits, docs/references.md [Potmesil1981]); the overlays stay sharp.
+    bool depthOfField = true;
+    /// The circle a point at either limit of the focus range blurs into, as a share of the picture's height: one line
+    /// of a 480-line picture, what the view's own resolution shows as sharp.
+    double sharpCircleShare = 1.0 / 480.0;
+    double largestBlurShare = 0.03; ///< the largest blur's radius, as a share of the picture's height
+    bool opticMask = true;          ///< the circular field and its vignetting
+    bool hud = true;                ///< the heads-up text
+    double clearFogPerMm = 0.004;   ///< 1/mm, extinction of clear saline (a faint haze at the cavity's far end)
+    double turbidFogPerMm = 0.12;   ///< 1/mm, added at turbidity 1 (blood and debris: opaque beyond ~2 cm)
     std::array<double, 3> fogColour{0.42, 0.16, 0.12}; ///< linear RGB of lamp light scattered back by the medium
     std::array<double, 3> redOutColour{0.45, 0.03, 0.04};
     /// 1/mm, absorption of whole blood (oxyhaemoglobin at 150 g/L) at 630, 550 and 470 nm for red, green and blue,
@@ -97,6 +106,13 @@ struct EndoscopicLook {
     double loopWireRadiusMm = 0.15; ///< mm, the loop's wire drawn (a 0.3 mm electrode)
     double jawRadiusMm = 0.4;       ///< mm, the 5 Fr scissors' and grasper's shaft and jaws drawn (a 0.8 mm jaw)
 };
+
+/// The circle of confusion's diameter of a point `distanceMm` from the lens, in units of the circle a fixed-focus optic
+/// sharp from `nearMm` to `farMm` allows at those limits: a thin lens focused at their harmonic mean, whose blur
+/// grows as |1/d - 1/d_focus| (Potmesil & Chakravarty 1981, docs/references.md [Potmesil1981]). 1 at either limit,
+/// under 1 between them, growing as 1/d in front of the near one. The view's depth of field blurs a pixel by
+/// (this - 1) / 2 sharp circles in radius (EndoscopicLook::depthOfField).
+double circleOfConfusionShare(double distanceMm, double nearMm, double farMm);
 
 /// Text of the heads-up display (one line each; empty lines are skipped).
 struct HudText {
