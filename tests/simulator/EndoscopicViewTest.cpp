@@ -288,15 +288,15 @@ TEST_F(EndoscopicViewTest, DrawsTheMapsWithTheScenesUvOriginAtTheTopLeft) {
     }
 }
 
-/// Column of the first pixel right of the middle row's centre whose blue outweighs its red, on a picture of a flat
-/// wall 10 mm ahead that is red left of y = -`edgeMm` (image right: looking along +x with +z up) and blue beyond.
-int boundaryColumn(vtkRenderWindow* window, vtkRenderer* renderer, double edgeMm, double edgeMagnification) {
-    // A 1 mm grid of vertices, the colour boundary on a grid line: the lens model moves vertices.
+/// A flat wall `distanceMm` ahead (x = distanceMm), square to the view along +x: a grid of 40 x 40 squares spanning
+/// twice its distance either side of the axis (beyond a 90-degree field), u along -y, v along -z.
+scene::VisualSurface wallGrid(double distanceMm) {
     scene::VisualSurface surface;
     const int n = 40;
+    const double step = distanceMm / 10.0;
     for (int j = 0; j <= n; ++j)
         for (int i = 0; i <= n; ++i) {
-            surface.mesh.points.push_back({10.0, 20.0 - i, 20.0 - j});
+            surface.mesh.points.push_back({distanceMm, (20.0 - i) * step, (20.0 - j) * step});
             surface.uvs.push_back({static_cast<float>(i) / n, static_cast<float>(j) / n});
         }
     for (int j = 0; j < n; ++j)
@@ -305,6 +305,14 @@ int boundaryColumn(vtkRenderWindow* window, vtkRenderer* renderer, double edgeMm
             surface.mesh.triangles.push_back({a, b, d});
             surface.mesh.triangles.push_back({a, d, c});
         }
+    return surface;
+}
+
+/// Column of the first pixel right of the middle row's centre whose blue outweighs its red, on a picture of a flat
+/// wall 10 mm ahead that is red left of y = -`edgeMm` (image right: looking along +x with +z up) and blue beyond.
+int boundaryColumn(vtkRenderWindow* window, vtkRenderer* renderer, double edgeMm, double edgeMagnification) {
+    // A 1 mm grid of vertices, the colour boundary on a grid line: the lens model moves vertices.
+    scene::VisualSurface surface = wallGrid(10.0);
     const int texels = 400; // 10 per millimetre
     surface.albedo = ImageU8::create(texels, 8, 3).value();
     for (int y = 0; y < 8; ++y)
@@ -509,20 +517,7 @@ TEST_F(EndoscopicViewTest, ABloodCloudDarkensTheWallBehindItAndNothingBeside) {
 /// The middle row (red minus blue, per column) of a 640x480 picture of a flat wall `distanceMm` ahead, red left of the
 /// axis and blue right of it (image right: looking along +x with +z up), with or without the optic's depth of field.
 std::vector<int> edgeRow(vtkRenderWindow* window, vtkRenderer* renderer, double distanceMm, bool depthOfField) {
-    scene::VisualSurface surface;
-    const int n = 40;
-    const double step = distanceMm / 10.0; // the wall spans twice its distance either side: beyond the 90-degree field
-    for (int j = 0; j <= n; ++j)
-        for (int i = 0; i <= n; ++i) {
-            surface.mesh.points.push_back({distanceMm, (20.0 - i) * step, (20.0 - j) * step});
-            surface.uvs.push_back({static_cast<float>(i) / n, static_cast<float>(j) / n});
-        }
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            const std::int32_t a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
-            surface.mesh.triangles.push_back({a, b, d});
-            surface.mesh.triangles.push_back({a, d, c});
-        }
+    scene::VisualSurface surface = wallGrid(distanceMm);
     surface.albedo = ImageU8::create(400, 8, 3).value();
     for (int y = 0; y < 8; ++y)
         for (int x = 0; x < 400; ++x) {
