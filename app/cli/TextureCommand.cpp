@@ -178,6 +178,8 @@ int runBake(const BakeOptions& o) {
         j["coveredTexels"] = s.coveredTexels;
         j["facesWithoutTexels"] = s.facesWithoutTexels;
         j["chartSeamRatio"] = s.chartSeamRatio;
+        j["normalSeamRatio"] = s.normalSeams.ratio;
+        j["normalSeamP95Deg"] = s.normalSeams.p95Deg;
         j["facesPerClass"] = s.facesPerClass;
         j["vesselSegments"] = s.vesselSegments;
         j["seconds"] = result->timings.totalSeconds();
@@ -196,6 +198,8 @@ int runBake(const BakeOptions& o) {
               << "coverage    " << s.coveredTexels << " texels, " << s.facesWithoutTexels
               << " faces without own texel\n"
               << "seams       chart seam ratio " << s.chartSeamRatio << " (<= 1: no more visible than a texel step)\n"
+              << "            normal map across the seams: p95 " << s.normalSeams.p95Deg << " deg, ratio "
+              << s.normalSeams.ratio << " (<= 1: turns no more than a texel into a face)\n"
               << "vessels     " << s.vesselSegments << " segments\n"
               << "time        " << result->timings.totalSeconds() << " s\n";
     if (o.common.verbose)

@@ -42,6 +42,9 @@ Status checkParams(const BakeParams& p) {
         if (!(c.radiusMm > 0.0 && c.radiusMm <= 50.0))
             return fail(ErrorCode::InvalidInput,
                         "canal: radiusMm " + std::to_string(c.radiusMm) + " outside 0..50 mm (above 0)");
+        if (!(c.wallRadiusMm >= 0.0 && c.wallRadiusMm <= c.radiusMm))
+            return fail(ErrorCode::InvalidInput, "canal: wallRadiusMm " + std::to_string(c.wallRadiusMm) +
+                                                     " outside 0..radiusMm (" + std::to_string(c.radiusMm) + " mm)");
     }
     return {};
 }
@@ -170,7 +173,7 @@ Result<BakeResult> bakeAppearance(const SurfaceMesh& surface, const BakeParams& 
     progress.report("texture.bake", 0.85);
     {
         ScopedStepTimer timer(result.timings, "normals");
-        result.normal = normalMap(map, shading, result.atlas, texelMm, params.normalStrength, threads);
+        result.normal = normalMap(surface, map, shading, result.atlas, texelMm, params.normalStrength, threads);
     }
     HS_TRY(progress.check("bake", "deriving the normal map"));
     result.albedo = std::move(shading.albedo);
@@ -209,6 +212,7 @@ Result<BakeResult> bakeAppearance(const SurfaceMesh& surface, const BakeParams& 
     {
         ScopedStepTimer timer(result.timings, "seams");
         result.stats.chartSeamRatio = chartSeamRatio(surface, result.atlas, result.albedo, map);
+        result.stats.normalSeams = normalSeamAngles(makeTexturedSurface(surface, result.atlas), result.normal);
     }
     result.stats.atlas = result.atlas.stats;
     progress.report("texture.bake", 1.0);

@@ -41,8 +41,9 @@ struct Tile {
 struct TexelMap {
     int size = 0;
     std::vector<std::int32_t> face;
-    std::vector<std::array<float, 2>> bary; ///< weights of corners 1 and 2
-    std::vector<std::uint8_t> exact;        ///< 1: texel centre inside the face; 0: touched only
+    /// Weights of corners 1 and 2; a texel outside its face (exact 0) has weights beyond 0..1: the face extended.
+    std::vector<std::array<float, 2>> bary;
+    std::vector<std::uint8_t> exact; ///< 1: texel centre inside the face; 0: within a texel outside it
     std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * static_cast<std::size_t>(size) + x; }
 };
 
@@ -67,6 +68,26 @@ struct Shading {
 };
 
 // Shading.cpp
+/// The canal's frame in the form the texels need it.
+struct CanalAxes {
+    Vec3 origin, axis, anterior, lateral;
+    double lengthMm = 0.0, radiusMm = 0.0, wallRadiusMm = 0.0;
+};
+
+CanalAxes canalAxes(const CanalFrame& c);
+
+/// What the canal's relief does at p: its height (mm), how much of it is folds (0..1) and where the crests are
+/// (0 cleft .. 1 crest), and the internal os's ring (0..1); how close p lies to the canal's lumen (1 within its
+/// width + 1 mm of the axis, 0 beyond + 2 mm) and the canal's share of the mucosa there by the distance along the
+/// axis (1 below the internal os, 0 above it, over 1.5 mm either side).
+struct CanalRelief {
+    double foldHeightMm = 0.0, ringHeightMm = 0.0;
+    float folds = 0.0f, crest = 0.0f, ring = 0.0f;
+    float lumen = 0.0f, canalShare = 0.0f;
+};
+
+CanalRelief canalRelief(const CanalAxes& a, const Vec3& p);
+
 Tile toTile(const ImageU8& image);
 
 /// Per-vertex class weights: incident face classes (contact faces half endometrium), smoothed over ~blendMm.
@@ -93,9 +114,10 @@ VesselSample sampleVessels(const VesselIndex& index, const Vec3& p, double texel
 void vesselColour(float radius, float* rgb);
 
 // NormalMap.cpp
-/// Tangent-space normals from height differences inside each chart (x along +u, y along +v).
-ImageU8 normalMap(const TexelMap& map, const Shading& shading, const Atlas& atlas, double texelMm, double strength,
-                  int threads);
+/// Tangent-space normals: the relief's surface gradient inside each chart, in the frame a renderer rebuilds (T along
+/// +u, B = N x T with N the face's normal); `texelMm` serves only faces too thin to have a frame.
+ImageU8 normalMap(const SurfaceMesh& mesh, const TexelMap& map, const Shading& shading, const Atlas& atlas,
+                  double texelMm, double strength, int threads);
 
 // Gutters.cpp
 /// Fills the gutters: `rings` passes of averaging covered 8-neighbours into empty texels (so mipmaps and bilinear
@@ -104,6 +126,9 @@ void fillGutters(std::vector<ImageU8*> images, std::vector<std::uint8_t> covered
                  const std::vector<std::array<std::uint8_t, 4>>& fallback);
 
 // SeamCheck.cpp
+/// Bilinear sample of the first three channels of `img` at (u, v) (v upwards, texel row (1 - v) * height).
+void sampleBilinear(const ImageU8& img, double u, double v, double* out);
+
 /// Mean squared albedo step across chart seams (both sides sampled at the same surface points) over the mean squared
 /// step between horizontally neighbouring texels of one chart.
 double chartSeamRatio(const SurfaceMesh& mesh, const Atlas& atlas, const ImageU8& albedo, const TexelMap& map);

@@ -32,6 +32,7 @@ constexpr double kFoldRisePerMm = 0.8;      ///< a fold climbs this many mm alon
 constexpr double kFoldHeightMm = 0.05;      ///< a palmate fold's height
 constexpr double kFoldFullRad = 0.8;        ///< folds at full height up to this angle from their ridge ...
 constexpr double kFoldEndRad = 1.35;        ///< ... and gone at this one (the lateral walls are smooth)
+constexpr double kChevronRoundMm = 0.35;    ///< the V of the folds at the ridge rounded over about this width
 constexpr double kSmoothIsthmusShare = 0.2; ///< the top fifth of the canal smooths out towards the internal os
 constexpr double kOsRingHalfWidthMm = 0.9;  ///< the internal os's ring, its 1/e half-width along the canal
 constexpr double kOsRingHeightMm = 0.08;    ///< the ring's fold height
@@ -45,11 +46,7 @@ double smoothstep(double edge0, double edge1, double x) {
     return t * t * (3.0 - 2.0 * t);
 }
 
-/// The canal's frame in the form the texels need it.
-struct CanalAxes {
-    Vec3 origin, axis, anterior, lateral;
-    double lengthMm = 0.0, radiusMm = 0.0;
-};
+} // namespace
 
 CanalAxes canalAxes(const CanalFrame& c) {
     CanalAxes a;
@@ -59,18 +56,9 @@ CanalAxes canalAxes(const CanalFrame& c) {
     a.anterior = normalized(c.anterior - a.axis * dot(c.anterior, a.axis));
     a.lateral = cross(a.axis, a.anterior);
     a.radiusMm = c.radiusMm;
+    a.wallRadiusMm = c.wallRadiusMm > 0.0 ? c.wallRadiusMm : c.radiusMm;
     return a;
 }
-
-/// What the canal's relief does at p: its height (mm), how much of it is folds (0..1) and where the crests are
-/// (0 cleft .. 1 crest), and the internal os's ring (0..1); how close p lies to the canal's lumen (1 within its
-/// width + 1 mm of the axis, 0 beyond + 2 mm) and the canal's share of the mucosa there by the distance along the
-/// axis (1 below the internal os, 0 above it, over 1.5 mm either side).
-struct CanalRelief {
-    double foldHeightMm = 0.0, ringHeightMm = 0.0;
-    float folds = 0.0f, crest = 0.0f, ring = 0.0f;
-    float lumen = 0.0f, canalShare = 0.0f;
-};
 
 CanalRelief canalRelief(const CanalAxes& a, const Vec3& p) {
     CanalRelief r;
@@ -82,15 +70,23 @@ CanalRelief canalRelief(const CanalAxes& a, const Vec3& p) {
         return r; // the serosa, the cavity's sides: not the canal's lumen
     r.lumen = static_cast<float>(1.0 - smoothstep(a.radiusMm + 1.0, a.radiusMm + 2.0, rho));
     r.canalShare = static_cast<float>(1.0 - smoothstep(a.lengthMm - 1.5, a.lengthMm + 1.5, s));
-    const double ring = std::exp(-((s - a.lengthMm) / kOsRingHalfWidthMm) * ((s - a.lengthMm) / kOsRingHalfWidthMm));
+    // Faded with the lumen, like the folds below, so that nothing is cut off where the relief stops.
+    const double ring =
+        r.lumen * std::exp(-((s - a.lengthMm) / kOsRingHalfWidthMm) * ((s - a.lengthMm) / kOsRingHalfWidthMm));
     r.ring = static_cast<float>(ring);
     r.ringHeightMm = kOsRingHeightMm * ring;
     if (s <= 0.0 || s >= a.lengthMm)
         return r;
     const double theta = std::atan2(x, y); // 0 anterior, +-pi posterior
     const bool anteriorWall = std::abs(theta) < 0.5 * units::kPi;
-    const double fromRidge = anteriorWall ? std::abs(theta) : units::kPi - std::abs(theta);
-    const double arcMm = fromRidge * std::max(rho, 0.5);
+    const double fromRidgeRad = anteriorWall ? std::abs(theta) : units::kPi - std::abs(theta);
+    // Along the wall from the ridge, measured on the circle of the wall's typical radius: the local distance from the
+    // axis would carry the coarse canal's facets into the folds (a facet is nearer the axis at its middle than at its
+    // edges), and the folds' slopes would turn at every facet's edge. The V where the folds leave the ridge is rounded
+    // off over kChevronRoundMm.
+    const double straightMm = fromRidgeRad * a.wallRadiusMm;
+    const double arcMm = std::sqrt(straightMm * straightMm + kChevronRoundMm * kChevronRoundMm) - kChevronRoundMm;
+    const double fromRidge = fromRidgeRad;
     const double along =
         smoothstep(0.0, 1.5, s) * (1.0 - smoothstep((1.0 - kSmoothIsthmusShare) * a.lengthMm, a.lengthMm, s));
     const double ridge = std::exp(-(arcMm / kRidgeHalfWidthMm) * (arcMm / kRidgeHalfWidthMm));
@@ -99,11 +95,14 @@ CanalRelief canalRelief(const CanalAxes& a, const Vec3& p) {
     const double fold = wave * wave * (1.0 - smoothstep(kFoldFullRad, kFoldEndRad, fromRidge));
     const double reach = std::max(ridge, 1.0 - smoothstep(kFoldFullRad, kFoldEndRad, fromRidge));
     const double height = kRidgeHeightMm * ridge + kFoldHeightMm * fold;
-    r.foldHeightMm = along * height;
-    r.folds = static_cast<float>(along * reach);
+    // Faded with the lumen (beyond the lumen's width + 2 mm the relief stops).
+    r.foldHeightMm = along * height * r.lumen;
+    r.folds = static_cast<float>(along * reach) * r.lumen;
     r.crest = static_cast<float>(std::clamp(height / kRidgeHeightMm, 0.0, 1.0));
     return r;
 }
+
+namespace {
 
 /// Triplanar sample of a tile at p with normal n (Geiss 2007): three planar projections blended by |n|^4.
 void triplanar(const Tile& tile, const Vec3& p, const Vec3& n, double tileMm, float* out) {
@@ -237,6 +236,8 @@ Shading shade(const SurfaceMesh& mesh, const TexelMap& map, const std::vector<Ve
                                        w[c] += weights[v][c] * b[k];
                                }
                                nrm = normalized(nrm);
+                               for (float& wc : w) // the face extended past its edge (TexelMap::bary)
+                                   wc = std::clamp(wc, 0.0f, 1.0f);
                                // Near the canal, where its faces meet the cavity's, the classes split by the place
                                // along the canal rather than by the faces' weights (which would draw the faces'
                                // outline across the wall).

@@ -32,16 +32,19 @@ TexelMap rasterize(const SurfaceMesh& mesh, const Atlas& atlas, int threads) {
                     const double area2 = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
                     if (area2 == 0.0)
                         continue;
-                    const int x0 = std::max(0, static_cast<int>(std::floor(std::min({X[0], X[1], X[2]}))) - 1);
+                    const int x0 = std::max(0, static_cast<int>(std::floor(std::min({X[0], X[1], X[2]}))) - 2);
                     const int x1 =
-                        std::min(atlas.size - 1, static_cast<int>(std::floor(std::max({X[0], X[1], X[2]}))) + 1);
-                    const int y0 = std::max(rowBegin, static_cast<int>(std::floor(std::min({Y[0], Y[1], Y[2]}))) - 1);
-                    const int y1 = std::min(rowEnd - 1, static_cast<int>(std::floor(std::max({Y[0], Y[1], Y[2]}))) + 1);
-                    // Edge k is opposite corner k; margin: half a texel measured along the edge normal.
+                        std::min(atlas.size - 1, static_cast<int>(std::floor(std::max({X[0], X[1], X[2]}))) + 2);
+                    const int y0 = std::max(rowBegin, static_cast<int>(std::floor(std::min({Y[0], Y[1], Y[2]}))) - 2);
+                    const int y1 = std::min(rowEnd - 1, static_cast<int>(std::floor(std::max({Y[0], Y[1], Y[2]}))) + 2);
+                    // Edge k is opposite corner k. The second pass takes the texels up to a texel outside the chart
+                    // (1 to 1.41 texels along the edge's normal) and extends the face over them, unclamped: a
+                    // bilinear sample on the chart's border reads texels up to a texel away, and the normal map's
+                    // differences across the border need the relief to go on there, not to stop at the edge.
                     std::array<double, 3> margin;
                     for (std::size_t k = 0; k < 3; ++k) {
                         const double ex = X[(k + 2) % 3] - X[(k + 1) % 3], ey = Y[(k + 2) % 3] - Y[(k + 1) % 3];
-                        margin[k] = pass == 0 ? 0.0 : 0.5 * (std::fabs(ex) + std::fabs(ey)) / std::fabs(area2);
+                        margin[k] = pass == 0 ? 0.0 : (std::fabs(ex) + std::fabs(ey)) / std::fabs(area2);
                     }
                     for (int y = y0; y <= y1; ++y)
                         for (int x = x0; x <= x1; ++x) {
@@ -55,13 +58,6 @@ TexelMap rasterize(const SurfaceMesh& mesh, const Atlas& atlas, int threads) {
                             const std::size_t i = map.index(x, y);
                             if (map.face[i] >= 0)
                                 continue;
-                            if (pass == 1) { // clamp onto the triangle
-                                for (auto& v : l)
-                                    v = std::max(0.0, v);
-                                const double sum = l[0] + l[1] + l[2];
-                                for (auto& v : l)
-                                    v /= sum;
-                            }
                             map.face[i] = static_cast<std::int32_t>(f);
                             map.bary[i] = {static_cast<float>(l[1]), static_cast<float>(l[2])};
                             map.exact[i] = pass == 0 ? 1 : 0;

@@ -50,6 +50,9 @@ struct CanalFrame {
     Vec3 internalOsMm;   ///< centre of the internal os
     Vec3 anterior;       ///< towards the anterior wall (need not be perpendicular to the canal's axis)
     double radiusMm = 0; ///< the canal's largest distance from its axis: the os's ring reaches this + 2 mm from it
+    /// The wall's typical distance from the axis (e.g. the median over its points): the folds' places around the
+    /// wall are measured on a circle of this radius. 0: radiusMm. At most radiusMm.
+    double wallRadiusMm = 0;
 };
 
 /// A round spot whose albedo darkens towards its centre (an opening whose depth the light does not reach: the tubal
@@ -81,11 +84,24 @@ struct BakeParams {
     int threads = 0;                 ///< 0: all cores; the maps do not depend on it
 };
 
+/// How a normal map's relief agrees across the chart seams of a surface (normalSeamAngles): at three places along each
+/// seam edge, the angle between the normals a renderer rebuilds on its two sides from the map (bilinear samples; the
+/// tangent dP/du of each face, the points' normals, B = N x T), against the angle between the normal at the seam and
+/// the one a texel into the same face (the relief's own change over a texel). The relief is one surface on both sides,
+/// so a map whose slopes are right turns across a seam no more than within a chart (ratio about 1); a chart whose
+/// slopes are off shows as a patch with straight edges.
+struct NormalSeamStats {
+    std::int64_t samples = 0;
+    double medianDeg = 0.0, p95Deg = 0.0, maxDeg = 0.0; ///< across the seams
+    double insideP95Deg = 0.0;                          ///< a texel into the faces beside them
+    double ratio = 0.0;                                 ///< mean squared angle across / mean squared angle inside
+};
 struct BakeStats {
     AtlasStats atlas;
     std::int64_t coveredTexels = 0;      ///< texels inside some triangle (before the gutter fill)
     std::int64_t facesWithoutTexels = 0; ///< faces that own no texel (tiny faces; still covered by a neighbour's)
     double chartSeamRatio = 0.0; ///< mean squared albedo step across chart seams / inside charts (about 1: invisible)
+    NormalSeamStats normalSeams; ///< the normal map across the baked surface's chart seams
     std::array<std::int64_t, kAppearanceCount> facesPerClass{};
     std::int64_t vesselSegments = 0;
 };
@@ -157,5 +173,8 @@ struct CloseUpParams {
 /// makeTexturedSurface, with the area-weighted normals of the unsplit smooth surface. Vertex labels are not carried
 /// (the new points have none). Points are numbered in order of first use.
 TexturedSurface makeCloseUpSurface(const SurfaceMesh& surface, const Atlas& atlas, const CloseUpParams& params);
+
+/// The normal map's agreement across the chart seams of `drawn` (NormalSeamStats).
+NormalSeamStats normalSeamAngles(const TexturedSurface& drawn, const ImageU8& normal);
 
 } // namespace hs::texture
