@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <map>
 #include <utility>
+#include <vector>
 
 namespace hs::generate {
 namespace {
@@ -133,11 +134,16 @@ std::optional<texture::CanalFrame> canalFrame(const SurfaceMesh& boundary) {
     frame.internalOsMm = ends->internalOsMm;
     frame.anterior = Vec3{0.0, 1.0, 0.0};
     const Vec3 axis = normalized(frame.internalOsMm - frame.externalOsMm);
+    std::vector<double> fromAxis; // per corner of a canal face (a point counts once per face it is in)
     for (const std::int32_t f : canal)
         for (const std::int32_t v : boundary.triangles[static_cast<std::size_t>(f)]) {
             const Vec3 q = boundary.points[static_cast<std::size_t>(v)] - frame.externalOsMm;
-            frame.radiusMm = std::max(frame.radiusMm, norm(q - axis * dot(q, axis)));
+            fromAxis.push_back(norm(q - axis * dot(q, axis)));
+            frame.radiusMm = std::max(frame.radiusMm, fromAxis.back());
         }
+    std::nth_element(fromAxis.begin(), fromAxis.begin() + static_cast<std::ptrdiff_t>(fromAxis.size() / 2),
+                     fromAxis.end());
+    frame.wallRadiusMm = std::min(frame.radiusMm, fromAxis[fromAxis.size() / 2]);
     if (norm(frame.anterior - axis * dot(frame.anterior, axis)) < 1e-3 || frame.radiusMm <= 0.0)
         return std::nullopt;
     return frame;

@@ -1,6 +1,7 @@
 #include "hs/generate/Generate.h"
 
 #include "hs/anatomy/ShapeModel.h"
+#include "hs/core/Subdivision.h"
 #include "hs/core/Units.h"
 #include "hs/generate/Simulation.h"
 #include "hs/mechanics/UterusModel.h"
@@ -86,14 +87,19 @@ Status runTexture(Generated& g, const GenerateParams& params, Progress& progress
     texture::BakeParams bake = bakeParamsFor(g.spec, params.threads);
     bake.darkSpots = ostiumDarkSpots(ostia);
     bake.canal = canalFrame(boundary);
-    auto baked = texture::bakeAppearance(boundary, bake, progress);
+    // The maps are baked on the faired surface that the close-up surface subdivides: the relief is then drawn on the
+    // shape it is seen on, so its slopes meet across the charts' seams.
+    texture::CloseUpParams closeUp = closeUpParamsFor(boundary, ostia);
+    const SurfaceMesh faired =
+        closeUp.smoothing.iterations > 0 ? taubinSmooth(boundary, closeUp.seen, closeUp.smoothing) : boundary;
+    closeUp.smoothing.iterations = 0;
+    auto baked = texture::bakeAppearance(faired, bake, progress);
     if (!baked)
         return baked.failure();
     // The close-up surface and its binding take no progress of their own: a cancel is checked between them.
     progress.report("texture.closeUp", 1.0);
     HS_TRY(progress.check("texture", "refining the close-up surface"));
-    texture::TexturedSurface textured =
-        texture::makeCloseUpSurface(boundary, baked->atlas, closeUpParamsFor(boundary, ostia));
+    texture::TexturedSurface textured = texture::makeCloseUpSurface(faired, baked->atlas, closeUp);
     progress.report("texture.bind", 1.0);
     HS_TRY(progress.check("texture", "binding the visual surface to the tets"));
     Appearance a;
