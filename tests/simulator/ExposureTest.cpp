@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <vector>
 
 namespace hs::simrender {
@@ -89,6 +90,53 @@ TEST(Exposure, TheLoopReachesItsTargetInAFewHundredMillisecondsWithoutOvershoot)
     }
 }
 
+/// A near wall over 40 % of the circle, brighter towards its edge (0.3..0.6 at exposure 1, a pale mucosa's colour),
+/// beside a dark far one: the near-white share rises steeply with the exposure while the mean still wants more.
+CircleStats shootNearWall(double exposure) {
+    constexpr int kSize = 64;
+    constexpr double knee = 0.7;
+    std::vector<std::uint8_t> image = disc(kSize, {2, 1, 1});
+    const auto shown = [&](double x) {
+        const double over = std::max(0.0, x - knee) / (1.0 - knee);
+        return static_cast<std::uint8_t>(std::lround(255.0 * (std::min(x, knee) + (1.0 - knee) * over / (1.0 + over))));
+    };
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize * 2 / 5; ++x) {
+            const double b = exposure * (0.3 + 0.3 * x / (kSize * 0.4));
+            std::uint8_t* p = &image[static_cast<std::size_t>((y * kSize + x) * 4)];
+            if (p[3] == 0)
+                continue;
+            p[0] = shown(b);
+            p[1] = shown(0.8 * b);
+            p[2] = shown(0.75 * b);
+        }
+    return circleStats(image.data(), kSize, kSize, 4, kSize / 2.0, kSize / 2.0, kSize / 2.0);
+}
+
+TEST(Exposure, ANearWallAtTheNearWhiteLimitDoesNotSetTheLoopHunting) {
+    // The mean wants more light than the near wall's white share allows. The loop settles at the limit: over the
+    // last second of 3 s at 30 frames a second the exposure moves by less than a tenth of a stop and the near-white
+    // share stays within 1.5 times its limit. (With half a stop down over the limit and the mean's full pace up below
+    // it, the loop swung by 0.54 stop and the near-white share reached 0.095.)
+    const AutoExposureSettings settings;
+    AutoExposure camera(settings, 1.0);
+    double lowest = 1e9, highest = 0.0, whitest = 0.0;
+    for (int frame = 0; frame < 90; ++frame) {
+        const CircleStats s = shootNearWall(camera.exposure());
+        if (frame >= 60) {
+            lowest = std::min(lowest, camera.exposure());
+            highest = std::max(highest, camera.exposure());
+            whitest = std::max(whitest, s.highlightFraction);
+        }
+        camera.update(s, 1.0 / 30.0);
+    }
+    std::printf("near wall: exposure %.3f..%.3f over the last second (%.3f stop), near white up to %.3f (limit %.2f)\n",
+                lowest, highest, std::log2(highest / lowest), whitest, settings.nearWhiteLimit);
+    ASSERT_GT(whitest, 0.5 * settings.nearWhiteLimit) << "the wall never reaches the limit: the test shows nothing";
+    EXPECT_LT(std::log2(highest / lowest), 0.1);
+    EXPECT_LT(whitest, 1.5 * settings.nearWhiteLimit);
+}
+
 TEST(Exposure, MoreClippedThanTheLimitStopsDownWhateverTheMean) {
     // A mostly dark circle with a bright spot (a third of it at full scale): the mean says open up, the clipped share
     // says stop down, and the camera stops down.
@@ -107,7 +155,7 @@ TEST(Exposure, MoreClippedThanTheLimitStopsDownWhateverTheMean) {
     camera.update(grey, 0.0); // the first frame moves the whole way by its mean: here nowhere
     EXPECT_DOUBLE_EQ(camera.exposure(), 4.0);
     camera.update(s, 1.0 / 30.0);
-    EXPECT_LT(camera.exposure(), 4.0 / std::exp2(0.5 * 0.4)); // at least half a stop, at four times the pace
+    EXPECT_LT(camera.exposure(), 4.0 / std::exp2(0.5 * 0.4)); // a stop a doubling over the limit, four times the pace
     // Bad frames change nothing: no pixels, a time that is not a time.
     const double e = camera.exposure();
     EXPECT_EQ(camera.update(CircleStats{}, 0.1), e);

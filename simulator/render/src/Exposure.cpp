@@ -6,6 +6,20 @@
 
 namespace hs::simrender {
 
+namespace {
+
+/// Over a peak limit by less than this factor, the camera steps down by kCeilingMarginStops only (see update()).
+constexpr double kMildOver = 2.0;
+/// How far below an exposure that went over a peak limit the camera's ceiling is put.
+constexpr double kCeilingMarginStops = 0.05;
+/// How fast the ceiling rises while nothing goes over (the camera tries a little more light now and then).
+constexpr double kCeilingRiseStopsPerS = 1.0;
+/// The ceiling is dropped once the peaks have stayed under this share of their limit for kCeilingHoldS.
+constexpr double kCeilingForgetBelow = 0.25;
+constexpr double kCeilingHoldS = 0.3;
+
+} // namespace
+
 CircleStats circleStats(const std::uint8_t* pixels, int width, int height, int channels, double centreX, double centreY,
                         double radiusPx, int stride) {
     CircleStats s;
@@ -56,21 +70,43 @@ double AutoExposure::update(const CircleStats& stats, double elapsedS) {
     // the loop reaches its target in more frames, never past it.)
     const double mean = std::max(stats.meanLuminance, 1.0 / 255.0);
     double errorStops = std::log2(m_settings.targetLuminance / mean);
-    // Peak limiting: more of the circle at full scale (or near white) than its limit stops down four times as fast,
-    // by a stop for every doubling of the share over the limit (at least half a stop), whatever the mean says. (Not on
-    // the first frame, which moves the whole way by its mean: one glaring frame at switch-on would throw it far off.)
+    // Peak limiting: more of the circle at full scale (or near white) than its limit stops down, whatever the mean
+    // says, and puts a ceiling just under the exposure that went over. Far over (glare) it stops down four times as
+    // fast, by a stop for every doubling of the share over the limit; a little over, by the ceiling's margin. The mean
+    // then opens up no further than the ceiling, which rises slowly while nothing goes over, and is dropped once the
+    // peaks have stayed low for a while (the scope has left the wall). A near wall whose white share rises steeply
+    // with the exposure kept a loop without the ceiling hunting: half a stop down over the limit, the mean's pace up
+    // past it (between 3.4 and 6.1 every 0.3 s halfway down the default canal). (Not on the first frame, which moves
+    // the whole way by its mean: one glaring frame at switch-on would throw it far off.)
     double tau = std::max(1e-3, m_settings.timeConstantS);
     const double over =
         std::max(stats.clippedFraction / m_settings.clippedLimit, stats.highlightFraction / m_settings.nearWhiteLimit);
     if (!m_first && over > 1.0) {
-        errorStops = std::min(errorStops, -std::max(0.5, std::log2(over)));
-        tau *= 0.25;
+        m_ceiling = std::min(m_ceiling, m_exposure * std::exp2(-kCeilingMarginStops));
+        m_calmS = 0.0;
+        if (over >= kMildOver) {
+            errorStops = std::min(errorStops, -std::log2(over));
+            tau *= 0.25;
+        } else {
+            errorStops = std::min(errorStops, -kCeilingMarginStops);
+            tau = 0.0; // the whole margin at once
+        }
+    } else if (!m_first) {
+        m_calmS = over < kCeilingForgetBelow ? m_calmS + elapsedS : 0.0;
+        m_ceiling = m_calmS >= kCeilingHoldS
+                        ? m_settings.maxExposure
+                        : std::min(m_settings.maxExposure, m_ceiling * std::exp2(kCeilingRiseStopsPerS * elapsedS));
     }
-    const double share = m_first ? 1.0 : 1.0 - std::exp(-elapsedS / tau);
+    const double share = m_first || tau <= 0.0 ? 1.0 : 1.0 - std::exp(-elapsedS / tau);
     m_first = false;
     const double before = m_exposure;
-    m_exposure = std::clamp(m_exposure * std::exp2(errorStops * share), m_settings.minExposure, m_settings.maxExposure);
-    m_settled = std::abs(std::log2(m_exposure / before)) < 0.05;
+    const double wanted = m_exposure * std::exp2(errorStops * share);
+    const double next = wanted > before ? std::min(wanted, std::max(before, m_ceiling)) : wanted;
+    m_exposure = std::clamp(next, m_settings.minExposure, m_settings.maxExposure);
+    // Settled: moving by less than a twentieth of a stop, no peak over its limit, and not held by a ceiling that
+    // nothing near the limit keeps (it is about to be dropped).
+    const bool heldIdle = next < wanted && over < kCeilingForgetBelow;
+    m_settled = std::abs(std::log2(m_exposure / before)) < 0.05 && over <= 1.0 && !heldIdle;
     return m_exposure;
 }
 

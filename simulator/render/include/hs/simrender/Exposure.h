@@ -44,10 +44,15 @@ public:
     /// or a non-finite or negative time changes nothing.
     double update(const CircleStats& stats, double elapsedS);
     double exposure() const { return m_exposure; }
-    /// Whether the last update moved the exposure by less than a twentieth of a stop (a still picture has settled).
+    /// Whether the last update moved the exposure by less than a twentieth of a stop with no peak over its limit and
+    /// no ceiling about to be dropped holding it (a still picture has settled).
     bool settled() const { return m_settled; }
     /// The next update moves the whole way (a new scene, a camera switched on).
-    void reset() { m_first = true; }
+    void reset() {
+        m_first = true;
+        m_ceiling = m_settings.maxExposure;
+        m_calmS = 0.0;
+    }
     const AutoExposureSettings& settings() const { return m_settings; }
 
 private:
@@ -55,6 +60,8 @@ private:
     double m_exposure = 1.0;
     bool m_first = true;
     bool m_settled = false;
+    double m_ceiling = 1e300; ///< the exposure the mean may open up to (peak limiting; see update())
+    double m_calmS = 0.0;     ///< s, since the peaks were last near their limit
 };
 
 } // namespace hs::simrender
