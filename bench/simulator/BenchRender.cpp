@@ -20,6 +20,12 @@
 // from the internal os to the fundus (negative: that share of the way down the cervical canal from the internal
 // os), aimed about the pivot, rolled by ROLL_DEG (the docs' picture), with the detail
 // the view picks for the GL renderer, or the full or the light one, once the camera's exposure has settled on it.
+//   bench_render SCENE_DIR --views [--sizes WxH] [--full | --light]
+// --views draws a fixed set of stills of the surface at rest in clear saline (the tip halfway down the cervical
+// canal and a quarter, half and three quarters of the way from the internal os to the fundus, each rolled 0, 90, 180
+// and 270 degrees), each once the camera's exposure has settled, and prints per view the mean luminance, the clipped
+// and near-white shares inside the optic's circle and the time to draw a frame there, then one summary line
+// (tools/picture-sweep.sh runs it over the 20-case sweep).
 //   bench_render SCENE_DIR --exploration [--sizes WxH] [--fps F] [--png PREFIX] [--trace]
 // --exploration plays the built-in exploration (sim::explorationScript, 60 s) on the world and draws it F times a
 // second of the trial (default 15) twice, side by side: through the camera head (automatic exposure, white balance,
@@ -236,6 +242,77 @@ int still(const hs::scene::Scene& scene, const hs::scene::ScopeLandmarks& landma
     return 0;
 }
 
+/// The fixed views of --views: the tip's fraction (as --still) and the roll.
+constexpr double kViewFractions[] = {-0.5, 0.25, 0.5, 0.75};
+constexpr double kViewRollsDeg[] = {0.0, 90.0, 180.0, 270.0};
+
+int views(const hs::scene::Scene& scene, const hs::scene::ScopeLandmarks& landmarks, const hs::sim::ScopeFrame& frame,
+          Size size, hs::simrender::ViewDetail detail) {
+    vtkNew<vtkRenderWindow> window;
+    window->SetOffScreenRendering(1);
+    window->SetMultiSamples(0);
+    window->SetSize(size.width, size.height);
+    vtkNew<vtkRenderer> renderer;
+    window->AddRenderer(renderer);
+    hs::simrender::EndoscopicLook look;
+    look.edgeMagnification = edgeMagnification;
+    look.depthOfField = depthOfField;
+    look.detail = detail;
+    hs::simrender::EndoscopicView view(renderer, look);
+    view.setSurface(scene.surface);
+    hs::sim::ScopeConfig config;
+    std::printf("%-9s %6s %8s %9s %11s %9s\n", "fraction", "roll", "luma", "clipped%", "nearWhite%", "ms/frame");
+    double lumaMin = 1.0, lumaMax = 0.0, lumaSum = 0.0, clippedMax = 0.0, highlightSum = 0.0, msSum = 0.0;
+    int count = 0, inBand = 0;
+    double time = 0.0;
+    for (double fraction : kViewFractions)
+        for (double roll : kViewRollsDeg) {
+            const hs::Vec3 tip =
+                fraction >= 0.0
+                    ? landmarks.internalOsMm + (landmarks.fundusMm - landmarks.internalOsMm) * fraction
+                    : landmarks.internalOsMm + (landmarks.externalOsMm - landmarks.internalOsMm) * -fraction;
+            hs::sim::WorldState state;
+            state.scope = hs::sim::scopePose(frame, config, hs::sim::sampleAiming(frame, tip, roll));
+            state.fluid.pressureKpa = 10.0;
+            view.setPose(hs::simrender::cameraPose(state.scope, config));
+            view.setHud(hs::simrender::hudText(state, {}, {}));
+            // The exposure settles as in --still (a tenth of a second of the camera's time between frames), then
+            // five more frames are timed.
+            for (int k = 0; k < 40; ++k) {
+                time += 0.1;
+                view.setTime(time);
+                window->Render();
+                if (k > 0 && view.exposureSettled())
+                    break;
+            }
+            const hs::simrender::CircleStats stats = view.lastFrameStats();
+            constexpr int kTimed = 5;
+            const auto start = std::chrono::steady_clock::now();
+            for (int k = 0; k < kTimed; ++k) {
+                time += 0.1;
+                view.setTime(time);
+                window->Render();
+            }
+            const double ms =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() / kTimed;
+            std::printf("%-9.2f %6.0f %8.3f %9.2f %11.3f %9.1f\n", fraction, roll, stats.meanLuminance,
+                        100.0 * stats.clippedFraction, 100.0 * stats.highlightFraction, ms);
+            lumaMin = std::min(lumaMin, stats.meanLuminance);
+            lumaMax = std::max(lumaMax, stats.meanLuminance);
+            lumaSum += stats.meanLuminance;
+            inBand += stats.meanLuminance >= 0.35 && stats.meanLuminance <= 0.65 ? 1 : 0;
+            clippedMax = std::max(clippedMax, stats.clippedFraction);
+            highlightSum += stats.highlightFraction;
+            msSum += ms;
+            ++count;
+        }
+    std::printf("views %d (%s detail, %dx%d): luma mean %.3f min %.3f max %.3f, in 0.35-0.65 %d; clipped max %.2f %%; "
+                "near white mean %.3f %%; %.1f fps\n",
+                count, view.lightDetail() ? "light" : "full", size.width, size.height, lumaSum / count, lumaMin,
+                lumaMax, inBand, 100.0 * clippedMax, 100.0 * highlightSum / count, 1000.0 * count / msSum);
+    return 0;
+}
+
 /// The luminance statistics of one look over an exploration.
 struct LookSummary {
     std::vector<hs::simrender::CircleStats> frames;
@@ -418,6 +495,7 @@ int main(int argc, char** argv) {
     std::vector<Size> sizes{{640, 480}, {960, 720}};
     std::string png;
     bool stillPicture = false;
+    bool fixedViews = false;
     bool explore = false;
     bool trace = false;
     bool cutFace = false;
@@ -447,6 +525,8 @@ int main(int argc, char** argv) {
             trace = true;
         else if (a == "--exploration")
             explore = true;
+        else if (a == "--views")
+            fixedViews = true;
         else if (a == "--fps" && i + 1 < argc)
             fps = std::clamp(std::atof(argv[++i]), 1.0, 200.0);
         else if (a == "--cut-face")
@@ -482,6 +562,8 @@ int main(int argc, char** argv) {
     }
     if (stillPicture)
         return still(*scene, *landmarks, *frame, sizes.front(), pose, detail, png);
+    if (fixedViews)
+        return views(*scene, *landmarks, *frame, sizes.front(), detail);
     std::printf("endoscopic view of %s: %zu points, %zu triangles, %d frames per row\n", argv[1],
                 scene->surface.mesh.points.size(), scene->surface.mesh.triangles.size(), frames);
     std::printf("%-10s %-6s %-8s %-9s %-9s %9s %8s %10s %12s %14s %9s\n", "size", "detail", "shading", "surface",
