@@ -53,6 +53,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -199,44 +200,77 @@ Row measure(const hs::scene::Scene& scene, const hs::scene::ScopeLandmarks& land
             1000.0 * mainSeconds / frames};
 }
 
+/// An offscreen endoscopic view of the surface at rest in clear saline, aimed like the docs' pictures (--still and
+/// --views share it).
+class StillCamera {
+public:
+    StillCamera(const hs::scene::Scene& scene, const hs::scene::ScopeLandmarks& landmarks,
+                const hs::sim::ScopeFrame& frame, Size size, hs::simrender::ViewDetail detail)
+        : m_landmarks(landmarks), m_frame(frame) {
+        m_window->SetOffScreenRendering(1);
+        m_window->SetMultiSamples(0);
+        m_window->SetSize(size.width, size.height);
+        m_window->AddRenderer(m_renderer);
+        hs::simrender::EndoscopicLook look;
+        look.edgeMagnification = edgeMagnification;
+        look.depthOfField = depthOfField;
+        look.detail = detail;
+        m_view = std::make_unique<hs::simrender::EndoscopicView>(m_renderer, look);
+        m_view->setSurface(scene.surface);
+    }
+
+    /// The 30 degree optic's tip `fraction` of the way from the internal os to the fundus (negative: that share of
+    /// the way down the cervical canal, towards the external os), aimed about the pivot, rolled by `rollDeg`; draws
+    /// until the camera's exposure has settled (a tenth of a second of its time between frames, at most 40).
+    void aim(double fraction, double rollDeg) {
+        const hs::Vec3 tip =
+            fraction >= 0.0
+                ? m_landmarks.internalOsMm + (m_landmarks.fundusMm - m_landmarks.internalOsMm) * fraction
+                : m_landmarks.internalOsMm + (m_landmarks.externalOsMm - m_landmarks.internalOsMm) * -fraction;
+        hs::sim::WorldState state;
+        state.scope = hs::sim::scopePose(m_frame, m_config, hs::sim::sampleAiming(m_frame, tip, rollDeg));
+        state.fluid.pressureKpa = 10.0;
+        m_view->setPose(hs::simrender::cameraPose(state.scope, m_config));
+        m_view->setHud(hs::simrender::hudText(state, {}, {}));
+        for (int k = 0; k < 40; ++k) {
+            draw();
+            if (k > 0 && m_view->exposureSettled())
+                break;
+        }
+    }
+
+    /// One more frame, a tenth of a second of the camera's time after the last.
+    void draw() {
+        m_view->setTime(m_timeS);
+        m_timeS += 0.1;
+        m_window->Render();
+    }
+
+    vtkRenderWindow* window() { return m_window; }
+    const hs::simrender::EndoscopicView& view() const { return *m_view; }
+
+private:
+    const hs::scene::ScopeLandmarks& m_landmarks;
+    const hs::sim::ScopeFrame& m_frame;
+    hs::sim::ScopeConfig m_config;
+    vtkNew<vtkRenderWindow> m_window;
+    vtkNew<vtkRenderer> m_renderer;
+    std::unique_ptr<hs::simrender::EndoscopicView> m_view;
+    double m_timeS = 0.0;
+};
+
 int still(const hs::scene::Scene& scene, const hs::scene::ScopeLandmarks& landmarks, const hs::sim::ScopeFrame& frame,
           Size size, const double pose[2], hs::simrender::ViewDetail detail, const std::string& png) {
-    vtkNew<vtkRenderWindow> window;
-    window->SetOffScreenRendering(1);
-    window->SetMultiSamples(0);
-    window->SetSize(size.width, size.height);
-    vtkNew<vtkRenderer> renderer;
-    window->AddRenderer(renderer);
-    hs::simrender::EndoscopicLook look;
-    look.edgeMagnification = edgeMagnification;
-    look.depthOfField = depthOfField;
-    look.detail = detail;
-    hs::simrender::EndoscopicView view(renderer, look);
-    view.setSurface(scene.surface);
-    hs::sim::ScopeConfig config;
-    // A negative fraction puts the tip that share of the way down the cervical canal, towards the external os.
-    const hs::Vec3 tip = pose[0] >= 0.0
-                             ? landmarks.internalOsMm + (landmarks.fundusMm - landmarks.internalOsMm) * pose[0]
-                             : landmarks.internalOsMm + (landmarks.externalOsMm - landmarks.internalOsMm) * -pose[0];
-    hs::sim::WorldState state;
-    state.scope = hs::sim::scopePose(frame, config, hs::sim::sampleAiming(frame, tip, pose[1]));
-    state.fluid.pressureKpa = 10.0;
-    view.setPose(hs::simrender::cameraPose(state.scope, config));
-    view.setHud(hs::simrender::hudText(state, {}, {}));
-    // The camera's exposure settles on the still picture (a tenth of a second of its time between frames).
-    for (int k = 0; k < 40; ++k) {
-        view.setTime(0.1 * k);
-        window->Render();
-        if (k > 0 && view.exposureSettled())
-            break;
-    }
+    StillCamera camera(scene, landmarks, frame, size, detail);
+    camera.aim(pose[0], pose[1]);
     vtkNew<vtkWindowToImageFilter> grab;
-    grab->SetInput(window);
+    grab->SetInput(camera.window());
     grab->ReadFrontBufferOff();
     vtkNew<vtkPNGWriter> writer;
     writer->SetFileName(png.c_str());
     writer->SetInputConnection(grab->GetOutputPort());
     writer->Write();
+    const auto& view = camera.view();
     std::printf("%s: %s detail (GL renderer %s), %zu triangles\n", png.c_str(), view.lightDetail() ? "light" : "full",
                 view.glRenderer().c_str(), view.drawnTriangleCount());
     return 0;
@@ -248,51 +282,19 @@ constexpr double kViewRollsDeg[] = {0.0, 90.0, 180.0, 270.0};
 
 int views(const hs::scene::Scene& scene, const hs::scene::ScopeLandmarks& landmarks, const hs::sim::ScopeFrame& frame,
           Size size, hs::simrender::ViewDetail detail) {
-    vtkNew<vtkRenderWindow> window;
-    window->SetOffScreenRendering(1);
-    window->SetMultiSamples(0);
-    window->SetSize(size.width, size.height);
-    vtkNew<vtkRenderer> renderer;
-    window->AddRenderer(renderer);
-    hs::simrender::EndoscopicLook look;
-    look.edgeMagnification = edgeMagnification;
-    look.depthOfField = depthOfField;
-    look.detail = detail;
-    hs::simrender::EndoscopicView view(renderer, look);
-    view.setSurface(scene.surface);
-    hs::sim::ScopeConfig config;
+    StillCamera camera(scene, landmarks, frame, size, detail);
     std::printf("%-9s %6s %8s %9s %11s %9s\n", "fraction", "roll", "luma", "clipped%", "nearWhite%", "ms/frame");
     double lumaMin = 1.0, lumaMax = 0.0, lumaSum = 0.0, clippedMax = 0.0, highlightSum = 0.0, msSum = 0.0;
     int count = 0, inBand = 0;
-    double time = 0.0;
     for (double fraction : kViewFractions)
         for (double roll : kViewRollsDeg) {
-            const hs::Vec3 tip =
-                fraction >= 0.0
-                    ? landmarks.internalOsMm + (landmarks.fundusMm - landmarks.internalOsMm) * fraction
-                    : landmarks.internalOsMm + (landmarks.externalOsMm - landmarks.internalOsMm) * -fraction;
-            hs::sim::WorldState state;
-            state.scope = hs::sim::scopePose(frame, config, hs::sim::sampleAiming(frame, tip, roll));
-            state.fluid.pressureKpa = 10.0;
-            view.setPose(hs::simrender::cameraPose(state.scope, config));
-            view.setHud(hs::simrender::hudText(state, {}, {}));
-            // The exposure settles as in --still (a tenth of a second of the camera's time between frames), then
-            // five more frames are timed.
-            for (int k = 0; k < 40; ++k) {
-                time += 0.1;
-                view.setTime(time);
-                window->Render();
-                if (k > 0 && view.exposureSettled())
-                    break;
-            }
-            const hs::simrender::CircleStats stats = view.lastFrameStats();
+            camera.aim(fraction, roll);
+            const hs::simrender::CircleStats stats = camera.view().lastFrameStats();
+            // Five more frames, timed.
             constexpr int kTimed = 5;
             const auto start = std::chrono::steady_clock::now();
-            for (int k = 0; k < kTimed; ++k) {
-                time += 0.1;
-                view.setTime(time);
-                window->Render();
-            }
+            for (int k = 0; k < kTimed; ++k)
+                camera.draw();
             const double ms =
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() / kTimed;
             std::printf("%-9.2f %6.0f %8.3f %9.2f %11.3f %9.1f\n", fraction, roll, stats.meanLuminance,
@@ -308,8 +310,8 @@ int views(const hs::scene::Scene& scene, const hs::scene::ScopeLandmarks& landma
         }
     std::printf("views %d (%s detail, %dx%d): luma mean %.3f min %.3f max %.3f, in 0.35-0.65 %d; clipped max %.2f %%; "
                 "near white mean %.3f %%; %.1f fps\n",
-                count, view.lightDetail() ? "light" : "full", size.width, size.height, lumaSum / count, lumaMin,
-                lumaMax, inBand, 100.0 * clippedMax, 100.0 * highlightSum / count, 1000.0 * count / msSum);
+                count, camera.view().lightDetail() ? "light" : "full", size.width, size.height, lumaSum / count,
+                lumaMin, lumaMax, inBand, 100.0 * clippedMax, 100.0 * highlightSum / count, 1000.0 * count / msSum);
     return 0;
 }
 
