@@ -18,6 +18,8 @@ out=$3
 size=${4:-640x480}
 detail=${5:-}
 here=$(cd "$(dirname "$0")/.." && pwd)
+# shellcheck source=tools/sweep-lib.sh
+source "$here/tools/sweep-lib.sh"
 mkdir -p "$out/cases" "$out/scenes"
 python3 "$here/tools/sweep-cases.py" "$out/cases"
 cp "$here/resources/cases/default.json" "$out/cases/default.json"
@@ -26,13 +28,7 @@ printf '%-10s %7s %6s %6s %6s %9s %10s %6s %7s %7s %5s\n' case luma min max band
 for c in "$out"/cases/*.json; do
     n=$(basename "$c" .json)
     if [ ! -f "$out/scenes/$n/scene.json" ]; then
-        "$cli" generate "$c" -o "$out/scenes/$n" --threads 2 > "$out/$n.gen.log" 2>&1
-        rc=$?
-        if [ $rc -ne 0 ]; then
-            printf '%-10s generate failed (exit %s): %s\n' "$n" "$rc" "$(tail -1 "$out/$n.gen.log" | cut -c1-100)" \
-                >> "$out/table.txt"
-            continue
-        fi
+        sweep_generate "$cli" "$c" "$out" "$n" || continue
     fi
     "$cli" validate --json "$out/scenes/$n" > "$out/$n.validate.json" 2>&1
     # shellcheck disable=SC2086 # the detail flag is one word or none

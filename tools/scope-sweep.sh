@@ -15,6 +15,8 @@ cli=$(realpath "$1")
 out=$2
 diameter=${3:-2.9}
 here=$(cd "$(dirname "$0")/.." && pwd)
+# shellcheck source=tools/sweep-lib.sh
+source "$here/tools/sweep-lib.sh"
 rm -rf "$out"
 mkdir -p "$out/cases"
 python3 "$here/tools/sweep-cases.py" "$out/cases"
@@ -23,13 +25,7 @@ printf '%-10s %8s %-12s %8s %6s %9s %-12s %6s %9s %7s %7s %s\n' case canal-mm pa
     straight-mm left-% right-% hidden-by > "$out/table.txt"
 for c in "$out"/cases/*.json; do
     n=$(basename "$c" .json)
-    "$cli" generate "$c" -o "$out/scenes/$n" --threads 2 > "$out/$n.gen.log" 2>&1
-    rc=$?
-    if [ $rc -ne 0 ]; then
-        printf '%-10s generate failed (exit %s): %s\n' "$n" "$rc" "$(tail -1 "$out/$n.gen.log" | cut -c1-100)" \
-            >> "$out/table.txt"
-        continue
-    fi
+    sweep_generate "$cli" "$c" "$out" "$n" || continue
     "$cli" validate --json --scope-diameter "$diameter" "$out/scenes/$n" > "$out/$n.validate.json" 2>&1
     python3 - "$n" "$out/$n.validate.json" >> "$out/table.txt" <<'PY'
 import json, sys
