@@ -14,8 +14,8 @@ namespace {
 /// +u (the texel's +x), B = N x T, N the face's normal. A chart is a planar projection, so a face tilted against its
 /// chart's plane is foreshortened there: one texel covers more of the surface along the tilt than across it, and the
 /// texel's axes are not orthogonal on the surface. Dividing texel differences by the texel's nominal size overstates
-/// the slope by 1 / cos(tilt) (5x at the 78 degrees a chart admits), and the neighbouring chart, seen head on, does
-/// not: the relief changed at every seam.
+/// the slope by 1 / cos(tilt) (1.3x at the atlas's 40 degrees), and the neighbouring chart, seen head on, does not:
+/// the relief changed at every seam.
 struct FaceFrame {
     // (du, dv) = (hx * toU, (hy - hx * cross) * toV) for the height's differences per texel along +x (hx) and +y (hy).
     double toU = 0.0, cross = 0.0, toV = 0.0;
