@@ -81,6 +81,7 @@ double AutoExposure::update(const CircleStats& stats, double elapsedS) {
     double tau = std::max(1e-3, m_settings.timeConstantS);
     const double over =
         std::max(stats.clippedFraction / m_settings.clippedLimit, stats.highlightFraction / m_settings.nearWhiteLimit);
+    bool mildlyOver = false;
     if (!m_first && over > 1.0) {
         m_ceiling = std::min(m_ceiling, m_exposure * std::exp2(-kCeilingMarginStops));
         m_calmS = 0.0;
@@ -88,8 +89,7 @@ double AutoExposure::update(const CircleStats& stats, double elapsedS) {
             errorStops = std::min(errorStops, -std::log2(over));
             tau *= 0.25;
         } else {
-            errorStops = std::min(errorStops, -kCeilingMarginStops);
-            tau = 0.0; // the whole margin at once
+            mildlyOver = true;
         }
     } else if (!m_first) {
         m_calmS = over < kCeilingForgetBelow ? m_calmS + elapsedS : 0.0;
@@ -97,10 +97,12 @@ double AutoExposure::update(const CircleStats& stats, double elapsedS) {
                         ? m_settings.maxExposure
                         : std::min(m_settings.maxExposure, m_ceiling * std::exp2(kCeilingRiseStopsPerS * elapsedS));
     }
-    const double share = m_first || tau <= 0.0 ? 1.0 : 1.0 - std::exp(-elapsedS / tau);
+    const double share = m_first ? 1.0 : 1.0 - std::exp(-elapsedS / tau);
     m_first = false;
+    // A little over a limit: at least the ceiling's margin down at once, more at the mean's pace if it wants more.
+    const double stepStops = mildlyOver ? std::min(errorStops * share, -kCeilingMarginStops) : errorStops * share;
     const double before = m_exposure;
-    const double wanted = m_exposure * std::exp2(errorStops * share);
+    const double wanted = m_exposure * std::exp2(stepStops);
     const double next = wanted > before ? std::min(wanted, std::max(before, m_ceiling)) : wanted;
     m_exposure = std::clamp(next, m_settings.minExposure, m_settings.maxExposure);
     // Settled: moving by less than a twentieth of a stop, no peak over its limit, and not held by a ceiling that
