@@ -2,7 +2,9 @@
 // on a scene's simulation-mesh resolution, and on the scene's simulation mesh its cost and its convergence per
 // iteration. Tables, not tests (the bars are asserted by test_mechanics).
 //
-//   bench_tissue [PACKAGE [--package-only | --point-load]]
+//   bench_tissue [PACKAGE [--package-only | --point-load]] | --coarse-punch
+// --coarse-punch: the punch on uniform elements of 2-8 mm (the tip's load on one point, as on a simulation mesh), its
+// force against Boussinesq's, and the effective radius that force means (docs/simulator.md, "The tip's contact").
 // --point-load: on the package's uterus model, a force along the inward normal of one cavity point, solved statically
 // with the cavity at 0, 30 and 80 mmHg: the wall's point nearest the fundus and each pathology's cavity point nearest
 // the internal os (the one a scope from the canal meets first), its stiffness and its ratio to the wall's.
@@ -312,8 +314,35 @@ void pointLoadTable(const std::string& package) {
     }
 }
 
+/// The punch on coarse uniform elements: the force is a point load's on a node, about Boussinesq's for an effective
+/// radius proportional to the element's size.
+void coarsePunchTable() {
+    std::printf("| element mm | E kPa | nu | solver N | Boussinesq N | error | effective radius mm | / element |\n"
+                "|---|---|---|---|---|---|---|---|\n");
+    for (const double nu : {0.45, 0.47, 0.49})
+        for (const double edge : {2.0, 3.0, 4.4, 6.0, 8.0}) {
+            PunchParams p;
+            p.poissonRatio = nu;
+            p.finestMm = edge;
+            p.growth = 1.0;
+            p.domainRadii = std::max(20.0, 8.0 * edge / p.punchRadiusMm);
+            p.sectors = 4;
+            const auto r = runPunch(p);
+            if (!r)
+                continue;
+            // F = 2 a E delta / (1 - nu^2): the radius that gives the solver's force.
+            const double effective = p.punchRadiusMm * r->simulated / r->analytic;
+            std::printf("| %.1f | %.0f | %.2f | %.5f | %.5f | %+.1f %% | %.2f | %.3f |\n", edge, p.youngsModulusKpa, nu,
+                        r->simulated, r->analytic, r->errorPercent, effective, effective / edge);
+        }
+}
+
 int main(int argc, char** argv) {
     std::setvbuf(stdout, nullptr, _IOLBF, 0);
+    if (argc > 1 && std::string(argv[1]) == "--coarse-punch") {
+        coarsePunchTable();
+        return 0;
+    }
     if (argc > 2 && std::string(argv[2]) == "--point-load") {
         pointLoadTable(argv[1]);
         return 0;

@@ -998,6 +998,45 @@ FemConstraint contactRow(const std::array<std::int32_t, 3>& points, const std::a
     return row;
 }
 
+double punchSubElementCompliance(double punchRadiusM, double edgeM, const std::array<double, 3>& weights,
+                                 const FemMaterial& material) {
+    const double nu = material.poissonRatio, e = material.youngsModulusPa;
+    if (!(punchRadiusM > 0.0) || !(edgeM > 0.0) || !(e > 0.0) || !std::isfinite(nu) || !std::isfinite(edgeM))
+        return 0.0;
+    // alpha(nu): the punch's effective radius per element size for a load on one point (h = 6 mm).
+    constexpr std::array<std::pair<double, double>, 3> kAlpha{{{0.45, 0.418}, {0.47, 0.430}, {0.49, 0.492}}};
+    double alpha = kAlpha.front().second;
+    if (nu >= kAlpha.back().first)
+        alpha = kAlpha.back().second;
+    else
+        for (std::size_t i = 0; i + 1 < kAlpha.size(); ++i)
+            if (nu >= kAlpha[i].first && nu <= kAlpha[i + 1].first) {
+                const double s = (nu - kAlpha[i].first) / (kAlpha[i + 1].first - kAlpha[i].first);
+                alpha = kAlpha[i].second + s * (kAlpha[i + 1].second - kAlpha[i].second);
+            }
+    double sum = 0.0, squares = 0.0;
+    for (const double w : weights) {
+        const double clamped = std::clamp(std::isfinite(w) ? w : 0.0, 0.0, 1.0);
+        sum += clamped;
+        squares += clamped * clamped;
+    }
+    const double s = sum > 0.0 ? squares / (sum * sum) : 1.0;
+    constexpr double kPi = 3.14159265358979323846;
+    const double scale = (1.0 - nu * nu) / e;
+    const double mesh = scale / edgeM * (s / (2.0 * alpha) + (1.0 - s) / kPi);
+    const double punch = scale / (2.0 * punchRadiusM);
+    return std::max(0.0, punch - mesh);
+}
+
+double punchDimpleStiffening(double dimpleM, double punchRadiusM, const FemMaterial& material, double maxStiffening) {
+    const double c = material.stiffeningStrain;
+    if (!(c > 0.0) || !(punchRadiusM > 0.0) || !(dimpleM > 0.0) || !std::isfinite(dimpleM))
+        return 1.0;
+    const double x = std::min(std::sqrt(2.0 / 3.0) * dimpleM / punchRadiusM / c, 20.0);
+    const double secant = x < 1e-4 ? 1.0 + x * x / 6.0 : std::sinh(x) / x;
+    return std::clamp(secant, 1.0, std::max(1.0, maxStiffening));
+}
+
 namespace {
 
 /// R^T v for a point's rotation R (row-major): a vector of the tissue's frame in the rest frame the factor has.

@@ -125,6 +125,27 @@ void solveComplementarity(const std::vector<double>& w, const std::vector<double
 FemConstraint contactRow(const std::array<std::int32_t, 3>& points, const std::array<double, 3>& weights,
                          const Vec3& normal, const Vec3& planePointM);
 
+/// The give a flat punch of radius `punchRadiusM` finds below the resolution of a mesh whose surface edges are
+/// `edgeM` long, pressing a face at the barycentric `weights`, m/N: what a contact row needs in `selfCompliance` so
+/// that the press meets Boussinesq's F = 2 a E delta / (1 - nu^2) on that mesh (docs/simulator.md, "The tip's
+/// contact"). The mesh's own local give for such a load (the same material's half-space):
+/// - a load on one point of elements of size h acts as a punch of radius alpha h: (1 - nu^2) / (2 E alpha h), with
+///   alpha 0.418 / 0.430 / 0.492 at nu 0.45 / 0.47 / 0.49 (`bench_tissue --coarse-punch`, h 2-8 mm; interpolated
+///   between, held beyond);
+/// - spread over the face's three points by the weights w, the points' cross terms at a distance h are the point
+///   load's far field on a half-space, (1 - nu^2) / (pi E h) (Boussinesq; Johnson, Contact Mechanics, 1985, 3.2):
+///   the give is (1 - nu^2) / (E h) (S / (2 alpha) + (1 - S) / pi), S = sum w^2 (1 at a point, 1/3 at the centre).
+/// The difference from the punch's (1 - nu^2) / (2 E a) is added in series; 0 where the mesh is softer already.
+/// Small-strain modulus: the material's stiffening is the mesh's part.
+double punchSubElementCompliance(double punchRadiusM, double edgeM, const std::array<double, 3>& weights,
+                                 const FemMaterial& material);
+
+/// The stiffening of a punch's dimple `dimpleM` deep under a punch of radius `punchRadiusM`: the secant factor of
+/// the material's own law (FemMaterial::stiffeningStrain; sinh x / x, x = |dev e| / c) at the representative strain
+/// delta / a of a uniaxial compression (|dev e| = sqrt(2/3) delta / a), held below `maxStiffening` as the solver
+/// holds its tets' (FemSettings::maxStiffening). 1 for a linear material. Divides punchSubElementCompliance.
+double punchDimpleStiffening(double dimpleM, double punchRadiusM, const FemMaterial& material, double maxStiffening);
+
 /// The obstacles' own compliance between constraints (row-major k x k, in C per unit force; empty: rigid obstacles
 /// held in place). A scope held by a virtual coupling gives way by G K^-1 G^T.
 struct ObstacleCompliance {
@@ -199,6 +220,8 @@ public:
         std::size_t downdated = 0;
     };
     Removal removeTets(const std::vector<std::size_t>& tets, Refactor refactor = Refactor::Now);
+    /// The material of `tet` (as built).
+    const FemMaterial& material(std::size_t tet) const { return m_materials[tet]; }
     bool tetRemoved(std::size_t tet) const { return tet < m_removed.size() && m_removed[tet] != 0; }
     std::size_t liveTetCount() const { return m_liveTets; }
     /// Whether tets were removed since the matrix was factored (removeTets with Refactor::Later).
