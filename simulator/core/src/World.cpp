@@ -327,7 +327,7 @@ const TrialMetrics& World::metrics() const {
 }
 
 std::string_view physicsEngine() {
-    return "corotational-fem/8";
+    return "corotational-fem/9";
 }
 
 Status checkReplay(const TrialHeader& trial, const WorldOptions& options) {
