@@ -116,12 +116,7 @@ void packageTables(const std::string& package) {
     const double edge = meanEdgeMm(mesh);
     std::printf("\nThe same problems at the simulation mesh's resolution (mean edge %.2f mm)\n", edge);
     {
-        PunchParams p;
-        p.finestMm = edge;
-        p.growth = 1.0;
-        p.domainRadii = std::max(20.0, 8.0 * edge / p.punchRadiusMm);
-        p.sectors = 4;
-        const auto r = runPunch(p);
+        const auto r = runPunch(coarsePunchParams(edge));
         if (r)
             std::printf("punch a 1.45 mm on %.1f mm elements: %.5f N, Boussinesq %.5f N, error %+.1f %% (%zu tets)\n",
                         edge, r->simulated, r->analytic, r->errorPercent, r->tets);
@@ -321,12 +316,8 @@ void coarsePunchTable() {
                 "|---|---|---|---|---|---|---|---|\n");
     for (const double nu : {0.45, 0.47, 0.49})
         for (const double edge : {2.0, 3.0, 4.4, 6.0, 8.0}) {
-            PunchParams p;
+            PunchParams p = coarsePunchParams(edge);
             p.poissonRatio = nu;
-            p.finestMm = edge;
-            p.growth = 1.0;
-            p.domainRadii = std::max(20.0, 8.0 * edge / p.punchRadiusMm);
-            p.sectors = 4;
             const auto r = runPunch(p);
             if (!r)
                 continue;

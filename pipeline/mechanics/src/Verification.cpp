@@ -99,6 +99,15 @@ double lameInnerDisplacementMm(double innerMm, double outerMm, double pressureKp
            ((1.0 - 2.0 * poissonRatio) * a + (1.0 + poissonRatio) * b3 / (2.0 * a * a));
 }
 
+PunchParams coarsePunchParams(double edgeMm) {
+    PunchParams p;
+    p.finestMm = edgeMm;
+    p.growth = 1.0;
+    p.domainRadii = std::max(20.0, 8.0 * edgeMm / p.punchRadiusMm);
+    p.sectors = 4;
+    return p;
+}
+
 Result<VerificationResult> runPunch(const PunchParams& p) {
     HS_TRY(checkMaterial(p.youngsModulusKpa, p.poissonRatio));
     if (!(p.punchRadiusMm > 0.0) || !(p.depthMm > 0.0) || !(p.domainRadii >= 2.0) || !(p.finestMm > 0.0) ||

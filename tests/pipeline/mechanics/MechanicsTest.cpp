@@ -72,13 +72,9 @@ TEST(Mechanics, TheTipsSubElementGiveBringsACoarseMeshsPunchToBoussinesq) {
     for (const double nu : {0.45, 0.47, 0.49})
         for (const double e : {30.0})
             for (const double edge : {3.0, 4.4, 6.0, 8.0}) {
-                PunchParams p;
+                PunchParams p = coarsePunchParams(edge);
                 p.youngsModulusKpa = e;
                 p.poissonRatio = nu;
-                p.finestMm = edge;
-                p.growth = 1.0;
-                p.domainRadii = std::max(20.0, 8.0 * edge / p.punchRadiusMm);
-                p.sectors = 4;
                 const auto r = runPunch(p);
                 ASSERT_TRUE(r) << r.error().detail;
                 FemMaterial material;

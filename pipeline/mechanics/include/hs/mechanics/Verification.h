@@ -39,6 +39,10 @@ struct VerificationResult {
     double seconds = 0.0;   ///< wall time of the run (mesh, factor, steps)
 };
 
+/// The punch on uniform elements of `edgeMm` (4 per quarter circle, the block at least 8 elements wide), coarser than
+/// the punch: its load falls on the axis point alone, as a scope's tip on a simulation mesh's face.
+PunchParams coarsePunchParams(double edgeMm);
+
 /// Boussinesq's punch: `simulated` and `analytic` are forces, N.
 [[nodiscard]] Result<VerificationResult> runPunch(const PunchParams& params);
 double boussinesqPunchForceN(double radiusMm, double depthMm, double youngsModulusKpa, double poissonRatio);
