@@ -12,7 +12,6 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <memory>
 #include <optional>
 #include <string>
@@ -26,10 +25,9 @@ public:
         static SimPackage package(Variant::PosteriorPolyp);
         return package.m_folder;
     }
-    /// The default case with its myoma at the fundus, FIGO 2 and 25 mm (seated in the wall, a third or more of it in
-    /// the cavity), and no polyp: the scope meets the myoma head-on.
-    static const std::string& seatedMyomaFolder() {
-        static SimPackage package(Variant::SeatedMyoma);
+    /// The same with the myoma at the fundus, FIGO 1 (mostly in the cavity): the scope meets it head-on.
+    static const std::string& fundalMyomaFolder() {
+        static SimPackage package(Variant::FundalMyoma);
         return package.m_folder;
     }
     /// The default case with its polyp put on the right tubal ostium on purpose (by a point): the scene has one ostium.
@@ -39,9 +37,9 @@ public:
     }
 
 private:
-    enum class Variant { PosteriorPolyp, SeatedMyoma, PolypOnTheRightOstium };
+    enum class Variant { PosteriorPolyp, FundalMyoma, PolypOnTheRightOstium };
     explicit SimPackage(Variant variant) : m_dir(std::make_unique<TempDir>("hs-sim-package")) {
-        const bool seatedMyoma = variant == Variant::SeatedMyoma;
+        const bool fundalMyoma = variant == Variant::FundalMyoma;
         auto spec = scene::loadCase(HS_DEFAULT_CASE_FILE);
         if (!spec) {
             ADD_FAILURE() << spec.error().detail;
@@ -65,16 +63,10 @@ private:
                 continue;
             else if (p.kind == clinical::PathologyKind::Polyp)
                 p.placement = clinical::ClinicalPlacement{clinical::UterineLocation::Posterior};
-            else if (seatedMyoma && p.kind == clinical::PathologyKind::Myoma) {
+            else if (fundalMyoma && p.kind == clinical::PathologyKind::Myoma) {
                 p.placement = clinical::ClinicalPlacement{clinical::UterineLocation::Fundal};
-                p.figo = clinical::FigoType{2, -1};
-                p.sizeMm = 25.0;
+                p.figo = clinical::FigoType{1, -1};
             }
-        if (seatedMyoma)
-            spec->pathologies.erase(
-                std::remove_if(spec->pathologies.begin(), spec->pathologies.end(),
-                               [](const scene::PathologySpec& p) { return p.kind == clinical::PathologyKind::Polyp; }),
-                spec->pathologies.end());
         spec->texture.sizePx = 256;
         generate::GenerateParams params;
         params.caseFile = HS_DEFAULT_CASE_FILE;

@@ -24,8 +24,7 @@ struct Candidate {
     mechanics::FemConstraint row;
     std::array<double, 3> scopeGradient{};
     Vec3 normal;
-    Vec3 centreMm;     ///< the sphere's centre at the target pose
-    double give = 0.0; ///< m/N, the tip's sub-element give on this face (World::Impl::tipCompliance)
+    Vec3 centreMm; ///< the sphere's centre at the target pose
 };
 
 /// The coupling's stiffness per scope dof (N/m, N m/rad, N m/rad): about a pivot at the introitus, `introitusMm`
@@ -44,52 +43,7 @@ DeviceSample withDofs(DeviceSample s, const std::array<double, 3>& q) {
     return s;
 }
 
-/// The tip's sub-element give, m/N: the mean of its faces' (0 without a tip row).
-double tipGive(const std::vector<Candidate>& candidates) {
-    double sum = 0.0;
-    std::size_t n = 0;
-    for (const Candidate& k : candidates)
-        if (k.sphere == 0) {
-            sum += k.give;
-            ++n;
-        }
-    return n > 0 && std::isfinite(sum) ? sum / static_cast<double>(n) : 0.0;
-}
-
-/// The scope's dofs that move its tip by `outMm` (out of its dimple), with `tipPerDof` the tip's motion per dof (mm
-/// per SI unit); zero for no motion or a degenerate frame.
-std::array<double, 3> outOfDimple(const Vec3& outMm, const std::array<Vec3, 3>& tipPerDof) {
-    const auto det = [](const Vec3& a, const Vec3& b, const Vec3& c) { return dot(a, cross(b, c)); };
-    const double d = det(tipPerDof[0], tipPerDof[1], tipPerDof[2]);
-    if (norm2(outMm) == 0.0 || !(std::abs(d) > 0.0) || !std::isfinite(d))
-        return {0.0, 0.0, 0.0};
-    // Cramer's rule.
-    const std::array<double, 3> dq{det(outMm, tipPerDof[1], tipPerDof[2]) / d,
-                                   det(tipPerDof[0], outMm, tipPerDof[2]) / d,
-                                   det(tipPerDof[0], tipPerDof[1], outMm) / d};
-    for (const double v : dq)
-        if (!std::isfinite(v))
-            return {0.0, 0.0, 0.0};
-    return dq;
-}
-
 } // namespace
-
-double World::Impl::tipCompliance(std::int32_t f, const std::array<double, 3>& weights) const {
-    const auto face = static_cast<std::size_t>(f);
-    if (face >= faceTet.size() || faceTet[face] < 0)
-        return 0.0;
-    const Triangle& t = (*triangles)[face];
-    const auto& p = simRest.points;
-    const double edgeMm = (distance(p[static_cast<std::size_t>(t[0])], p[static_cast<std::size_t>(t[1])]) +
-                           distance(p[static_cast<std::size_t>(t[1])], p[static_cast<std::size_t>(t[2])]) +
-                           distance(p[static_cast<std::size_t>(t[2])], p[static_cast<std::size_t>(t[0])])) /
-                          3.0;
-    const double radiusM = 0.5 * options.scope.diameterMm * kMm;
-    const mechanics::FemMaterial& material = tissue.material(static_cast<std::size_t>(faceTet[face]));
-    return mechanics::punchSubElementCompliance(radiusM, edgeMm * kMm, weights, material) /
-           mechanics::punchDimpleStiffening(tipDimpleM, radiusM, material, tissue.settings().maxStiffening);
-}
 
 DeviceSample World::Impl::physicsSample(const DeviceSample& device) const {
     return scopePlaced ? withDofs(device, scopeDofs) : device;
@@ -175,11 +129,6 @@ void World::Impl::physics(const DeviceSample& device, double pressureKpa) {
                 k.scopeGradient[j] = dot(n, dc[j]) * kMm;
             k.row =
                 mechanics::contactRow({tri[0], tri[1], tri[2]}, {cp.wa, cp.wb, cp.wc}, n, (centre - n * radius) * kMm);
-            // The tip's flat end on the cavity's wall (or a cut's face) presses as a punch on a half-space; in the
-            // canal, a tube about its own width, its rim meets the wall side-on, and the mesh's stiffness stands.
-            const auto fi = static_cast<std::size_t>(f);
-            if (sphere == 0 && (faceInCavity[fi] || faceCut[fi]))
-                k.give = tipCompliance(f, {cp.wa, cp.wb, cp.wc});
             // Inside the wall already: out by at most kMaxDepenetrationMm this step.
             if (gap < -kMaxDepenetrationMm)
                 k.row.offset += (-kMaxDepenetrationMm - gap) * kMm;
@@ -207,15 +156,6 @@ void World::Impl::physics(const DeviceSample& device, double pressureKpa) {
                 coupling.matrix[i * count + j] +=
                     candidates[i].scopeGradient[d] * candidates[j].scopeGradient[d] / stiffness[d];
 
-    // The tip's flat end presses as a punch of the scope's radius, finer than the faces: the give the mesh cannot
-    // show (Boussinesq's, less the mesh's own at its faces' size) is the tip's, in series with all its rows along
-    // their normals (one dimple, however many faces the tip meets).
-    const double give = tipGive(candidates);
-    for (std::size_t i = 0; i < count; ++i)
-        for (std::size_t j = 0; j < count; ++j)
-            if (candidates[i].sphere == 0 && candidates[j].sphere == 0)
-                coupling.matrix[i * count + j] += give * dot(candidates[i].normal, candidates[j].normal);
-
     std::vector<Vec3> forces;
     uterus.pressureForces(pointsMm, pressureKpa, forces);
     timings.contactSearchMs +=
@@ -235,25 +175,10 @@ void World::Impl::physics(const DeviceSample& device, double pressureKpa) {
     // coupling then pulls the device back).
     const bool aligned = rows.size() == count;
     std::array<double, 3> held = target;
-    tipDimpleM = 0.0;
-    if (aligned) {
+    if (aligned)
         for (std::size_t i = 0; i < count; ++i)
             for (std::size_t d = 0; d < 3; ++d)
                 held[d] += candidates[i].scopeGradient[d] * rows[i].force / stiffness[d];
-        // The tip sinks into the tissue by the sub-element give times its rows' net force, a dimple finer than the
-        // faces: the scope is held where the faces are, drawn and searched from there.
-        Vec3 net{0.0, 0.0, 0.0};
-        for (std::size_t i = 0; i < count; ++i)
-            if (candidates[i].sphere == 0 && rows[i].force > 0.0)
-                net += candidates[i].normal * rows[i].force;
-        std::array<Vec3, 3> tipPerDof;
-        for (std::size_t d = 0; d < 3; ++d)
-            tipPerDof[d] = (nudged[d].tipMm - poseFrom.tipMm) / kEpsilon;
-        const std::array<double, 3> back = outOfDimple(net * (give / kMm), tipPerDof);
-        tipDimpleM = give * norm(net); // for the dimple's stiffening in the next step
-        for (std::size_t d = 0; d < 3; ++d)
-            held[d] += back[d];
-    }
     const double move = distance(scopePose(frame, config, withDofs(device, held)).tipMm, poseFrom.tipMm);
     const std::array<double, 3> before = scopeDofs;
     for (std::size_t d = 0; d < 3; ++d)
@@ -279,7 +204,6 @@ void World::Impl::physics(const DeviceSample& device, double pressureKpa) {
             h.tip = candidates[i].sphere == 0;
             hapticContacts.push_back(h);
         }
-        hapticTipGive = give;
         if (tissue.lastContactCompliance().size() == count * count)
             hapticCompliance = tissue.lastContactCompliance();
         else
@@ -403,7 +327,6 @@ void World::Impl::publishFrame() {
     f->scopeDofs = scopeDofs;
     f->couplingStiffness = couplingStiffness(frame.introitusMm);
     f->contacts = hapticContacts;
-    f->tipComplianceMPerN = hapticTipGive;
     f->compliance = hapticCompliance;
     f->perforated = state.contact.perforated;
     std::lock_guard<std::mutex> lock(frameMutex);
