@@ -4,7 +4,7 @@
 //
 //   bench_tissue [PACKAGE [--package-only | --point-load]] | --coarse-punch
 // --coarse-punch: the punch on uniform elements of 2-8 mm (the tip's load on one point, as on a simulation mesh), its
-// force against Boussinesq's, and the effective radius that force means (docs/simulator.md, "The tip's contact").
+// force against Boussinesq's, and the effective radius that force means (docs/simulator.md, "Verification").
 // --point-load: on the package's uterus model, a force along the inward normal of one cavity point, solved statically
 // with the cavity at 0, 30 and 80 mmHg: the wall's point nearest the fundus and each pathology's cavity point nearest
 // the internal os (the one a scope from the canal meets first), its stiffness and its ratio to the wall's.

@@ -64,7 +64,7 @@ INSTANTIATE_TEST_SUITE_P(TissueRange, SphereCorners,
 
 TEST(Mechanics, TheTipsSubElementGiveBringsACoarseMeshsPunchToBoussinesq) {
     // On elements coarser than the punch the load falls on one point, and the mesh is stiffer than the textbook by
-    // about alpha h / a (docs/simulator.md, "The tip's contact"); the sub-element give in series brings it back within
+    // about alpha h / a (docs/simulator.md, "Verification"); the sub-element give in series brings it back within
     // the fine punch's bar, at every element size and Poisson ratio of the tissues. alpha was measured on this
     // benchmark at 6 mm (bench_tissue --coarse-punch): what this guards is the law across sizes and ratios (the
     // modulus scales both sides alike; an independent check, the press of a seated myoma against the wall in the

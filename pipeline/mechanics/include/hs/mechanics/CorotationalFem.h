@@ -127,8 +127,8 @@ FemConstraint contactRow(const std::array<std::int32_t, 3>& points, const std::a
 
 /// The give a flat punch of radius `punchRadiusM` finds below the resolution of a mesh whose surface edges are
 /// `edgeM` long, pressing a face at the barycentric `weights`, m/N: what a contact row needs in `selfCompliance` so
-/// that the press meets Boussinesq's F = 2 a E delta / (1 - nu^2) on that mesh (docs/simulator.md, "The tip's
-/// contact"). The mesh's own local give for such a load (the same material's half-space):
+/// that the press meets Boussinesq's F = 2 a E delta / (1 - nu^2) on that mesh (docs/simulator.md, "Verification").
+/// The mesh's own local give for such a load (the same material's half-space):
 /// - a load on one point of elements of size h acts as a punch of radius alpha h: (1 - nu^2) / (2 E alpha h), with
 ///   alpha 0.418 / 0.430 / 0.492 at nu 0.45 / 0.47 / 0.49 (`bench_tissue --coarse-punch`, h 2-8 mm; interpolated
 ///   between, held beyond);
@@ -215,8 +215,6 @@ public:
         std::size_t downdated = 0;
     };
     Removal removeTets(const std::vector<std::size_t>& tets, Refactor refactor = Refactor::Now);
-    /// The material of `tet` (as built).
-    const FemMaterial& material(std::size_t tet) const { return m_materials[tet]; }
     bool tetRemoved(std::size_t tet) const { return tet < m_removed.size() && m_removed[tet] != 0; }
     std::size_t liveTetCount() const { return m_liveTets; }
     /// Whether tets were removed since the matrix was factored (removeTets with Refactor::Later).
