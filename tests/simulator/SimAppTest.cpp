@@ -72,7 +72,9 @@ TEST(SimCommandLine, RefusesBadArgumentsWithUsageErrors) {
          {"--optic 45 scene", "--diameter 3 scene", "--exercise surgery scene", "--frobnicate scene",
           "scene --headless", "scene --device joystick", "scene --device hid:xyz:1",
           "scene --replay t.trial --device scripted:s.json", "scene --demo --device hid",
-          "scene --demo --replay t.trial", "--write-demo d.json"}) {
+          "scene --demo --replay t.trial", "--write-demo d.json", "scene --headless --demo --seconds 0",
+          "scene --headless --demo --seconds -1", "scene --headless --replay t.trial --seconds 5",
+          "scene --demo --seconds 5"}) {
         const auto run = sim(arguments);
         EXPECT_EQ(run.exitCode, 2) << arguments << "\n" << run.out;
     }
@@ -282,14 +284,17 @@ TEST_F(SimHeadless, ScriptedRunAndItsReplayReportTheSameBytes) {
 
 TEST_F(SimHeadless, TheDemoPlaysTheBuiltInExplorationAndRecordsItsTrial) {
     // `--demo` (also `--device demo`): the exploration the world plans on its own scene (sim::explorationScript), so
-    // a supervisor can watch it and a check can run it; its trial replays to the same report.
+    // a supervisor can watch it and a check can run it; its trial replays to the same report. The whole 60 s
+    // exploration is World.AScriptedExplorationSeesBothOstiaWithoutPerforation's (test_sim_core); here `--seconds`
+    // plays its first 12 s (the canal and into the cavity), and the trial records just the samples played.
     hs::test::TempDir tmp;
-    const auto demo = sim(shellQuote(s_package) + " --exercise exploration --demo --headless --record " +
+    const auto demo = sim(shellQuote(s_package) + " --exercise exploration --demo --headless --seconds 12 --record " +
                           shellQuote(tmp.file("t.trial")) + " --report " + shellQuote(tmp.file("a.json")));
     ASSERT_EQ(demo.exitCode, 0) << demo.out;
     const std::string a = readText(tmp.file("a.json"));
     EXPECT_NE(a.find("\"device\":\"demo\""), std::string::npos) << a.substr(0, 1000);
     EXPECT_NE(a.find("\"perforations\":[]"), std::string::npos) << a.substr(0, 3000);
+    EXPECT_NE(a.find("\"samples\":12000"), std::string::npos) << a.substr(0, 1000);
     const auto replayed = sim(shellQuote(s_package) + " --headless --replay " + shellQuote(tmp.file("t.trial")) +
                               " --report " + shellQuote(tmp.file("b.json")));
     ASSERT_EQ(replayed.exitCode, 0) << replayed.out;

@@ -4,6 +4,8 @@
 #include "hs/core/ExitCode.h"
 #include "hs/simapp/PhysicsLoop.h"
 
+#include <cmath>
+#include <cstdint>
 #include <ctime>
 #include <iostream>
 
@@ -27,7 +29,10 @@ Result<ScriptedRun> runScripted(const SimOptions& options, const std::string& st
     run.trial.header = (*world)->trialHeader();
     run.trial.header.device = options.device.text();
     run.trial.header.startedUtc = startedUtc;
-    ScriptSource source(std::move(*script));
+    const std::uint64_t tickLimit =
+        options.stopAfterS > 0.0 ? static_cast<std::uint64_t>(std::ceil(options.stopAfterS * sim::kDeviceRateHz))
+                                 : UINT64_MAX;
+    ScriptSource source(std::move(*script), tickLimit);
     auto steps = runSteps(**world, source, &run.trial.samples);
     if (!steps)
         return steps.failure();

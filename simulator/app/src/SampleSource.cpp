@@ -9,7 +9,7 @@
 namespace hs::simapp {
 
 bool ScriptSource::next(std::uint64_t firstTick, std::size_t count, sim::DeviceSample* out) {
-    if (firstTick >= m_script.tickCount())
+    if (firstTick >= m_script.tickCount() || firstTick >= m_tickLimit)
         return false;
     for (std::size_t i = 0; i < count; ++i) {
         out[i] = m_script.sampleAt(firstTick + i);

@@ -4,6 +4,7 @@
 
 #include "hs/core/ExitCode.h"
 #include "hs/core/Units.h"
+#include "hs/sim/Script.h"
 
 #include <CLI/CLI.hpp>
 
@@ -49,6 +50,9 @@ std::string combinationProblem(const SimOptions& o) {
         return "--headless needs a SCENE";
     if (!o.writeDemoPath.empty() && o.scene.empty())
         return "--write-demo needs a SCENE";
+    if (o.stopAfterS > 0.0 && (!o.headless || !o.replayPath.empty()))
+        return "--seconds cuts a headless scripted run or the demo short: a replay plays its whole trial, a window "
+               "runs until it is closed";
     if (!o.htmlPath.empty() && o.reportPath.empty() && o.headless)
         return "--html needs --report OUT.json";
     return {};
@@ -155,6 +159,10 @@ ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
         ->check(CLI::Range(0.0, 3600.0))
         ->group("");
     app.add_flag("--headless", o.headless, "no window: step as fast as possible (with --replay or a scripted device)");
+    app.add_option("--seconds", o.stopAfterS,
+                   "headless: stop the script or the demo after this many seconds of trial time (a check of its "
+                   "first part; the recorded trial holds the samples played)")
+        ->check(CLI::Range(1.0 / sim::kDeviceRateHz, sim::kMaxScriptSeconds));
     app.add_option("--report", o.reportPath, "write the trial's report (JSON) here");
     app.add_option("--html", o.htmlPath, "write the trial's report page (HTML) here");
     // The workstation's convention (--lang, else HS_LANG, else the system locale); headless runs stay English.

@@ -36,14 +36,17 @@ public:
     virtual std::uint64_t skippedSamples() const { return 0; }
 };
 
-/// A script's samples; ends after its last key frame (the last step is filled with the last key frame's sample).
+/// A script's samples; ends after its last key frame (the last step is filled with the last key frame's sample), or
+/// before tick `tickLimit` when that comes first (the step that reaches it is the last).
 class ScriptSource final : public SampleSource {
 public:
-    explicit ScriptSource(sim::Script script) : m_script(std::move(script)) {}
+    explicit ScriptSource(sim::Script script, std::uint64_t tickLimit = UINT64_MAX)
+        : m_script(std::move(script)), m_tickLimit(tickLimit) {}
     bool next(std::uint64_t firstTick, std::size_t count, sim::DeviceSample* out) override;
 
 private:
     sim::Script m_script;
+    std::uint64_t m_tickLimit;
 };
 
 /// A recorded trial's samples; ends with them.
