@@ -1028,6 +1028,15 @@ double punchSubElementCompliance(double punchRadiusM, double edgeM, const std::a
     return std::max(0.0, punch - mesh);
 }
 
+double punchDimpleStiffening(double dimpleM, double punchRadiusM, const FemMaterial& material, double maxStiffening) {
+    const double c = material.stiffeningStrain;
+    if (!(c > 0.0) || !(punchRadiusM > 0.0) || !(dimpleM > 0.0) || !std::isfinite(dimpleM))
+        return 1.0;
+    const double x = std::min(std::sqrt(2.0 / 3.0) * dimpleM / punchRadiusM / c, 20.0);
+    const double secant = x < 1e-4 ? 1.0 + x * x / 6.0 : std::sinh(x) / x;
+    return std::clamp(secant, 1.0, std::max(1.0, maxStiffening));
+}
+
 namespace {
 
 /// R^T v for a point's rotation R (row-major): a vector of the tissue's frame in the rest frame the factor has.

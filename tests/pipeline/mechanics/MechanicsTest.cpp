@@ -100,6 +100,21 @@ TEST(Mechanics, TheTipsSubElementGiveBringsACoarseMeshsPunchToBoussinesq) {
     EXPECT_EQ(punchSubElementCompliance(1.45e-3, 1e-3, {1.0, 0.0, 0.0}, m), 0.0);
 }
 
+TEST(Mechanics, ThePunchsDimpleStiffensAsTheMaterialsOwnLawUnderTheSolversCap) {
+    // The give is divided by the material's secant stiffening at the dimple's strain: sinh x / x, x = sqrt(2/3)
+    // (delta / a) / c, 1 for a linear material or no dimple, never above the solver's cap.
+    FemMaterial linear;
+    EXPECT_EQ(punchDimpleStiffening(1e-3, 1.45e-3, linear, 1.9), 1.0);
+    FemMaterial tissue;
+    tissue.stiffeningStrain = 0.3;
+    EXPECT_EQ(punchDimpleStiffening(0.0, 1.45e-3, tissue, 1.9), 1.0);
+    const double x = std::sqrt(2.0 / 3.0) * (0.4 / 1.45) / 0.3;
+    EXPECT_NEAR(punchDimpleStiffening(0.4e-3, 1.45e-3, tissue, 1.9), std::sinh(x) / x, 1e-12);
+    EXPECT_GT(punchDimpleStiffening(0.8e-3, 1.45e-3, tissue, 1.9), punchDimpleStiffening(0.4e-3, 1.45e-3, tissue, 1.9));
+    EXPECT_EQ(punchDimpleStiffening(10e-3, 1.45e-3, tissue, 1.9), 1.9);
+    EXPECT_EQ(punchDimpleStiffening(std::nan(""), 1.45e-3, tissue, 1.9), 1.0);
+}
+
 TEST(Mechanics, ElementPressureLocksForNearlyIncompressibleTissue) {
     // Without the nodal pressure, linear tets come out too stiff at nu 0.49: the bar above is not met by any solver.
     LameParams p;
