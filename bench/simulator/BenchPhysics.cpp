@@ -5,8 +5,8 @@
 //                 [--press [--wall PKG2]] [--demo polypectomy|myomectomy]
 // --press: instead of a trial, presses of the device 0.5, 1, 2 and 3 mm into the cavity's wall and into each
 // pathology met head-on (pressScript; the depth counted from the face as the cavity opened at the planning pressure,
-// 60 mmHg, has it), each on a fresh world, held 2 s: the tip's force, how far the physics' tip
-// stands off the device's (the coupling's share), the tissue's indentation (the rest), its secant stiffness, and each
+// 60 mmHg, has it), each on a fresh world, held 2 s: the tip's force, the coupling's stretch (the force over its
+// 1 N/mm), the tissue's indentation (the rest, the tip's sub-element dimple included), its secant stiffness, and each
 // pathology's force and stiffness against the wall's at the same depth. --wall PACKAGE2: the wall's presses on that
 // package instead (a scene whose pathologies leave a wall to press head-on).
 // --canal: instead of a trial, the entries through the cervical canal (entryScript: along its clearest line, and 15 and
@@ -168,8 +168,12 @@ int main(int argc, char** argv) {
             }
             Pressed p;
             p.forceN = e.state().contact.tipForceN;
-            p.couplingMm =
-                hs::distance(e.state().scope.tipMm, hs::sim::scopePose(e.frame(), options.scope, batch[tpb - 1]).tipMm);
+            // The coupling's stretch along the shaft (its 1 N/mm at the tip, head-on): the rest of the depth is the
+            // tissue's, the tip's sub-element dimple included (the scope is drawn out of its dimple, so its drawn tip
+            // does not tell).
+            const auto frame = e.hapticFrame();
+            const double couplingNPerMm = frame ? frame->couplingStiffness[0] * 1e-3 : 1.0;
+            p.couplingMm = p.forceN / couplingNPerMm;
             p.indentationMm = depthMm - p.couplingMm;
             return p;
         };

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <thread>
 
 namespace hs::haptics {
@@ -47,6 +48,28 @@ TEST(ContactModel, GivesTheSolversReactionThroughTheCoupling) {
     EXPECT_NEAR(model.state().largestForceN, seriesForceN(2.0, 0.3), 1e-6);
     EXPECT_NEAR(c.tipForceN.z, -seriesForceN(2.0, 0.3), 1e-6);
     EXPECT_NEAR(c.pitchTorqueNmm, 0.0, 1e-9); // along the shaft: no torque
+}
+
+TEST(ContactModel, TheTipsGiveIsOneDimpleInSeriesHoweverManyFacesTheTipMeets) {
+    // The tip's sub-element give (m/N) in series with the coupling and the wall; split over two faces of the same
+    // wall (each carrying half, their compliances coupled), it is still one dimple, not two springs side by side.
+    constexpr double kGiveMmPerN = 4.0;
+    auto one = std::make_shared<sim::HapticFrame>(*test::wallFrame(40.0, 0.3));
+    one->tipComplianceMPerN = kGiveMmPerN * 1e-3;
+    auto two = std::make_shared<sim::HapticFrame>(*one);
+    two->contacts.push_back(two->contacts.front());
+    const double w = 1e-3 / 0.3; // the two faces' points move together under the tip: each row sees the whole wall
+    two->compliance = {w, w, w, w};
+    ContactModel a, b;
+    ForceCommand ca, cb;
+    for (int i = 0; i < 200; ++i) {
+        ca = a.update(*one, straight(40.0 - kRadius + 2.0), 0.001);
+        cb = b.update(*two, straight(40.0 - kRadius + 2.0), 0.001);
+    }
+    const double expected = 2.0 / (1.0 + 1.0 / 0.3 + kGiveMmPerN); // N: coupling, wall and give in series
+    EXPECT_NEAR(-ca.insertionForceN, expected, 1e-6);
+    EXPECT_NEAR(-cb.insertionForceN, expected, 1e-4);
+    EXPECT_LT(-ca.insertionForceN, seriesForceN(2.0, 0.3)); // softer than without the give
 }
 
 TEST(ContactModel, AStifferTissuePushesBackHarderByItsStiffness) {

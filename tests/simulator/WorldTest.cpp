@@ -254,6 +254,36 @@ TEST(World, APressIntoTheWallGivesTheDeviceTheSolversReaction) {
     EXPECT_GT(plan->alignment, 0.9);
     EXPECT_GT(world->state().contact.forceN, 0.05);
     EXPECT_TRUE(world->metrics().perforations.empty());
+    // The tip's flat end presses as a punch finer than the wall's faces: it sinks into them by the sub-element give
+    // times its force (docs/simulator.md, "The tip's sub-element give"), each tip row's gap at the step's end
+    // -give sum_j (n_i . n_j) lambda_j; and the scope is drawn out of that dimple, in front of the face it presses.
+    const auto frame = world->hapticFrame();
+    ASSERT_TRUE(frame);
+    const double give = frame->tipComplianceMPerN;
+    EXPECT_GT(give, 0.0);
+    DeviceSample physics = world->state().sample;
+    physics.insertionMm = frame->scopeDofs[0] * 1e3;
+    physics.pitchDeg = frame->scopeDofs[1] * 180.0 / 3.14159265358979323846;
+    physics.yawDeg = frame->scopeDofs[2] * 180.0 / 3.14159265358979323846;
+    const Vec3 physicsTipMm = scopePose(world->frame(), world->options().scope, physics).tipMm;
+    const HapticContact* strongest = nullptr;
+    for (const HapticContact& c : frame->contacts) {
+        if (!c.tip || c.forceN <= 0.0)
+            continue;
+        double dimpleM = 0.0;
+        for (const HapticContact& o : frame->contacts)
+            if (o.tip)
+                dimpleM += give * dot(c.normal, o.normal) * o.forceN;
+        EXPECT_NEAR(c.gapM, -dimpleM, 0.05 * dimpleM + 1e-6);
+        if (!strongest || c.forceN > strongest->forceN)
+            strongest = &c;
+    }
+    ASSERT_TRUE(strongest);
+    const double drawnGapMm = strongest->gapM * 1e3 + dot(world->state().scope.tipMm - physicsTipMm, strongest->normal);
+    std::printf("the tip %.3f mm into its dimple (give %.2f mm/N); drawn, its end %.3f mm from touching the face\n",
+                -strongest->gapM * 1e3, give * 1e3, drawnGapMm);
+    EXPECT_LT(strongest->gapM * 1e3, -0.5);
+    EXPECT_GT(drawnGapMm, -0.25); // within the contacts' depenetration step of the face, not in the dimple
     // A press asks for a pathology the scene has, a depth and a hold in range.
     EXPECT_FALSE(pressScript(*world, 99));
     EXPECT_FALSE(pressScript(*world, -1, std::nan("")));

@@ -26,7 +26,8 @@ bool solveHapticContacts(const HapticFrame& frame, const std::array<double, 3>& 
     for (const double q : device)
         if (!std::isfinite(q))
             return false;
-    // gap(lambda) = gap_end + G (device - end) + G K^-1 G^T lambda + W (lambda - lambda_end) >= 0, lambda >= 0.
+    // gap(lambda) = gap_end + G (device - end) + G K^-1 G^T lambda + W (lambda - lambda_end) + C lambda >= 0,
+    // lambda >= 0 (C: the tip's own give between its contacts).
     std::vector<double> free(k), w(k * k);
     for (std::size_t i = 0; i < k; ++i) {
         const HapticContact& c = frame.contacts[i];
@@ -40,6 +41,13 @@ bool solveHapticContacts(const HapticFrame& frame, const std::array<double, 3>& 
             w[i * k + j] = frame.compliance[i * k + j] + coupling;
             g -= frame.compliance[i * k + j] * frame.contacts[j].forceN;
         }
+        // The tip's own give between its contacts: the scope is held where the faces are (its dimple taken back),
+        // so the gap at the step's end already counts it.
+        const double give = frame.tipComplianceMPerN;
+        if (c.tip && std::isfinite(give) && give > 0.0)
+            for (std::size_t j = 0; j < k; ++j)
+                if (frame.contacts[j].tip)
+                    w[i * k + j] += give * dot(c.normal, frame.contacts[j].normal);
         if (!std::isfinite(g))
             return false;
         free[i] = g;

@@ -153,7 +153,8 @@ Status World::step(const DeviceSample* samples, std::size_t count) {
     w.samplesConsumed += count;
     w.state.sample = last;
     // The fluid's pressure for this step from the cavity as the tissue lies (two-way coupling), then the tissue and
-    // the scope under it; state.scope is then the physics' scope, held off the wall by the tissue.
+    // the scope under it; state.scope is then the physics' scope, held off the wall by the tissue (drawn out of the
+    // tip's sub-element dimple).
     const double cavityMl = w.uterus.cavityVolumeMl(w.pointsMm) - w.uterus.restCavityMl;
     const double bloodBeforeMl = w.fluid.state().bloodInCavityMl;
     const detail::OpenVessels open = w.openVessels();
@@ -327,7 +328,7 @@ const TrialMetrics& World::metrics() const {
 }
 
 std::string_view physicsEngine() {
-    return "corotational-fem/8";
+    return "corotational-fem/9";
 }
 
 Status checkReplay(const TrialHeader& trial, const WorldOptions& options) {

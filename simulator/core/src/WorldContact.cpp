@@ -24,7 +24,8 @@ struct Candidate {
     mechanics::FemConstraint row;
     std::array<double, 3> scopeGradient{};
     Vec3 normal;
-    Vec3 centreMm; ///< the sphere's centre at the target pose
+    Vec3 centreMm;     ///< the sphere's centre at the target pose
+    double give = 0.0; ///< m/N, the tip's sub-element give on this face (World::Impl::tipCompliance)
 };
 
 /// The coupling's stiffness per scope dof (N/m, N m/rad, N m/rad): about a pivot at the introitus, `introitusMm`
@@ -43,7 +44,35 @@ DeviceSample withDofs(DeviceSample s, const std::array<double, 3>& q) {
     return s;
 }
 
+/// The tip's sub-element give, m/N: the mean of its faces' (0 without a tip row).
+double tipGive(const std::vector<Candidate>& candidates) {
+    double sum = 0.0;
+    std::size_t n = 0;
+    for (const Candidate& k : candidates)
+        if (k.sphere == 0) {
+            sum += k.give;
+            ++n;
+        }
+    return n > 0 && std::isfinite(sum) ? sum / static_cast<double>(n) : 0.0;
+}
+
 } // namespace
+
+double World::Impl::tipCompliance(std::int32_t f, const std::array<double, 3>& weights) const {
+    const auto face = static_cast<std::size_t>(f);
+    if (face >= faceTet.size() || faceTet[face] < 0)
+        return 0.0;
+    const Triangle& t = (*triangles)[face];
+    const auto& p = simRest.points;
+    const double edgeMm = (distance(p[static_cast<std::size_t>(t[0])], p[static_cast<std::size_t>(t[1])]) +
+                           distance(p[static_cast<std::size_t>(t[1])], p[static_cast<std::size_t>(t[2])]) +
+                           distance(p[static_cast<std::size_t>(t[2])], p[static_cast<std::size_t>(t[0])])) /
+                          3.0;
+    const double radiusM = 0.5 * options.scope.diameterMm * kMm;
+    const mechanics::FemMaterial& material = tissue.material(static_cast<std::size_t>(faceTet[face]));
+    return mechanics::punchSubElementCompliance(radiusM, edgeMm * kMm, weights, material) /
+           mechanics::punchDimpleStiffening(tipDimpleM, radiusM, material, tissue.settings().maxStiffening);
+}
 
 DeviceSample World::Impl::physicsSample(const DeviceSample& device) const {
     return scopePlaced ? withDofs(device, scopeDofs) : device;
@@ -81,7 +110,10 @@ void World::Impl::physics(const DeviceSample& device, double pressureKpa) {
     std::vector<std::int32_t> near;
     std::int32_t sphere = 0;
     for (double back = 0.0; back <= insertion + kShaftCheckBehindPivotMm; back += radius, ++sphere) {
-        const Vec3 c = poseFrom.tipMm - poseFrom.shaft * back;
+        // The sphere's centre on the physics' scope; the tip's faces are looked for from where the tip would be
+        // without its sub-element dimple (the last step's), where the faces are.
+        const Vec3 c0 = poseFrom.tipMm - poseFrom.shaft * back;
+        const Vec3 c = sphere == 0 ? c0 + tipDimpleOutMm : c0;
         const double reach = radius + kContactMarginMm;
         if (c.x < box.min.x - reach || c.y < box.min.y - reach || c.z < box.min.z - reach || c.x > box.max.x + reach ||
             c.y > box.max.y + reach || c.z > box.max.z + reach)
@@ -91,8 +123,8 @@ void World::Impl::physics(const DeviceSample& device, double pressureKpa) {
             continue;
         std::array<Vec3, 3> dc;
         for (std::size_t d = 0; d < 3; ++d)
-            dc[d] = (nudged[d].tipMm - nudged[d].shaft * back - c) / kEpsilon;
-        Vec3 centre = c;
+            dc[d] = (nudged[d].tipMm - nudged[d].shaft * back - c0) / kEpsilon;
+        Vec3 centre = c0;
         for (std::size_t d = 0; d < 3; ++d)
             centre += dc[d] * (target[d] - scopeDofs[d]);
         near.clear();
@@ -129,6 +161,11 @@ void World::Impl::physics(const DeviceSample& device, double pressureKpa) {
                 k.scopeGradient[j] = dot(n, dc[j]) * kMm;
             k.row =
                 mechanics::contactRow({tri[0], tri[1], tri[2]}, {cp.wa, cp.wb, cp.wc}, n, (centre - n * radius) * kMm);
+            // The tip's flat end on the cavity's wall (or a cut's face) presses as a punch on a half-space; in the
+            // canal, a tube about its own width, its rim meets the wall side-on, and the mesh's stiffness stands.
+            const auto fi = static_cast<std::size_t>(f);
+            if (sphere == 0 && (faceInCavity[fi] || faceCut[fi]))
+                k.give = tipCompliance(f, {cp.wa, cp.wb, cp.wc});
             // Inside the wall already: out by at most kMaxDepenetrationMm this step.
             if (gap < -kMaxDepenetrationMm)
                 k.row.offset += (-kMaxDepenetrationMm - gap) * kMm;
@@ -156,6 +193,15 @@ void World::Impl::physics(const DeviceSample& device, double pressureKpa) {
                 coupling.matrix[i * count + j] +=
                     candidates[i].scopeGradient[d] * candidates[j].scopeGradient[d] / stiffness[d];
 
+    // The tip's flat end presses as a punch of the scope's radius, finer than the faces: the give the mesh cannot
+    // show (Boussinesq's, less the mesh's own at its faces' size) is the tip's, in series with all its rows along
+    // their normals (one dimple, however many faces the tip meets).
+    const double give = tipGive(candidates);
+    for (std::size_t i = 0; i < count; ++i)
+        for (std::size_t j = 0; j < count; ++j)
+            if (candidates[i].sphere == 0 && candidates[j].sphere == 0)
+                coupling.matrix[i * count + j] += give * dot(candidates[i].normal, candidates[j].normal);
+
     std::vector<Vec3> forces;
     uterus.pressureForces(pointsMm, pressureKpa, forces);
     timings.contactSearchMs +=
@@ -175,16 +221,34 @@ void World::Impl::physics(const DeviceSample& device, double pressureKpa) {
     // coupling then pulls the device back).
     const bool aligned = rows.size() == count;
     std::array<double, 3> held = target;
-    if (aligned)
+    tipDimpleM = 0.0;
+    tipDimpleOutMm = Vec3{};
+    if (aligned) {
         for (std::size_t i = 0; i < count; ++i)
             for (std::size_t d = 0; d < 3; ++d)
                 held[d] += candidates[i].scopeGradient[d] * rows[i].force / stiffness[d];
+        // The tip sinks into the tissue by the sub-element give times its rows' net force, a dimple finer than the
+        // faces that the mesh does not show. The physics' scope stays where the coupling holds it, in the dimple (its
+        // shaft's contacts as they are); the next step looks for the tip's faces from out of it, and the scope is
+        // drawn and sees from there (below).
+        Vec3 net{0.0, 0.0, 0.0};
+        for (std::size_t i = 0; i < count; ++i)
+            if (candidates[i].sphere == 0 && rows[i].force > 0.0)
+                net += candidates[i].normal * rows[i].force;
+        tipDimpleM = give * norm(net);
+        tipDimpleOutMm = net * (give / kMm);
+    }
     const double move = distance(scopePose(frame, config, withDofs(device, held)).tipMm, poseFrom.tipMm);
     const std::array<double, 3> before = scopeDofs;
     for (std::size_t d = 0; d < 3; ++d)
         scopeDofs[d] =
             move > kContactMarginMm ? before[d] + (held[d] - before[d]) * (kContactMarginMm / move) : held[d];
-    state.scope = scopePose(frame, config, withDofs(device, scopeDofs));
+    // Drawn and seeing from out of the dimple: drawn back along its shaft so far as the dimple goes along it (the
+    // picture shows the face the tip presses, not its inside).
+    std::array<double, 3> drawn = scopeDofs;
+    const Vec3 shaft = scopePose(frame, config, withDofs(device, scopeDofs)).shaft;
+    drawn[0] -= std::max(0.0, -dot(tipDimpleOutMm, shaft)) * kMm;
+    state.scope = scopePose(frame, config, withDofs(device, drawn));
 
     // The local model for the haptics loop: each contact's gap at the end of the step, its gradients, its force.
     hapticContacts.clear();
@@ -204,6 +268,7 @@ void World::Impl::physics(const DeviceSample& device, double pressureKpa) {
             h.tip = candidates[i].sphere == 0;
             hapticContacts.push_back(h);
         }
+        hapticTipGive = give;
         if (tissue.lastContactCompliance().size() == count * count)
             hapticCompliance = tissue.lastContactCompliance();
         else
@@ -327,6 +392,7 @@ void World::Impl::publishFrame() {
     f->scopeDofs = scopeDofs;
     f->couplingStiffness = couplingStiffness(frame.introitusMm);
     f->contacts = hapticContacts;
+    f->tipComplianceMPerN = hapticTipGive;
     f->compliance = hapticCompliance;
     f->perforated = state.contact.perforated;
     std::lock_guard<std::mutex> lock(frameMutex);

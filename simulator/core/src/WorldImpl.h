@@ -185,6 +185,9 @@ struct World::Impl {
     bool scopePlaced = false;
     std::vector<HapticContact> hapticContacts;
     std::vector<double> hapticCompliance;
+    double hapticTipGive = 0.0; ///< m/N, the tip's sub-element give in the last step (tipGive)
+    double tipDimpleM = 0.0;    ///< m, how deep the tip's sub-element dimple was at the last step's end
+    Vec3 tipDimpleOutMm; ///< mm, from the physics' tip out of that dimple (its rows' net force times the give)
 
     std::vector<Vec3> pointsMm;
     WorldState state;
@@ -251,6 +254,10 @@ struct World::Impl {
     std::vector<Vec3> loopWireMm(const DeviceSample& device, Vec3& middleMm) const;
     Vec3 faceNormal(std::int32_t f) const;
     Vec3 faceCentre(std::int32_t f) const;
+    /// m/N: the sub-element give of the tip pressing face `f` at the barycentric `weights`
+    /// (mechanics::punchSubElementCompliance with the scope's radius, the face's mean edge at rest, its tet's
+    /// material), softened by the material's stiffening at the last step's dimple (mechanics::punchDimpleStiffening).
+    double tipCompliance(std::int32_t f, const std::array<double, 3>& weights) const;
     /// The device outside the external os (insertion -5 mm), aimed along the straight line from the external os that
     /// keeps farthest from the canal's walls in the cavity opened by the fluid (`open`: the tree of openPointsMm).
     DeviceSample canalEntry(const detail::TriangleBvh& open) const;

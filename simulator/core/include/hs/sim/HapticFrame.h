@@ -39,6 +39,8 @@ struct HapticFrame {
     std::vector<HapticContact> contacts;
     /// The tissue's compliance between the contacts, m/N, row-major contacts.size() squared.
     std::vector<double> compliance;
+    /// m/N: the tip's sub-element give, in series with every tip contact along their normals (n_i . n_j).
+    double tipComplianceMPerN = 0.0;
     bool perforated = false; ///< the tip has gone through the wall: no wall force at the tip
 };
 
