@@ -255,7 +255,7 @@ TEST(World, APressIntoTheWallGivesTheDeviceTheSolversReaction) {
     EXPECT_GT(world->state().contact.forceN, 0.05);
     EXPECT_TRUE(world->metrics().perforations.empty());
     // The tip's flat end presses as a punch finer than the wall's faces: it sinks into them by the sub-element give
-    // times its force (docs/simulator.md, "The tip's sub-element give"), each tip row's gap at the step's end
+    // times its force (docs/simulator.md, "Collision and contact"), each tip row's gap at the step's end
     // -give sum_j (n_i . n_j) lambda_j; and the scope is drawn out of that dimple, in front of the face it presses.
     const auto frame = world->hapticFrame();
     ASSERT_TRUE(frame);

@@ -2,7 +2,7 @@
 // in the haptic display of tool use", IROS 1995; iMSTK's PbdObjectController), stopped by the tissue through contact
 // constraints that the tissue solver resolves with its own compliance. The force the device gets is the coupling's,
 // which is the tissue's reaction as the solver computed it. Contacts along the whole shaft: the cervical canal is an
-// obstacle (docs/simulator.md, "Scope and contact").
+// obstacle (docs/simulator.md, "Collision and contact").
 #include "WorldImpl.h"
 
 #include <algorithm>
