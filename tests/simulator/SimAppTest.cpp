@@ -68,13 +68,12 @@ constexpr const char* kShortScript = R"({"format": "hysteroscene-script", "versi
 } // namespace
 
 TEST(SimCommandLine, RefusesBadArgumentsWithUsageErrors) {
-    for (const char* arguments :
-         {"--optic 45 scene", "--diameter 3 scene", "--exercise surgery scene", "--frobnicate scene",
-          "scene --headless", "scene --device joystick", "scene --device hid:xyz:1",
-          "scene --replay t.trial --device scripted:s.json", "scene --demo --device hid",
-          "scene --demo --replay t.trial", "--write-demo d.json", "scene --headless --demo --seconds 0",
-          "scene --headless --demo --seconds -1", "scene --headless --replay t.trial --seconds 5",
-          "scene --demo --seconds 5"}) {
+    for (const char* arguments : {"--optic 45 scene", "--diameter 3 scene", "--exercise surgery scene",
+                                  "--frobnicate scene", "scene --headless", "scene --device joystick",
+                                  "scene --device hid:xyz:1", "scene --replay t.trial --device scripted:s.json",
+                                  "scene --demo --device hid", "scene --demo --replay t.trial", "--write-demo d.json",
+                                  "scene --headless --demo --seconds 0", "scene --headless --demo --seconds -1",
+                                  "scene --headless --replay t.trial --seconds 5", "scene --demo --seconds 5"}) {
         const auto run = sim(arguments);
         EXPECT_EQ(run.exitCode, 2) << arguments << "\n" << run.out;
     }

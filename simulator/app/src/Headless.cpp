@@ -29,9 +29,9 @@ Result<ScriptedRun> runScripted(const SimOptions& options, const std::string& st
     run.trial.header = (*world)->trialHeader();
     run.trial.header.device = options.device.text();
     run.trial.header.startedUtc = startedUtc;
-    const std::uint64_t tickLimit =
-        options.stopAfterS > 0.0 ? static_cast<std::uint64_t>(std::ceil(options.stopAfterS * sim::kDeviceRateHz))
-                                 : UINT64_MAX;
+    const std::uint64_t tickLimit = options.stopAfterS > 0.0
+                                        ? static_cast<std::uint64_t>(std::ceil(options.stopAfterS * sim::kDeviceRateHz))
+                                        : UINT64_MAX;
     ScriptSource source(std::move(*script), tickLimit);
     auto steps = runSteps(**world, source, &run.trial.samples);
     if (!steps)

@@ -187,7 +187,7 @@ struct World::Impl {
     std::vector<double> hapticCompliance;
     double hapticTipGive = 0.0; ///< m/N, the tip's sub-element give in the last step (tipGive)
     double tipDimpleM = 0.0;    ///< m, how deep the tip's sub-element dimple was at the last step's end
-    Vec3 tipDimpleOutMm; ///< mm, from the physics' tip out of that dimple (its rows' net force times the give)
+    Vec3 tipDimpleOutMm;        ///< mm, from the physics' tip out of that dimple (its rows' net force times the give)
 
     std::vector<Vec3> pointsMm;
     WorldState state;

@@ -37,7 +37,7 @@ struct SimOptions {
     std::string recordPath;     ///< --record: the trial file to write
     std::string replayPath;     ///< --replay: the trial to play back
     bool headless = false;      ///< --headless: no window (needs --replay, a scripted device or --demo)
-    double stopAfterS = 0.0;    ///< --seconds: headless, a script or the demo stops after this much trial time (0: whole)
+    double stopAfterS = 0.0;    ///< --seconds: headless, stop the script or demo after this trial time, s (0: all)
     std::string reportPath;     ///< --report: the report's JSON
     std::string htmlPath;       ///< --html: the report's page
     std::string writeDemoPath;  ///< --write-demo: write the exercise's demonstration as a script here, then quit
