@@ -41,8 +41,8 @@ bool solveHapticContacts(const HapticFrame& frame, const std::array<double, 3>& 
             w[i * k + j] = frame.compliance[i * k + j] + coupling;
             g -= frame.compliance[i * k + j] * frame.contacts[j].forceN;
         }
-        // The tip's own give between its contacts: the scope is held where the faces are (its dimple taken back),
-        // so the gap at the step's end already counts it.
+        // The tip's own give between its contacts: the physics' scope is held in its dimple, so a tip row's gap at
+        // the step's end is -C lambda_end, and the re-solve at the step's own pose gives the step's forces back.
         const double give = frame.tipComplianceMPerN;
         if (c.tip && std::isfinite(give) && give > 0.0)
             for (std::size_t j = 0; j < k; ++j)
