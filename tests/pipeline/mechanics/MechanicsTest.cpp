@@ -113,6 +113,10 @@ TEST(Mechanics, ThePunchsDimpleStiffensAsTheMaterialsOwnLawUnderTheSolversCap) {
     EXPECT_GT(punchDimpleStiffening(0.8e-3, 1.45e-3, tissue, 1.9), punchDimpleStiffening(0.4e-3, 1.45e-3, tissue, 1.9));
     EXPECT_EQ(punchDimpleStiffening(10e-3, 1.45e-3, tissue, 1.9), 1.9);
     EXPECT_EQ(punchDimpleStiffening(std::nan(""), 1.45e-3, tissue, 1.9), 1.0);
+    // A steeper law (c 0.104): a dimple of 10 micrometres barely stiffens, one of a millimetre reaches the cap.
+    tissue.stiffeningStrain = 0.104;
+    EXPECT_NEAR(punchDimpleStiffening(1e-5, 1.45e-3, tissue, 1.9), 1.0, 1e-3);
+    EXPECT_EQ(punchDimpleStiffening(1e-3, 1.45e-3, tissue, 1.9), 1.9);
 }
 
 TEST(Mechanics, ElementPressureLocksForNearlyIncompressibleTissue) {
