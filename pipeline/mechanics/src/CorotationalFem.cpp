@@ -2238,6 +2238,12 @@ double CorotationalFem::stiffening(std::size_t tet, const std::array<double, 9>&
     return std::min(x < 1e-4 ? 1.0 + x * x / 6.0 : std::sinh(x) / x, m_settings.maxStiffening);
 }
 
+double CorotationalFem::stiffeningAt(std::size_t tet) const {
+    if (tet >= m_tets.size() || m_removed[tet])
+        return 1.0;
+    return stiffening(tet, corotatedStretch(tet, 4));
+}
+
 double CorotationalFem::elasticEnergyJ() const {
     // mu |dev e|^2 per tet plus kappa / 2 theta^2, per tet or per point (nodal pressure).
     // The stiffening's energy 2 mu c^2 (cosh x - 1), x = |dev e| / c, up to the x* where its secant factor sinh x / x

@@ -94,7 +94,8 @@ void UterusModel::pressureForces(const std::vector<Vec3>& pts, double pressureKp
     forEachCutFace(pts, load);
 }
 
-Status buildUterusModel(const scene::Scene& scene, const FemSettings& settings, UterusModel& out, bool portioHeld) {
+Status buildUterusModel(const scene::Scene& scene, const FemSettings& settings, UterusModel& out, bool portioHeld,
+                        bool stiffening) {
     if (!scene.simulation)
         return fail(ErrorCode::InvalidInput, "uterus model: the scene has no simulation mesh");
     const TetMesh& mesh = scene.simulation->tets;
@@ -159,7 +160,8 @@ Status buildUterusModel(const scene::Scene& scene, const FemSettings& settings, 
                                                      std::to_string(id) + ", the scene has " +
                                                      std::to_string(scene.materials.size()));
         const auto& m = scene.materials[static_cast<std::size_t>(id)].material;
-        materials[t] = {m.youngsModulusKpa * 1e3, m.poissonRatio, m.densityKgPerM3, kUterusStiffeningStrain};
+        materials[t] = {m.youngsModulusKpa * 1e3, m.poissonRatio, m.densityKgPerM3,
+                        stiffening ? kUterusStiffeningStrain : 0.0};
     }
     // The held cervix: its vaginal part (the portio, gripped by the vagina and the tenaculum) is fixed; the rest of it
     // up to the internal os hangs in the cardinal and uterosacral ligaments, stiff springs that let the corpus tilt

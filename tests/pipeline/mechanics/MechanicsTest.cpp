@@ -408,6 +408,28 @@ TEST(Mechanics, AContactInsideReleasedGivesStepsWithNoRows) {
         EXPECT_TRUE(isFinite(p));
 }
 
+TEST(Mechanics, ATetsStiffeningIsTheSecantOfItsStretchAsTheForcesHaveIt) {
+    // One tet held at every point and stretched 10 % along x: its deviatoric strain is 0.1 sqrt(2/3), so the factor
+    // is sinh(x) / x with x that over the material's strain scale; 1 at rest, for a linear material, out of range.
+    const std::vector<Vec3> rest{{0.0, 0.0, 0.0}, {0.01, 0.0, 0.0}, {0.0, 0.01, 0.0}, {0.0, 0.0, 0.01}};
+    const std::vector<Tet> tets{{0, 1, 2, 3}};
+    const std::vector<std::array<bool, 3>> held(4, {true, true, true});
+    const double c = 0.104;
+    for (const double strainScale : {c, 0.0}) {
+        CorotationalFem fem;
+        ASSERT_TRUE(fem.build(rest, tets, {FemMaterial{30e3, 0.47, 1050.0, strainScale}}, held, {}, FemSettings{}));
+        EXPECT_EQ(fem.stiffeningAt(0), 1.0);
+        for (std::size_t k = 0; k < rest.size(); ++k)
+            fem.setTarget(k, {rest[k].x * 1.1, rest[k].y, rest[k].z});
+        std::vector<FemConstraint> none;
+        fem.step(std::vector<Vec3>(rest.size()), none);
+        ASSERT_NEAR(fem.positionsM()[1].x, 0.011, 1e-12);
+        const double x = 0.1 * std::sqrt(2.0 / 3.0) / c;
+        EXPECT_NEAR(fem.stiffeningAt(0), strainScale > 0.0 ? std::sinh(x) / x : 1.0, 1e-9);
+        EXPECT_EQ(fem.stiffeningAt(7), 1.0);
+    }
+}
+
 TEST(Mechanics, RemovingTetsKeepsTheSolverStable) {
     const Block block = makeBlock();
     const std::vector<FemMaterial> materials(block.tets.size(), FemMaterial{30e3, 0.47, 1050.0});

@@ -223,6 +223,10 @@ public:
     /// The material of `tet` (as built).
     const FemMaterial& material(std::size_t tet) const { return m_materials[tet]; }
     bool tetRemoved(std::size_t tet) const { return tet < m_removed.size() && m_removed[tet] != 0; }
+    /// The factor by which `tet`'s exponential stiffening multiplies its modulus at the current positions: the secant
+    /// sinh(x) / x the forces use (FemMaterial::stiffeningStrain), held below FemSettings::maxStiffening. 1 for a
+    /// linear material, a removed tet or one out of range.
+    double stiffeningAt(std::size_t tet) const;
     std::size_t liveTetCount() const { return m_liveTets; }
     /// Whether tets were removed since the matrix was factored (removeTets with Refactor::Later).
     bool factorStale() const { return m_factorStale; }

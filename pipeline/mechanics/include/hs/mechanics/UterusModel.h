@@ -90,9 +90,10 @@ void UterusModel::forEachCutFace(const std::vector<Vec3>& pts, Visit&& visit) co
 /// Builds the model of `scene` (its simulation mesh, materials and scope landmarks) with the solver's `settings`.
 /// `portioHeld` false: the portio's outer surface hangs on the ligaments' springs with the supravaginal cervix
 /// instead of being fixed (a scope pivoting at the introitus; docs/simulator.md, "What is not modelled yet").
-/// InvalidInput for a scene without a simulation mesh or landmarks.
+/// `stiffening` false: the materials linear, without their exponential stiffening (the textbook's material, to check
+/// the solver against moduli alone). InvalidInput for a scene without a simulation mesh or landmarks.
 [[nodiscard]] Status buildUterusModel(const scene::Scene& scene, const FemSettings& settings, UterusModel& out,
-                                      bool portioHeld = true);
+                                      bool portioHeld = true, bool stiffening = true);
 
 /// `still` built as the static solver of the model (its tissue with 1 s steps, 4 iterations and the line search): what
 /// staticOpen and hydrometraCurve settle with, for callers that load the tissue otherwise.
