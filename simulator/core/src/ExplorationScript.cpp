@@ -346,6 +346,7 @@ Result<PressPlan> pressScript(const World& world, int pathology, double depthMm,
                           kScriptSpeedMmPerS),
         standOff);
     add(1.0, standOff);
+    plan.pressFromS = keys.time;
     add(std::max(0.5, (kPressStandOffMm + depthMm) / kPressSpeedMmPerS), pressed);
     plan.holdFromS = keys.time;
     add(holdS, pressed);

@@ -412,6 +412,27 @@ World::Health World::health() const {
     return h;
 }
 
+double World::tissueModulusNearKpa(const Vec3& pointMm, double radiusMm, bool stiffened) const {
+    const mechanics::CorotationalFem& fem = impl_->tissue;
+    const std::vector<Vec3>& x = fem.positionsM();
+    const Vec3 p = pointMm * kMm;
+    const double r2 = radiusMm * kMm * radiusMm * kMm;
+    double weighted = 0.0, volume = 0.0;
+    for (std::size_t t = 0; t < fem.tetCount(); ++t) {
+        if (fem.tetRemoved(t))
+            continue;
+        bool near = false;
+        for (const std::int32_t k : fem.tets()[t])
+            near = near || norm2(x[static_cast<std::size_t>(k)] - p) <= r2;
+        if (!near)
+            continue;
+        const double v = fem.restVolumeM3(t);
+        weighted += v * fem.material(t).youngsModulusPa * (stiffened ? fem.stiffeningAt(t) : 1.0);
+        volume += v;
+    }
+    return volume > 0.0 ? weighted / volume * 1e-3 : 0.0;
+}
+
 Result<TrialReport> replayTrial(const std::string& packageFolder, const Trial& trial, Progress& progress) {
     auto digest = scene::sha256File(packageFolder + "/" + std::string(scene::kManifestName), 1 << 20);
     if (!digest)

@@ -63,7 +63,8 @@ std::vector<std::int32_t> touchablePoints(const mechanics::UterusModel& model) {
 }
 
 Status World::Impl::setupTissue() {
-    HS_TRY(mechanics::buildUterusModel(scene, tissueSolverSettings(options), uterus, !(options.introitusMm > 0.0)));
+    HS_TRY(mechanics::buildUterusModel(scene, tissueSolverSettings(options), uterus, !(options.introitusMm > 0.0),
+                                       !options.linearTissue));
     // The held portio is where the device pivots: a face with a held point gives no contact.
     faceHeld.assign(uterus.boundary.size(), 0);
     for (std::size_t f = 0; f < uterus.boundary.size(); ++f)

@@ -41,6 +41,9 @@ struct WorldOptions {
     /// setApproach gives, and the portio hangs on the cervix's supports with the rest of it (docs/simulator.md, "What
     /// is not modelled yet").
     double introitusMm = 0.0;
+    /// The tissue without its exponential stiffening, linear as the textbook's material (a bench and test option, not
+    /// recorded in a trial: the press's check against the moduli alone; docs/simulator.md, "Verification").
+    bool linearTissue = false;
 };
 /// InvalidInput naming the field and its range.
 [[nodiscard]] Status checkWorldOptions(const WorldOptions& options);
@@ -221,6 +224,11 @@ public:
         std::size_t refusedSteps = 0;
     };
     Health health() const;
+    /// The tissue's Young's modulus around `pointMm` in the state the last step left, kPa: over the live tets with a
+    /// point within `radiusMm` of it (as the points lie now), each tet's small-strain modulus times the secant factor
+    /// of its exponential stiffening (CorotationalFem::stiffeningAt; `stiffened` false: without it), averaged by rest
+    /// volume. 0 where no tet is that near. What a press there meets, as the material law has it.
+    double tissueModulusNearKpa(const Vec3& pointMm, double radiusMm, bool stiffened = true) const;
     /// Whether the tissue's surface compliance is precomputed for the factor in use: false from a cut until the
     /// rebuilt factor is taken in (the contacts then cost forward solves; docs/simulator.md, "Cutting").
     bool surfacePrecomputed() const;
@@ -295,6 +303,11 @@ Script entryScriptAlong(const World& world, const Vec3& shaft);
 /// A scripted press (the check that the device feels the tissue): in through the canal with the inflow open, the tip
 /// brought head-on to a face of the cavity as the fluid opens it (60 mmHg), then the device pushed `depthMm` beyond
 /// that surface and held there.
+/// How far around a pressed face the tissue's modulus is taken (World::tissueModulusNearKpa), mm: three radii of the
+/// 2.9 mm scope's tip, where the stress under a uniformly loaded circle on a half-space has fallen to about a seventh
+/// of its value at the surface: on its axis p (1 - z^3 / (a^2 + z^2)^(3/2)), 0.15 p at z = 3a (Johnson 1985, 3.4).
+inline constexpr double kPressReachMm = 3.0 * 1.45;
+
 struct PressPlan {
     Script script;
     Vec3 surfaceMm;         ///< the face's centre in the opened cavity
@@ -302,7 +315,8 @@ struct PressPlan {
     double alignment = 0.0; ///< cos of the angle between the shaft and the face's normal (1: head-on)
     std::string region;     ///< the region the face bounds
     double youngsModulusKpa = 0.0;
-    double holdFromS = 0.0; ///< the device is at depth from here to the script's end
+    double pressFromS = 0.0; ///< the tip leaves its stand-off off the face here (the tissue untouched until then)
+    double holdFromS = 0.0;  ///< the device is at depth from here to the script's end
 };
 /// `pathology`: an index into metrics().pathologies (a face of that pathology), or -1 (a face of the cavity's wall
 /// away from every pathology; a pathology's own faces). InvalidInput when no such face can be reached within 60
