@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 #include <string>
@@ -25,7 +26,8 @@ public:
         static SimPackage package(Variant::PosteriorPolyp);
         return package.m_folder;
     }
-    /// The same with the myoma at the fundus, FIGO 1 (mostly in the cavity): the scope meets it head-on.
+    /// The default case with its myoma at the fundus, FIGO 2, 25 mm (seated in the wall, a third of it in the cavity),
+    /// and no polyp: the scope meets the myoma head-on.
     static const std::string& fundalMyomaFolder() {
         static SimPackage package(Variant::FundalMyoma);
         return package.m_folder;
@@ -56,6 +58,11 @@ private:
             }
             ostium = *found;
         }
+        if (fundalMyoma)
+            spec->pathologies.erase(
+                std::remove_if(spec->pathologies.begin(), spec->pathologies.end(),
+                               [](const scene::PathologySpec& p) { return p.kind == clinical::PathologyKind::Polyp; }),
+                spec->pathologies.end());
         for (auto& p : spec->pathologies)
             if (ostium && p.kind == clinical::PathologyKind::Polyp)
                 p.placement = clinical::SurfacePlacement{*ostium, {0.0, 0.0, 1.0}};
@@ -65,7 +72,8 @@ private:
                 p.placement = clinical::ClinicalPlacement{clinical::UterineLocation::Posterior};
             else if (fundalMyoma && p.kind == clinical::PathologyKind::Myoma) {
                 p.placement = clinical::ClinicalPlacement{clinical::UterineLocation::Fundal};
-                p.figo = clinical::FigoType{1, -1};
+                p.figo = clinical::FigoType{2, -1};
+                p.sizeMm = 25.0;
             }
         spec->texture.sizePx = 256;
         generate::GenerateParams params;
