@@ -2,17 +2,18 @@
 // >= 200 Hz on 2 cores) and a long scripted trial's stability (no inverted tets, bounded energy). A table, not a test.
 //
 //   bench_physics PACKAGE [--seconds 60] [--iterations 6] [--trace] [--rough SEED] [--canal [--introitus MM]]
-//                 [--press [--wall PKG2] [--linear]] [--demo polypectomy|myomectomy]
+//                 [--press [--wall PKG2] [--linear] [--from-plan]] [--demo polypectomy|myomectomy]
 // --press: instead of a trial, presses of the device 0.5, 1, 2 and 3 mm into the cavity's wall and into each
-// pathology met head-on (pressScript; the depth counted from the face as the cavity opened at the planning pressure,
-// 60 mmHg, has it), each on a fresh world, held 2 s: the tip's force, the coupling's stretch (the force over its
-// 1 N/mm), the tissue's indentation (the rest, the tip's sub-element dimple included), its secant stiffness, and each
-// pathology's force and stiffness against the wall's at the same depth. --wall PACKAGE2: the wall's presses on that
-// package instead (a scene whose pathologies leave a wall to press head-on). Also, as the press began: the tissue's
-// modulus around the face as its exponential stiffening has it in the distended state (World::tissueModulusNearKpa)
-// and the ratio of the force ratio to that one's, and how far the face then stood off where it was planned (along its
-// normal, + towards the scope). --linear: the tissue without its stiffening (WorldOptions::linearTissue).
-
+// pathology met head-on (pressScript), each on a fresh world, held 2 s. The depth is counted from the face where it
+// stands as the tip leaves its stand-off (the plan made again there, pressFaceOffsetMm); --from-plan: from the face as
+// the static solve at the planning pressure (60 mmHg) left it, as pressScript plans. Printed: the tip's force, the
+// coupling's stretch (the force over its 1 N/mm), the tissue's indentation (the rest, the tip's sub-element dimple
+// included), its secant stiffness, each pathology's force and stiffness against the wall's at the same depth; and, as
+// the press began, the tissue's modulus round the face as its exponential stiffening has it in the distended state
+// (World::tissueModulusNearKpa), the force ratio over that modulus' ratio, and how far the face stood off its planned
+// place (along its normal, + towards the scope). --wall PACKAGE2: the wall's presses on that package instead (a scene
+// whose pathologies leave a wall to press head-on). --linear: the tissue without its stiffening
+// (WorldOptions::linearTissue).
 // --canal: instead of a trial, the entries through the cervical canal (entryScript: along its clearest line, and 15 and
 // 30 degrees off it), each on a fresh world: the peak and held force, how far the physics' scope stayed off the
 // device, how far the fundus and the internal os moved, perforations (false passages), the worst inverted-tet count.
@@ -53,10 +54,9 @@ double percentile(std::vector<double> v, double q) {
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        std::fprintf(
-            stderr,
-            "usage: bench_physics PACKAGE [--seconds S] [--iterations N] [--trace] [--rough SEED] "
-            "[--canal [--introitus MM]] [--press [--wall PACKAGE2] [--linear]] [--demo polypectomy|myomectomy]\n");
+        std::fprintf(stderr, "usage: bench_physics PACKAGE [--seconds S] [--iterations N] [--trace] [--rough SEED] "
+                             "[--canal [--introitus MM]] [--press [--wall PACKAGE2] [--linear] [--from-plan]] [--demo "
+                             "polypectomy|myomectomy]\n");
         return 2;
     }
     const std::string package = argv[1];
@@ -66,6 +66,7 @@ int main(int argc, char** argv) {
     unsigned long long rough = 0; // the rough trial's seed; 0: the exploration
     bool canal = false;
     bool press = false;
+    bool fromPlan = false; // --press: the depth counted from the face as planned, not as it stands
     std::string wallPackage;
     for (int i = 2; i < argc; ++i) {
         if (std::strcmp(argv[i], "--trace") == 0)
@@ -76,6 +77,8 @@ int main(int argc, char** argv) {
             press = true;
         else if (std::strcmp(argv[i], "--linear") == 0)
             options.linearTissue = true;
+        else if (std::strcmp(argv[i], "--from-plan") == 0)
+            fromPlan = true;
         else if (std::strcmp(argv[i], "--wall") == 0 && i + 1 < argc)
             wallPackage = argv[++i];
         else if (std::strcmp(argv[i], "--seconds") == 0 && i + 1 < argc)
@@ -151,13 +154,14 @@ int main(int argc, char** argv) {
             double forceN = 0.0, couplingMm = 0.0, indentationMm = 0.0;
             double stiffenedKpa = 0.0; ///< the tissue's modulus around the face as the press began, stiffened
             double faceOffMm = 0.0;    ///< the face then, off its planned place along its normal (+: towards the scope)
+            double boussinesqNPerMm = 0.0; ///< a punch of the tip's radius on a half-space of the stiffened modulus
         };
         const auto run = [&](int pathology, double depthMm, std::string& label, double& modulus) -> Pressed {
             auto fresh = hs::sim::World::load(pathology < 0 && !wallPackage.empty() ? wallPackage : package, options);
             if (!fresh)
                 return {};
             hs::sim::World& e = **fresh;
-            const auto plan = hs::sim::pressScript(e, pathology, depthMm, 2.0);
+            auto plan = hs::sim::pressScript(e, pathology, depthMm, 2.0);
             if (!plan) {
                 label = plan.error().detail;
                 return {};
@@ -166,23 +170,20 @@ int main(int argc, char** argv) {
             modulus = plan->youngsModulusKpa;
             const std::size_t tpb = e.ticksPerStep();
             std::vector<hs::sim::DeviceSample> batch(tpb);
-            const std::uint64_t ticks = plan->script.tickCount();
             const auto pressFrom = static_cast<std::uint64_t>(plan->pressFromS * hs::sim::kDeviceRateHz);
             Pressed p;
-            for (std::uint64_t s = 0; s * tpb < ticks; ++s) {
+            for (std::uint64_t s = 0; s * tpb < plan->script.tickCount(); ++s) {
                 if (s * tpb <= pressFrom && pressFrom < (s + 1) * tpb) {
                     p.stiffenedKpa = e.tissueModulusNearKpa(plan->surfaceMm, hs::sim::kPressReachMm);
-                    // The contact surface's faces, on the simulation mesh's points as they lie now.
-                    const std::vector<hs::Vec3>& now = e.simulationPointsMm();
-                    double best = 1e300;
-                    for (const hs::Triangle& t : e.contactSurface().triangles) {
-                        const auto c = hs::closestPointOnTriangle(plan->surfaceMm, now[static_cast<std::size_t>(t[0])],
-                                                                  now[static_cast<std::size_t>(t[1])],
-                                                                  now[static_cast<std::size_t>(t[2])]);
-                        if (c.distance2 < best) {
-                            best = c.distance2;
-                            p.faceOffMm = hs::dot(c.point - plan->surfaceMm, plan->normal);
+                    p.faceOffMm = hs::sim::pressFaceOffsetMm(e, *plan);
+                    if (!fromPlan) {
+                        // The depth counted from the face where it stands now: the same script up to here.
+                        auto again = hs::sim::pressScript(e, pathology, depthMm - p.faceOffMm, 2.0);
+                        if (!again || again->pressFromS != plan->pressFromS) {
+                            label = again ? "the press planned again differs before the press" : again.error().detail;
+                            return {};
                         }
+                        plan = std::move(again);
                     }
                 }
                 for (std::size_t i = 0; i < tpb; ++i) {
@@ -193,28 +194,38 @@ int main(int argc, char** argv) {
                     return {};
             }
             p.forceN = e.state().contact.tipForceN;
+            // Boussinesq's 2 a E / (1 - nu^2) with the modulus round the face as the press began.
+            p.boussinesqNPerMm = 2.0 * 0.5 * options.scope.diameterMm * p.stiffenedKpa * 1e-3 /
+                                 (1.0 - plan->poissonRatio * plan->poissonRatio);
             // The coupling's stretch along the shaft (its 1 N/mm at the tip, head-on): the rest of the depth is the
             // tissue's, the tip's sub-element dimple included (the scope is drawn out of its dimple, so its drawn tip
             // does not tell).
             const auto frame = e.hapticFrame();
             const double couplingNPerMm = frame ? frame->couplingStiffness[0] * 1e-3 : 1.0;
             p.couplingMm = p.forceN / couplingNPerMm;
-            p.indentationMm = depthMm - p.couplingMm;
+            p.indentationMm = depthMm + (fromPlan ? p.faceOffMm : 0.0) - p.couplingMm;
             return p;
         };
-        std::printf("| target | E kPa | stiffened E kPa | device depth mm | tip force N | coupling's share mm | tissue "
-                    "indentation mm | secant stiffness N/mm | force / wall's | stiffness / wall's | E / wall's | "
-                    "stiffened E / wall's | force / stiffened E ratio | face off plan mm |\n"
-                    "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+        std::printf(
+            "| target | E kPa | stiffened E kPa | device depth mm | tip force N | coupling's share mm | tissue "
+            "indentation mm | secant stiffness N/mm | Boussinesq's N/mm (stiffened E) | secant / Boussinesq's | "
+            "force / wall's | stiffness / wall's | E / wall's | stiffened E / wall's | force / stiffened E "
+            "ratio | face off plan mm |\n"
+            "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+        const auto row = [](const char* label, double e, const Pressed& p, double depth) {
+            const double k = p.indentationMm > 0.0 ? p.forceN / p.indentationMm : 0.0;
+            std::printf("| %s | %.0f | %.1f | %.1f | %.3f | %.2f | %.2f | %.3f | %.3f | %.2f |", label, e,
+                        p.stiffenedKpa, depth, p.forceN, p.couplingMm, p.indentationMm, k, p.boussinesqNPerMm,
+                        p.boussinesqNPerMm > 0.0 ? k / p.boussinesqNPerMm : 0.0);
+            return k;
+        };
         const int pathologies = static_cast<int>(w.metrics().pathologies.size());
         for (const double depth : {0.5, 1.0, 2.0, 3.0}) {
             std::string wallLabel;
             double wallE = 0.0;
             const Pressed wall = run(-1, depth, wallLabel, wallE);
-            const double wallK = wall.indentationMm > 0.0 ? wall.forceN / wall.indentationMm : 0.0;
-            std::printf("| wall (%s) | %.0f | %.1f | %.1f | %.3f | %.2f | %.2f | %.3f | - | - | - | - | - | %.2f |\n",
-                        wallLabel.c_str(), wallE, wall.stiffenedKpa, depth, wall.forceN, wall.couplingMm,
-                        wall.indentationMm, wallK, wall.faceOffMm);
+            const double wallK = row(("wall (" + wallLabel + ")").c_str(), wallE, wall, depth);
+            std::printf(" - | - | - | - | - | %.2f |\n", wall.faceOffMm);
             for (int p = 0; p < pathologies; ++p) {
                 std::string label;
                 double e = 0.0;
@@ -224,13 +235,11 @@ int main(int argc, char** argv) {
                                 w.metrics().pathologies[static_cast<std::size_t>(p)].id.c_str(), depth, label.c_str());
                     continue;
                 }
-                const double k = hit.indentationMm > 0.0 ? hit.forceN / hit.indentationMm : 0.0;
+                const double k = row(label.c_str(), e, hit, depth);
                 const double forceRatio = wall.forceN > 0.0 ? hit.forceN / wall.forceN : 0.0;
                 const double stiffenedRatio = wall.stiffenedKpa > 0.0 ? hit.stiffenedKpa / wall.stiffenedKpa : 0.0;
-                std::printf("| %s | %.0f | %.1f | %.1f | %.3f | %.2f | %.2f | %.3f | %.2f | %.2f | %.2f | %.2f | %.2f "
-                            "| %.2f |\n",
-                            label.c_str(), e, hit.stiffenedKpa, depth, hit.forceN, hit.couplingMm, hit.indentationMm, k,
-                            forceRatio, wallK > 0.0 ? k / wallK : 0.0, wallE > 0.0 ? e / wallE : 0.0, stiffenedRatio,
+                std::printf(" %.2f | %.2f | %.2f | %.2f | %.2f | %.2f |\n", forceRatio, wallK > 0.0 ? k / wallK : 0.0,
+                            wallE > 0.0 ? e / wallE : 0.0, stiffenedRatio,
                             stiffenedRatio > 0.0 ? forceRatio / stiffenedRatio : 0.0, hit.faceOffMm);
             }
         }

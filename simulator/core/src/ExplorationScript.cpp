@@ -2,6 +2,7 @@
 #include "WorldImpl.h"
 
 #include "hs/core/Rng.h"
+#include "hs/core/TriangleGeometry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -328,8 +329,10 @@ Result<PressPlan> pressScript(const World& world, int pathology, double depthMm,
         if (r.id == region)
             plan.region = r.name;
     for (const auto& m : w.scene.materials)
-        if (m.regionId == region)
+        if (m.regionId == region) {
             plan.youngsModulusKpa = m.material.youngsModulusKpa;
+            plan.poissonRatio = m.material.poissonRatio;
+        }
     const Vec3 d = normalized(plan.surfaceMm - w.frame.pivotMm);
     Plan keys;
     const auto add = [&keys](double afterS, const DeviceSample& s) { keys.add(afterS, s); };
@@ -352,6 +355,21 @@ Result<PressPlan> pressScript(const World& world, int pathology, double depthMm,
     add(holdS, pressed);
     plan.script = toScript(keys.keys, 0.0);
     return plan;
+}
+
+double pressFaceOffsetMm(const World& world, const PressPlan& plan) {
+    const std::vector<Vec3>& now = world.simulationPointsMm();
+    double best = 1e300, offset = 0.0;
+    for (const Triangle& t : world.contactSurface().triangles) {
+        const ClosestPoint c =
+            closestPointOnTriangle(plan.surfaceMm, now[static_cast<std::size_t>(t[0])],
+                                   now[static_cast<std::size_t>(t[1])], now[static_cast<std::size_t>(t[2])]);
+        if (c.distance2 < best) {
+            best = c.distance2;
+            offset = dot(c.point - plan.surfaceMm, plan.normal);
+        }
+    }
+    return offset;
 }
 
 Vec3 entryShaft(const World& world, double offAxisDeg, double towardDeg) {

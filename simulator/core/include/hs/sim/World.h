@@ -310,11 +310,12 @@ inline constexpr double kPressReachMm = 3.0 * 1.45;
 
 struct PressPlan {
     Script script;
-    Vec3 surfaceMm;         ///< the face's centre in the opened cavity
-    Vec3 normal;            ///< its normal, into the cavity
-    double alignment = 0.0; ///< cos of the angle between the shaft and the face's normal (1: head-on)
-    std::string region;     ///< the region the face bounds
-    double youngsModulusKpa = 0.0;
+    Vec3 surfaceMm;                ///< the face's centre in the opened cavity
+    Vec3 normal;                   ///< its normal, into the cavity
+    double alignment = 0.0;        ///< cos of the angle between the shaft and the face's normal (1: head-on)
+    std::string region;            ///< the region the face bounds
+    double youngsModulusKpa = 0.0; ///< the face's tet's material, at small strain
+    double poissonRatio = 0.0;
     double pressFromS = 0.0; ///< the tip leaves its stand-off off the face here (the tissue untouched until then)
     double holdFromS = 0.0;  ///< the device is at depth from here to the script's end
 };
@@ -323,6 +324,12 @@ struct PressPlan {
 /// degrees of head-on with the scope 1 mm clear of the walls.
 [[nodiscard]] Result<PressPlan> pressScript(const World& world, int pathology, double depthMm = 3.0,
                                             double holdS = 2.0);
+/// How far the face `plan` presses stands now off where the plan has it, along its normal (+: towards the scope), mm:
+/// the contact surface's point nearest the plan's face centre, on the simulation mesh's points as they lie. The plan
+/// counts its depth from the face as the static solve at the planning pressure left it; stepped up to
+/// plan.pressFromS, a world whose face the fluid has moved off that place presses by a depth counted from the live
+/// face with the plan made again for the depth less this offset (the script is the same up to pressFromS).
+double pressFaceOffsetMm(const World& world, const PressPlan& plan);
 /// A demonstration resection of pathology `pathology` (an index into scene().clinical.pathologies) with the
 /// resectoscope's loop, planned in the cavity opened by the fluid: in through the canal with the inflow open, then
 /// strip by strip from the pathology's free side towards its base, each strip the loop pushed out beyond the pathology
