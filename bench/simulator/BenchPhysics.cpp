@@ -174,7 +174,8 @@ int main(int argc, char** argv) {
             Pressed p;
             for (std::uint64_t s = 0; s * tpb < plan->script.tickCount(); ++s) {
                 if (s * tpb <= pressFrom && pressFrom < (s + 1) * tpb) {
-                    p.stiffenedKpa = e.tissueModulusNearKpa(plan->surfaceMm, hs::sim::kPressReachMm);
+                    p.stiffenedKpa = e.tissueModulusNearKpa(plan->surfaceMm, hs::sim::kPressReachTipRadii * 0.5 *
+                                                                                 options.scope.diameterMm);
                     p.faceOffMm = hs::sim::pressFaceOffsetMm(e, *plan);
                     if (!fromPlan) {
                         // The depth counted from the face where it stands now: the same script up to here.

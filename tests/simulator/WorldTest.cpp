@@ -250,7 +250,8 @@ double press(World& world, const PressPlan& plan) {
 /// then, stiffened as the distended state has it (World::tissueModulusNearKpa). Returns the tip's force (N).
 double pressFromTheLiveFace(World& world, const PressPlan& plan, int pathology, double depthMm, double& stiffenedKpa) {
     run(world, plan.script, plan.pressFromS);
-    stiffenedKpa = world.tissueModulusNearKpa(plan.surfaceMm, kPressReachMm);
+    stiffenedKpa =
+        world.tissueModulusNearKpa(plan.surfaceMm, kPressReachTipRadii * 0.5 * world.options().scope.diameterMm);
     const double offsetMm = pressFaceOffsetMm(world, plan);
     const auto again = pressScript(world, pathology, depthMm - offsetMm, 2.0);
     EXPECT_TRUE(again);

@@ -41,8 +41,8 @@ struct WorldOptions {
     /// setApproach gives, and the portio hangs on the cervix's supports with the rest of it (docs/simulator.md, "What
     /// is not modelled yet").
     double introitusMm = 0.0;
-    /// The tissue without its exponential stiffening, linear as the textbook's material (a bench and test option, not
-    /// recorded in a trial: the press's check against the moduli alone; docs/simulator.md, "Verification").
+    /// The tissue without its exponential stiffening, linear as the textbook's material (a bench option, not recorded
+    /// in a trial: the press against the moduli alone; docs/simulator.md, "What is not modelled yet").
     bool linearTissue = false;
 };
 /// InvalidInput naming the field and its range.
@@ -300,14 +300,14 @@ Script entryScript(const World& world, double offAxisDeg = 0.0, double towardDeg
 Vec3 entryShaft(const World& world, double offAxisDeg = 0.0, double towardDeg = 0.0);
 Script entryScriptAlong(const World& world, const Vec3& shaft);
 
+/// How far around a pressed face the tissue's modulus is taken (World::tissueModulusNearKpa), in radii of the scope's
+/// tip: where the stress under a uniformly loaded circle of radius a on a half-space has fallen to about a seventh of
+/// its value at the surface: on its axis p (1 - z^3 / (a^2 + z^2)^(3/2)), 0.15 p at z = 3a (Johnson 1985, 3.4).
+inline constexpr double kPressReachTipRadii = 3.0;
+
 /// A scripted press (the check that the device feels the tissue): in through the canal with the inflow open, the tip
 /// brought head-on to a face of the cavity as the fluid opens it (60 mmHg), then the device pushed `depthMm` beyond
 /// that surface and held there.
-/// How far around a pressed face the tissue's modulus is taken (World::tissueModulusNearKpa), mm: three radii of the
-/// 2.9 mm scope's tip, where the stress under a uniformly loaded circle on a half-space has fallen to about a seventh
-/// of its value at the surface: on its axis p (1 - z^3 / (a^2 + z^2)^(3/2)), 0.15 p at z = 3a (Johnson 1985, 3.4).
-inline constexpr double kPressReachMm = 3.0 * 1.45;
-
 struct PressPlan {
     Script script;
     Vec3 surfaceMm;                ///< the face's centre in the opened cavity
