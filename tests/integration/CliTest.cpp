@@ -342,6 +342,13 @@ TEST(Cli, GenerateWritesAValidPackageForTheDefaultCase) {
         EXPECT_EQ(inScene, !bar["met"].get<bool>()) << name;
     }
     EXPECT_NE(validate.out.find("quality bars met (report.json)"), std::string::npos) << validate.out;
+    // The bars the default scene meets on its own tets (docs/meshing.md, "Bars on every scene"): all but the
+    // Hausdorff distance, which a uniform edge length cannot bring under 1 % at the slit beside the polyp.
+    for (const auto& bar : report["quality"]["bars"]) {
+        if (bar["name"] != "mesh-hausdorff") {
+            EXPECT_TRUE(bar["met"].get<bool>()) << bar.dump();
+        }
+    }
     EXPECT_EQ(cli("validate --scope-diameter 11 " + quote(scene)).exitCode, 2);
     auto tets = hs::io::readTetMesh(scene + "/tets.vtu");
     ASSERT_TRUE(tets.ok()) << tets.error().message();

@@ -123,8 +123,61 @@ std::vector<std::vector<std::int64_t>> fansOf(const std::vector<Tet>& tets, cons
     return fans;
 }
 
-/// A pinch: an edge (a < b) or a vertex (b = -1).
+/// A pinch: an edge (a < b), a vertex whose tets form several fans (b = kSeveralFans), or a vertex whose tets form one
+/// fan but whose boundary faces form several pieces (b = kSeveralSheets): the fan wraps round a void that passes
+/// through the vertex, so the boundary is two sheets touching at a point there.
 using Pinch = std::pair<std::int32_t, std::int32_t>;
+constexpr std::int32_t kSeveralFans = -1;
+constexpr std::int32_t kSeveralSheets = -2;
+
+/// The pieces of the boundary round vertex `v`: the boundary faces of `ring`'s tets that contain `v` (a tet and the
+/// face's index in it), grouped by the edges through `v` they share. Empty when `v` is inside.
+std::vector<std::vector<std::pair<std::int64_t, int>>> sheetsAround(const std::vector<Tet>& tets,
+                                                                    const std::vector<std::int32_t>& region,
+                                                                    const FaceTable& faces, std::int32_t v,
+                                                                    const std::vector<std::int64_t>& ring) {
+    std::vector<std::pair<std::int64_t, int>> onBoundary;
+    std::vector<Face> faceOf;
+    for (std::int64_t t : ring) {
+        const Tet& k = tets[static_cast<std::size_t>(t)];
+        for (int f = 0; f < 4; ++f) {
+            if (k[static_cast<std::size_t>(f)] == v)
+                continue; // the face opposite v does not contain it
+            const Face face =
+                sortedFace(k[static_cast<std::size_t>((f + 1) & 3)], k[static_cast<std::size_t>((f + 2) & 3)],
+                           k[static_cast<std::size_t>((f + 3) & 3)]);
+            const std::int64_t nb = faces.across(face, t);
+            if (nb < 0 || region[static_cast<std::size_t>(nb)] < 0) { // removed tets leave boundary
+                onBoundary.emplace_back(t, f);
+                faceOf.push_back(face);
+            }
+        }
+    }
+    std::vector<std::int64_t> parent(onBoundary.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    for (std::size_t i = 0; i < faceOf.size(); ++i)
+        for (std::size_t j = i + 1; j < faceOf.size(); ++j) {
+            int shared = 0;
+            for (std::int32_t x : faceOf[i])
+                shared += std::find(faceOf[j].begin(), faceOf[j].end(), x) != faceOf[j].end() ? 1 : 0;
+            if (shared >= 2) // an edge through v (both faces contain v)
+                parent[static_cast<std::size_t>(findRoot(parent, static_cast<std::int64_t>(i)))] =
+                    findRoot(parent, static_cast<std::int64_t>(j));
+        }
+    std::vector<std::vector<std::pair<std::int64_t, int>>> sheets;
+    std::vector<std::int64_t> rootOf;
+    for (std::size_t i = 0; i < onBoundary.size(); ++i) {
+        const std::int64_t r = findRoot(parent, static_cast<std::int64_t>(i));
+        const auto it = std::find(rootOf.begin(), rootOf.end(), r);
+        if (it == rootOf.end()) {
+            rootOf.push_back(r);
+            sheets.emplace_back();
+        }
+        sheets[static_cast<std::size_t>(std::find(rootOf.begin(), rootOf.end(), r) - rootOf.begin())].push_back(
+            onBoundary[i]);
+    }
+    return sheets;
+}
 
 /// Pinched edges and vertices of the kept tets: boundary edges with more than two boundary faces, and boundary
 /// vertices whose tets form more than one fan. `rings` gets the tets around each.
@@ -176,11 +229,65 @@ std::vector<Pinch> findPinches(const std::vector<Tet>& tets, const std::vector<s
     for (std::int32_t v : boundaryVertices) {
         std::vector<std::int64_t> ring = tetsAround(v, -1);
         if (fansOf(tets, ring).size() > 1) {
-            pinches.emplace_back(v, -1);
+            pinches.emplace_back(v, kSeveralFans);
+            rings.push_back(std::move(ring));
+        } else if (sheetsAround(tets, region, faces, v, ring).size() > 1) {
+            pinches.emplace_back(v, kSeveralSheets);
             rings.push_back(std::move(ring));
         }
     }
     return pinches;
+}
+
+/// The fewest tets of `ring` (all around one vertex, one fan) whose removal joins the vertex's boundary sheets into
+/// one: a path of tets joined across faces from a tet on the first sheet to a tet on another, every tet `removable`.
+/// Cutting the fan (an annulus round the vertex, seen from it) across from one of its rims to the other leaves a disc:
+/// one sheet. Empty when one sheet is left or no such path exists. Breadth first, tets in ascending order:
+/// deterministic.
+template <class Removable>
+std::vector<std::int64_t> bridgeBetweenSheets(const std::vector<Tet>& tets,
+                                              const std::vector<std::vector<std::pair<std::int64_t, int>>>& sheets,
+                                              const std::vector<std::int64_t>& ring, Removable&& removable) {
+    if (sheets.size() < 2)
+        return {};
+    const std::size_t n = ring.size();
+    auto onSheet = [&](std::int64_t t, bool first) {
+        for (std::size_t s = first ? 0 : 1; s < (first ? 1 : sheets.size()); ++s)
+            for (const auto& face : sheets[s])
+                if (face.first == t)
+                    return true;
+        return false;
+    };
+    auto joined = [&](std::size_t i, std::size_t j) {
+        const Tet& u = tets[static_cast<std::size_t>(ring[i])];
+        const Tet& w = tets[static_cast<std::size_t>(ring[j])];
+        int shared = 0;
+        for (std::int32_t x : u)
+            shared += std::find(w.begin(), w.end(), x) != w.end() ? 1 : 0;
+        return shared == 3;
+    };
+    std::vector<std::int64_t> from(n, -2); // -2 unseen, -1 a start
+    std::vector<std::size_t> queue;
+    for (std::size_t i = 0; i < n; ++i)
+        if (removable(ring[i]) && onSheet(ring[i], true)) {
+            from[i] = -1;
+            queue.push_back(i);
+        }
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+        const std::size_t i = queue[head];
+        if (onSheet(ring[i], false)) {
+            std::vector<std::int64_t> path;
+            for (std::int64_t k = static_cast<std::int64_t>(i); k >= 0; k = from[static_cast<std::size_t>(k)])
+                path.push_back(ring[static_cast<std::size_t>(k)]);
+            return path;
+        }
+        for (std::size_t j = 0; j < n; ++j)
+            if (from[j] == -2 && joined(i, j) && removable(ring[j])) {
+                from[j] = static_cast<std::int64_t>(i);
+                queue.push_back(j);
+            }
+    }
+    return {};
 }
 
 } // namespace
@@ -201,25 +308,35 @@ PinchStats openPinches(const std::vector<Tet>& tets, std::vector<std::int32_t>& 
             ring.erase(std::remove_if(ring.begin(), ring.end(),
                                       [&](std::int64_t t) { return region[static_cast<std::size_t>(t)] < 0; }),
                        ring.end());
+            auto removableTet = [&](std::int64_t t) {
+                if (region[static_cast<std::size_t>(t)] != outerRegion)
+                    return false;
+                const Tet& k = tets[static_cast<std::size_t>(t)];
+                for (int f = 0; f < 4; ++f) {
+                    const Face face =
+                        sortedFace(k[static_cast<std::size_t>((f + 1) & 3)], k[static_cast<std::size_t>((f + 2) & 3)],
+                                   k[static_cast<std::size_t>((f + 3) & 3)]);
+                    const std::int64_t nb = faces.across(face, t);
+                    if (nb >= 0 && region[static_cast<std::size_t>(nb)] >= 0 &&
+                        region[static_cast<std::size_t>(nb)] != outerRegion)
+                        return false;
+                }
+                return true;
+            };
+            if (pinches[p].second == kSeveralSheets) {
+                const std::vector<std::int64_t> bridge = bridgeBetweenSheets(
+                    tets, sheetsAround(tets, region, faces, pinches[p].first, ring), ring, removableTet);
+                for (std::int64_t t : bridge)
+                    region[static_cast<std::size_t>(t)] = -1;
+                stats.removedTets += bridge.size();
+                removedAny = removedAny || !bridge.empty();
+                continue;
+            }
             const auto fans = fansOf(tets, ring);
             if (fans.size() < 2)
                 continue; // already opened by an earlier removal in this pass
             auto removable = [&](const std::vector<std::int64_t>& fan) {
-                for (std::int64_t t : fan) {
-                    if (region[static_cast<std::size_t>(t)] != outerRegion)
-                        return false;
-                    const Tet& k = tets[static_cast<std::size_t>(t)];
-                    for (int f = 0; f < 4; ++f) {
-                        const Face face = sortedFace(k[static_cast<std::size_t>((f + 1) & 3)],
-                                                     k[static_cast<std::size_t>((f + 2) & 3)],
-                                                     k[static_cast<std::size_t>((f + 3) & 3)]);
-                        const std::int64_t nb = faces.across(face, t);
-                        if (nb >= 0 && region[static_cast<std::size_t>(nb)] >= 0 &&
-                            region[static_cast<std::size_t>(nb)] != outerRegion)
-                            return false;
-                    }
-                }
-                return true;
+                return std::all_of(fan.begin(), fan.end(), removableTet);
             };
             const std::vector<std::int64_t>* smallest = nullptr;
             for (const auto& fan : fans)

@@ -1,7 +1,7 @@
 #pragma once
-// Pinches of a tet mesh's boundary: two solid wedges that touch only along an edge (four boundary faces meet there)
-// or two cones that touch only at a vertex. A simulator's surface extraction, collision and cutting expect a
-// manifold boundary, so they are opened.
+// Pinches of a tet mesh's boundary: two solid wedges that touch only along an edge (four boundary faces meet there),
+// two solid cones that touch only at a vertex, or a solid belt round a vertex that two void cones touch. A simulator's
+// surface extraction, collision and cutting expect a manifold boundary, so they are opened.
 
 #include "hs/core/TetMesh.h"
 
@@ -19,8 +19,11 @@ struct PinchStats {
 /// Opens every pinch (a boundary edge shared by more than two boundary faces, a boundary vertex whose tets form more
 /// than one fan) by removing the smallest fan of tets around it (tets joined across faces that contain the edge or
 /// vertex), taking only fans whose tets all belong to `outerRegion` and have no face against another region (so no
-/// interface becomes boundary). Removed tets get region -1; tets with a negative region are not part of the mesh.
-/// Repeats until no pinch is left or no fan can go (at most 8 passes). Deterministic: pinches in sorted order.
+/// interface becomes boundary). A vertex whose tets form one fan but whose boundary faces form several sheets (joined
+/// across edges through it) loses the fewest tets, under the same rule, that join its first sheet to another: a
+/// shortest path of its tets joined across faces. Removed tets get region -1; tets with a negative region are not part
+/// of the mesh. Repeats until no pinch is left or no fan can go (at most 8 passes). Deterministic: pinches in sorted
+/// order.
 PinchStats openPinches(const std::vector<Tet>& tets, std::vector<std::int32_t>& region, std::int32_t outerRegion);
 
 } // namespace hs::meshing::detail

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 using namespace hs;
 using namespace hs::meshing;
 
@@ -46,6 +48,46 @@ TEST(Pinches, NeverRemovesAnotherRegionOrExposesAnInterface) {
     EXPECT_EQ(region[2], 0); // removing it would expose the pathology's face (1, 4, 5)
     EXPECT_LT(region[0], 0); // the wall wedge goes instead
     EXPECT_EQ(stats.removedTets, 1u);
+}
+
+// A belt of tets round vertex 0: the cone from 0 over a band whose rims are 1-2-3-4 above and 5-6-7-8 below. The tets
+// form one fan, but the void reaches vertex 0 from above and from below: the boundary is two cones touching at it.
+std::vector<Tet> beltAroundVertex0() {
+    std::vector<Tet> tets;
+    for (std::int32_t i = 0; i < 4; ++i) {
+        const std::int32_t top = 1 + i, nextTop = 1 + (i + 1) % 4, bottom = 5 + i, nextBottom = 5 + (i + 1) % 4;
+        tets.push_back({0, top, bottom, nextTop});
+        tets.push_back({0, nextTop, bottom, nextBottom});
+    }
+    return tets;
+}
+
+TEST(Pinches, CutsABeltWhoseBoundaryTouchesItselfAtAVertex) {
+    const std::vector<Tet> tets = beltAroundVertex0();
+    std::vector<std::int32_t> region(tets.size(), 0);
+    const auto stats = detail::openPinches(tets, region, 0);
+    EXPECT_EQ(stats.pinchedBefore, 1u); // vertex 0 alone: every edge has two boundary faces
+    EXPECT_EQ(stats.removedTets, 2u);   // the fewest tets from the upper rim to the lower: one each
+    EXPECT_EQ(stats.pinchedAfter, 0u);
+    // The two removed tets are neighbours: a cut across the belt, not two notches.
+    std::vector<std::size_t> removed;
+    for (std::size_t t = 0; t < tets.size(); ++t)
+        if (region[t] < 0)
+            removed.push_back(t);
+    ASSERT_EQ(removed.size(), 2u);
+    int shared = 0;
+    for (std::int32_t x : tets[removed[0]])
+        shared += std::find(tets[removed[1]].begin(), tets[removed[1]].end(), x) != tets[removed[1]].end() ? 1 : 0;
+    EXPECT_EQ(shared, 3);
+}
+
+TEST(Pinches, ABeltOfAnotherRegionIsReportedNotCut) {
+    const std::vector<Tet> tets = beltAroundVertex0();
+    std::vector<std::int32_t> region(tets.size(), 1);
+    const auto stats = detail::openPinches(tets, region, 0);
+    EXPECT_EQ(stats.pinchedBefore, 1u);
+    EXPECT_EQ(stats.removedTets, 0u);
+    EXPECT_EQ(stats.pinchedAfter, 1u);
 }
 
 TEST(Pinches, ReportsWhatCannotBeOpened) {
