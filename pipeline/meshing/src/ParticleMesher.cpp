@@ -270,10 +270,17 @@ Result<ParticleMeshResult> meshParticles(const RegionModel& input, const Particl
     {
         // After the flips and the interface offsets, so that what the simulator gets has a manifold boundary.
         ScopedStepTimer timer(timings, "pinches");
-        const detail::PinchStats stats = detail::openPinches(tets, region, body.surfaces.front().regionId);
+        const auto duplicate = [&particles](std::int32_t v) {
+            const auto i = static_cast<std::size_t>(v);
+            particles.add(particles.position[i], particles.kind[i], particles.surface[i], particles.triangle[i],
+                          particles.region[i]);
+            return static_cast<std::int32_t>(particles.size() - 1);
+        };
+        const detail::PinchStats stats = detail::openPinches(tets, region, body.surfaces.front().regionId, duplicate);
         auto& counts = timings.step("pinches").counts;
         counts.emplace_back("pinches", static_cast<std::int64_t>(stats.pinchedBefore));
         counts.emplace_back("removedTets", static_cast<std::int64_t>(stats.removedTets));
+        counts.emplace_back("splitVertices", static_cast<std::int64_t>(stats.splitVertices));
         counts.emplace_back("pinchesLeft", static_cast<std::int64_t>(stats.pinchedAfter));
         if (stats.pinchedAfter > 0)
             result.warnings.push_back(

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <numeric>
 #include <utility>
 
@@ -292,7 +293,8 @@ std::vector<std::int64_t> bridgeBetweenSheets(const std::vector<Tet>& tets,
 
 } // namespace
 
-PinchStats openPinches(const std::vector<Tet>& tets, std::vector<std::int32_t>& region, std::int32_t outerRegion) {
+PinchStats openPinches(std::vector<Tet>& tets, std::vector<std::int32_t>& region, std::int32_t outerRegion,
+                       const std::function<std::int32_t(std::int32_t)>& duplicateVertex) {
     PinchStats stats;
     std::vector<std::vector<std::int64_t>> rings;
     for (int pass = 0; pass < 8; ++pass) {
@@ -302,6 +304,34 @@ PinchStats openPinches(const std::vector<Tet>& tets, std::vector<std::int32_t>& 
             stats.pinchedBefore = pinches.size();
         if (pinches.empty())
             return stats; // none (left): pinchedAfter stays 0
+        // Vertices whose tets form several fans are split first, a copy of the vertex for each fan but the first:
+        // nothing is removed, and the cones that touched there touch as separate sheets. The face table is stale
+        // after a split, so the other pinches wait for the next pass.
+        if (duplicateVertex) {
+            bool split = false;
+            for (std::size_t p = 0; p < pinches.size(); ++p) {
+                if (pinches[p].second != kSeveralFans)
+                    continue;
+                const std::int32_t v = pinches[p].first;
+                std::vector<std::int64_t> ring;
+                for (std::int64_t t : rings[p]) {
+                    const Tet& k = tets[static_cast<std::size_t>(t)];
+                    if (region[static_cast<std::size_t>(t)] >= 0 && std::find(k.begin(), k.end(), v) != k.end())
+                        ring.push_back(t);
+                }
+                const auto fans = fansOf(tets, ring);
+                for (std::size_t f = 1; f < fans.size(); ++f) {
+                    const std::int32_t copy = duplicateVertex(v);
+                    for (std::int64_t t : fans[f])
+                        for (std::int32_t& x : tets[static_cast<std::size_t>(t)])
+                            x = x == v ? copy : x;
+                    ++stats.splitVertices;
+                    split = true;
+                }
+            }
+            if (split)
+                continue;
+        }
         bool removedAny = false;
         for (std::size_t p = 0; p < pinches.size(); ++p) {
             std::vector<std::int64_t>& ring = rings[p];

@@ -6,6 +6,7 @@
 #include "hs/core/TetMesh.h"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace hs::meshing::detail {
@@ -14,6 +15,7 @@ struct PinchStats {
     std::size_t pinchedBefore = 0; ///< pinched edges and vertices, before
     std::size_t pinchedAfter = 0;  ///< left: every fan there touches another region
     std::size_t removedTets = 0;
+    std::size_t splitVertices = 0; ///< copies of vertices made (openPinches' duplicateVertex)
 };
 
 /// Opens every pinch (a boundary edge shared by more than two boundary faces, a boundary vertex whose tets form more
@@ -24,6 +26,11 @@ struct PinchStats {
 /// shortest path of its tets joined across faces. Removed tets get region -1; tets with a negative region are not part
 /// of the mesh. Repeats until no pinch is left or no fan can go (at most 8 passes). Deterministic: pinches in sorted
 /// order.
-PinchStats openPinches(const std::vector<Tet>& tets, std::vector<std::int32_t>& region, std::int32_t outerRegion);
+/// With `duplicateVertex` (given a vertex, it adds a copy at the same place and returns the copy's index), a vertex
+/// whose tets form several fans is split instead: each fan but the first gets its own copy of the vertex, so nothing
+/// is removed there and the cones touch as separate sheets (as CGAL's
+/// Polygon_mesh_processing::duplicate_non_manifold_vertices does for a surface). `tets` then refer to the copies.
+PinchStats openPinches(std::vector<Tet>& tets, std::vector<std::int32_t>& region, std::int32_t outerRegion,
+                       const std::function<std::int32_t(std::int32_t)>& duplicateVertex = {});
 
 } // namespace hs::meshing::detail

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <functional>
 
 using namespace hs;
 using namespace hs::meshing;
@@ -11,7 +12,7 @@ namespace {
 
 // Vertex ids only matter here: the pinch search is combinatorial.
 TEST(Pinches, OpensTwoTetsThatShareOnlyAnEdge) {
-    const std::vector<Tet> tets = {{0, 1, 2, 3}, {0, 1, 4, 5}};
+    std::vector<Tet> tets = {{0, 1, 2, 3}, {0, 1, 4, 5}};
     std::vector<std::int32_t> region = {0, 0};
     const auto stats = detail::openPinches(tets, region, 0);
     EXPECT_EQ(stats.pinchedBefore, 3u); // the edge and its two vertices
@@ -21,7 +22,7 @@ TEST(Pinches, OpensTwoTetsThatShareOnlyAnEdge) {
 }
 
 TEST(Pinches, OpensTwoTetsThatShareOnlyAVertex) {
-    const std::vector<Tet> tets = {{0, 1, 2, 3}, {0, 4, 5, 6}};
+    std::vector<Tet> tets = {{0, 1, 2, 3}, {0, 4, 5, 6}};
     std::vector<std::int32_t> region = {0, 0};
     const auto stats = detail::openPinches(tets, region, 0);
     EXPECT_EQ(stats.pinchedBefore, 1u);
@@ -31,7 +32,7 @@ TEST(Pinches, OpensTwoTetsThatShareOnlyAVertex) {
 
 TEST(Pinches, LeavesAManifoldStarAlone) {
     // Four tets around the edge (0, 1), closed: a manifold ball.
-    const std::vector<Tet> tets = {{0, 1, 2, 3}, {0, 1, 3, 4}, {0, 1, 4, 5}, {0, 1, 5, 2}};
+    std::vector<Tet> tets = {{0, 1, 2, 3}, {0, 1, 3, 4}, {0, 1, 4, 5}, {0, 1, 5, 2}};
     std::vector<std::int32_t> region = {0, 0, 0, 0};
     const auto stats = detail::openPinches(tets, region, 0);
     EXPECT_EQ(stats.pinchedBefore, 0u);
@@ -41,7 +42,7 @@ TEST(Pinches, LeavesAManifoldStarAlone) {
 
 TEST(Pinches, NeverRemovesAnotherRegionOrExposesAnInterface) {
     // Tet 1 is a pathology (region 1); tet 2 is wall glued to it by a face; tet 0 is wall touching them along an edge.
-    const std::vector<Tet> tets = {{0, 1, 2, 3}, {0, 1, 4, 5}, {1, 4, 5, 6}};
+    std::vector<Tet> tets = {{0, 1, 2, 3}, {0, 1, 4, 5}, {1, 4, 5, 6}};
     std::vector<std::int32_t> region = {0, 1, 0};
     const auto stats = detail::openPinches(tets, region, 0);
     EXPECT_EQ(region[1], 1);
@@ -63,7 +64,7 @@ std::vector<Tet> beltAroundVertex0() {
 }
 
 TEST(Pinches, CutsABeltWhoseBoundaryTouchesItselfAtAVertex) {
-    const std::vector<Tet> tets = beltAroundVertex0();
+    std::vector<Tet> tets = beltAroundVertex0();
     std::vector<std::int32_t> region(tets.size(), 0);
     const auto stats = detail::openPinches(tets, region, 0);
     EXPECT_EQ(stats.pinchedBefore, 1u); // vertex 0 alone: every edge has two boundary faces
@@ -82,7 +83,7 @@ TEST(Pinches, CutsABeltWhoseBoundaryTouchesItselfAtAVertex) {
 }
 
 TEST(Pinches, ABeltOfAnotherRegionIsReportedNotCut) {
-    const std::vector<Tet> tets = beltAroundVertex0();
+    std::vector<Tet> tets = beltAroundVertex0();
     std::vector<std::int32_t> region(tets.size(), 1);
     const auto stats = detail::openPinches(tets, region, 0);
     EXPECT_EQ(stats.pinchedBefore, 1u);
@@ -90,9 +91,58 @@ TEST(Pinches, ABeltOfAnotherRegionIsReportedNotCut) {
     EXPECT_EQ(stats.pinchedAfter, 1u);
 }
 
+/// A `duplicateVertex` for openPinches over vertex ids only: the copy of v is the next id; `copies` records v.
+struct Copier {
+    std::int32_t next;
+    std::vector<std::int32_t> copies;
+    std::int32_t operator()(std::int32_t v) {
+        copies.push_back(v);
+        return next++;
+    }
+};
+
+TEST(Pinches, SplitsAVertexWhereTwoConesTouchInsteadOfRemovingOne) {
+    std::vector<Tet> tets = {{0, 1, 2, 3}, {0, 4, 5, 6}};
+    std::vector<std::int32_t> region = {0, 0};
+    Copier copier{7, {}};
+    const auto stats = detail::openPinches(tets, region, 0, std::ref(copier));
+    EXPECT_EQ(stats.pinchedBefore, 1u);
+    EXPECT_EQ(stats.splitVertices, 1u);
+    EXPECT_EQ(stats.removedTets, 0u);
+    EXPECT_EQ(stats.pinchedAfter, 0u);
+    EXPECT_EQ(copier.copies, (std::vector<std::int32_t>{0}));
+    EXPECT_EQ(region, (std::vector<std::int32_t>{0, 0})); // both cones stay
+    EXPECT_EQ(tets[0], (Tet{0, 1, 2, 3}));                // the first fan keeps the vertex
+    EXPECT_EQ(tets[1], (Tet{7, 4, 5, 6}));                // the second gets the copy
+}
+
+TEST(Pinches, SplitsBothEndsWhereTwoWedgesTouchAlongAnEdge) {
+    std::vector<Tet> tets = {{0, 1, 2, 3}, {0, 1, 4, 5}};
+    std::vector<std::int32_t> region = {0, 1}; // a pathology's wedge too: splitting removes nothing, so no region rule
+    Copier copier{6, {}};
+    const auto stats = detail::openPinches(tets, region, 0, std::ref(copier));
+    EXPECT_EQ(stats.pinchedBefore, 3u); // the edge and its two vertices
+    EXPECT_EQ(stats.splitVertices, 2u);
+    EXPECT_EQ(stats.removedTets, 0u);
+    EXPECT_EQ(stats.pinchedAfter, 0u);
+    EXPECT_EQ(tets[0], (Tet{0, 1, 2, 3}));
+    EXPECT_EQ(tets[1], (Tet{6, 7, 4, 5}));
+}
+
+TEST(Pinches, ABeltIsCutEvenWhereVerticesMaySplit) {
+    // One fan round vertex 0: no copy of it separates the sheets, so the bridge goes as without a splitter.
+    std::vector<Tet> tets = beltAroundVertex0();
+    std::vector<std::int32_t> region(tets.size(), 0);
+    Copier copier{9, {}};
+    const auto stats = detail::openPinches(tets, region, 0, std::ref(copier));
+    EXPECT_EQ(stats.splitVertices, 0u);
+    EXPECT_EQ(stats.removedTets, 2u);
+    EXPECT_EQ(stats.pinchedAfter, 0u);
+}
+
 TEST(Pinches, ReportsWhatCannotBeOpened) {
     // Two pathology tets touching along an edge: neither fan is wall, nothing may go.
-    const std::vector<Tet> tets = {{0, 1, 2, 3}, {0, 1, 4, 5}};
+    std::vector<Tet> tets = {{0, 1, 2, 3}, {0, 1, 4, 5}};
     std::vector<std::int32_t> region = {1, 2};
     const auto stats = detail::openPinches(tets, region, 0);
     EXPECT_EQ(stats.removedTets, 0u);
