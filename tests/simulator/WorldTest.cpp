@@ -577,20 +577,8 @@ TEST(World, TheLoopCutsThePolypAndTheContactSurfaceFollowsTheCut) {
         stepHeld(*world, held, 0.05, samples);
     }
     stepHeld(*world, held, 0.5, samples);
-    // Meanwhile the fluid's flow from the tip to the sheath's outflow holes carried the free chips while they sank
-    // (docs/simulator.md, "Chips"): one at least moved other than straight down, as sinking alone would move it.
     const WorldSnapshot later = world->snapshot();
     ASSERT_GE(later.chips.size(), afterCut.chips.size());
-    double drifted = 0.0; // mm, the largest move of a free chip across the sinking direction
-    for (std::size_t k = 0; k < afterCut.chips.size(); ++k) {
-        if (!later.chips[k].hooked && !afterCut.chips[k].hooked) {
-            const Vec3 moved = later.chips[k].positionMm - afterCut.chips[k].positionMm;
-            drifted = std::max(drifted, std::hypot(moved.x, moved.z));
-        }
-    }
-    std::printf("chips: %zu left after the cut, the farthest carried %.2f mm across the sinking in 0.7 s\n",
-                afterCut.chips.size(), drifted);
-    EXPECT_GT(drifted, 0.1);
     EXPECT_NEAR(world->state().fluid.pumpSetKpa, world->options().fluid.pumpPressureKpa - 2.0 * kPumpStepKpa, 1e-12);
     EXPECT_LT(world->state().fluid.pressureKpa, cutFluid.pressureKpa);
     EXPECT_GT(world->state().fluid.bleedingMlPerS, cutFluid.bleedingMlPerS);
@@ -697,7 +685,25 @@ TEST(World, TheLoopCutsThePolypAndTheContactSurfaceFollowsTheCut) {
     const std::uint64_t eventsBefore = world->metrics().resection.cutEvents;
     const double polypBefore = world->metrics().resection.pathologies[static_cast<std::size_t>(polyp)].removedMl;
     const double cuttingBefore = world->metrics().resection.cuttingTimeS;
+    const WorldSnapshot beforeExchange = world->snapshot();
     DeviceSample snip = reach(targetMm, kInstrumentScissors);
+    // The loop exchanged let go of the chips it had caught; meanwhile the fluid's flow from the tip to the sheath's
+    // outflow holes carried every free chip while it sank (docs/simulator.md, "Chips"): one at least moved other than
+    // straight down, as sinking alone would move it.
+    {
+        const WorldSnapshot afterExchange = world->snapshot();
+        ASSERT_EQ(afterExchange.chips.size(), beforeExchange.chips.size());
+        ASSERT_FALSE(afterExchange.chips.empty());
+        double drifted = 0.0; // mm, the largest move of a free chip across the sinking direction
+        for (std::size_t k = 0; k < afterExchange.chips.size(); ++k) {
+            EXPECT_FALSE(afterExchange.chips[k].hooked);
+            const Vec3 moved = afterExchange.chips[k].positionMm - beforeExchange.chips[k].positionMm;
+            drifted = std::max(drifted, std::hypot(moved.x, moved.z));
+        }
+        std::printf("chips: %zu let go by the loop, the farthest carried %.2f mm across the sinking in 0.7 s\n",
+                    afterExchange.chips.size(), drifted);
+        EXPECT_GT(drifted, 0.1);
+    }
     EXPECT_FALSE(world->state().loop.cutting);
     snip.buttons = kButtonCut;
     stepHeld(*world, snip, 0.3, samples); // shut after jaws.closeS

@@ -240,15 +240,15 @@ std::vector<Pinch> findPinches(const std::vector<Tet>& tets, const std::vector<s
     return pinches;
 }
 
-/// The fewest tets of `ring` (all around one vertex, one fan) whose removal joins the vertex's boundary sheets into
-/// one: a path of tets joined across faces from a tet on the first sheet to a tet on another, every tet `removable`.
-/// Cutting the fan (an annulus round the vertex, seen from it) across from one of its rims to the other leaves a disc:
-/// one sheet. Empty when one sheet is left or no such path exists. Breadth first, tets in ascending order:
-/// deterministic.
-template <class Removable>
-std::vector<std::int64_t> bridgeBetweenSheets(const std::vector<Tet>& tets,
-                                              const std::vector<std::vector<std::pair<std::int64_t, int>>>& sheets,
-                                              const std::vector<std::int64_t>& ring, Removable&& removable) {
+/// The tets of `ring` (all around one vertex, one fan) whose removal joins the vertex's boundary sheets into one: a
+/// path of tets joined across faces from a tet on the first sheet to a tet on another, every tet `removable`, the
+/// cheapest by `cost` (per tet, > 0). Cutting the fan (an annulus round the vertex, seen from it) across from one of
+/// its rims to the other leaves a disc: one sheet. Empty when one sheet is left or no such path exists. Dijkstra over
+/// the ring, ties to the lower position in it: deterministic.
+template <class Removable, class Cost>
+std::vector<std::int64_t>
+bridgeBetweenSheets(const std::vector<Tet>& tets, const std::vector<std::vector<std::pair<std::int64_t, int>>>& sheets,
+                    const std::vector<std::int64_t>& ring, Removable&& removable, Cost&& cost) {
     if (sheets.size() < 2)
         return {};
     const std::size_t n = ring.size();
@@ -267,15 +267,21 @@ std::vector<std::int64_t> bridgeBetweenSheets(const std::vector<Tet>& tets,
             shared += std::find(w.begin(), w.end(), x) != w.end() ? 1 : 0;
         return shared == 3;
     };
-    std::vector<std::int64_t> from(n, -2); // -2 unseen, -1 a start
-    std::vector<std::size_t> queue;
+    constexpr double kUnreached = 1e300;
+    std::vector<double> dist(n, kUnreached);
+    std::vector<std::int64_t> from(n, -1);
+    std::vector<char> done(n, 0);
     for (std::size_t i = 0; i < n; ++i)
-        if (removable(ring[i]) && onSheet(ring[i], true)) {
-            from[i] = -1;
-            queue.push_back(i);
-        }
-    for (std::size_t head = 0; head < queue.size(); ++head) {
-        const std::size_t i = queue[head];
+        if (removable(ring[i]) && onSheet(ring[i], true))
+            dist[i] = cost(ring[i]);
+    for (;;) {
+        std::size_t i = n;
+        for (std::size_t k = 0; k < n; ++k)
+            if (!done[k] && dist[k] < kUnreached && (i == n || dist[k] < dist[i]))
+                i = k;
+        if (i == n)
+            return {};
+        done[i] = 1;
         if (onSheet(ring[i], false)) {
             std::vector<std::int64_t> path;
             for (std::int64_t k = static_cast<std::int64_t>(i); k >= 0; k = from[static_cast<std::size_t>(k)])
@@ -283,12 +289,11 @@ std::vector<std::int64_t> bridgeBetweenSheets(const std::vector<Tet>& tets,
             return path;
         }
         for (std::size_t j = 0; j < n; ++j)
-            if (from[j] == -2 && joined(i, j) && removable(ring[j])) {
+            if (!done[j] && joined(i, j) && removable(ring[j]) && dist[i] + cost(ring[j]) < dist[j]) {
+                dist[j] = dist[i] + cost(ring[j]);
                 from[j] = static_cast<std::int64_t>(i);
-                queue.push_back(j);
             }
     }
-    return {};
 }
 
 } // namespace
@@ -303,10 +308,44 @@ PinchStats openPinches(std::vector<Tet>& tets, std::vector<std::int32_t>& region
         if (pass == 0)
             stats.pinchedBefore = pinches.size();
         if (pinches.empty())
-            return stats; // none (left): pinchedAfter stays 0
-        // Vertices whose tets form several fans are split first, a copy of the vertex for each fan but the first:
-        // nothing is removed, and the cones that touched there touch as separate sheets. The face table is stale
-        // after a split, so the other pinches wait for the next pass.
+            return stats;                                     // none (left): pinchedAfter stays 0
+        std::vector<char> onBoundary(faces.bucket.size(), 0); // vertices with a boundary face
+        for (std::size_t i = 0; i < faces.entries.size();) {
+            std::size_t j = i + 1;
+            while (j < faces.entries.size() && faces.entries[j].first == faces.entries[i].first)
+                ++j;
+            if (j - i == 1)
+                for (std::int32_t v : faces.entries[i].first)
+                    onBoundary[static_cast<std::size_t>(v)] = 1;
+            i = j;
+        }
+        // Removing a fan whose vertices all lie on the boundary takes a cap or a spike and leaves no notch; a fan with
+        // a vertex inside the body leaves a notch as deep as that vertex lies.
+        const auto exposedInner = [&](const std::vector<std::int64_t>& fan) {
+            std::size_t inner = 0;
+            for (std::int64_t t : fan)
+                for (std::int32_t v : tets[static_cast<std::size_t>(t)])
+                    inner += onBoundary[static_cast<std::size_t>(v)] ? 0 : 1;
+            return inner;
+        };
+        const auto removableTet = [&](std::int64_t t) {
+            if (region[static_cast<std::size_t>(t)] != outerRegion)
+                return false;
+            const Tet& k = tets[static_cast<std::size_t>(t)];
+            for (int f = 0; f < 4; ++f) {
+                const Face face =
+                    sortedFace(k[static_cast<std::size_t>((f + 1) & 3)], k[static_cast<std::size_t>((f + 2) & 3)],
+                               k[static_cast<std::size_t>((f + 3) & 3)]);
+                const std::int64_t nb = faces.across(face, t);
+                if (nb >= 0 && region[static_cast<std::size_t>(nb)] >= 0 &&
+                    region[static_cast<std::size_t>(nb)] != outerRegion)
+                    return false;
+            }
+            return true;
+        };
+        // A vertex whose tets form several fans, none of which can go without a notch, is split first: a copy of the
+        // vertex for each fan but the first. Nothing is removed, and the cones that touched there touch as separate
+        // sheets. The face table is stale after a split, so the other pinches wait for the next pass.
         if (duplicateVertex) {
             bool split = false;
             for (std::size_t p = 0; p < pinches.size(); ++p) {
@@ -320,6 +359,11 @@ PinchStats openPinches(std::vector<Tet>& tets, std::vector<std::int32_t>& region
                         ring.push_back(t);
                 }
                 const auto fans = fansOf(tets, ring);
+                const bool shallow = std::any_of(fans.begin(), fans.end(), [&](const std::vector<std::int64_t>& fan) {
+                    return exposedInner(fan) == 0 && std::all_of(fan.begin(), fan.end(), removableTet);
+                });
+                if (shallow)
+                    continue; // a cap or a spike: removed below
                 for (std::size_t f = 1; f < fans.size(); ++f) {
                     const std::int32_t copy = duplicateVertex(v);
                     for (std::int64_t t : fans[f])
@@ -338,24 +382,17 @@ PinchStats openPinches(std::vector<Tet>& tets, std::vector<std::int32_t>& region
             ring.erase(std::remove_if(ring.begin(), ring.end(),
                                       [&](std::int64_t t) { return region[static_cast<std::size_t>(t)] < 0; }),
                        ring.end());
-            auto removableTet = [&](std::int64_t t) {
-                if (region[static_cast<std::size_t>(t)] != outerRegion)
-                    return false;
-                const Tet& k = tets[static_cast<std::size_t>(t)];
-                for (int f = 0; f < 4; ++f) {
-                    const Face face =
-                        sortedFace(k[static_cast<std::size_t>((f + 1) & 3)], k[static_cast<std::size_t>((f + 2) & 3)],
-                                   k[static_cast<std::size_t>((f + 3) & 3)]);
-                    const std::int64_t nb = faces.across(face, t);
-                    if (nb >= 0 && region[static_cast<std::size_t>(nb)] >= 0 &&
-                        region[static_cast<std::size_t>(nb)] != outerRegion)
-                        return false;
-                }
-                return true;
-            };
             if (pinches[p].second == kSeveralSheets) {
+                // A tet with a vertex inside the body exposes it: the notch reaches as deep. Such tets cost as much
+                // as ten on the boundary, so the bridge keeps to the surface where it can.
+                const auto exposes = [&](std::int64_t t) {
+                    double c = 1.0;
+                    for (std::int32_t v : tets[static_cast<std::size_t>(t)])
+                        c += onBoundary[static_cast<std::size_t>(v)] ? 0.0 : 10.0;
+                    return c;
+                };
                 const std::vector<std::int64_t> bridge = bridgeBetweenSheets(
-                    tets, sheetsAround(tets, region, faces, pinches[p].first, ring), ring, removableTet);
+                    tets, sheetsAround(tets, region, faces, pinches[p].first, ring), ring, removableTet, exposes);
                 for (std::int64_t t : bridge)
                     region[static_cast<std::size_t>(t)] = -1;
                 stats.removedTets += bridge.size();

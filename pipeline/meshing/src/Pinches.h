@@ -22,14 +22,16 @@ struct PinchStats {
 /// than one fan) by removing the smallest fan of tets around it (tets joined across faces that contain the edge or
 /// vertex), taking only fans whose tets all belong to `outerRegion` and have no face against another region (so no
 /// interface becomes boundary). A vertex whose tets form one fan but whose boundary faces form several sheets (joined
-/// across edges through it) loses the fewest tets, under the same rule, that join its first sheet to another: a
-/// shortest path of its tets joined across faces. Removed tets get region -1; tets with a negative region are not part
-/// of the mesh. Repeats until no pinch is left or no fan can go (at most 8 passes). Deterministic: pinches in sorted
-/// order.
+/// across edges through it) loses the tets, under the same rule, of the cheapest path of its tets joined across faces
+/// from its first sheet to another, a tet with a vertex off the boundary costing as much as ten on it. Removed tets
+/// get region -1; tets with a negative region are not part of the mesh. Repeats until no pinch is left or no fan can
+/// go (at most 8 passes). Deterministic: pinches in sorted order.
+///
 /// With `duplicateVertex` (given a vertex, it adds a copy at the same place and returns the copy's index), a vertex
-/// whose tets form several fans is split instead: each fan but the first gets its own copy of the vertex, so nothing
-/// is removed there and the cones touch as separate sheets (as CGAL's
-/// Polygon_mesh_processing::duplicate_non_manifold_vertices does for a surface). `tets` then refer to the copies.
+/// whose tets form several fans, none of which may go with every vertex on the boundary (a cap or a spike: no notch),
+/// is split instead: each fan but the first gets its own copy of the vertex, so nothing is removed there and the
+/// cones touch as separate sheets (as CGAL's Polygon_mesh_processing::duplicate_non_manifold_vertices does for a
+/// surface). `tets` then refer to the copies.
 PinchStats openPinches(std::vector<Tet>& tets, std::vector<std::int32_t>& region, std::int32_t outerRegion,
                        const std::function<std::int32_t(std::int32_t)>& duplicateVertex = {});
 

@@ -101,32 +101,64 @@ struct Copier {
     }
 };
 
-TEST(Pinches, SplitsAVertexWhereTwoConesTouchInsteadOfRemovingOne) {
-    std::vector<Tet> tets = {{0, 1, 2, 3}, {0, 4, 5, 6}};
-    std::vector<std::int32_t> region = {0, 0};
-    Copier copier{7, {}};
+/// Two balls of eight tets, each the star of an inner vertex (1 and 7), touching at vertex 0: the top of the first,
+/// the bottom of the second. Each of vertex 0's two fans holds its ball's inner vertex.
+std::vector<Tet> twoBallsTouchingAtVertex0() {
+    std::vector<Tet> tets;
+    const auto ball = [&tets](std::int32_t centre, std::int32_t top, std::int32_t bottom, std::int32_t firstRing) {
+        for (std::int32_t i = 0; i < 4; ++i) {
+            const std::int32_t a = firstRing + i, b = firstRing + (i + 1) % 4;
+            tets.push_back({centre, top, a, b});
+            tets.push_back({centre, bottom, b, a});
+        }
+    };
+    ball(1, 0, 6, 2);  // inner vertex 1, ring 2-5, bottom 6
+    ball(7, 12, 0, 8); // inner vertex 7, ring 8-11, top 12
+    return tets;
+}
+
+TEST(Pinches, SplitsAVertexWhereEitherConeWouldLeaveANotch) {
+    std::vector<Tet> tets = twoBallsTouchingAtVertex0();
+    std::vector<std::int32_t> region(tets.size(), 0);
+    Copier copier{13, {}};
     const auto stats = detail::openPinches(tets, region, 0, std::ref(copier));
     EXPECT_EQ(stats.pinchedBefore, 1u);
     EXPECT_EQ(stats.splitVertices, 1u);
     EXPECT_EQ(stats.removedTets, 0u);
     EXPECT_EQ(stats.pinchedAfter, 0u);
     EXPECT_EQ(copier.copies, (std::vector<std::int32_t>{0}));
-    EXPECT_EQ(region, (std::vector<std::int32_t>{0, 0})); // both cones stay
-    EXPECT_EQ(tets[0], (Tet{0, 1, 2, 3}));                // the first fan keeps the vertex
-    EXPECT_EQ(tets[1], (Tet{7, 4, 5, 6}));                // the second gets the copy
+    EXPECT_EQ(region, std::vector<std::int32_t>(tets.size(), 0)); // both balls stay whole
+    const std::vector<Tet> before = twoBallsTouchingAtVertex0();
+    for (std::size_t t = 0; t < tets.size(); ++t) // the first ball keeps vertex 0, the second gets the copy
+        for (std::size_t k = 0; k < 4; ++k)
+            EXPECT_EQ(tets[t][k], before[t][k] == 0 && t >= 8 ? 13 : before[t][k]) << t;
+    // Without a splitter the smaller fan goes: four tets, and the first ball's inner vertex is bared.
+    std::vector<Tet> opened = twoBallsTouchingAtVertex0();
+    std::vector<std::int32_t> openedRegion(opened.size(), 0);
+    EXPECT_EQ(detail::openPinches(opened, openedRegion, 0).removedTets, 4u);
 }
 
-TEST(Pinches, SplitsBothEndsWhereTwoWedgesTouchAlongAnEdge) {
-    std::vector<Tet> tets = {{0, 1, 2, 3}, {0, 1, 4, 5}};
-    std::vector<std::int32_t> region = {0, 1}; // a pathology's wedge too: splitting removes nothing, so no region rule
-    Copier copier{6, {}};
+TEST(Pinches, ASpikeTouchingAtAVertexIsRemovedNotSplit) {
+    // One tet on its own (every vertex on the boundary) touching the other at vertex 0: removing it leaves no notch.
+    std::vector<Tet> tets = {{0, 1, 2, 3}, {0, 4, 5, 6}};
+    std::vector<std::int32_t> region = {0, 0};
+    Copier copier{7, {}};
     const auto stats = detail::openPinches(tets, region, 0, std::ref(copier));
-    EXPECT_EQ(stats.pinchedBefore, 3u); // the edge and its two vertices
-    EXPECT_EQ(stats.splitVertices, 2u);
+    EXPECT_EQ(stats.splitVertices, 0u);
+    EXPECT_EQ(stats.removedTets, 1u);
+    EXPECT_EQ(stats.pinchedAfter, 0u);
+}
+
+TEST(Pinches, SplitsWhatMayNotBeRemoved) {
+    // Two pathology tets touching at a vertex: neither may go (ReportsWhatCannotBeOpened), a split parts them.
+    std::vector<Tet> tets = {{0, 1, 2, 3}, {0, 4, 5, 6}};
+    std::vector<std::int32_t> region = {1, 2};
+    Copier copier{7, {}};
+    const auto stats = detail::openPinches(tets, region, 0, std::ref(copier));
+    EXPECT_EQ(stats.splitVertices, 1u);
     EXPECT_EQ(stats.removedTets, 0u);
     EXPECT_EQ(stats.pinchedAfter, 0u);
-    EXPECT_EQ(tets[0], (Tet{0, 1, 2, 3}));
-    EXPECT_EQ(tets[1], (Tet{6, 7, 4, 5}));
+    EXPECT_EQ(tets[1], (Tet{7, 4, 5, 6}));
 }
 
 TEST(Pinches, ABeltIsCutEvenWhereVerticesMaySplit) {
