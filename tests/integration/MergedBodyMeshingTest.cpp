@@ -30,6 +30,10 @@ constexpr double kVolumeBar = 0.02;
 /// The bar on tet shape: no dihedral angle below 17 degrees (so no sliver, < 10 degrees, either), the scenes' own
 /// (hs/scene/MeshBars.h, "mesh-min-dihedral").
 constexpr double kMinDihedralBarDeg = 17.0;
+/// The bar on the surface: the two-sided Hausdorff distance between the mesh's boundary and interfaces and the
+/// input surfaces at most 1 % of the body's bounding-box diagonal (hs/scene/MeshBars.h, "mesh-hausdorff"). At this
+/// edge the covers and the pinches' notches took it to 1.65-2.06 % before the mesher checked its surface's fidelity.
+constexpr double kHausdorffBar = 0.01;
 
 /// Boundary edges shared by more than two boundary faces (two parts of the body touching along an edge): a simulator
 /// extracting the surface needs none.
@@ -104,6 +108,7 @@ TEST(MergedBodyMeshing, MeshesOneMyomaPerModelAndAPolypWithEveryRegionAndItsVolu
     EXPECT_EQ(q.degenerateCount, 0u);
     EXPECT_EQ(q.sliverCount, 0u);
     EXPECT_GE(q.minDihedralDeg, kMinDihedralBarDeg);
+    EXPECT_LE(q.hausdorffRelative, kHausdorffBar);
     EXPECT_EQ(pinchedBoundaryEdges(meshed->mesh), 0u);
     // Nor any part touching another at a point: the boundary is a manifold ("mesh-non-manifold").
     EXPECT_EQ(q.boundaryNonManifoldEdges, 0u);

@@ -11,6 +11,36 @@
 
 namespace hs::meshing::detail {
 
+ParticleHash::ParticleHash(const VoxelGrid<std::int32_t>& grid, const Particles& ps)
+    : m_grid(grid), m_ps(ps), m_head(grid.size(), -1) {
+    for (std::size_t i = 0; i < ps.size(); ++i)
+        insert(i);
+}
+
+void ParticleHash::insert(std::size_t i) {
+    const Index3 v = m_grid.voxelOf(m_ps.position[i]);
+    if (!m_grid.contains(v))
+        return;
+    m_next.resize(std::max(m_next.size(), i + 1), -1);
+    m_next[i] = m_head[m_grid.linear(v)];
+    m_head[m_grid.linear(v)] = static_cast<std::int32_t>(i);
+}
+
+bool ParticleHash::occupied(const Vec3& p, double radius2) const {
+    const Index3 c = m_grid.voxelOf(p);
+    for (std::int64_t dk = -1; dk <= 1; ++dk)
+        for (std::int64_t dj = -1; dj <= 1; ++dj)
+            for (std::int64_t di = -1; di <= 1; ++di) {
+                const Index3 nb{c[0] + di, c[1] + dj, c[2] + dk};
+                if (!m_grid.contains(nb))
+                    continue;
+                for (std::int32_t i = m_head[m_grid.linear(nb)]; i >= 0; i = m_next[static_cast<std::size_t>(i)])
+                    if (norm2(m_ps.position[static_cast<std::size_t>(i)] - p) < radius2)
+                        return true;
+            }
+    return false;
+}
+
 /// Tets whose inner particles lie in different regions, or that join an inner particle to a surface that does not
 /// bound its region, cross an interface (Delaunay did not recover it there):
 /// adds an interface particle where the segment between two such particles meets the nearest nested surface, unless
@@ -48,34 +78,8 @@ std::size_t addInterfaceParticles(const detail::DelaunayOutput& dt, const Region
             }
     std::sort(crossing.begin(), crossing.end());
     crossing.erase(std::unique(crossing.begin(), crossing.end()), crossing.end());
-    // Particles hashed by voxel for the "already close" test.
-    const auto& grid = voxels.region;
-    std::vector<std::int32_t> head(grid.size(), -1), next(ps.size(), -1);
-    auto insert = [&](std::size_t i) {
-        const Index3 v = grid.voxelOf(ps.position[i]);
-        if (!grid.contains(v))
-            return;
-        next.resize(std::max(next.size(), i + 1), -1);
-        next[i] = head[grid.linear(v)];
-        head[grid.linear(v)] = static_cast<std::int32_t>(i);
-    };
-    for (std::size_t i = 0; i < ps.size(); ++i)
-        insert(i);
+    ParticleHash hash(voxels.region, ps);
     const double r2 = (0.35 * edge) * (0.35 * edge);
-    auto occupied = [&](const Vec3& p) {
-        const Index3 c = grid.voxelOf(p);
-        for (std::int64_t dk = -1; dk <= 1; ++dk)
-            for (std::int64_t dj = -1; dj <= 1; ++dj)
-                for (std::int64_t di = -1; di <= 1; ++di) {
-                    const Index3 nb{c[0] + di, c[1] + dj, c[2] + dk};
-                    if (!grid.contains(nb))
-                        continue;
-                    for (std::int32_t i = head[grid.linear(nb)]; i >= 0; i = next[static_cast<std::size_t>(i)])
-                        if (norm2(ps.position[static_cast<std::size_t>(i)] - p) < r2)
-                            return true;
-                }
-        return false;
-    };
     std::size_t added = 0;
     for (const auto& [a, b] : crossing) {
         const Vec3 mid = (ps.position[a] + ps.position[b]) * 0.5;
@@ -90,11 +94,11 @@ std::size_t addInterfaceParticles(const detail::DelaunayOutput& dt, const Region
                 bestSurface = s;
             }
         }
-        if (best.triangle < 0 || occupied(best.closest.point))
+        if (best.triangle < 0 || hash.occupied(best.closest.point, r2))
             continue;
         ps.add(best.closest.point, detail::ParticleKind::Surface, static_cast<std::int32_t>(bestSurface), best.triangle,
                -1);
-        insert(ps.size() - 1);
+        hash.insert(ps.size() - 1);
         ++added;
     }
     return added;

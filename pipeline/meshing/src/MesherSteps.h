@@ -82,6 +82,21 @@ std::size_t classifyLayerTets(const RegionModel& body, const std::vector<std::in
                               std::vector<std::int32_t>& region);
 
 // InterfaceParticles.cpp
+/// Particles hashed by voxel, for "is a particle already this close" tests while particles are added.
+class ParticleHash {
+public:
+    ParticleHash(const VoxelGrid<std::int32_t>& grid, const Particles& ps);
+    /// Hashes particle i (added to `ps` after construction).
+    void insert(std::size_t i);
+    /// Whether a hashed particle lies closer to p than sqrt(radius2) (at most one voxel).
+    bool occupied(const Vec3& p, double radius2) const;
+
+private:
+    const VoxelGrid<std::int32_t>& m_grid;
+    const Particles& m_ps;
+    std::vector<std::int32_t> m_head, m_next;
+};
+
 /// Tets whose inner particles lie in different regions, or that join an inner particle to a surface that does not
 /// bound its region, cross an interface (Delaunay did not recover it there):
 /// adds an interface particle where the segment between two such particles meets the nearest nested surface, unless
@@ -89,6 +104,23 @@ std::size_t classifyLayerTets(const RegionModel& body, const std::vector<std::in
 std::size_t addInterfaceParticles(const detail::DelaunayOutput& dt, const RegionModel& body,
                                   const RegionLocator& locator, const VoxelSpace& voxels, double edge,
                                   detail::Particles& ps);
+
+// SurfaceFidelity.cpp
+/// The tets the mesher keeps of a triangulation, with their regions, by the steps that follow it (centroid, layer,
+/// peeling); the points are the particles'.
+TetMesh keptTets(const detail::DelaunayOutput& dt, const RegionModel& body, const RegionLocator& locator, int threads,
+                 const detail::Particles& ps);
+
+/// Surface particles added where the boundary and interfaces of `kept` (tets on the particles' indices) stray from the
+/// input surfaces by more than `tolerance` (mm), both ways, as Delaunay refinement does for a surface's approximation
+/// (the facet distance criterion of Boissonnat & Oudot, Graph Models 67:405-451, 2005; CGAL Mesh_3's
+/// facet_distance): at each input sample (vertex, face centroid) farther than that from the boundary, and at the
+/// input's closest point to each boundary vertex or face centroid farther than that from the input, farthest first,
+/// unless a particle of `ps` already lies within `minSpacing`. Returns how many were added; the caller
+/// tetrahedralizes again.
+std::size_t addFidelityParticles(const TetMesh& kept, const RegionModel& body, const RegionLocator& locator,
+                                 const VoxelSpace& voxels, double tolerance, double minSpacing, int threads,
+                                 detail::Particles& ps);
 
 // ConstrainedImprovement.cpp
 /// Improves the kept tets (flips, boundary flips, smoothing; see MeshImprove.h) with every particle on its

@@ -48,6 +48,9 @@ struct MeshParams {
     double latticeJitter = 0.0;    ///< Seeding::Lattice: seeded random offset, fraction of the voxel size
     int relaxationIterations = 20; ///< cap; relaxation stops earlier when particles no longer move
     double featureAngleDeg = 45.0; ///< surface edges whose normals differ by more are feature edges (kept sharp)
+    /// Particle method: check the boundary against the input surfaces and add surface particles where it strays
+    /// (docs/meshing.md, step 9). Off: the mesh as before the check (scenes, for now: "Bars on every scene").
+    bool surfaceFidelity = true;
 };
 
 /// Output of every method.
