@@ -103,27 +103,12 @@ std::vector<OstiumOpening> ostiumOpenings(const SurfaceMesh& boundary) {
         sum.second += n;
         areas[find(static_cast<std::int32_t>(f))] += area;
     }
-    // The funnel faces the way the wall around it faces: the boundary faces over the funnel's rim and a radius
-    // beyond, turned the way the ostium's own faces are (the cornu's far wall across a narrow recess faces back).
-    // The ostium's own faces are one to four tet faces, and one of them tilted turned the funnel by 38 degrees on
-    // the default scene, its lower lip then hiding a third of it from the cavity's middle.
-    const double reach2 = (2.0 * kOstiumRadiusMm) * (2.0 * kOstiumRadiusMm);
     for (const auto& [root, sum] : sums) {
         const double area = areas.at(root);
         const double len = norm(sum.second);
         if (area <= 0.0 || len <= 0.0)
             continue;
-        const Vec3 centre = sum.first / area, own = sum.second / len;
-        Vec3 around{0.0, 0.0, 0.0};
-        for (const Triangle& t : boundary.triangles) {
-            const Vec3& a = boundary.points[static_cast<std::size_t>(t[0])];
-            const Vec3& b = boundary.points[static_cast<std::size_t>(t[1])];
-            const Vec3& c = boundary.points[static_cast<std::size_t>(t[2])];
-            const Vec3 n = cross(b - a, c - a);
-            if (norm2((a + b + c) / 3.0 - centre) < reach2 && dot(n, own) > 0.0)
-                around += n;
-        }
-        out.push_back({centre, norm(around) > 0.0 ? normalized(around) : own});
+        out.push_back({sum.first / area, sum.second / len});
     }
     return out;
 }

@@ -72,9 +72,8 @@ inline constexpr double kMaxVisualFairingMm = 0.75;
 /// Reproduction, Cambridge University Press 2008). The tets keep the wall closed: the tube is not modelled.
 inline constexpr double kOstiumRadiusMm = 1.5;
 inline constexpr double kOstiumDepthMm = 2.0; ///< the funnel's depth, mm: as deep as the light shows the opening
-/// One tubal ostium of a labelled boundary: the area-weighted centre of one connected set of its ostium faces, and
-/// the outward (into the cavity) unit normal of the wall around it (the boundary faces within twice the funnel's
-/// radius that face the way the ostium's own faces do); in order of their first face.
+/// One tubal ostium of a labelled boundary: the area-weighted centre and outward (into the cavity) unit normal of
+/// one connected set of its ostium faces; in order of their first face.
 struct OstiumOpening {
     Vec3 centreMm;
     Vec3 normal;
