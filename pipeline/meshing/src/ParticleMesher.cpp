@@ -246,12 +246,13 @@ Result<ParticleMeshResult> meshParticles(const RegionModel& input, const Particl
         {
             ScopedStepTimer timer(timings, "clean");
             region = classifyTets(particles.position, locator, threads, dt.tets);
-            const std::size_t layerTets = classifyLayerTets(body, detail::parentSurfaces(body), particles, dt.tets, region);
+            const std::size_t layerTets =
+                classifyLayerTets(body, detail::parentSurfaces(body), particles, dt.tets, region);
             timings.step("clean").counts.emplace_back("layerTets", static_cast<std::int64_t>(layerTets));
             const std::size_t peeled = peelBoundarySlivers(body, particles.position, particles, dt, region);
             timings.step("clean").counts.emplace_back("peeled", static_cast<std::int64_t>(peeled));
         }
-        // Between the steps that take no progress of their own, so that a cancel is never held for more than one of them.
+        // Between the steps without progress of their own, so that a cancel never waits on more than one of them.
         progress.report("meshing.clean", 0.9);
         HS_TRY(progress.check("meshing", "cleaning the tetrahedra"));
         tets = std::move(dt.tets);
@@ -284,7 +285,8 @@ Result<ParticleMeshResult> meshParticles(const RegionModel& input, const Particl
                               particles.region[i]);
                 return static_cast<std::int32_t>(particles.size() - 1);
             };
-            const detail::PinchStats stats = detail::openPinches(tets, region, body.surfaces.front().regionId, duplicate);
+            const detail::PinchStats stats =
+                detail::openPinches(tets, region, body.surfaces.front().regionId, duplicate);
             auto& counts = timings.step("pinches").counts;
             counts.emplace_back("pinches", static_cast<std::int64_t>(stats.pinchedBefore));
             counts.emplace_back("removedTets", static_cast<std::int64_t>(stats.removedTets));
@@ -312,8 +314,7 @@ Result<ParticleMeshResult> meshParticles(const RegionModel& input, const Particl
         }
         if (added == 0 && fidelityPasses < fidelityPassesAllowed) {
             added = addFidelityParticles(keptTets(dt, body, locator, threads, particles), body, locator, voxels,
-                                         kFidelityPerEdge * *edge, kFidelitySpacingPerEdge * *edge, threads,
-                                         particles);
+                                         kFidelityPerEdge * *edge, kFidelitySpacingPerEdge * *edge, threads, particles);
             fidelityParticles += static_cast<std::int64_t>(added);
             ++fidelityPasses;
         }

@@ -64,7 +64,8 @@ std::size_t addFidelityParticles(const TetMesh& kept, const RegionModel& body, c
                     p = surface.points[i];
                 } else {
                     const Triangle& t = surface.triangles[i - nv];
-                    p = (surface.points[static_cast<std::size_t>(t[0])] + surface.points[static_cast<std::size_t>(t[1])] +
+                    p = (surface.points[static_cast<std::size_t>(t[0])] +
+                         surface.points[static_cast<std::size_t>(t[1])] +
                          surface.points[static_cast<std::size_t>(t[2])]) /
                         3.0;
                     triangle = static_cast<std::int32_t>(i - nv);
@@ -91,7 +92,8 @@ std::size_t addFidelityParticles(const TetMesh& kept, const RegionModel& body, c
                 Vec3 c = i < nv ? boundary.points[i] : Vec3{};
                 if (i >= nv) {
                     const Triangle& t = boundary.triangles[i - nv];
-                    c = (boundary.points[static_cast<std::size_t>(t[0])] + boundary.points[static_cast<std::size_t>(t[1])] +
+                    c = (boundary.points[static_cast<std::size_t>(t[0])] +
+                         boundary.points[static_cast<std::size_t>(t[1])] +
                          boundary.points[static_cast<std::size_t>(t[2])]) /
                         3.0;
                 }
