@@ -116,8 +116,9 @@ TetMesh keptTets(const detail::DelaunayOutput& dt, const RegionModel& body, cons
 /// (the facet distance criterion of Boissonnat & Oudot, Graph Models 67:405-451, 2005; CGAL Mesh_3's
 /// facet_distance): at each input sample (vertex, face centroid) farther than that from the boundary, and at the
 /// input's closest point to each boundary vertex or face centroid farther than that from the input, farthest first,
-/// unless a particle of `ps` already lies within `minSpacing`. Returns how many were added; the caller
-/// tetrahedralizes again.
+/// unless a particle of `ps` already lies within `minSpacing`. An inner particle left on the boundary farther than
+/// `tolerance` from the input (a notch's floor) is removed from `ps`. Returns how many were added and removed; the
+/// caller tetrahedralizes again when that is not 0.
 std::size_t addFidelityParticles(const TetMesh& kept, const RegionModel& body, const RegionLocator& locator,
                                  const VoxelSpace& voxels, double tolerance, double minSpacing, int threads,
                                  detail::Particles& ps);
