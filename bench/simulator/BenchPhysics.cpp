@@ -2,18 +2,21 @@
 // >= 200 Hz on 2 cores) and a long scripted trial's stability (no inverted tets, bounded energy). A table, not a test.
 //
 //   bench_physics PACKAGE [--seconds 60] [--iterations 6] [--trace] [--rough SEED] [--canal [--introitus MM]]
-//                 [--press [--wall PKG2] [--linear] [--from-plan]] [--demo polypectomy|myomectomy]
+//                 [--press [--wall PKG2] [--linear] [--from-plan] [--faces N]] [--demo polypectomy|myomectomy]
 // --press: instead of a trial, presses of the device 0.5, 1, 2 and 3 mm into the cavity's wall and into each
 // pathology met head-on (pressScript), each on a fresh world, held 2 s. The depth is counted from the face where it
 // stands as the tip leaves its stand-off (the plan made again there, pressFaceOffsetMm); --from-plan: from the face as
 // the static solve at the planning pressure (60 mmHg) left it, as pressScript plans. Printed: the tip's force, the
-// coupling's stretch (the force over its 1 N/mm), the tissue's indentation (the rest, the tip's sub-element dimple
-// included), its secant stiffness, each pathology's force and stiffness against the wall's at the same depth; and, as
-// the press began, the tissue's modulus round the face as its exponential stiffening has it in the distended state
-// (World::tissueModulusNearKpa), the force ratio over that modulus' ratio, and how far the face stood off its planned
-// place (along its normal, + towards the scope). --wall PACKAGE2: the wall's presses on that package instead (a scene
-// whose pathologies leave a wall to press head-on). --linear: the tissue without its stiffening
-// (WorldOptions::linearTissue).
+// coupling's stretch (the force over its 1 N/mm), the tissue's indentation (the physics' scope's tip, its sub-element
+// dimple included, beyond the face as it stood when the press began: pressIndentationMm), its secant stiffness, each
+// pathology's force and stiffness against the wall's at the same depth; and, as the press began, the tissue's modulus
+// round the face as its exponential stiffening has it in the distended state (World::tissueModulusNearKpa), the force
+// ratio over that modulus' ratio, and how far the face stood off its planned place (along its normal, + towards the
+// scope). --wall PACKAGE2: the wall's presses on that package instead (a scene whose pathologies leave a wall to press
+// head-on). --linear: the tissue without its stiffening (WorldOptions::linearTissue). --faces N: instead, the 3 mm
+// press into the wall at each of its N faces met most nearly head-on (pressScript's rank 0 to N-1, each a tip's
+// diameter from the others), each on a fresh world: how the punch stands against Boussinesq's from one face of the
+// simulation mesh to the next, and the spread of that ratio.
 // --canal: instead of a trial, the entries through the cervical canal (entryScript: along its clearest line, and 15 and
 // 30 degrees off it), each on a fresh world: the peak and held force, how far the physics' scope stayed off the
 // device, how far the fundus and the internal os moved, perforations (false passages), the worst inverted-tet count.
@@ -54,9 +57,11 @@ double percentile(std::vector<double> v, double q) {
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        std::fprintf(stderr, "usage: bench_physics PACKAGE [--seconds S] [--iterations N] [--trace] [--rough SEED] "
-                             "[--canal [--introitus MM]] [--press [--wall PACKAGE2] [--linear] [--from-plan]] [--demo "
-                             "polypectomy|myomectomy]\n");
+        std::fprintf(
+            stderr,
+            "usage: bench_physics PACKAGE [--seconds S] [--iterations N] [--trace] [--rough SEED] "
+            "[--canal [--introitus MM]] [--press [--wall PACKAGE2] [--linear] [--from-plan] [--faces N]] [--demo "
+            "polypectomy|myomectomy]\n");
         return 2;
     }
     const std::string package = argv[1];
@@ -68,6 +73,7 @@ int main(int argc, char** argv) {
     bool press = false;
     bool fromPlan = false; // --press: the depth counted from the face as planned, not as it stands
     std::string wallPackage;
+    int faces = 0; // --press --faces N: the wall's 3 mm press at its N most head-on faces
     for (int i = 2; i < argc; ++i) {
         if (std::strcmp(argv[i], "--trace") == 0)
             trace = true;
@@ -79,6 +85,8 @@ int main(int argc, char** argv) {
             options.linearTissue = true;
         else if (std::strcmp(argv[i], "--from-plan") == 0)
             fromPlan = true;
+        else if (std::strcmp(argv[i], "--faces") == 0 && i + 1 < argc)
+            faces = std::atoi(argv[++i]);
         else if (std::strcmp(argv[i], "--wall") == 0 && i + 1 < argc)
             wallPackage = argv[++i];
         else if (std::strcmp(argv[i], "--seconds") == 0 && i + 1 < argc)
@@ -154,14 +162,18 @@ int main(int argc, char** argv) {
             double forceN = 0.0, couplingMm = 0.0, indentationMm = 0.0;
             double stiffenedKpa = 0.0; ///< the tissue's modulus around the face as the press began, stiffened
             double faceOffMm = 0.0;    ///< the face then, off its planned place along its normal (+: towards the scope)
-            double boussinesqNPerMm = 0.0; ///< a punch of the tip's radius on a half-space of the stiffened modulus
+            double boussinesqNPerMm = 0.0;  ///< a punch of the tip's radius on a half-space of the stiffened modulus
+            double shortOfCouplingMm = 0.0; ///< the depth less the coupling's stretch (the scope's whole load)
+            double alignment = 0.0;         ///< the face's, head-on 1
+            hs::Vec3 surfaceMm;             ///< the face's centre as planned
         };
-        const auto run = [&](int pathology, double depthMm, std::string& label, double& modulus) -> Pressed {
+        const auto run = [&](int pathology, double depthMm, std::string& label, double& modulus,
+                             std::size_t rank = 0) -> Pressed {
             auto fresh = hs::sim::World::load(pathology < 0 && !wallPackage.empty() ? wallPackage : package, options);
             if (!fresh)
                 return {};
             hs::sim::World& e = **fresh;
-            auto plan = hs::sim::pressScript(e, pathology, depthMm, 2.0);
+            auto plan = hs::sim::pressScript(e, pathology, depthMm, 2.0, rank);
             if (!plan) {
                 label = plan.error().detail;
                 return {};
@@ -179,7 +191,7 @@ int main(int argc, char** argv) {
                     p.faceOffMm = hs::sim::pressFaceOffsetMm(e, *plan);
                     if (!fromPlan) {
                         // The depth counted from the face where it stands now: the same script up to here.
-                        auto again = hs::sim::pressScript(e, pathology, depthMm - p.faceOffMm, 2.0);
+                        auto again = hs::sim::pressScript(e, pathology, depthMm - p.faceOffMm, 2.0, rank);
                         if (!again || again->pressFromS != plan->pressFromS) {
                             label = again ? "the press planned again differs before the press" : again.error().detail;
                             return {};
@@ -193,8 +205,24 @@ int main(int argc, char** argv) {
                 }
                 if (!e.step(batch.data(), tpb).ok())
                     return {};
+                if (trace && (s + 1) * tpb > pressFrom && (s + 1) % 20 == 0) {
+                    const hs::sim::WorldState& st = e.state();
+                    std::printf(
+                        "  %.2f s: tip %.3f N of %.3f N on the scope, %.2f kPa, distension %.2f mL, tip %.2f mm "
+                        "beyond the face\n",
+                        static_cast<double>((s + 1) * tpb) / hs::sim::kDeviceRateHz, st.contact.tipForceN,
+                        st.contact.forceN, st.fluid.pressureKpa, st.fluid.distensionMl,
+                        hs::dot(plan->surfaceMm - st.scope.tipMm, plan->normal) - 0.5 * options.scope.diameterMm);
+                }
             }
             p.forceN = e.state().contact.tipForceN;
+            if (trace)
+                if (const auto held = e.hapticFrame())
+                    for (const hs::sim::HapticContact& c : held->contacts)
+                        if (c.forceN > 0.0)
+                            std::printf("  %s contact %.3f N, its normal %.2f off the face's, gap %.3f mm\n",
+                                        c.tip ? "tip" : "shaft", c.forceN, hs::dot(c.normal, plan->normal),
+                                        c.gapM * 1e3);
             // Boussinesq's 2 a E / (1 - nu^2) with the modulus round the face as the press began.
             p.boussinesqNPerMm = 2.0 * 0.5 * options.scope.diameterMm * p.stiffenedKpa * 1e-3 /
                                  (1.0 - plan->poissonRatio * plan->poissonRatio);
@@ -204,9 +232,53 @@ int main(int argc, char** argv) {
             const auto frame = e.hapticFrame();
             const double couplingNPerMm = frame ? frame->couplingStiffness[0] * 1e-3 : 1.0;
             p.couplingMm = p.forceN / couplingNPerMm;
-            p.indentationMm = depthMm + (fromPlan ? p.faceOffMm : 0.0) - p.couplingMm;
+            // The tissue's indentation: the physics' scope against the face as it stood when the press began
+            // (pressIndentationMm), not the depth less the coupling's stretch, which answers the shaft's load too.
+            p.indentationMm = hs::sim::pressIndentationMm(e, *plan, p.faceOffMm);
+            p.shortOfCouplingMm = depthMm + (fromPlan ? p.faceOffMm : 0.0) - p.couplingMm;
+            p.alignment = plan->alignment;
+            p.surfaceMm = plan->surfaceMm;
             return p;
         };
+        if (faces > 0) {
+            std::printf("| wall face (rank) | region | head-on | face centre mm | stiffened E kPa | tip force N | "
+                        "tip's indentation mm | secant stiffness N/mm | Boussinesq's N/mm | secant / Boussinesq's | "
+                        "depth less the coupling's stretch mm | its stiffness / Boussinesq's |\n"
+                        "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+            std::vector<double> ratios;
+            for (int r = 0; r < faces; ++r) {
+                std::string label;
+                double e = 0.0;
+                const Pressed p = run(-1, 3.0, label, e, static_cast<std::size_t>(r));
+                if (e == 0.0) {
+                    std::printf("| %d | %s |\n", r, label.c_str());
+                    break;
+                }
+                const double k = p.indentationMm > 0.0 ? p.forceN / p.indentationMm : 0.0;
+                const double ratio = p.boussinesqNPerMm > 0.0 ? k / p.boussinesqNPerMm : 0.0;
+                ratios.push_back(ratio);
+                const double viaCoupling = p.shortOfCouplingMm > 0.0 && p.boussinesqNPerMm > 0.0
+                                               ? p.forceN / p.shortOfCouplingMm / p.boussinesqNPerMm
+                                               : 0.0;
+                std::printf(
+                    "| %d | %s | %.3f | %.1f %.1f %.1f | %.1f | %.3f | %.2f | %.3f | %.3f | %.2f | %.2f | %.2f |\n", r,
+                    label.c_str(), p.alignment, p.surfaceMm.x, p.surfaceMm.y, p.surfaceMm.z, p.stiffenedKpa, p.forceN,
+                    p.indentationMm, k, p.boussinesqNPerMm, ratio, p.shortOfCouplingMm, viaCoupling);
+            }
+            if (!ratios.empty()) {
+                double mean = 0.0;
+                for (const double r : ratios)
+                    mean += r / static_cast<double>(ratios.size());
+                double sd = 0.0;
+                for (const double r : ratios)
+                    sd += (r - mean) * (r - mean) / static_cast<double>(ratios.size());
+                std::printf(
+                    "secant / Boussinesq's over %zu faces: mean %.3f, sd %.3f, median %.3f, min %.3f, max %.3f\n",
+                    ratios.size(), mean, std::sqrt(sd), percentile(ratios, 0.5),
+                    *std::min_element(ratios.begin(), ratios.end()), *std::max_element(ratios.begin(), ratios.end()));
+            }
+            return 0;
+        }
         std::printf(
             "| target | E kPa | stiffened E kPa | device depth mm | tip force N | coupling's share mm | tissue "
             "indentation mm | secant stiffness N/mm | Boussinesq's N/mm (stiffened E) | secant / Boussinesq's | "

@@ -247,8 +247,10 @@ double press(World& world, const PressPlan& plan) {
 
 /// The press of `plan`, its depth counted from the face where it stands as the tip leaves its stand-off (the plan
 /// made again there for `pathology`: pressFaceOffsetMm); `stiffenedKpa` gets the tissue's modulus round the face
-/// then, stiffened as the distended state has it (World::tissueModulusNearKpa). Returns the tip's force (N).
-double pressFromTheLiveFace(World& world, const PressPlan& plan, int pathology, double depthMm, double& stiffenedKpa) {
+/// then, stiffened as the distended state has it (World::tissueModulusNearKpa), and `indentationMm` the tip's own
+/// indentation at the end (pressIndentationMm: the physics' scope beyond that face). Returns the tip's force (N).
+double pressFromTheLiveFace(World& world, const PressPlan& plan, int pathology, double depthMm, double& stiffenedKpa,
+                            double& indentationMm) {
     run(world, plan.script, plan.pressFromS);
     stiffenedKpa =
         world.tissueModulusNearKpa(plan.surfaceMm, kPressReachTipRadii * 0.5 * world.options().scope.diameterMm);
@@ -261,6 +263,7 @@ double pressFromTheLiveFace(World& world, const PressPlan& plan, int pathology, 
     std::printf("  the face %.2f mm off its planned place as the press began\n", offsetMm);
     const double doneS = static_cast<double>(world.state().step * world.ticksPerStep()) / kDeviceRateHz;
     run(world, again->script, static_cast<double>(again->script.tickCount()) / kDeviceRateHz - doneS);
+    indentationMm = pressIndentationMm(world, *again, offsetMm);
     return pressed(world);
 }
 
@@ -336,29 +339,28 @@ TEST(World, APressIntoAFundalMyomaAndIntoTheWallStandsAsTheirStiffness) {
     const auto myomaPlan = pressScript(myomaWorld, myoma, 3.0, 2.0);
     ASSERT_TRUE(wallPlan) << wallPlan.error().detail;
     ASSERT_TRUE(myomaPlan) << myomaPlan.error().detail;
-    double wallKpa = 0.0, myomaKpa = 0.0;
-    const double wall = pressFromTheLiveFace(*wallWorld, *wallPlan, -1, 3.0, wallKpa);
-    const double myomaForce = pressFromTheLiveFace(myomaWorld, *myomaPlan, myoma, 3.0, myomaKpa);
-    // The tissue's share of the 3 mm (the coupling's spring takes the force over its stiffness), its secant
-    // stiffness, and Boussinesq's 2 a E / (1 - nu^2) for the tip's radius a.
-    const auto stiffness = [](const World& world, double forceN) {
-        const auto frame = world.hapticFrame();
-        return forceN / (3.0 - forceN / (frame->couplingStiffness[0] * 1e-3));
-    };
+    double wallKpa = 0.0, myomaKpa = 0.0, wallMm = 0.0, myomaMm = 0.0;
+    const double wall = pressFromTheLiveFace(*wallWorld, *wallPlan, -1, 3.0, wallKpa, wallMm);
+    const double myomaForce = pressFromTheLiveFace(myomaWorld, *myomaPlan, myoma, 3.0, myomaKpa, myomaMm);
+    // The punch's secant stiffness: the tip's force over the tip's own indentation (the physics' scope, held by its
+    // contacts, beyond the face as it stood; not the 3 mm less the coupling's stretch, for the coupling answers the
+    // scope's whole load and the shaft bears on the canal), and Boussinesq's 2 a E / (1 - nu^2) for the tip's radius a.
+    ASSERT_GT(wallMm, 0.5);
+    ASSERT_GT(myomaMm, 0.5);
+    const double wallK = wall / wallMm, myomaK = myomaForce / myomaMm;
     const auto boussinesq = [](const World& world, const PressPlan& plan, double modulusKpa) {
         return world.options().scope.diameterMm * modulusKpa * 1e-3 / (1.0 - plan.poissonRatio * plan.poissonRatio);
     };
-    const double wallK = stiffness(*wallWorld, wall), myomaK = stiffness(myomaWorld, myomaForce);
     const double wallPunch = boussinesq(*wallWorld, *wallPlan, wallKpa);
     const double myomaPunch = boussinesq(myomaWorld, *myomaPlan, myomaKpa);
-    std::printf("wall  (%s, %.0f kPa, head-on %.2f): %.3f N on the tip; %.1f kPa round the face as pressed, "
-                "%.3f N/mm against Boussinesq's %.3f\n",
-                wallPlan->region.c_str(), wallPlan->youngsModulusKpa, wallPlan->alignment, wall, wallKpa, wallK,
+    std::printf("wall  (%s, %.0f kPa, head-on %.2f): %.3f N on the tip, %.2f mm in; %.1f kPa round the face as "
+                "pressed, %.3f N/mm against Boussinesq's %.3f\n",
+                wallPlan->region.c_str(), wallPlan->youngsModulusKpa, wallPlan->alignment, wall, wallMm, wallKpa, wallK,
                 wallPunch);
-    std::printf("myoma (%s, %.0f kPa, head-on %.2f): %.3f N on the tip; %.1f kPa round the face as pressed, "
-                "%.3f N/mm against Boussinesq's %.3f\n",
-                myomaPlan->region.c_str(), myomaPlan->youngsModulusKpa, myomaPlan->alignment, myomaForce, myomaKpa,
-                myomaK, myomaPunch);
+    std::printf("myoma (%s, %.0f kPa, head-on %.2f): %.3f N on the tip, %.2f mm in; %.1f kPa round the face as "
+                "pressed, %.3f N/mm against Boussinesq's %.3f\n",
+                myomaPlan->region.c_str(), myomaPlan->youngsModulusKpa, myomaPlan->alignment, myomaForce, myomaMm,
+                myomaKpa, myomaK, myomaPunch);
     const double stiffened = myomaKpa / wallKpa;
     std::printf("force ratio %.2f; the moduli round the faces as pressed %.2f (at rest, the faces' own: %.2f)\n",
                 myomaForce / wall, stiffened, myomaPlan->youngsModulusKpa / wallPlan->youngsModulusKpa);

@@ -262,7 +262,7 @@ Script explorationScript(const World& world, double durationS) {
     return toScript(plan.keys, durationS);
 }
 
-Result<PressPlan> pressScript(const World& world, int pathology, double depthMm, double holdS) {
+Result<PressPlan> pressScript(const World& world, int pathology, double depthMm, double holdS, std::size_t rank) {
     const World::Impl& w = *world.impl_;
     if (pathology < -1 || pathology >= static_cast<int>(w.metrics.pathologies.size()))
         return fail(ErrorCode::InvalidInput, "press: pathology " + std::to_string(pathology) + " is not one of the " +
@@ -286,8 +286,9 @@ Result<PressPlan> pressScript(const World& world, int pathology, double depthMm,
         for (const auto& r : w.scene.regions)
             if (r.pathologyId == w.metrics.pathologies[static_cast<std::size_t>(pathology)].id)
                 ownRegion = r.id;
-    double best = std::cos(kPressMostObliqueDeg * kDeg);
-    std::int32_t chosen = -1;
+    // The faces within kPressMostObliqueDeg of head-on, most head-on first (ties in face order); each in turn the
+    // first whose scope pose is clear, skipping those within a tip's diameter of a face taken before, `rank` times.
+    std::vector<std::pair<double, std::int32_t>> candidates;
     for (std::size_t f = 0; f < w.triangles->size(); ++f) {
         if (!w.faceInCavity[f] || w.facePathology[f] != pathology)
             continue;
@@ -303,15 +304,32 @@ Result<PressPlan> pressScript(const World& world, int pathology, double depthMm,
                 continue;
         }
         const Vec3 n = normalized(triangleNormal(w.openPointsMm, t));
-        const Vec3 d = normalized(c - w.frame.pivotMm);
-        const double alignment = -dot(d, n);
-        if (alignment <= best)
+        const double alignment = -dot(normalized(c - w.frame.pivotMm), n);
+        if (alignment > std::cos(kPressMostObliqueDeg * kDeg))
+            candidates.emplace_back(alignment, static_cast<std::int32_t>(f));
+    }
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [](const auto& a, const auto& b) { return a.first > b.first; });
+    double best = 0.0;
+    std::int32_t chosen = -1;
+    std::vector<Vec3> taken;
+    for (const auto& [alignment, f] : candidates) {
+        const Vec3 c = triangleCentre(w.openPointsMm, (*w.triangles)[static_cast<std::size_t>(f)]);
+        bool apart = true;
+        for (const Vec3& p : taken)
+            apart = apart && distance(p, c) >= scope.diameterMm;
+        if (!apart)
             continue;
+        const Vec3 d = normalized(c - w.frame.pivotMm);
         const ScopePose pose = scopePose(w.frame, scope, sampleAiming(w.frame, c - d * (radius + kPressStandOffMm)));
         if (w.scopeClearanceMm(w.openPointsMm, open, pose) < kPressClearanceMm)
             continue;
-        best = alignment;
-        chosen = static_cast<std::int32_t>(f);
+        if (taken.size() == rank) {
+            best = alignment;
+            chosen = f;
+            break;
+        }
+        taken.push_back(c);
     }
     if (chosen < 0)
         return fail(ErrorCode::InvalidInput,
@@ -370,6 +388,19 @@ double pressFaceOffsetMm(const World& world, const PressPlan& plan) {
         }
     }
     return offset;
+}
+
+double pressIndentationMm(const World& world, const PressPlan& plan, double faceOffsetMm) {
+    const auto frame = world.hapticFrame();
+    if (!frame)
+        return 0.0;
+    DeviceSample physics = world.state().sample;
+    physics.insertionMm = frame->scopeDofs[0] * 1e3;
+    physics.pitchDeg = frame->scopeDofs[1] / kDeg;
+    physics.yawDeg = frame->scopeDofs[2] / kDeg;
+    const Vec3 tip = scopePose(world.frame(), world.options().scope, physics).tipMm;
+    const Vec3 face = plan.surfaceMm + plan.normal * faceOffsetMm;
+    return 0.5 * world.options().scope.diameterMm - dot(tip - face, plan.normal);
 }
 
 Vec3 entryShaft(const World& world, double offAxisDeg, double towardDeg) {

@@ -255,7 +255,8 @@ public:
 
 private:
     friend Script explorationScript(const World& world, double durationS);
-    friend Result<struct PressPlan> pressScript(const World& world, int pathology, double depthMm, double holdS);
+    friend Result<struct PressPlan> pressScript(const World& world, int pathology, double depthMm, double holdS,
+                                                std::size_t rank);
     friend Script roughScript(const World& world, double durationS, std::uint64_t seed);
     friend Script entryScript(const World& world, double offAxisDeg, double towardDeg);
     friend Vec3 entryShaft(const World& world, double offAxisDeg, double towardDeg);
@@ -321,15 +322,21 @@ struct PressPlan {
 };
 /// `pathology`: an index into metrics().pathologies (a face of that pathology), or -1 (a face of the cavity's wall
 /// away from every pathology; a pathology's own faces). InvalidInput when no such face can be reached within 60
-/// degrees of head-on with the scope 1 mm clear of the walls.
-[[nodiscard]] Result<PressPlan> pressScript(const World& world, int pathology, double depthMm = 3.0,
-                                            double holdS = 2.0);
+/// degrees of head-on with the scope 1 mm clear of the walls. `rank`: not the face met most nearly head-on but the
+/// rank-th after it, counting only faces a tip's diameter from those before (to press one tissue at several places).
+[[nodiscard]] Result<PressPlan> pressScript(const World& world, int pathology, double depthMm = 3.0, double holdS = 2.0,
+                                            std::size_t rank = 0);
 /// How far the face `plan` presses stands now off where the plan has it, along its normal (+: towards the scope), mm:
 /// the contact surface's point nearest the plan's face centre, on the simulation mesh's points as they lie. The plan
 /// counts its depth from the face as the static solve at the planning pressure left it; stepped up to
 /// plan.pressFromS, a world whose face the fluid has moved off that place presses by a depth counted from the live
 /// face with the plan made again for the depth less this offset (the script is the same up to pressFromS).
 double pressFaceOffsetMm(const World& world, const PressPlan& plan);
+/// The press's own indentation now, mm: how far the physics' scope (where the contacts hold it, the tip's sub-element
+/// dimple included; HapticFrame::scopeDofs) has its tip's sphere beyond the face `plan` presses as it stood
+/// `faceOffsetMm` off the plan's place (pressFaceOffsetMm as the press began). The punch's displacement, whatever the
+/// shaft carries: the coupling's stretch answers the scope's whole load, the canal's included, not the tip's alone.
+double pressIndentationMm(const World& world, const PressPlan& plan, double faceOffsetMm);
 /// A demonstration resection of pathology `pathology` (an index into scene().clinical.pathologies) with the
 /// resectoscope's loop, planned in the cavity opened by the fluid: in through the canal with the inflow open, then
 /// strip by strip from the pathology's free side towards its base, each strip the loop pushed out beyond the pathology
