@@ -2,9 +2,11 @@
 // on a scene's simulation-mesh resolution, and on the scene's simulation mesh its cost and its convergence per
 // iteration. Tables, not tests (the bars are asserted by test_mechanics).
 //
-//   bench_tissue [PACKAGE [--package-only | --point-load]] | --coarse-punch
+//   bench_tissue [PACKAGE [--package-only | --point-load]] | --coarse-punch | --deep-punch
 // --coarse-punch: the punch on uniform elements of 2-8 mm (the tip's load on one point, as on a simulation mesh), its
 // force against Boussinesq's, and the effective radius that force means (docs/simulator.md, "Verification").
+// --deep-punch: the fine punch pressed 0.15-2.3 mm (to 1.6 radii, as the simulator's press checks press), linear and
+// with the tissue's stiffening: how far a large indentation stands off Boussinesq's small-strain force.
 // --point-load: on the package's uterus model, a force along the inward normal of one cavity point, solved statically
 // with the cavity at 0, 30 and 80 mmHg: the wall's point nearest the fundus and each pathology's cavity point nearest
 // the internal os (the one a scope from the canal meets first), its stiffness and its ratio to the wall's.
@@ -328,10 +330,40 @@ void coarsePunchTable() {
         }
 }
 
+/// The punch pressed deep, as the simulator's press checks press (an indentation of 1-1.6 tip radii): the fine mesh's
+/// force against Boussinesq's small-strain one, with the material linear (the geometry's own nonlinearity) and with
+/// the tissue's stiffening (kUterusStiffeningStrain, held below the solver's maxStiffening as the world holds it).
+void deepPunchTable() {
+    std::printf(
+        "| material | depth mm | depth / radius | solver N | Boussinesq N | solver / Boussinesq's | tets | s |\n"
+        "|---|---|---|---|---|---|---|---|\n");
+    for (const double c : {0.0, hs::mechanics::kUterusStiffeningStrain})
+        for (const double depth : {0.15, 0.5, 1.0, 1.5, 2.0, 2.3}) {
+            PunchParams p;
+            p.stiffeningStrain = c;
+            p.depthMm = depth;
+            p.rampS = std::max(0.1, depth);
+            p.settleS = 1.0;
+            const auto r = runPunch(p);
+            if (!r) {
+                std::printf("| %s | %.2f | - | %s |\n", c > 0.0 ? "stiffening" : "linear", depth,
+                            r.error().detail.c_str());
+                continue;
+            }
+            std::printf("| %s | %.2f | %.2f | %.5f | %.5f | %.3f | %zu | %.1f |\n", c > 0.0 ? "stiffening" : "linear",
+                        depth, depth / p.punchRadiusMm, r->simulated, r->analytic, r->simulated / r->analytic, r->tets,
+                        r->seconds);
+        }
+}
+
 int main(int argc, char** argv) {
     std::setvbuf(stdout, nullptr, _IOLBF, 0);
     if (argc > 1 && std::string(argv[1]) == "--coarse-punch") {
         coarsePunchTable();
+        return 0;
+    }
+    if (argc > 1 && std::string(argv[1]) == "--deep-punch") {
+        deepPunchTable();
         return 0;
     }
     if (argc > 2 && std::string(argv[2]) == "--point-load") {

@@ -111,8 +111,10 @@ PunchParams coarsePunchParams(double edgeMm) {
 Result<VerificationResult> runPunch(const PunchParams& p) {
     HS_TRY(checkMaterial(p.youngsModulusKpa, p.poissonRatio));
     if (!(p.punchRadiusMm > 0.0) || !(p.depthMm > 0.0) || !(p.domainRadii >= 2.0) || !(p.finestMm > 0.0) ||
-        !(p.growth >= 1.0) || p.sectors < 2 || p.sectors > 64 || !(p.settleS >= 0.0))
-        return fail(ErrorCode::InvalidInput, "punch: radius, depth, finest > 0; domain >= 2 radii; growth >= 1");
+        !(p.growth >= 1.0) || p.sectors < 2 || p.sectors > 64 || !(p.settleS >= 0.0) || !(p.rampS > 0.0) ||
+        !(p.stiffeningStrain >= 0.0))
+        return fail(ErrorCode::InvalidInput,
+                    "punch: radius, depth, finest, ramp > 0; domain >= 2 radii; growth >= 1; stiffening >= 0");
     const auto start = std::chrono::steady_clock::now();
     const double a = p.punchRadiusMm, extent = p.domainRadii * a;
     // Rings: equal steps of about `finestMm` under the punch (its edge on a ring), growing beyond it.
@@ -159,10 +161,11 @@ Result<VerificationResult> runPunch(const PunchParams& p) {
         }
     }
     CorotationalFem fem;
-    HS_TRY(fem.build(points, tets, uniform(tets.size(), p.youngsModulusKpa, p.poissonRatio), fixed, {}, p.solver));
+    HS_TRY(fem.build(points, tets, uniform(tets.size(), p.youngsModulusKpa, p.poissonRatio, p.stiffeningStrain), fixed,
+                     {}, p.solver));
     const std::vector<Vec3> none;
     std::vector<FemConstraint> contacts;
-    const auto ramp = static_cast<int>(std::lround(0.1 / p.solver.stepS));
+    const auto ramp = std::max(1, static_cast<int>(std::lround(p.rampS / p.solver.stepS)));
     const auto hold = static_cast<int>(std::lround(p.settleS / p.solver.stepS));
     for (int s = 1; s <= ramp + hold; ++s) {
         const double depth = p.depthMm * std::min(1.0, static_cast<double>(s) / ramp);

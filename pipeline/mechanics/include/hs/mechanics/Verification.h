@@ -20,14 +20,16 @@ namespace hs::mechanics {
 struct PunchParams {
     double youngsModulusKpa = 30.0;
     double poissonRatio = 0.47;
-    double punchRadiusMm = 1.45; ///< a 2.9 mm scope's radius
-    double depthMm = 0.15;       ///< delta, the press (small against a: the linear regime of the solution)
-    double domainRadii = 20.0;   ///< the block's radius and depth, in punch radii
-    double finestMm = 0.25;      ///< mm, the elements' size under the punch
-    double growth = 1.25;        ///< the elements' size grows by this from ring to ring beyond the punch (1: uniform)
-    int sectors = 8;             ///< elements round the quarter circle
-    FemSettings solver;          ///< the solver's step, iterations, damping, pressure (its defaults)
-    double settleS = 1.0;        ///< s, held at depth after a 0.1 s ramp
+    double punchRadiusMm = 1.45;   ///< a 2.9 mm scope's radius
+    double depthMm = 0.15;         ///< delta, the press (small against a: the linear regime of the solution)
+    double domainRadii = 20.0;     ///< the block's radius and depth, in punch radii
+    double finestMm = 0.25;        ///< mm, the elements' size under the punch
+    double growth = 1.25;          ///< the elements' size grows by this from ring to ring beyond the punch (1: uniform)
+    int sectors = 8;               ///< elements round the quarter circle
+    double stiffeningStrain = 0.0; ///< FemMaterial::stiffeningStrain (0: linear, the textbook's material)
+    FemSettings solver;            ///< the solver's step, iterations, damping, pressure (its defaults)
+    double settleS = 1.0;          ///< s, held at depth after a 0.1 s ramp
+    double rampS = 0.1;            ///< s, the press's ramp to depth
 };
 
 struct VerificationResult {
