@@ -311,6 +311,23 @@ TEST(World, APressIntoTheWallGivesTheDeviceTheSolversReaction) {
                 -strongest->gapM * 1e3, give * 1e3, drawnGapMm);
     EXPECT_LT(strongest->gapM * 1e3, -0.5);
     EXPECT_GT(drawnGapMm, -0.25); // within the contacts' depenetration step of the face, not in the dimple
+    // The next faces met most nearly head-on (to press one tissue at several places): each less head-on than the one
+    // before and a tip's diameter from every face before it; beyond the last such face, none.
+    std::vector<Vec3> taken{plan->surfaceMm};
+    double alignment = plan->alignment;
+    std::size_t rank = 1;
+    for (;; ++rank) {
+        const auto next = pressScript(*world, -1, 3.0, 2.0, rank);
+        if (!next)
+            break;
+        EXPECT_LE(next->alignment, alignment);
+        for (const Vec3& p : taken)
+            EXPECT_GE(distance(p, next->surfaceMm), world->options().scope.diameterMm);
+        alignment = next->alignment;
+        taken.push_back(next->surfaceMm);
+    }
+    std::printf("%zu wall faces can be pressed head-on a tip's diameter apart\n", rank);
+    EXPECT_GE(rank, 2u);
     // A press asks for a pathology the scene has, a depth and a hold in range.
     EXPECT_FALSE(pressScript(*world, 99));
     EXPECT_FALSE(pressScript(*world, -1, std::nan("")));
