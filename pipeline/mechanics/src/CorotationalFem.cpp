@@ -378,6 +378,22 @@ Status CorotationalFem::buildLike(const CorotationalFem& other, const FemSetting
     return {};
 }
 
+namespace {
+
+/// The entries of L for `block` in its AMD order, from the symbolic analysis alone (the elimination tree's column
+/// counts): what the numeric factorization would store, without computing it.
+std::size_t symbolicFill(const Eigen::SparseMatrix<double>& block) {
+    struct Symbolic : Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> {
+        std::size_t fill(const Eigen::SparseMatrix<double>& a) {
+            analyzePattern(a);
+            return static_cast<std::size_t>(m_matrix.nonZeros());
+        }
+    };
+    return Symbolic{}.fill(block);
+}
+
+} // namespace
+
 void CorotationalFem::buildFactor(const FactorInputs& in, std::vector<int>& partition, Factor& f) {
     const std::size_t n = in.rest.size();
     const double h = in.settings.stepS;
@@ -527,10 +543,8 @@ void CorotationalFem::buildFactor(const FactorInputs& in, std::vector<int>& part
         Eigen::AMDOrdering<int>()(block, amd);
         for (std::size_t k = 0; k < dofs.size(); ++k)
             order.push_back(dofs[static_cast<std::size_t>(amd.indices()[static_cast<Eigen::Index>(k)])]);
-        if (fill) {
-            Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> trial(block);
-            *fill = static_cast<std::size_t>(trial.matrixL().nestedExpression().nonZeros());
-        }
+        if (fill)
+            *fill = symbolicFill(block);
         return order;
     };
     if (partition.size() != n) {
