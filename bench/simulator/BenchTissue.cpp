@@ -2,11 +2,14 @@
 // on a scene's simulation-mesh resolution, and on the scene's simulation mesh its cost and its convergence per
 // iteration. Tables, not tests (the bars are asserted by test_mechanics).
 //
-//   bench_tissue [PACKAGE [--package-only | --point-load]] | --coarse-punch | --deep-punch
+//   bench_tissue [PACKAGE [--package-only | --point-load]] | --coarse-punch | --deep-punch | --dimple
 // --coarse-punch: the punch on uniform elements of 2-8 mm (the tip's load on one point, as on a simulation mesh), its
 // force against Boussinesq's, and the effective radius that force means (docs/simulator.md, "Verification").
-// --deep-punch: the fine punch pressed 0.15-2.3 mm (to 1.6 radii, as the simulator's press checks press), linear and
-// with the tissue's stiffening: how far a large indentation stands off Boussinesq's small-strain force.
+// --deep-punch [STRAIN]: the fine punch pressed 0.15-2.6 mm (to 1.8 radii, as the simulator's press checks press),
+// linear and with the tissue's stiffening: how far a large indentation stands off Boussinesq's small-strain force;
+// with STRAIN, the stiffening block stretched by that in-plane strain first, as the distension stretches the wall.
+// --dimple: the give a scope's tip needs below a coarse mesh's resolution for the two in series to press as the fine
+// punch does at each depth (dimpleTable), against punchDimpleStiffening's law at that dimple.
 // --point-load: on the package's uterus model, a force along the inward normal of one cavity point, solved statically
 // with the cavity at 0, 30 and 80 mmHg: the wall's point nearest the fundus and each pathology's cavity point nearest
 // the internal os (the one a scope from the canal meets first), its stiffness and its ratio to the wall's.
@@ -23,6 +26,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -333,13 +337,19 @@ void coarsePunchTable() {
 /// The punch pressed deep, as the simulator's press checks press (an indentation of 1-1.6 tip radii): the fine mesh's
 /// force against Boussinesq's small-strain one, with the material linear (the geometry's own nonlinearity) and with
 /// the tissue's stiffening (kUterusStiffeningStrain, held below the solver's maxStiffening as the world holds it).
-void deepPunchTable() {
-    std::printf(
-        "| material | depth mm | depth / radius | solver N | Boussinesq N | solver / Boussinesq's | tets | s |\n"
-        "|---|---|---|---|---|---|---|---|\n");
-    for (const double c : {0.0, hs::mechanics::kUterusStiffeningStrain})
-        for (const double depth : {0.15, 0.5, 1.0, 1.5, 2.0, 2.3}) {
+/// With `preStretch` > 0, the stiffening block stretched in its plane first (as the distension stretches the wall), and
+/// Boussinesq's force taken with the modulus as stiffened round the punch when the press begins.
+void deepPunchTable(double preStretch) {
+    std::printf("| material | depth mm | depth / radius | solver N | Boussinesq N | solver / Boussinesq's | stiffening "
+                "as pressed | tets | s |\n"
+                "|---|---|---|---|---|---|---|---|---|\n");
+    const std::vector<double> materials = preStretch > 0.0
+                                              ? std::vector<double>{hs::mechanics::kUterusStiffeningStrain}
+                                              : std::vector<double>{0.0, hs::mechanics::kUterusStiffeningStrain};
+    for (const double c : materials)
+        for (const double depth : {0.15, 0.5, 1.0, 1.5, 2.0, 2.3, 2.6}) {
             PunchParams p;
+            p.preStretch = preStretch;
             p.stiffeningStrain = c;
             p.depthMm = depth;
             p.rampS = std::max(0.1, depth);
@@ -350,10 +360,76 @@ void deepPunchTable() {
                             r.error().detail.c_str());
                 continue;
             }
-            std::printf("| %s | %.2f | %.2f | %.5f | %.5f | %.3f | %zu | %.1f |\n", c > 0.0 ? "stiffening" : "linear",
-                        depth, depth / p.punchRadiusMm, r->simulated, r->analytic, r->simulated / r->analytic, r->tets,
-                        r->seconds);
+            std::printf("| %s | %.2f | %.2f | %.5f | %.5f | %.3f | %.3f | %zu | %.1f |\n",
+                        preStretch > 0.0 ? "stiffening, stretched"
+                        : c > 0.0        ? "stiffening"
+                                         : "linear",
+                        depth, depth / p.punchRadiusMm, r->simulated, r->analytic, r->simulated / r->analytic,
+                        r->preStiffening, r->tets, r->seconds);
         }
+}
+
+/// The tip's sub-element give as the fine punch asks for it at depth: a coarse mesh of `edge` mm pressed on one
+/// point (as a scope's tip on a simulation mesh's face) carries the fine punch's force F(delta) with an indentation
+/// delta_m of its own; the rest, delta - delta_m, is the give's dimple. The give's stiffening is then
+/// C F / (delta - delta_m), C the small-strain sub-element give (punchSubElementCompliance at a point): what
+/// punchDimpleStiffening should be at that dimple for the coarse mesh and the give in series to press as the fine mesh.
+void dimpleTable() {
+    std::printf("| material | element mm | depth mm | fine N | coarse mm | dimple mm | dimple / radius | stiffening "
+                "asked | the law's | s |\n"
+                "|---|---|---|---|---|---|---|---|---|---|\n");
+    for (const double c : {0.0, hs::mechanics::kUterusStiffeningStrain}) {
+        std::vector<std::pair<double, double>> fine; // depth mm, force N
+        for (const double depth : {0.15, 0.5, 1.0, 1.5, 2.0, 2.3}) {
+            PunchParams p;
+            p.stiffeningStrain = c;
+            p.depthMm = depth;
+            p.rampS = std::max(0.1, depth);
+            const auto r = runPunch(p);
+            if (r)
+                fine.emplace_back(depth, r->simulated);
+        }
+        for (const double edge : {3.0, 4.4, 6.0}) {
+            const auto start = Clock::now();
+            // The coarse mesh's force against its own indentation, 0.02-3 mm.
+            std::vector<std::pair<double, double>> coarse{{0.0, 0.0}};
+            for (double d = 0.02; d <= 3.0 + 1e-9; d *= 1.25) {
+                PunchParams p = coarsePunchParams(edge);
+                p.stiffeningStrain = c;
+                p.depthMm = d;
+                p.rampS = std::max(0.1, d);
+                const auto r = runPunch(p);
+                if (r)
+                    coarse.emplace_back(d, r->simulated);
+            }
+            const PunchParams any;
+            const FemMaterial material{any.youngsModulusKpa * 1e3, any.poissonRatio, 1050.0, c};
+            const double radiusM = any.punchRadiusMm * 1e-3;
+            const double give = punchSubElementCompliance(radiusM, edge * 1e-3, {1.0, 0.0, 0.0}, material);
+            for (const auto& [depth, force] : fine) {
+                double own = -1.0;
+                for (std::size_t k = 1; k < coarse.size(); ++k)
+                    if (coarse[k].second >= force) {
+                        const auto [d0, f0] = coarse[k - 1];
+                        const auto [d1, f1] = coarse[k];
+                        own = d0 + (d1 - d0) * (force - f0) / (f1 - f0);
+                        break;
+                    }
+                if (own < 0.0) {
+                    std::printf("| %s | %.1f | %.2f | %.4f | beyond 3 mm |\n", c > 0.0 ? "stiffening" : "linear", edge,
+                                depth, force);
+                    continue;
+                }
+                const double dimpleMm = depth - own;
+                const double asked = dimpleMm > 0.0 ? give * force / (dimpleMm * 1e-3) : 0.0;
+                std::printf("| %s | %.1f | %.2f | %.4f | %.3f | %.3f | %.3f | %.3f | %.3f | %.1f |\n",
+                            c > 0.0 ? "stiffening" : "linear", edge, depth, force, own, dimpleMm,
+                            dimpleMm / any.punchRadiusMm, asked,
+                            punchDimpleStiffening(dimpleMm * 1e-3, radiusM, material, FemSettings{}.maxStiffening),
+                            msSince(start) * 1e-3);
+            }
+        }
+    }
 }
 
 int main(int argc, char** argv) {
@@ -362,8 +438,12 @@ int main(int argc, char** argv) {
         coarsePunchTable();
         return 0;
     }
+    if (argc > 1 && std::string(argv[1]) == "--dimple") {
+        dimpleTable();
+        return 0;
+    }
     if (argc > 1 && std::string(argv[1]) == "--deep-punch") {
-        deepPunchTable();
+        deepPunchTable(argc > 2 ? std::atof(argv[2]) : 0.0);
         return 0;
     }
     if (argc > 2 && std::string(argv[2]) == "--point-load") {

@@ -112,9 +112,9 @@ Result<VerificationResult> runPunch(const PunchParams& p) {
     HS_TRY(checkMaterial(p.youngsModulusKpa, p.poissonRatio));
     if (!(p.punchRadiusMm > 0.0) || !(p.depthMm > 0.0) || !(p.domainRadii >= 2.0) || !(p.finestMm > 0.0) ||
         !(p.growth >= 1.0) || p.sectors < 2 || p.sectors > 64 || !(p.settleS >= 0.0) || !(p.rampS > 0.0) ||
-        !(p.stiffeningStrain >= 0.0))
-        return fail(ErrorCode::InvalidInput,
-                    "punch: radius, depth, finest, ramp > 0; domain >= 2 radii; growth >= 1; stiffening >= 0");
+        !(p.stiffeningStrain >= 0.0) || !(p.preStretch >= 0.0 && p.preStretch <= 0.3))
+        return fail(ErrorCode::InvalidInput, "punch: radius, depth, finest, ramp > 0; domain >= 2 radii; growth >= 1; "
+                                             "stiffening >= 0; pre-stretch 0-0.3");
     const auto start = std::chrono::steady_clock::now();
     const double a = p.punchRadiusMm, extent = p.domainRadii * a;
     // Rings: equal steps of about `finestMm` under the punch (its edge on a ring), growing beyond it.
@@ -148,37 +148,87 @@ Result<VerificationResult> runPunch(const PunchParams& p) {
     const std::vector<Tet> tets = extrudePrisms(triangles, sheet.size(), depths.size());
     // Held: x on the x = 0 plane, y on the y = 0 plane (symmetry), z on the base; the punch holds z of the top's
     // points within its radius (frictionless: x and y free).
+    // With a pre-stretch the rim (the block's outer cylinder) is drawn out radially, x and y held.
     std::vector<std::array<bool, 3>> fixed(points.size(), {false, false, false});
-    std::vector<std::size_t> punched;
+    std::vector<std::size_t> punched, rim, beside;
     for (std::size_t i = 0; i < points.size(); ++i) {
         const Vec3 q = points[i] / kMm;
-        fixed[i][0] = std::abs(q.x) < 1e-9;
-        fixed[i][1] = std::abs(q.y) < 1e-9;
+        const double r = std::hypot(q.x, q.y);
+        const bool onRim = p.preStretch > 0.0 && r > rings.back() - 1e-9;
+        fixed[i][0] = std::abs(q.x) < 1e-9 || onRim;
+        fixed[i][1] = std::abs(q.y) < 1e-9 || onRim;
         fixed[i][2] = q.z < -extent + 1e-9;
-        if (std::abs(q.z) < 1e-9 && std::hypot(q.x, q.y) <= a + 1e-9) {
+        if (onRim)
+            rim.push_back(i);
+        if (std::abs(q.z) < 1e-9 && r <= a + 1e-9) {
             fixed[i][2] = true;
             punched.push_back(i);
         }
+        // The top's ring just beyond the punch: where the free surface stands while the block is stretched.
+        if (std::abs(q.z) < 1e-9 && r > a + 1e-9 && r <= rings[static_cast<std::size_t>(inner) + 1] + 1e-9)
+            beside.push_back(i);
     }
     CorotationalFem fem;
     HS_TRY(fem.build(points, tets, uniform(tets.size(), p.youngsModulusKpa, p.poissonRatio, p.stiffeningStrain), fixed,
                      {}, p.solver));
     const std::vector<Vec3> none;
     std::vector<FemConstraint> contacts;
+    // The pre-stretch: the rim drawn out over 0.5 s and held 1.5 s, the punch's points following the free top.
+    std::vector<double> topZ(points.size(), 0.0);
+    double reactionBefore = 0.0;
+    if (p.preStretch > 0.0) {
+        const int stretchSteps = static_cast<int>(std::lround(2.0 / p.solver.stepS));
+        for (int s = 1; s <= stretchSteps; ++s) {
+            const double e = p.preStretch * std::min(1.0, 4.0 * static_cast<double>(s) / stretchSteps);
+            for (const std::size_t i : rim)
+                fem.setTarget(i, {points[i].x * (1.0 + e), points[i].y * (1.0 + e), fem.positionsM()[i].z});
+            double z = 0.0;
+            for (const std::size_t i : beside)
+                z += fem.positionsM()[i].z;
+            z /= static_cast<double>(std::max<std::size_t>(1, beside.size()));
+            for (const std::size_t i : punched)
+                fem.setTarget(i, {fem.positionsM()[i].x, fem.positionsM()[i].y, z});
+            fem.step(none, contacts);
+        }
+        for (const std::size_t i : punched)
+            reactionBefore -= fem.reactionN(i).z;
+    }
+    for (const std::size_t i : punched)
+        topZ[i] = fem.positionsM()[i].z;
+    // The tissue's stiffening round the punch as the press begins.
+    double weighted = 0.0, volume = 0.0;
+    const double reach2 = (3.0 * a * kMm) * (3.0 * a * kMm);
+    for (std::size_t t = 0; t < tets.size(); ++t) {
+        bool near = false;
+        for (const std::int32_t k : tets[t]) {
+            const Vec3 x = fem.positionsM()[static_cast<std::size_t>(k)];
+            near =
+                near || x.x * x.x + x.y * x.y + (x.z - topZ[punched.front()]) * (x.z - topZ[punched.front()]) <= reach2;
+        }
+        if (near) {
+            weighted += fem.restVolumeM3(t) * fem.stiffeningAt(t);
+            volume += fem.restVolumeM3(t);
+        }
+    }
+    const double preStiffening = volume > 0.0 ? weighted / volume : 1.0;
     const auto ramp = std::max(1, static_cast<int>(std::lround(p.rampS / p.solver.stepS)));
     const auto hold = static_cast<int>(std::lround(p.settleS / p.solver.stepS));
     for (int s = 1; s <= ramp + hold; ++s) {
         const double depth = p.depthMm * std::min(1.0, static_cast<double>(s) / ramp);
         for (const std::size_t i : punched)
-            fem.setTarget(i, {points[i].x, points[i].y, -depth * kMm});
+            fem.setTarget(i, {fem.positionsM()[i].x, fem.positionsM()[i].y, topZ[i] - depth * kMm});
         fem.step(none, contacts);
     }
-    // The punch's force on the block: the supports' reaction on the punched points (pushing down: -z), times 4.
-    double force = 0.0;
+    // The punch's force on the block: the supports' reaction on the punched points (pushing down: -z), less what
+    // holding them on the stretched top took, times 4.
+    double force = -reactionBefore;
     for (const std::size_t i : punched)
         force -= fem.reactionN(i).z;
-    return result(4.0 * force, boussinesqPunchForceN(a, p.depthMm, p.youngsModulusKpa, p.poissonRatio), points.size(),
-                  tets.size(), fem, start);
+    auto r =
+        result(4.0 * force, boussinesqPunchForceN(a, p.depthMm, p.youngsModulusKpa * preStiffening, p.poissonRatio),
+               points.size(), tets.size(), fem, start);
+    r.preStiffening = preStiffening;
+    return r;
 }
 
 Result<VerificationResult> runLameSphere(const LameParams& p) {

@@ -119,6 +119,38 @@ TEST(Mechanics, ThePunchsDimpleStiffensAsTheMaterialsOwnLawUnderTheSolversCap) {
     EXPECT_EQ(punchDimpleStiffening(1e-3, 1.45e-3, tissue, 1.9), 1.9);
 }
 
+TEST(Mechanics, AStretchedBlockIsPressedWithItsModulusAsStiffened) {
+    // The punch on a block stretched in its plane first, as the distension stretches the cavity's wall (bench_tissue
+    // --deep-punch 0.10 on the fine block): the tissue round the punch stiffens by its own law, and Boussinesq's force
+    // takes the modulus as stiffened there. On 2 mm elements (fast; the fine block's figures are in docs/simulator.md).
+    PunchParams rest = coarsePunchParams(2.0);
+    rest.stiffeningStrain = kUterusStiffeningStrain;
+    const auto atRest = runPunch(rest);
+    ASSERT_TRUE(atRest) << atRest.error().detail;
+    EXPECT_EQ(atRest->preStiffening, 1.0);
+    PunchParams stretched = rest;
+    stretched.preStretch = 0.10;
+    const auto r = runPunch(stretched);
+    ASSERT_TRUE(r) << r.error().detail;
+    std::printf("block stretched 10 %%: stiffening round the punch %.3f; %.5f N against %.5f N at rest\n",
+                r->preStiffening, r->simulated, atRest->simulated);
+    // 10 % in the plane is |dev e| about sqrt(6) 0.1 = 0.24, beyond the law's cap (sinh x / x = 1.9 at x 2.0).
+    EXPECT_GT(r->preStiffening, 1.5);
+    EXPECT_LE(r->preStiffening, 1.9 + 1e-12);
+    EXPECT_DOUBLE_EQ(r->analytic,
+                     boussinesqPunchForceN(stretched.punchRadiusMm, stretched.depthMm,
+                                           stretched.youngsModulusKpa * r->preStiffening, stretched.poissonRatio));
+    // The stretched block presses stiffer than the block at rest: its tissue is stiffer and its surface is in tension.
+    EXPECT_GT(r->simulated, r->preStiffening * atRest->simulated);
+    for (const double bad : {-0.01, 0.31, std::nan("")}) {
+        PunchParams p = rest;
+        p.preStretch = bad;
+        const auto refused = runPunch(p);
+        ASSERT_FALSE(refused);
+        EXPECT_NE(refused.error().detail.find("pre-stretch 0-0.3"), std::string::npos) << refused.error().detail;
+    }
+}
+
 TEST(Mechanics, ElementPressureLocksForNearlyIncompressibleTissue) {
     // Without the nodal pressure, linear tets come out too stiff at nu 0.49: the bar above is not met by any solver.
     LameParams p;

@@ -30,6 +30,10 @@ struct PunchParams {
     FemSettings solver;            ///< the solver's step, iterations, damping, pressure (its defaults)
     double settleS = 1.0;          ///< s, held at depth after a 0.1 s ramp
     double rampS = 0.1;            ///< s, the press's ramp to depth
+    /// In-plane strain the block is stretched by before the press (its rim drawn out radially over 0.5 s, held 1.5 s),
+    /// as the distension stretches the cavity's wall; the top thins freely, the punch follows it down until the press.
+    /// 0: the block at rest (the textbook's).
+    double preStretch = 0.0;
 };
 
 struct VerificationResult {
@@ -38,7 +42,10 @@ struct VerificationResult {
     double errorPercent = 0.0; ///< 100 (simulated - analytic) / analytic
     std::size_t points = 0, tets = 0;
     double residualN = 0.0; ///< the free degrees of freedom's imbalance at the end
-    double seconds = 0.0;   ///< wall time of the run (mesh, factor, steps)
+    /// Punch: the tissue's stiffening within 3 punch radii of the punch's centre as the press began (the secant factor,
+    /// volume-weighted, CorotationalFem::stiffeningAt), which `analytic` takes into its modulus; 1 at rest.
+    double preStiffening = 1.0;
+    double seconds = 0.0; ///< wall time of the run (mesh, factor, steps)
 };
 
 /// The punch on uniform elements of `edgeMm` (4 per quarter circle, the block at least 8 elements wide), coarser than
