@@ -334,6 +334,15 @@ void coarsePunchTable() {
         }
 }
 
+/// `base` pressed `depthMm` deep into a material of stiffening strain `c`, ramped over a second a millimetre (at
+/// least 0.1 s), as the deep tables press.
+PunchParams pressedDeep(PunchParams base, double c, double depthMm) {
+    base.stiffeningStrain = c;
+    base.depthMm = depthMm;
+    base.rampS = std::max(0.1, depthMm);
+    return base;
+}
+
 /// The punch pressed deep, as the simulator's press checks press (an indentation of 1-1.6 tip radii): the fine mesh's
 /// force against Boussinesq's small-strain one, with the material linear (the geometry's own nonlinearity) and with
 /// the tissue's stiffening (kUterusStiffeningStrain, held below the solver's maxStiffening as the world holds it).
@@ -348,12 +357,8 @@ void deepPunchTable(double preStretch) {
                                               : std::vector<double>{0.0, hs::mechanics::kUterusStiffeningStrain};
     for (const double c : materials)
         for (const double depth : {0.15, 0.5, 1.0, 1.5, 2.0, 2.3, 2.6}) {
-            PunchParams p;
+            PunchParams p = pressedDeep(PunchParams{}, c, depth);
             p.preStretch = preStretch;
-            p.stiffeningStrain = c;
-            p.depthMm = depth;
-            p.rampS = std::max(0.1, depth);
-            p.settleS = 1.0;
             const auto r = runPunch(p);
             if (!r) {
                 std::printf("| %s | %.2f | - | %s |\n", c > 0.0 ? "stiffening" : "linear", depth,
@@ -381,11 +386,7 @@ void dimpleTable() {
     for (const double c : {0.0, hs::mechanics::kUterusStiffeningStrain}) {
         std::vector<std::pair<double, double>> fine; // depth mm, force N
         for (const double depth : {0.15, 0.5, 1.0, 1.5, 2.0, 2.3}) {
-            PunchParams p;
-            p.stiffeningStrain = c;
-            p.depthMm = depth;
-            p.rampS = std::max(0.1, depth);
-            const auto r = runPunch(p);
+            const auto r = runPunch(pressedDeep(PunchParams{}, c, depth));
             if (r)
                 fine.emplace_back(depth, r->simulated);
         }
@@ -394,11 +395,7 @@ void dimpleTable() {
             // The coarse mesh's force against its own indentation, 0.02-3 mm.
             std::vector<std::pair<double, double>> coarse{{0.0, 0.0}};
             for (double d = 0.02; d <= 3.0 + 1e-9; d *= 1.25) {
-                PunchParams p = coarsePunchParams(edge);
-                p.stiffeningStrain = c;
-                p.depthMm = d;
-                p.rampS = std::max(0.1, d);
-                const auto r = runPunch(p);
+                const auto r = runPunch(pressedDeep(coarsePunchParams(edge), c, d));
                 if (r)
                     coarse.emplace_back(d, r->simulated);
             }
