@@ -23,6 +23,7 @@
 #include "hs/scene/ScopePassage.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -379,21 +380,35 @@ void deepPunchTable(double preStretch) {
 /// delta_m of its own; the rest, delta - delta_m, is the give's dimple. The give's stiffening is then
 /// C F / (delta - delta_m), C the small-strain sub-element give (punchSubElementCompliance at a point): what
 /// punchDimpleStiffening should be at that dimple for the coarse mesh and the give in series to press as the fine mesh.
+/// Then how much the tissue's stiffening raises the fine block's press and the coarse mesh's own over the linear
+/// material's, indentation for indentation.
 void dimpleTable() {
     std::printf("| material | element mm | depth mm | fine N | coarse mm | dimple mm | dimple / radius | stiffening "
                 "asked | the law's | s |\n"
                 "|---|---|---|---|---|---|---|---|---|---|\n");
+    using Curve = std::vector<std::pair<double, double>>; // indentation mm, force N
+    const auto forceAt = [](const Curve& curve, double depthMm) {
+        for (std::size_t k = 1; k < curve.size(); ++k)
+            if (curve[k].first >= depthMm)
+                return curve[k - 1].second + (curve[k].second - curve[k - 1].second) * (depthMm - curve[k - 1].first) /
+                                                 (curve[k].first - curve[k - 1].first);
+        return 0.0;
+    };
+    Curve fineOf[2];
+    std::vector<Curve> coarseOf[2];
+    const std::array<double, 3> edges{3.0, 4.4, 6.0};
     for (const double c : {0.0, hs::mechanics::kUterusStiffeningStrain}) {
-        std::vector<std::pair<double, double>> fine; // depth mm, force N
+        Curve& fine = fineOf[c > 0.0 ? 1 : 0];
         for (const double depth : {0.15, 0.5, 1.0, 1.5, 2.0, 2.3}) {
             const auto r = runPunch(pressedDeep(PunchParams{}, c, depth));
             if (r)
                 fine.emplace_back(depth, r->simulated);
         }
-        for (const double edge : {3.0, 4.4, 6.0}) {
+        for (const double edge : edges) {
             const auto start = Clock::now();
             // The coarse mesh's force against its own indentation, 0.02-3 mm.
-            std::vector<std::pair<double, double>> coarse{{0.0, 0.0}};
+            coarseOf[c > 0.0 ? 1 : 0].push_back({{0.0, 0.0}});
+            Curve& coarse = coarseOf[c > 0.0 ? 1 : 0].back();
             for (double d = 0.02; d <= 3.0 + 1e-9; d *= 1.25) {
                 const auto r = runPunch(pressedDeep(coarsePunchParams(edge), c, d));
                 if (r)
@@ -426,6 +441,21 @@ void dimpleTable() {
                             msSince(start) * 1e-3);
             }
         }
+    }
+    // How much the stiffening raises each mesh's press over the linear material's at the same indentation: the fine
+    // block's, and the coarse mesh's on one point alone (no give).
+    std::printf("\n| indentation mm | fine: stiffening / linear |");
+    for (const double edge : edges)
+        std::printf(" coarse %.1f mm: stiffening / linear |", edge);
+    std::printf("\n|---|---|---|---|---|\n");
+    for (const double depth : {0.15, 0.5, 1.0, 1.5, 2.0, 2.3}) {
+        const double lin = forceAt(fineOf[0], depth), stiff = forceAt(fineOf[1], depth);
+        std::printf("| %.2f | %.3f |", depth, lin > 0.0 ? stiff / lin : 0.0);
+        for (std::size_t e = 0; e < edges.size() && e < coarseOf[0].size() && e < coarseOf[1].size(); ++e) {
+            const double cl = forceAt(coarseOf[0][e], depth), cs = forceAt(coarseOf[1][e], depth);
+            std::printf(" %.3f |", cl > 0.0 ? cs / cl : 0.0);
+        }
+        std::printf("\n");
     }
 }
 
