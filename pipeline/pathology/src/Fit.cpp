@@ -10,10 +10,6 @@ namespace hs::pathology::detail {
 
 namespace {
 
-/// A hybrid's parts in the cavity and outside the serosa count from these shares of its volume (classifyFigo).
-constexpr double kCavityCounts = 0.01;
-constexpr double kOutsideCounts = 0.02;
-
 /// Depths along the wall chord (0 at the endometrium) of the shape's inside voxels (edge size / 40), sorted.
 std::vector<double> voxelDepths(const SurfaceMesh& mesh, const PathologyRequest& r, const Seat& seat) {
     const double h = r.sizeMm / 40.0;
@@ -58,26 +54,23 @@ double hybridShift(const SurfaceMesh& mesh, const PathologyRequest& r, const Sea
 
 /// The slab is flat, the organ is not: where the curved cavity leaves less of the shape beyond the endometrium (or
 /// the serosa) than the slab promised, the shape moves along the chord in 0.25 mm steps towards the side that falls
-/// shorter of what it needs, measured on the organ, as long as that brings the two sides nearer a balance (the
-/// smaller margin over what each needs to count on the final body grows; the cavity's side needs kHybridCavityLoss
-/// more). A hybrid that barely counts on one side loses it on the final body, so the balance is sought even once the
-/// type is met.
-void refineHybrid(SurfaceMesh& mesh, const SurfaceMesh& organ, const Seat& seat, const PathologyParams& params) {
-    // What each side has beyond what it needs to count on the final body.
-    auto cavityMargin = [](const Descriptors& d) { return d.cavityFraction - kCavityCounts - kHybridCavityLoss; };
-    auto outsideMargin = [](const Descriptors& d) { return d.outsideFraction - kOutsideCounts; };
-    auto balance = [&](const Descriptors& d) { return std::min(cavityMargin(d), outsideMargin(d)); };
-    auto d = measure(organ, mesh, clinical::PathologyKind::Myoma, params);
-    for (int it = 0; it < 16 && d.ok(); ++it) {
-        const double cavity = cavityMargin(*d), outside = outsideMargin(*d);
-        const double step = cavity < outside ? -0.25 : 0.25;
+/// short of its threshold, measured on the organ, as long as the other side keeps its own.
+void refineHybrid(SurfaceMesh& mesh, const SurfaceMesh& organ, const PathologyRequest& r, const Seat& seat,
+                  const PathologyParams& params) {
+    for (int it = 0; it < 8; ++it) {
+        auto d = measure(organ, mesh, clinical::PathologyKind::Myoma, params);
+        if (!d.ok() || d->figo == r.figo)
+            return;
+        const double cavity = d->cavityFraction / 0.01, outside = d->outsideFraction / 0.02;
+        const double step = cavity < 1.0 && outside > 1.0 ? -0.25 : (outside < 1.0 && cavity > 1.0 ? 0.25 : 0.0);
+        if (step == 0.0)
+            return;
         translate(mesh, seat.intoWall * step);
         auto after = measure(organ, mesh, clinical::PathologyKind::Myoma, params);
-        if (!after.ok() || balance(*after) <= balance(*d) || after->intramuralFraction < 0.5) {
-            translate(mesh, seat.intoWall * -step); // no nearer a balance: keep it where it was
+        if (!after.ok() || (step < 0.0 ? after->outsideFraction < 0.02 : after->cavityFraction < 0.01)) {
+            translate(mesh, seat.intoWall * -step); // the other side would fall short: keep the balance
             return;
         }
-        d = std::move(after);
     }
 }
 
@@ -115,7 +108,7 @@ void fitDepth(SurfaceMesh& mesh, const SurfaceMesh& organ, const PathologyReques
     if (r.figo.isHybrid()) {
         if (r.figo == clinical::FigoType{2, 5}) { // other hybrids keep the depth of the ideal sphere
             translate(mesh, seat.intoWall * hybridShift(mesh, r, seat));
-            refineHybrid(mesh, organ, seat, params);
+            refineHybrid(mesh, organ, r, seat, params);
         }
         return;
     }

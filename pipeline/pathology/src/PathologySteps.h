@@ -12,10 +12,6 @@
 namespace hs::pathology::detail {
 
 constexpr double kSinkMm = 1.5; ///< a stalk's root lies this deep in the wall
-/// The share of a hybrid myoma's volume in the cavity that the final body's lining and the merge's cover take off it:
-/// sweep-08's 15 mm FIGO 2-5 had 1.7 % in the cavity on the adapted organ and 0.5 % on its tets (so it measured 3-5
-/// there). The seat's slab (Placement.cpp) and the fit on the organ (Fit.cpp) count the part in the cavity less this.
-constexpr double kHybridCavityLoss = 0.012;
 
 std::string fmt(double v, int digits = 1);
 std::string fmt(const Vec3& v);

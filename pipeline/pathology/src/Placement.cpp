@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <string_view>
-#include <tuple>
 #include <variant>
 
 namespace hs::pathology::detail {
@@ -60,10 +59,8 @@ double capFraction(double depth, double radius) {
 
 /// The centre depths along the wall chord (0 at the endometrium) at which an ideal sphere in a slab `wallMm` thick
 /// classifies as `want`: the start and length (mm) of the longest such interval, length <= 0 when there is none.
-/// Surfaces the type must not reach are left out of the slab: the organ will make room there. `cavityLossShare` of
-/// the sphere's volume is taken off its part in the cavity (what the final body's lining and cover take off it).
-std::pair<double, double> figoRun(const clinical::FigoType& want, double wallMm, double radius, double tol,
-                                  double cavityLossShare = 0.0) {
+/// Surfaces the type must not reach are left out of the slab: the organ will make room there.
+std::pair<double, double> figoRun(const clinical::FigoType& want, double wallMm, double radius, double tol) {
     const bool useCavity = want.isHybrid() || want.type <= 3;
     const bool useSerosa = want.isHybrid() || want.type >= 5;
     double bestStart = 0.0, bestLength = -1.0, runStart = 0.0;
@@ -72,7 +69,7 @@ std::pair<double, double> figoRun(const clinical::FigoType& want, double wallMm,
     const double lo = -radius - 2.0, hi = wallMm + radius + 2.0;
     for (double s = lo; s <= hi + step; s += step) {
         Fractions f;
-        f.cavity = useCavity ? std::max(0.0, capFraction(radius - s, radius) - cavityLossShare) : 0.0;
+        f.cavity = useCavity ? capFraction(radius - s, radius) : 0.0;
         f.outside = useSerosa ? capFraction(s + radius - wallMm, radius) : 0.0;
         f.tissue = 1.0 - f.cavity - f.outside;
         f.endometriumDistanceMm = useCavity ? std::max(0.0, s - radius) : 1e9;
@@ -125,15 +122,16 @@ namespace {
 /// nominal seat is too thick for the requested size to span it with room to spare (an ideal sphere's centre must
 /// have kHybridPlay of its radius of play), the seat slides to the nearest endometrium point within kHybridSlide of
 /// the cavity's length that faces the same way (within kHybridTurnDeg) and where the wall is thin enough; to the
-/// one with the most play when there is none (the measured type then tells). The play is first sought with the part
-/// in the cavity as the final body will have it (less kHybridCavityLoss), then as the organ has it. A point placement
-/// stays where it was put. A slide is reported in `notes`.
+/// one with the most play when there is none (the measured type then tells). A point placement stays where it was
+/// put. A slide is reported in `notes`.
 Seat slideHybridSeat(const PathologyRequest& r, const OrganInfo& info, const Seat& nominal, double tol,
                      std::vector<std::string>& notes) {
     const double radius = 0.5 * r.sizeMm;
     const double enough = kHybridPlay * radius;
-    auto playWith = [&](const Seat& s, double loss) { return figoRun(r.figo, s.wallMm, radius, tol, loss).second; };
-    if (playWith(nominal, kHybridCavityLoss) >= enough)
+    auto play = [&](const Seat& s) { return figoRun(r.figo, s.wallMm, radius, tol).second; };
+    Seat best = nominal;
+    double bestPlay = play(nominal);
+    if (bestPlay >= enough)
         return nominal;
     const std::vector<Seat> candidates =
         nearbySeats(info, nominal, std::max(5.0, kHybridSlide * info.cavityLengthMm), kHybridTurnDeg);
@@ -144,14 +142,6 @@ Seat slideHybridSeat(const PathologyRequest& r, const OrganInfo& info, const Sea
                         " mm away, where it is " + fmt(s.wallMm) + " mm");
         return s;
     };
-    for (const Seat& s : candidates)
-        if (playWith(s, kHybridCavityLoss) >= enough)
-            return slid(s);
-    auto play = [&](const Seat& s) { return playWith(s, 0.0); };
-    Seat best = nominal;
-    double bestPlay = play(nominal);
-    if (bestPlay >= enough)
-        return nominal;
     for (const Seat& s : candidates) {
         const double p = play(s);
         if (p >= enough)
@@ -170,9 +160,7 @@ Result<double> centreDepth(const PathologyRequest& r, const Seat& seat, double r
     const clinical::FigoType want = r.figo;
     if (want.type == 4 && !want.isHybrid())
         return 0.5 * seat.wallMm;
-    auto [start, length] = figoRun(want, seat.wallMm, radius, tol, want.isHybrid() ? kHybridCavityLoss : 0.0);
-    if (length <= 0.0)
-        std::tie(start, length) = figoRun(want, seat.wallMm, radius, tol);
+    const auto [start, length] = figoRun(want, seat.wallMm, radius, tol);
     if (length <= 0.0)
         return fail(ErrorCode::InvalidInput, who(r) + ": FIGO " + want.toString() + " is impossible for a " +
                                                  fmt(r.sizeMm, 0) + " mm myoma in a wall " + fmt(seat.wallMm) +
