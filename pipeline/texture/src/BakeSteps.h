@@ -55,10 +55,10 @@ struct VesselIndex {
     double query = 0.0; ///< search radius around a point for segment midpoints, mm
 };
 
+/// What the vessels beneath a point take from the light its mucosa remits, per channel (red, green, blue), 0..1,
+/// already times their class's contrast: the strongest of them in each channel (vesselShadow).
 struct VesselSample {
-    float cover = 0.0f;  ///< 0..1, already times contrast
-    float radius = 0.0f; ///< mm of the covering vessel
-    float height = 0.0f; ///< relief, mm
+    std::array<float, 3> shadow{};
 };
 
 struct Shading {
@@ -107,11 +107,8 @@ TexelMap rasterize(const SurfaceMesh& mesh, const Atlas& atlas, int threads);
 // VesselIndex.cpp
 VesselIndex indexVessels(const VesselNetwork& net, double texelMm);
 
-/// The vessel covering p, if any: the strongest within one texel of its drawn width.
+/// The vessels' shadow at p (VesselSample), over every vessel whose shadow reaches it.
 VesselSample sampleVessels(const VesselIndex& index, const Vec3& p, double texelMm, double cellHalf);
-
-/// Blood colour by calibre: capillaries bright red, larger (deeper) vessels darker and bluer.
-void vesselColour(float radius, float* rgb);
 
 // NormalMap.cpp
 /// Tangent-space normals: the relief's surface gradient inside each chart, in the frame a renderer rebuilds (T along

@@ -274,14 +274,11 @@ Shading shade(const SurfaceMesh& mesh, const TexelMap& map, const std::vector<Ve
                                    }
                                    canalHeightMm = w[kCanal] * cr->foldHeightMm + lumen * cr->ringHeightMm;
                                }
+                               // The vessels lie beneath the mucosa: they take light from it, not its place, and
+                               // neither raise nor roughen its surface.
                                const VesselSample v = sampleVessels(vessels, p, texelMm, cellHalf);
-                               if (v.cover > 0.0f) {
-                                   float vc[3];
-                                   vesselColour(v.radius, vc);
-                                   for (int k = 0; k < 3; ++k)
-                                       rgb[k] += (vc[k] - rgb[k]) * v.cover;
-                                   rough += (0.3f - rough) * v.cover;
-                               }
+                               for (std::size_t k = 0; k < 3; ++k)
+                                   rgb[k] *= 1.0f - v.shadow[k];
                                for (const DarkSpot& spot : params.darkSpots) {
                                    const double d = distance(p, spot.centreMm);
                                    if (d >= spot.radiusMm)
@@ -296,7 +293,7 @@ Shading shade(const SurfaceMesh& mesh, const TexelMap& map, const std::vector<Ve
                                        static_cast<std::uint8_t>(std::lround(std::clamp(rgb[k], 0.0f, 1.0f) * 255.0f));
                                out.roughness.at(x, y) =
                                    static_cast<std::uint8_t>(std::lround(std::clamp(rough, 0.02f, 1.0f) * 255.0f));
-                               out.height[i] = static_cast<float>(params.bumpMm * bump + canalHeightMm) + v.height;
+                               out.height[i] = static_cast<float>(params.bumpMm * bump + canalHeightMm);
                                out.covered[i] = 1;
                            }
                    });

@@ -1,11 +1,14 @@
 #include "hs/texture/Bake.h"
 #include "hs/texture/ImageFiles.h"
+#include "hs/texture/Vessels.h"
 
 #include "TestSupport.h"
 #include "TextureTestMeshes.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -219,6 +222,69 @@ TEST(TextureVessels, FollowMurraysLawAndAreLargerOverMyomas) {
     EXPECT_EQ(net->roots[2], 1); // one central vessel per polyp
     EXPECT_GT(maxR[1], maxR[0]);
     EXPECT_GT(net->nodes[0], 100);
+}
+
+// Vessels lie beneath the mucosa (docs/texture.md, "Vessels beneath the surface"): blood absorbs green and blue far
+// more than red, and green and blue reach only a few tenths of a millimetre into the mucosa, so a capillary just under
+// the surface takes green and blue (it shows red) while a deeper, wider vessel takes a little of each, over a band
+// wider than itself.
+TEST(TextureVessels, ShowThroughTheMucosaRedWhenFineAndDullAndSoftWhenDeep) {
+    const auto capillary = vesselShadow(0.02, 0.0);
+    const auto deep = vesselShadow(0.3, 0.0);
+    std::printf("capillary (0.02 mm): red %.3f, green %.3f, blue %.3f; vessel of 0.3 mm: red %.3f, green %.3f, blue "
+                "%.3f\n",
+                capillary[0], capillary[1], capillary[2], deep[0], deep[1], deep[2]);
+    EXPECT_GT(capillary[1], 10.0 * capillary[0]); // green and blue taken, red kept: the capillary shows red
+    EXPECT_GT(capillary[2], 10.0 * capillary[0]);
+    EXPECT_GT(capillary[1], 0.1);
+    EXPECT_LT(deep[1] / deep[0], 0.5 * capillary[1] / capillary[0]); // depth filters green out: duller
+    EXPECT_GT(deep[0], capillary[0]);                                // and it takes more red
+    // Softer: the shadow's edge (from 90 % to 10 % of its peak) widens with the depth at which the vessel lies.
+    const auto edge = [](double r) {
+        const double peak = vesselShadow(r, 0.0)[1];
+        double d = 0.0, inner = 0.0;
+        for (; vesselShadow(r, d)[1] > 0.1 * peak; d += 1e-4)
+            if (vesselShadow(r, d)[1] > 0.9 * peak)
+                inner = d;
+        return d - inner;
+    };
+    const double fine = edge(0.02), wide = edge(0.3);
+    std::printf("the shadow's edge, 90 to 10 %% of its peak: %.3f mm (radius 0.02 mm), %.3f mm (0.3 mm)\n", fine, wide);
+    EXPECT_GT(fine, 0.03); // even a capillary's is softer than a painted line (a texel, 0.05-0.1 mm, at 1024²)
+    EXPECT_GT(wide, 3.0 * fine);
+    // Nothing beyond its reach; a texel's sampling keeps the shadow's integral.
+    for (const double r : {0.02, 0.1, 0.3})
+        for (std::size_t k = 0; k < 3; ++k)
+            EXPECT_LT(vesselShadow(r, vesselShadowReachMm(r))[k], 1e-3 * vesselShadow(r, 0.0)[k] + 1e-12);
+    double sharp = 0.0, sampled = 0.0;
+    for (double d = -2.0; d <= 2.0; d += 1e-3) {
+        sharp += vesselShadow(0.05, d)[1] * 1e-3;
+        sampled += vesselShadow(0.05, d, 0.1)[1] * 1e-3;
+    }
+    EXPECT_NEAR(sampled, sharp, 1e-3 * sharp);
+    EXPECT_EQ(vesselShadow(0.0, 0.0), (std::array<double, 3>{}));
+    EXPECT_EQ(vesselShadow(0.1, std::nan("")), (std::array<double, 3>{}));
+}
+
+// The vessels change the albedo only: the mucosa's surface over them, its normal map, is the same without them.
+TEST(TextureBake, VesselsDarkenTheAlbedoAndLeaveTheReliefAsItIs) {
+    const SurfaceMesh organ = test::makeLabelledOrgan(16);
+    BakeParams with = smallBake();
+    BakeParams without = with;
+    without.vessels = false;
+    const auto a = bakeAppearance(organ, with);
+    const auto b = bakeAppearance(organ, without);
+    ASSERT_TRUE(a.ok() && b.ok());
+    ASSERT_GT(a->vessels.segments.size(), 100u);
+    EXPECT_EQ(a->normal.data(), b->normal.data());
+    std::size_t darker = 0, lighter = 0;
+    for (std::size_t i = 0; i < a->albedo.data().size(); ++i) {
+        darker += a->albedo.data()[i] < b->albedo.data()[i];
+        lighter += a->albedo.data()[i] > b->albedo.data()[i];
+    }
+    std::printf("albedo channels darker with the vessels: %zu, lighter: %zu\n", darker, lighter);
+    EXPECT_GT(darker, 1000u);
+    EXPECT_EQ(lighter, 0u);
 }
 
 TEST(TextureBake, TheCanalHasItsOwnLookOnlyWhereTheLabelSaysSo) {

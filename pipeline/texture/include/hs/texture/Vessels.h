@@ -62,4 +62,28 @@ struct VesselNetwork {
                                                 const std::vector<Appearance>& faceAppearance,
                                                 const VesselParams& params, Progress& progress = Progress::none());
 
+/// A vessel seen through the mucosa over it (docs/texture.md, "Vessels beneath the surface"): the share of the light
+/// the mucosa remits that a vessel of `radiusMm`, its axis `distanceMm` beside the point along the surface, takes away,
+/// per channel (red, green, blue: 630, 550 and 470 nm), 0..1. The vessel lies with its top kVesselCoverMm under the
+/// surface; blood absorbs across its mean chord (whole blood, [Prahl1999]); the light that reaches its depth and comes
+/// back falls as exp(-2 mu_eff z) in the diffusion approximation, mu_eff = sqrt(3 mu_a (mu_a + mu_s')) of the mucosa
+/// ([Jacques2013]); and the shadow spreads sideways over about the depth of its upper half, as diffuse light does. Red
+/// reaches far, green and blue a few tenths of a millimetre: a capillary just under the surface takes green and blue
+/// (it shows red), a deeper, wider vessel a little of each and over a wider band (darker, duller, softer), as veins
+/// under skin do
+/// ([Kienle1996]).
+/// `extraSpreadMm` widens the sideways spread in quadrature (a texel's sampling), keeping the shadow's integral.
+std::array<double, 3> vesselShadow(double radiusMm, double distanceMm, double extraSpreadMm = 0.0);
+/// The vessel's axis under the surface, mm: its radius plus kVesselCoverMm.
+double vesselDepthMm(double radiusMm);
+/// How far sideways its shadow spreads (the Gaussian's deviation), mm: its cover and half its radius, the depth at
+/// which its upper half takes the light.
+double vesselSpreadMm(double radiusMm);
+/// How far beside its axis a vessel's shadow reaches, mm (its radius and 3.5 spreads: beyond, vesselShadow is below
+/// 3e-4 of its peak).
+double vesselShadowReachMm(double radiusMm);
+/// The tissue over a vessel's top, mm: a choice (a simple columnar epithelium and the stroma's thin layer over the
+/// subepithelial capillaries; no measurement of their depth in the endometrium was found).
+inline constexpr double kVesselCoverMm = 0.03;
+
 } // namespace hs::texture
