@@ -5,7 +5,8 @@
 /// tileable base texture synthesized from its exemplar; vessels are grown on the surface. Every texel is then shaded
 /// from its 3-D position: the base textures by triplanar projection (so both sides of a chart seam sample the same
 /// point and seams stay invisible), the vessels by distance to their segments, classes blended by smoothed per-vertex
-/// weights where they meet. Height (mucosa bumps + vessel relief) becomes a tangent-space normal map.
+/// weights where they meet; the vessels beneath the mucosa darken it. Height (mucosa bumps, canal folds) becomes a
+/// tangent-space normal map.
 ///
 /// Labels read (face labels; a surface without them is all endometrium):
 ///  - `appearanceLabel` (default "region"): values listed in myomaValues / polypValues are myoma / polyp, everything
