@@ -245,11 +245,7 @@ std::vector<Push> planPushes(const Planned& p, const OrganInfo& info, const Path
         around.topLo = top;
         around.topHi = top + c + 0.5 * across; // a wide fall over the head rounds the pocket's corners; any fall
                                                // along n keeps the radial map injective
-        // Around a head on a stalk, and around a sessile polyp: both stand in the cavity, and the walls beside them
-        // move off too (without it the default scene's sessile cornual polyp lay 46 % against tissue on the final tets,
-        // where a sessile polyp stands with at most 40 %; 37 % with it). A myoma's dome on the wall keeps its corners
-        // (they would fold).
-        if (p.spec.pedunculated || polyp)
+        if (p.spec.pedunculated) // a head on a stalk; a dome on the wall keeps its corners (they would fold)
             pushes.push_back(around);
     }
     if (clearOfCavity) { // the endometrium (and the cavity with it) moves away from the myoma; the ramp lies in the
