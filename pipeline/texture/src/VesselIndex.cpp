@@ -1,6 +1,8 @@
 // Vessel segments bucketed for per-texel lookups, and their look.
 #include "BakeSteps.h"
 
+#include "hs/core/Optics.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -52,9 +54,6 @@ namespace hs::texture {
 
 namespace {
 
-/// Whole blood's absorption, 1/mm, at 630, 550 and 470 nm (oxyhaemoglobin at 150 g/L, [Prahl1999]; the simulator's
-/// blood in the fluid takes the same).
-constexpr std::array<double, 3> kBloodAbsorptionPerMm{0.33, 23.0, 17.8};
 /// The mucosa's reduced scattering, 1/mm: soft tissues' mu_s' is about 1-2 per mm over the visible, rising towards the
 /// blue ([Jacques2013], its power law in the wavelength).
 constexpr std::array<double, 3> kMucosaScatteringPerMm{1.0, 1.4, 1.8};
@@ -63,7 +62,7 @@ constexpr std::array<double, 3> kMucosaScatteringPerMm{1.0, 1.4, 1.8};
 constexpr double kMucosaBloodShare = 0.02;
 
 double effectiveAttenuationPerMm(std::size_t k) {
-    const double mua = kMucosaBloodShare * kBloodAbsorptionPerMm[k];
+    const double mua = kMucosaBloodShare * kWholeBloodAbsorptionPerMm[k];
     return std::sqrt(3.0 * mua * (mua + kMucosaScatteringPerMm[k]));
 }
 
@@ -94,7 +93,7 @@ std::array<double, 3> vesselShadow(double radiusMm, double distanceMm, double ex
     const double band = 0.5 * (std::erf((radiusMm - d) / s) + std::erf((radiusMm + d) / s));
     const double chord = 0.5 * 3.141592653589793 * radiusMm; // a cylinder's mean chord seen from above
     for (std::size_t k = 0; k < 3; ++k) {
-        const double absorbed = 1.0 - std::exp(-kBloodAbsorptionPerMm[k] * chord);
+        const double absorbed = 1.0 - std::exp(-kWholeBloodAbsorptionPerMm[k] * chord);
         out[k] = std::clamp(band * absorbed * std::exp(-2.0 * effectiveAttenuationPerMm(k) * z), 0.0, 1.0);
     }
     return out;

@@ -70,8 +70,7 @@ struct VesselNetwork {
 /// ([Jacques2013]); and the shadow spreads sideways over about the depth of its upper half, as diffuse light does. Red
 /// reaches far, green and blue a few tenths of a millimetre: a capillary just under the surface takes green and blue
 /// (it shows red), a deeper, wider vessel a little of each and over a wider band (darker, duller, softer), as veins
-/// under skin do
-/// ([Kienle1996]).
+/// under skin do ([Kienle1996]).
 /// `extraSpreadMm` widens the sideways spread in quadrature (a texel's sampling), keeping the shadow's integral.
 std::array<double, 3> vesselShadow(double radiusMm, double distanceMm, double extraSpreadMm = 0.0);
 /// The vessel's axis under the surface, mm: its radius plus kVesselCoverMm.

@@ -12,6 +12,7 @@
 /// No Qt: the host calls the setters on its render thread, then renders. VTK types stay out of the interface except
 /// the renderer the view draws into.
 
+#include "hs/core/Optics.h"
 #include "hs/core/Vec3.h"
 #include "hs/scene/Scene.h"
 #include "hs/scene/ScopeView.h"
@@ -92,9 +93,9 @@ struct EndoscopicLook {
     double turbidFogPerMm = 0.12;   ///< 1/mm, added at turbidity 1 (blood and debris: opaque beyond ~2 cm)
     std::array<double, 3> fogColour{0.42, 0.16, 0.12}; ///< linear RGB of lamp light scattered back by the medium
     std::array<double, 3> redOutColour{0.45, 0.03, 0.04};
-    /// 1/mm, absorption of whole blood (oxyhaemoglobin at 150 g/L) at 630, 550 and 470 nm for red, green and blue,
-    /// from Prahl's tabulated molar extinction (docs/references.md [Prahl1999]); scaled by blood's share of the fluid.
-    std::array<double, 3> bloodAbsorptionPerMm{0.33, 23.0, 17.8};
+    /// 1/mm, absorption of whole blood at 630, 550 and 470 nm for red, green and blue (hs::kWholeBloodAbsorptionPerMm,
+    /// docs/references.md [Prahl1999]); scaled by blood's share of the fluid.
+    std::array<double, 3> bloodAbsorptionPerMm = kWholeBloodAbsorptionPerMm;
     /// Linear RGB of the faces a cut bares, by clinical::Tissue (myometrium, endometrium, cervix, myoma, polyp): flat
     /// colours of this project's choice after the atlases' descriptions (a myoma's interior pale and whorled, a
     /// polyp's stroma pink, the muscle red).
