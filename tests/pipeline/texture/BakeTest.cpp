@@ -256,11 +256,15 @@ TEST(TextureVessels, ShowThroughTheMucosaRedWhenFineAndDullAndSoftWhenDeep) {
     for (const double r : {0.02, 0.1, 0.3})
         for (std::size_t k = 0; k < 3; ++k)
             EXPECT_LT(vesselShadow(r, vesselShadowReachMm(r))[k], 1e-3 * vesselShadow(r, 0.0)[k] + 1e-12);
+    std::printf("at its reach the 0.3 mm vessel's green shadow is %.2e of its peak\n",
+                vesselShadow(0.3, vesselShadowReachMm(0.3))[1] / vesselShadow(0.3, 0.0)[1]);
     double sharp = 0.0, sampled = 0.0;
     for (double d = -2.0; d <= 2.0; d += 1e-3) {
         sharp += vesselShadow(0.05, d)[1] * 1e-3;
         sampled += vesselShadow(0.05, d, 0.1)[1] * 1e-3;
     }
+    std::printf("the 0.05 mm vessel's green shadow integrated: %.6f mm sharp, %.6f mm over a 0.1 mm spread\n", sharp,
+                sampled);
     EXPECT_NEAR(sampled, sharp, 1e-3 * sharp);
     EXPECT_EQ(vesselShadow(0.0, 0.0), (std::array<double, 3>{}));
     EXPECT_EQ(vesselShadow(0.1, std::nan("")), (std::array<double, 3>{}));
@@ -275,6 +279,7 @@ TEST(TextureBake, VesselsDarkenTheAlbedoAndLeaveTheReliefAsItIs) {
     const auto a = bakeAppearance(organ, with);
     const auto b = bakeAppearance(organ, without);
     ASSERT_TRUE(a.ok() && b.ok());
+    std::printf("%zu vessel segments on the test organ\n", a->vessels.segments.size());
     ASSERT_GT(a->vessels.segments.size(), 100u);
     EXPECT_EQ(a->normal.data(), b->normal.data());
     std::size_t darker = 0, lighter = 0;
