@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -50,9 +51,17 @@ protected:
     }
 };
 
+/// The sweep's myomas whose FIGO type the final body does not measure yet (docs/pathology.md, "Known gaps"):
+/// sweep-08's 15 mm FIGO 2-5 hybrid stands 1.2 % in the cavity on the adapted organ and 0.5 % on its tets, where the
+/// lining and the merge's cover take that side (3-5); sweep-14's FIGO 5 myoma is pushed onto the endometrium by a
+/// later cornual polyp's radial push (3-5). Listed so that the test says when one measures its type.
+bool figoKnownMiss(const std::string& name) {
+    return name == "sweep-08" || name == "sweep-14";
+}
+
 } // namespace
 
-TEST_P(ScopeSweep, CaseGeneratesAndAnOfficeScopeReachesTheFundus) {
+TEST_P(ScopeSweep, CaseGeneratesMeasuresItsFigoTypesAndAnOfficeScopeReachesTheFundus) {
     const std::string name = caseName(GetParam());
     const fs::path file = sweepDir() / (name + ".json");
     auto spec = scene::loadCase(file.string());
@@ -62,6 +71,24 @@ TEST_P(ScopeSweep, CaseGeneratesAndAnOfficeScopeReachesTheFundus) {
     auto generated = generate::generateScene(s, {file.string(), 2, {}});
     ASSERT_TRUE(generated.ok()) << name << ": " << generated.error().message();
     ASSERT_TRUE(generated->scene.has_value());
+    // Each myoma measures on the final tets the FIGO type its case asks (docs/scene-format.md, "Where the clinical
+    // descriptors are measured").
+    for (const scene::PathologySpec& asked : s.pathologies) {
+        if (!asked.figo)
+            continue;
+        const auto& measured = generated->scene->clinical.pathologies;
+        const auto found = std::find_if(measured.begin(), measured.end(),
+                                        [&](const scene::PathologyDescriptor& d) { return d.id == asked.id; });
+        ASSERT_NE(found, measured.end()) << name << ": " << asked.id << " has no descriptor";
+        ASSERT_TRUE(found->figo.has_value()) << name << ": " << asked.id << " has no FIGO type";
+        std::printf("%s: %s asks FIGO %s, the final tets measure %s\n", name.c_str(), asked.id.c_str(),
+                    asked.figo->toString().c_str(), found->figo->toString().c_str());
+        if (figoKnownMiss(name))
+            EXPECT_NE(*found->figo, *asked.figo) << name << " measures its FIGO type now: take it off the known miss";
+        else
+            EXPECT_EQ(*found->figo, *asked.figo) << name << ": " << asked.id << " asks FIGO " << asked.figo->toString()
+                                                 << ", the final tets measure " << found->figo->toString();
+    }
     auto landmarks = scene::findScopeLandmarks(*generated->scene);
     ASSERT_TRUE(landmarks.ok()) << name << ": " << landmarks.error().message();
     scene::ScopePassageParams params;
