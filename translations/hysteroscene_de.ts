@@ -1993,6 +1993,10 @@
         <source>Use your own image (PNG, JPEG, EXR, TIFF; %1 – %2 px a side): a crop of a real hysteroscopic view</source>
         <translation>Eigenes Bild verwenden (PNG, JPEG, EXR, TIFF; %1 – %2 px je Seite): ein Ausschnitt eines echten hysteroskopischen Bildes</translation>
     </message>
+    <message>
+        <source>Cervical canal</source>
+        <translation>Zervixkanal</translation>
+    </message>
 </context>
 <context>
     <name>hs::widgets::TrialReportView</name>

@@ -1993,6 +1993,10 @@
         <source>Use your own image (PNG, JPEG, EXR, TIFF; %1 – %2 px a side): a crop of a real hysteroscopic view</source>
         <translation>Utiliser votre propre image (PNG, JPEG, EXR, TIFF ; %1 – %2 px de côté) : un extrait d&apos;une vue hystéroscopique réelle</translation>
     </message>
+    <message>
+        <source>Cervical canal</source>
+        <translation>Canal cervical</translation>
+    </message>
 </context>
 <context>
     <name>hs::widgets::TrialReportView</name>

@@ -1993,6 +1993,10 @@
         <source>Use your own image (PNG, JPEG, EXR, TIFF; %1 – %2 px a side): a crop of a real hysteroscopic view</source>
         <translation>Usare un&apos;immagine propria (PNG, JPEG, EXR, TIFF; %1 – %2 px per lato): un ritaglio di una vista isteroscopica reale</translation>
     </message>
+    <message>
+        <source>Cervical canal</source>
+        <translation>Canale cervicale</translation>
+    </message>
 </context>
 <context>
     <name>hs::widgets::TrialReportView</name>

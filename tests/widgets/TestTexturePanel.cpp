@@ -14,6 +14,7 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QToolButton>
 
 using hs::widgets::CaseDocument;
 using hs::widgets::GenerationSession;
@@ -63,6 +64,15 @@ void TestTexturePanel::refusesWhatIsNoExemplarAndTakesAnImage() {
     QCOMPARE(panel.findChild<QLabel*>("exemplarLabel2")->text(), QString("good.png"));
     document.undoStack()->undo();
     QCOMPARE(panel.findChild<QLabel*>("exemplarLabel2")->text(), QString("Bundled"));
+
+    // The cervical canal has an exemplar row of its own (the case's texture.exemplars.cervicalCanal).
+    QVERIFY(panel.setExemplar(3, dir.filePath("good.png")));
+    QCOMPARE(QString::fromStdString(*document.spec().texture.exemplars.cervicalCanal), dir.filePath("good.png"));
+    QVERIFY(!document.spec().texture.exemplars.polyp.has_value());
+    QCOMPARE(panel.findChild<QLabel*>("exemplarLabel3")->text(), QString("good.png"));
+    panel.findChild<QToolButton*>("exemplarBundledButton3")->click();
+    QVERIFY(!document.spec().texture.exemplars.cervicalCanal.has_value());
+    QCOMPARE(panel.findChild<QLabel*>("exemplarLabel3")->text(), QString("Bundled"));
 }
 
 void TestTexturePanel::texturesAndShowsTheMaps() {

@@ -474,6 +474,7 @@ Result<LoadedCurriculum> loadCurriculum(const std::string& path) {
         absolute(spec->texture.exemplars.endometrium);
         absolute(spec->texture.exemplars.myoma);
         absolute(spec->texture.exemplars.polyp);
+        absolute(spec->texture.exemplars.cervicalCanal);
         loaded.bases.push_back(std::move(*spec));
     }
     for (CaseIssue& issue : checkCurriculum(loaded.curriculum, loaded.bases))

@@ -9,13 +9,22 @@
 
 namespace hs::generate {
 
+namespace {
+
+/// A path the case gives, as read from the case file's folder (docs/case-format.md); as given without a case file.
+std::string fromCaseFolder(const std::string& path, const std::string& caseFile) {
+    const std::filesystem::path p(path);
+    if (p.is_absolute() || caseFile.empty())
+        return p.string();
+    return (std::filesystem::path(caseFile).parent_path() / p).string();
+}
+
+} // namespace
+
 std::string modelPathFor(const scene::CaseSpec& spec, const std::string& caseFile) {
     if (!spec.anatomy.modelPath)
         return resourcePath("models/uterus-default.h5");
-    const std::filesystem::path model(*spec.anatomy.modelPath);
-    if (model.is_absolute() || caseFile.empty())
-        return model.string();
-    return (std::filesystem::path(caseFile).parent_path() / model).string();
+    return fromCaseFolder(*spec.anatomy.modelPath, caseFile);
 }
 
 Result<OrganRequest> organRequestFor(const scene::CaseSpec& spec, const std::string& caseFile) {
@@ -126,7 +135,8 @@ texture::EndometrialState endometrialState(const clinical::PatientParams& patien
     return texture::EndometrialState::Proliferative;
 }
 
-texture::BakeParams bakeParamsFor(const scene::CaseSpec& spec, std::optional<int> threads) {
+texture::BakeParams bakeParamsFor(const scene::CaseSpec& spec, const std::string& caseFile,
+                                  std::optional<int> threads) {
     texture::BakeParams p;
     p.size = spec.texture.sizePx;
     p.seed = streamSeed(spec.seed, Stream::Texture);
@@ -138,10 +148,13 @@ texture::BakeParams bakeParamsFor(const scene::CaseSpec& spec, std::optional<int
     // The ectocervix's rim looks like the canal it leads into (pale pink), not like the cavity's endometrium.
     p.labels.canalValues = {clinical::labelValue(clinical::SurfaceTissue::CervicalCanal),
                             clinical::labelValue(clinical::SurfaceTissue::Ectocervix)};
-    p.exemplarFiles[static_cast<std::size_t>(texture::Appearance::Endometrium)] =
-        spec.texture.exemplars.endometrium.value_or("");
-    p.exemplarFiles[static_cast<std::size_t>(texture::Appearance::Myoma)] = spec.texture.exemplars.myoma.value_or("");
-    p.exemplarFiles[static_cast<std::size_t>(texture::Appearance::Polyp)] = spec.texture.exemplars.polyp.value_or("");
+    const auto exemplar = [&](texture::Appearance a, const std::optional<std::string>& file) {
+        p.exemplarFiles[static_cast<std::size_t>(a)] = file ? fromCaseFolder(*file, caseFile) : std::string();
+    };
+    exemplar(texture::Appearance::Endometrium, spec.texture.exemplars.endometrium);
+    exemplar(texture::Appearance::Myoma, spec.texture.exemplars.myoma);
+    exemplar(texture::Appearance::Polyp, spec.texture.exemplars.polyp);
+    exemplar(texture::Appearance::CervicalCanal, spec.texture.exemplars.cervicalCanal);
     p.endometrium = endometrialState(spec.patient);
     p.vessels = spec.texture.vesselDensity > 0.0;
     for (auto& c : p.vesselParams.perClass)

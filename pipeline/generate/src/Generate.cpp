@@ -84,7 +84,7 @@ Status runTissue(Generated& g) {
 Status runTexture(Generated& g, const GenerateParams& params, Progress& progress) {
     const SurfaceMesh& boundary = g.tissue->boundary;
     const auto ostia = ostiumOpenings(boundary);
-    texture::BakeParams bake = bakeParamsFor(g.spec, params.threads);
+    texture::BakeParams bake = bakeParamsFor(g.spec, params.caseFile, params.threads);
     bake.darkSpots = ostiumDarkSpots(ostia);
     bake.canal = canalFrame(boundary);
     // The maps are baked on the faired surface that the close-up surface subdivides: the relief is then drawn on the

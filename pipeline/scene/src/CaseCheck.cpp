@@ -243,6 +243,7 @@ void checkTexture(Checker& c, const TextureParams& t) {
     c.filePath("/texture/exemplars/endometrium", t.exemplars.endometrium);
     c.filePath("/texture/exemplars/myoma", t.exemplars.myoma);
     c.filePath("/texture/exemplars/polyp", t.exemplars.polyp);
+    c.filePath("/texture/exemplars/cervicalCanal", t.exemplars.cervicalCanal);
     c.range("/texture/vesselDensity", t.vesselDensity, limits::kVesselDensity, "");
 }
 

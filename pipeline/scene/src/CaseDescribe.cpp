@@ -92,7 +92,7 @@ std::string describeMeshing(const MeshingParams& m) {
 }
 
 std::string describeTexture(const TextureParams& t) {
-    const bool custom = t.exemplars.endometrium || t.exemplars.myoma || t.exemplars.polyp;
+    const bool custom = t.exemplars.endometrium || t.exemplars.myoma || t.exemplars.polyp || t.exemplars.cervicalCanal;
     return std::to_string(t.sizePx) + " px maps, " + (custom ? "custom" : "procedural") +
            " exemplars, vessel density " + formatNumber(t.vesselDensity);
 }

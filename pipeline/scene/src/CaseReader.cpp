@@ -141,6 +141,7 @@ void readTexture(const json& v, const std::string& path, TextureParams& t, Issue
         exemplars.read("endometrium", t.exemplars.endometrium);
         exemplars.read("myoma", t.exemplars.myoma);
         exemplars.read("polyp", t.exemplars.polyp);
+        exemplars.read("cervicalCanal", t.exemplars.cervicalCanal);
         exemplars.finish();
     }
     o.read("vesselDensity", t.vesselDensity);

@@ -109,7 +109,8 @@ bool operator==(const MeshingParams& a, const MeshingParams& b) {
                                                                    b.relaxationIterations, b.threads);
 }
 bool operator==(const TextureExemplars& a, const TextureExemplars& b) {
-    return std::tie(a.endometrium, a.myoma, a.polyp) == std::tie(b.endometrium, b.myoma, b.polyp);
+    return std::tie(a.endometrium, a.myoma, a.polyp, a.cervicalCanal) ==
+           std::tie(b.endometrium, b.myoma, b.polyp, b.cervicalCanal);
 }
 bool operator==(const TextureParams& a, const TextureParams& b) {
     return std::tie(a.sizePx, a.exemplars, a.vesselDensity) == std::tie(b.sizePx, b.exemplars, b.vesselDensity);

@@ -31,10 +31,16 @@ Status upgradeV1ToV2(nlohmann::json& document) {
     return {};
 }
 
+/// Version 2 -> 3: texture.exemplars.cervicalCanal is new; unset, the canal takes the bundled exemplar, as before.
+/// Nothing to rewrite (the step exists because the strict reader of version 2 refuses the new member).
+Status upgradeV2ToV3(nlohmann::json&) {
+    return {};
+}
+
 } // namespace
 
 const CaseUpgradeChain& caseUpgradeChain() {
-    static const CaseUpgradeChain chain{kOldestCaseSchemaVersion, kCaseSchemaVersion, {upgradeV1ToV2}};
+    static const CaseUpgradeChain chain{kOldestCaseSchemaVersion, kCaseSchemaVersion, {upgradeV1ToV2, upgradeV2ToV3}};
     return chain;
 }
 

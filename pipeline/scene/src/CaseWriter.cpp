@@ -104,7 +104,8 @@ ojson writeCase(const CaseSpec& spec) {
     texture["sizePx"] = t.sizePx;
     texture["exemplars"] = ojson{{"endometrium", optionalValue(t.exemplars.endometrium)},
                                  {"myoma", optionalValue(t.exemplars.myoma)},
-                                 {"polyp", optionalValue(t.exemplars.polyp)}};
+                                 {"polyp", optionalValue(t.exemplars.polyp)},
+                                 {"cervicalCanal", optionalValue(t.exemplars.cervicalCanal)}};
     texture["vesselDensity"] = t.vesselDensity;
     j["texture"] = texture;
 

@@ -150,5 +150,5 @@ TEST(EndometrialState, TheTextureFollowsThePatientsCycleOrMenopause) {
     EXPECT_EQ(hs::generate::endometrialState(patient), hs::texture::EndometrialState::Atrophic);
     hs::scene::CaseSpec spec;
     spec.patient = patient;
-    EXPECT_EQ(hs::generate::bakeParamsFor(spec).endometrium, hs::texture::EndometrialState::Atrophic);
+    EXPECT_EQ(hs::generate::bakeParamsFor(spec, "").endometrium, hs::texture::EndometrialState::Atrophic);
 }

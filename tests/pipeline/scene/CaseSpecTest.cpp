@@ -55,6 +55,7 @@ CaseSpec richCase() {
     spec.anatomy.endometrialThicknessMm = 9.5;
     spec.texture.sizePx = 2048;
     spec.texture.exemplars.endometrium = "images/endometrium.png";
+    spec.texture.exemplars.cervicalCanal = "images/canal.png";
     spec.texture.vesselDensity = 1.5;
     spec.scene.hydrometraPressureKpa = 10.0;
     spec.scene.materials[static_cast<std::size_t>(clinical::Tissue::Myoma)] = {80.0, 0.49, 1060.0, 0.2};
@@ -111,7 +112,7 @@ TEST(CaseSpec, ToJsonIsDeterministicAndEndsWithANewline) {
     EXPECT_EQ(a, toJson(richCase()));
     ASSERT_FALSE(a.empty());
     EXPECT_EQ(a.back(), '\n');
-    EXPECT_EQ(a.rfind("{\n    \"format\": \"hysteroscene-case\",\n    \"schemaVersion\": 2,", 0), 0u);
+    EXPECT_EQ(a.rfind("{\n    \"format\": \"hysteroscene-case\",\n    \"schemaVersion\": 3,", 0), 0u);
 }
 
 TEST(CaseSpec, MinimalDocumentTakesTheDocumentedDefaults) {

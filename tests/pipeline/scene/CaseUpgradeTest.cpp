@@ -161,7 +161,7 @@ TEST(CaseUpgrade, AVersionOneCaseLosesTheFieldsThatDidNothingAndGainsItsTissueFi
                                  "young.json");
     ASSERT_TRUE(young.ok()) << young.error().message();
     EXPECT_EQ(young->patient.cyclePhase, clinical::CyclePhase::Proliferative);
-    // Written back, it is a version 2 document that reads the same.
+    // Written back, it is a document of the current version that reads the same.
     const auto again = parseCase(toJson(*young), "again.json");
     ASSERT_TRUE(again.ok()) << again.error().message();
     EXPECT_EQ(*again, *young);

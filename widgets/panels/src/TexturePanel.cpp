@@ -36,8 +36,10 @@ std::optional<std::string> scene::TextureExemplars::*exemplarOf(int index) {
         return &scene::TextureExemplars::endometrium;
     case 1:
         return &scene::TextureExemplars::myoma;
-    default:
+    case 2:
         return &scene::TextureExemplars::polyp;
+    default:
+        return &scene::TextureExemplars::cervicalCanal;
     }
 }
 
@@ -47,8 +49,10 @@ QString exemplarName(int index) {
         return TexturePanel::tr("Endometrium");
     case 1:
         return TexturePanel::tr("Myoma");
-    default:
+    case 2:
         return TexturePanel::tr("Polyp");
+    default:
+        return TexturePanel::tr("Cervical canal");
     }
 }
 

@@ -62,8 +62,10 @@ TissueLayerParams tissueLayerParamsFor(const scene::CaseSpec& spec);
 /// Face label of the visual surface that says which appearance a face takes: 0 wall (endometrium, serosa), 1 over a
 /// myoma, 2 over a polyp.
 inline constexpr const char* kAppearanceLabel = "appearance";
-/// The texture stage's parameters; `threads` replaces the case's thread count (never changes the maps).
-texture::BakeParams bakeParamsFor(const scene::CaseSpec& spec, std::optional<int> threads = std::nullopt);
+/// The texture stage's parameters; exemplar paths relative to the case file's folder (as given without a case file);
+/// `threads` replaces the case's thread count (never changes the maps).
+texture::BakeParams bakeParamsFor(const scene::CaseSpec& spec, const std::string& caseFile,
+                                  std::optional<int> threads = std::nullopt);
 /// The endometrium's look for the patient: atrophic after the menopause, else her cycle phase's (proliferative when
 /// unset).
 texture::EndometrialState endometrialState(const clinical::PatientParams& patient);

@@ -30,7 +30,7 @@ namespace hs::scene {
 /// Value of the document's "format" member.
 constexpr std::string_view kCaseFormat = "hysteroscene-case";
 /// The schema version this build writes and validates; older documents are upgraded to it first.
-constexpr int kCaseSchemaVersion = 2;
+constexpr int kCaseSchemaVersion = 3;
 /// The oldest schema version this build can upgrade.
 constexpr int kOldestCaseSchemaVersion = 1;
 /// A case file is a few kB; anything above this is refused before parsing (guards against huge allocations).
@@ -177,6 +177,7 @@ struct TextureExemplars {
     std::optional<std::string> endometrium;
     std::optional<std::string> myoma;
     std::optional<std::string> polyp;
+    std::optional<std::string> cervicalCanal; ///< the canal and the ectocervix's rim round the external os
 };
 
 struct TextureParams {

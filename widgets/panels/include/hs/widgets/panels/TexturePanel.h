@@ -27,7 +27,7 @@ public:
     TexturePanel(CaseDocument& document, GenerationSession& session, QWidget* parent = nullptr);
 
     /// Appearance classes with an exemplar, in the case's order: endometrium, myoma, polyp.
-    static constexpr int kExemplarCount = 3;
+    static constexpr int kExemplarCount = 4;
     /// Takes `path` as the exemplar of class `index` when it is an image the texture stage accepts; otherwise says
     /// why (not an image, too small, too large) and leaves the case as it was. Returns whether it was taken.
     bool setExemplar(int index, const QString& path);
