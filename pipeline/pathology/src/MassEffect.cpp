@@ -191,7 +191,7 @@ std::optional<Push> partingPush(const Planned& p, const Vec3& d, const OrganInfo
 
 /// The pushes a pathology needs, by where it must and must not reach (FIGO, docs/references.md [Munro2011]: types
 /// 0-2 bulge into the cavity, 3 touches the endometrium, 4 stays in the wall, 5-7 bulge outwards).
-std::vector<Push> planPushes(const Planned& p, const OrganInfo& info, const PathologyParams& params) {
+std::vector<Push> planPushes(const Planned& p, const OrganInfo& info, const PathologyParams& params, AdaptRound round) {
     const SurfaceMesh& mesh = p.surface;
     const Vec3 e = p.seat.endometrium, u = p.seat.intoWall;
     double shallowest = 1e300, deepest = -1e300, lateral = 0.0;
@@ -210,7 +210,9 @@ std::vector<Push> planPushes(const Planned& p, const OrganInfo& info, const Path
     const double c = params.clearanceMm;
     std::vector<Push> pushes;
     const double w = p.seat.wallMm;
-    if (intoCavity) {
+    // Once all are placed, only the walls a myoma must keep clear of are looked at again: opening the cavity anew
+    // around a head, on walls the later pushes moved, made the organ intersect itself in 2 of the 36 crowded cases.
+    if (intoCavity && round == AdaptRound::First) {
         // Open the cavity around the part that stands in it: first the far wall moves away along the protrusion
         // (driven by the wall in front of it), then, around a head on a stalk, the walls move away across it.
         const Vec3 d = protrusionDirection(p);
@@ -250,12 +252,46 @@ std::vector<Push> planPushes(const Planned& p, const OrganInfo& info, const Path
     }
     if (clearOfCavity) { // the endometrium (and the cavity with it) moves away from the myoma; the ramp lies in the
                          // wall between the myoma's top and the endometrium, or just under the endometrium
-        const double hi = std::min(-0.3, -shallowest + 0.2 + std::clamp(0.5 * std::max(shallowest, 0.0), 0.3, 3.0));
-        const double lo = std::max(-0.6 * w, std::min(-shallowest + 0.2, hi - 0.3));
         // The lining the scene lays over the cavity after placement belongs to the cavity's side: the myoma keeps
         // the clearance from its inner face, so the layer ends in myometrium before it (FIGO 4, not 3).
         const double keep = c + params.endometriumThicknessMm;
-        Push clear{e, -u, lo, std::max(hi, lo + 0.3), lateral + keep, windowRamp, 0.0};
+        // A later pathology's push can bend the endometrium over the myoma out into the wall, past the seat's plane
+        // (AdaptRound::Again). Then the push is aimed at the cavity-side points that miss their clearance: its axis
+        // through their centroid (projected onto the seat's plane, so heights stay the seat's), its window as wide as
+        // they lie from it, its ramp below the deepest of them, so all of them move fully. Aimed through the seat
+        // with the myoma's whole width, a seat low on the wall took the cervical canal into the push and sheared it.
+        double sunk = 0.0, reach = lateral;
+        Vec3 origin = e;
+        if (round == AdaptRound::Again) {
+            const Bounds box = bounds(mesh);
+            std::vector<Vec3> missing;
+            for (std::size_t v = 0; v < info.mesh->points.size(); ++v) {
+                const Vec3 r = info.mesh->points[v] - e;
+                const double t = dot(r, u), rho = norm(r - u * t);
+                if (info.vertexSide[v] == Side::Cavity && rho < lateral + keep &&
+                    signedDistance(mesh, box, info.mesh->points[v], keep + 1.0) < keep) {
+                    sunk = std::max(sunk, t);
+                    missing.push_back(info.mesh->points[v]);
+                }
+            }
+            reach = 0.0;
+            if (!missing.empty()) {
+                Vec3 mean;
+                for (const Vec3& q : missing)
+                    mean += q;
+                mean = mean / static_cast<double>(missing.size());
+                origin = e + (mean - e) - u * dot(mean - e, u);
+                for (const Vec3& q : missing) {
+                    const Vec3 r = q - origin;
+                    reach = std::max(reach, norm(r - u * dot(r, u)));
+                }
+            }
+        }
+        double hi = std::min(-0.3, -shallowest + 0.2 + std::clamp(0.5 * std::max(shallowest, 0.0), 0.3, 3.0));
+        if (sunk > 0.0)
+            hi = std::min(hi, -sunk - 0.2);
+        const double lo = std::max(-0.6 * w, std::min(-shallowest + 0.2, hi - 0.3));
+        Push clear{origin, -u, lo, std::max(hi, lo + 0.3), reach + keep, windowRamp, 0.0};
         clear.clearance = keep;
         clear.stretch = kOpenStretch; // a larger push over a wider ramp: the mesh follows a smooth map
         pushes.push_back(clear);
@@ -321,15 +357,16 @@ void reaimStalk(std::vector<Planned>& all, std::size_t which, const OrganInfo& i
 } // namespace
 
 /// Applies pathology `which`'s pushes to the organ and to every other pathology (they sit in the moving tissue).
-Status adaptOrgan(SurfaceMesh& organ, std::vector<Planned>& all, std::size_t which, const PathologyParams& params) {
+Status adaptOrgan(SurfaceMesh& organ, std::vector<Planned>& all, std::size_t which, const PathologyParams& params,
+                  AdaptRound round) {
     const SurfaceMesh& mesh = all[which].surface;
     const double cap = 2.0 * all[which].spec.radius + 2.0 * params.clearanceMm;
     auto info = analyzeOrgan(organ); // the organ as earlier pathologies left it
     if (!info.ok())
         return info.failure();
-    if (which > 0)
+    if (which > 0 && round == AdaptRound::First)
         reaimStalk(all, which, *info, params);
-    for (Push& push : planPushes(all[which], *info, params)) {
+    for (Push& push : planPushes(all[which], *info, params, round)) {
         solvePush(push, organ, mesh, params.clearanceMm, cap);
         if (push.amount <= 0.0)
             continue;

@@ -88,8 +88,12 @@ void fitDepth(SurfaceMesh& mesh, const SurfaceMesh& organ, const PathologyReques
               const PathologyParams& params);
 
 // MassEffect.cpp
+/// First: a pathology's pushes, its stalk aimed anew; Again: once all are placed, the pushes that keep a myoma clear of
+/// the endometrium, on the organ the later ones left.
+enum class AdaptRound { First, Again };
 /// Applies pathology `which`'s pushes to the organ and to every other pathology (they sit in the moving tissue).
-Status adaptOrgan(SurfaceMesh& organ, std::vector<Planned>& all, std::size_t which, const PathologyParams& params);
+Status adaptOrgan(SurfaceMesh& organ, std::vector<Planned>& all, std::size_t which, const PathologyParams& params,
+                  AdaptRound round = AdaptRound::First);
 /// The pushes leave a pocket with flat faces and square corners around a head on a stalk, where it meets the wall it
 /// opens from (each push is a smooth map of space, but the walls they move by different amounts meet at a crease).
 /// The cavity's walls collapse onto a mass instead: the displacement of the moved cavity-side vertices near such a
