@@ -324,9 +324,9 @@ Result<PathologyResult> growPathologies(const SurfaceMesh& organ, const Patholog
             HS_TRY(adaptOrgan(result.organ, plans, i, params));
         // A later pathology's pushes move the walls an earlier one stands in: a cornual polyp's radial push once moved
         // a lateral wall 6 mm onto a FIGO 5 myoma, which moved 0.8 mm (its mean motion) and then touched the
-        // endometrium. So each earlier myoma's push that keeps it clear of the endometrium is solved once more on the
-        // organ as the later ones left it; where its clearance still holds it has nothing to make up and moves
-        // nothing.
+        // endometrium. So each earlier myoma's pushes that keep it clear of the endometrium (types 4-7) and of the
+        // serosa (types 0-4) are solved once more on the organ as the later ones left it; where the clearance still
+        // holds they have nothing to make up and move nothing.
         for (std::size_t i = 0; i + 1 < plans.size(); ++i)
             HS_TRY(adaptOrgan(result.organ, plans, i, params, AdaptRound::Again));
         roundPockets(result.organ, organ, info, plans, params);

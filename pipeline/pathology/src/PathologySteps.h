@@ -89,7 +89,7 @@ void fitDepth(SurfaceMesh& mesh, const SurfaceMesh& organ, const PathologyReques
 
 // MassEffect.cpp
 /// First: a pathology's pushes, its stalk aimed anew; Again: once all are placed, the pushes that keep a myoma clear of
-/// the endometrium, on the organ the later ones left.
+/// the endometrium and of the serosa, on the organ the later ones left.
 enum class AdaptRound { First, Again };
 /// Applies pathology `which`'s pushes to the organ and to every other pathology (they sit in the moving tissue).
 Status adaptOrgan(SurfaceMesh& organ, std::vector<Planned>& all, std::size_t which, const PathologyParams& params,
