@@ -211,7 +211,8 @@ std::vector<Push> planPushes(const Planned& p, const OrganInfo& info, const Path
     std::vector<Push> pushes;
     const double w = p.seat.wallMm;
     // Once all are placed, only the walls a myoma must keep clear of are looked at again: opening the cavity anew
-    // around a head, on walls the later pushes moved, made the organ intersect itself in 2 of the 36 crowded cases.
+    // around a head, on walls the later pushes moved, made the organ intersect itself in 3 more of the 36 crowded
+    // cases.
     if (intoCavity && round == AdaptRound::First) {
         // Open the cavity around the part that stands in it: first the far wall moves away along the protrusion
         // (driven by the wall in front of it), then, around a head on a stalk, the walls move away across it.
