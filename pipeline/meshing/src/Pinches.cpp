@@ -366,6 +366,13 @@ PinchStats openPinches(std::vector<Tet>& tets, std::vector<std::int32_t>& region
                     continue; // a cap or a spike: removed below
                 for (std::size_t f = 1; f < fans.size(); ++f) {
                     const std::int32_t copy = duplicateVertex(v);
+                    // The copy is a boundary vertex as v is. The face table is this pass's, so without this a later
+                    // pinch whose fans reach the copy would read past onBoundary's end, and whether a fan counts as
+                    // shallow would depend on what the heap held there (a scene differed between two runs).
+                    const auto c = static_cast<std::size_t>(copy);
+                    if (c >= onBoundary.size())
+                        onBoundary.resize(c + 1, 0);
+                    onBoundary[c] = onBoundary[static_cast<std::size_t>(v)];
                     for (std::int64_t t : fans[f])
                         for (std::int32_t& x : tets[static_cast<std::size_t>(t)])
                             x = x == v ? copy : x;

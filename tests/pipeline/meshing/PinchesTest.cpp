@@ -161,6 +161,25 @@ TEST(Pinches, SplitsWhatMayNotBeRemoved) {
     EXPECT_EQ(tets[1], (Tet{7, 4, 5, 6}));
 }
 
+TEST(Pinches, AVertexCopiedInAPassCountsAsBoundaryForTheNextPinch) {
+    // Vertex 0: a pathology tet (0) and a wall fan (1, 2) that touches a pathology (3) beyond it, so neither fan may
+    // go and 0 is split; the wall fan gets the copy, 12. Vertex 1: that fan's first tet (1) and a pathology tet (4).
+    // Tet 1 then has the copy and three boundary vertices, and may go: a spike, removed in the next pass, not split.
+    // The copy is not in the pass's face table; it was once read past the table's end, so whether tet 1 counted as a
+    // spike depended on the heap, and a scene's simulation mesh differed between two runs.
+    std::vector<Tet> tets = {{0, 2, 3, 4}, {0, 1, 5, 6}, {0, 5, 6, 7}, {5, 6, 7, 8}, {1, 9, 10, 11}};
+    std::vector<std::int32_t> region = {2, 0, 0, 2, 2};
+    Copier copier{12, {}};
+    const auto stats = detail::openPinches(tets, region, 0, std::ref(copier));
+    EXPECT_EQ(stats.pinchedBefore, 2u);
+    EXPECT_EQ(copier.copies, (std::vector<std::int32_t>{0}));
+    EXPECT_EQ(stats.splitVertices, 1u);
+    EXPECT_EQ(stats.removedTets, 1u);
+    EXPECT_EQ(stats.pinchedAfter, 0u);
+    EXPECT_EQ(tets[1], (Tet{12, 1, 5, 6}));
+    EXPECT_EQ(region, (std::vector<std::int32_t>{2, -1, 0, 2, 2}));
+}
+
 TEST(Pinches, ABeltIsCutEvenWhereVerticesMaySplit) {
     // One fan round vertex 0: no copy of it separates the sheets, so the bridge goes as without a splitter.
     std::vector<Tet> tets = beltAroundVertex0();
