@@ -16,10 +16,9 @@ cli=$(realpath "$1")
 out=$2
 rounds=${3:-1}
 here=$(cd "$(dirname "$0")/.." && pwd)
-rm -rf "$out"
-mkdir -p "$out/cases"
-python3 "$here/tools/sweep-cases.py" "$out/cases"
-cp "$here/resources/cases/default.json" "$out/cases/default.json"
+# shellcheck source=tools/sweep-lib.sh
+source "$here/tools/sweep-lib.sh"
+sweep_cases "$here" "$out"
 : > "$out/differences.txt"
 failed=0
 sums() { (cd "$1" && find . -type f | sort | xargs sha256sum); }

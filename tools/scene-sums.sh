@@ -12,10 +12,9 @@ fi
 cli=$(realpath "$1")
 out=$2
 here=$(cd "$(dirname "$0")/.." && pwd)
-rm -rf "$out"
-mkdir -p "$out/cases"
-python3 "$here/tools/sweep-cases.py" "$out/cases"
-cp "$here/resources/cases/default.json" "$out/cases/default.json"
+# shellcheck source=tools/sweep-lib.sh
+source "$here/tools/sweep-lib.sh"
+sweep_cases "$here" "$out"
 : > "$out/exits.txt"
 for c in "$out"/cases/*.json; do
     n=$(basename "$c" .json)

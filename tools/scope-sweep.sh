@@ -17,10 +17,7 @@ diameter=${3:-2.9}
 here=$(cd "$(dirname "$0")/.." && pwd)
 # shellcheck source=tools/sweep-lib.sh
 source "$here/tools/sweep-lib.sh"
-rm -rf "$out"
-mkdir -p "$out/cases"
-python3 "$here/tools/sweep-cases.py" "$out/cases"
-cp "$here/resources/cases/default.json" "$out/cases/default.json"
+sweep_cases "$here" "$out"
 printf '%-10s %8s %-12s %8s %6s %9s %-12s %6s %9s %7s %7s %s\n' case canal-mm part along-mm fits fundus-mm part fits \
     straight-mm left-% right-% hidden-by > "$out/table.txt"
 for c in "$out"/cases/*.json; do
