@@ -19,6 +19,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 // Seeding radii, in target edge lengths: a candidate closer than this to an accepted particle is dropped.
+constexpr double kCornerRadius = 0.2;      ///< corners against the corners of their own surface
 constexpr double kFeatureRadius = 0.8;     ///< features against corners and features
 constexpr double kSurfaceRadius = 0.75;    ///< surface candidates against accepted particles of their own sheet
 constexpr double kInnerRadius = 0.6;       ///< inner candidates against surface, feature and corner particles
@@ -111,10 +112,20 @@ void seedFeatures(const SeedingInput& in, std::size_t s, Particles& ps, Accepted
         }
     }
     const auto si = static_cast<std::int32_t>(s);
-    // Corners: feature vertices that are not in the middle of a single feature line.
-    for (std::size_t v = 0; v < mesh.points.size(); ++v)
-        if (degree[v] == 1 || degree[v] >= 3)
+    // Corners: feature vertices that are not in the middle of a single feature line, thinned against the surface's
+    // corners accepted before them (in vertex order). Where a merge leaves a seam of tiny triangles (edges of
+    // 0.002-0.1 mm where a polyp's stalk or a myoma meets the wall), every kink among them is a corner; corners are
+    // never moved, so tets between two of them 0.02 mm apart stayed slivers whatever the improvement did.
+    for (std::size_t v = 0; v < mesh.points.size(); ++v) {
+        if (degree[v] != 1 && degree[v] < 3)
+            continue;
+        const bool nearCorner =
+            index.anyWithin(ps, mesh.points[v], kCornerRadius * in.edge, [&](std::size_t u, double) {
+                return ps.kind[u] == ParticleKind::Corner && ps.surface[u] == si;
+            });
+        if (!nearCorner)
             index.add(ps, mesh.points[v], ParticleKind::Corner, si, adj.fan[adj.fanStart[v]], -1);
+    }
     // Dense candidates along each feature edge, thinned against everything accepted so far.
     const double step = 0.4 * in.edge;
     for (std::uint64_t key : featureEdges) {
