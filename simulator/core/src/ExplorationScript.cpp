@@ -498,6 +498,9 @@ constexpr double kStrokeMarginMm = 2.0;
 /// side, would pass through myometrium or cervix, mm (the trial's tissue lies a little off the plan's).
 constexpr double kPlanMarginMm = 1.5;
 constexpr std::size_t kPlanOffsets = 4;
+/// A wire point lies in a tet when its smallest barycentric weight there is at least minus this (the tet's faces, with
+/// a rounding's margin).
+constexpr double kInsideWeight = 1e-9;
 
 } // namespace
 
@@ -622,16 +625,39 @@ Result<Script> resectionScript(const World& world, int pathology) {
         for (const std::int32_t p : tets[t])
             allowed[t] = allowed[t] || inside[static_cast<std::size_t>(p)];
     }
+    // The tet a located wire point lies in, or -1 in the fluid (embedPoints gives a point off the mesh the boundary
+    // tet nearest it, with a weight below zero).
+    const auto tetAt = [&](const Stroke& stroke, std::size_t position, std::size_t offset, std::size_t k) {
+        const TetEmbedding& e = where[stroke.firstPoint + (position * kPlanOffsets + offset) * stroke.wirePoints + k];
+        return e.tet >= 0 && *std::min_element(e.weights.begin(), e.weights.end()) >= -kInsideWeight ? e.tet : -1;
+    };
     const auto safe = [&](const Stroke& stroke, std::size_t position) {
         for (std::size_t o = 0; o < kPlanOffsets; ++o)
             for (std::size_t k = 0; k < stroke.wirePoints; ++k) {
-                const std::int32_t t =
-                    where[stroke.firstPoint + (position * kPlanOffsets + o) * stroke.wirePoints + k].tet;
+                const std::int32_t t = tetAt(stroke, position, o, k);
                 if (t >= 0 && !allowed[static_cast<std::size_t>(t)])
                     return false;
             }
         return true;
     };
+    // A stroke whose wire, where planned or off it by the margins, never passes through the pathology is not made:
+    // the grid of strips is a square round the pathology's reach, the pathology's outline is not.
+    const auto meets = [&](const Stroke& stroke) {
+        for (std::size_t i = 0; i < stroke.positions; ++i)
+            for (std::size_t o = 0; o < kPlanOffsets; ++o)
+                for (std::size_t k = 0; k < stroke.wirePoints; ++k) {
+                    const std::int32_t t = tetAt(stroke, i, o, k);
+                    if (t >= 0 && tetPathology[static_cast<std::size_t>(t)] == pathology)
+                        return true;
+                }
+        return false;
+    };
+    strokes.erase(std::remove_if(strokes.begin(), strokes.end(), [&](const Stroke& s) { return !meets(s); }),
+                  strokes.end());
+    if (strokes.empty())
+        return fail(ErrorCode::InvalidInput, "resection script: no stroke of the loop from the scope's pivot meets "
+                                             "pathology " +
+                                                 pathologies[static_cast<std::size_t>(pathology)].id);
 
     Plan plan;
     detail::TriangleBvh openTree;

@@ -341,7 +341,8 @@ double pressIndentationMm(const World& world, const PressPlan& plan, double face
 /// resectoscope's loop, planned in the cavity opened by the fluid: in through the canal with the inflow open, then
 /// strip by strip from the pathology's free side towards its base, each strip the loop pushed out beyond the pathology
 /// and drawn back with the cutting pedal down where the wire, as planned, passes through nothing but the pathology
-/// and the fluid; out at the end. InvalidInput for a world whose exercise does not cut or a pathology out of range.
+/// and the fluid; out at the end. Only strokes whose wire, as planned, meets the pathology are made. InvalidInput for a
+/// world whose exercise does not cut, a pathology out of range, or one that no stroke from the scope's pivot meets.
 [[nodiscard]] Result<Script> resectionScript(const World& world, int pathology);
 /// The built-in demonstration of the world's exercise (`hysteroscene-sim --demo`): the exploration for exploration
 /// and diagnosis; for polypectomy the resection of the scene's first polyp, for myomectomy of its first myoma of FIGO
