@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace hs::sim {
 
@@ -501,6 +502,9 @@ constexpr std::size_t kPlanOffsets = 4;
 /// A wire point lies in a tet when its smallest barycentric weight there is at least minus this (the tet's faces, with
 /// a rounding's margin).
 constexpr double kInsideWeight = 1e-9;
+/// Where a located wire point lies when it is in no tet.
+constexpr std::int32_t kInCavity = -1;
+constexpr std::int32_t kOutsideTheOrgan = -2;
 
 } // namespace
 
@@ -625,17 +629,48 @@ Result<Script> resectionScript(const World& world, int pathology) {
         for (const std::int32_t p : tets[t])
             allowed[t] = allowed[t] || inside[static_cast<std::size_t>(p)];
     }
-    // The tet a located wire point lies in, or -1 in the fluid (embedPoints gives a point off the mesh the boundary
-    // tet nearest it, with a weight below zero).
+    // The tet each located wire point lies in; kInCavity in the cavity's fluid, kOutsideTheOrgan beyond the serosa.
+    // embedPoints gives a point off the mesh the boundary tet nearest it, with a weight below zero: such a point lies
+    // in the fluid when the boundary face nearest it is the cavity's, and outside the organ otherwise.
+    detail::TriangleBvh openTree;
+    openTree.build(*w.triangles, open);
+    std::vector<std::int32_t> tetOf(where.size(), kInCavity);
+    std::vector<std::int32_t> nearFaces;
+    for (std::size_t i = 0; i < where.size(); ++i) {
+        const TetEmbedding& e = where[i];
+        if (e.tet < 0)
+            continue;
+        if (*std::min_element(e.weights.begin(), e.weights.end()) >= -kInsideWeight) {
+            tetOf[i] = e.tet;
+            continue;
+        }
+        double best = std::numeric_limits<double>::max();
+        bool cavity = false;
+        for (double radiusMm = 2.0; best == std::numeric_limits<double>::max() && radiusMm < 1e4; radiusMm *= 2.0) {
+            nearFaces.clear();
+            openTree.near(located[i], radiusMm, nearFaces);
+            for (const std::int32_t f : nearFaces) {
+                const Triangle& t = (*w.triangles)[static_cast<std::size_t>(f)];
+                const double d2 =
+                    closestPointOnTriangle(located[i], open[static_cast<std::size_t>(t[0])],
+                                           open[static_cast<std::size_t>(t[1])], open[static_cast<std::size_t>(t[2])])
+                        .distance2;
+                if (d2 < best || (d2 == best && w.faceCavity[static_cast<std::size_t>(f)])) {
+                    best = d2;
+                    cavity = w.faceCavity[static_cast<std::size_t>(f)] != 0;
+                }
+            }
+        }
+        tetOf[i] = cavity ? kInCavity : kOutsideTheOrgan;
+    }
     const auto tetAt = [&](const Stroke& stroke, std::size_t position, std::size_t offset, std::size_t k) {
-        const TetEmbedding& e = where[stroke.firstPoint + (position * kPlanOffsets + offset) * stroke.wirePoints + k];
-        return e.tet >= 0 && *std::min_element(e.weights.begin(), e.weights.end()) >= -kInsideWeight ? e.tet : -1;
+        return tetOf[stroke.firstPoint + (position * kPlanOffsets + offset) * stroke.wirePoints + k];
     };
     const auto safe = [&](const Stroke& stroke, std::size_t position) {
         for (std::size_t o = 0; o < kPlanOffsets; ++o)
             for (std::size_t k = 0; k < stroke.wirePoints; ++k) {
                 const std::int32_t t = tetAt(stroke, position, o, k);
-                if (t >= 0 && !allowed[static_cast<std::size_t>(t)])
+                if (t == kOutsideTheOrgan || (t >= 0 && !allowed[static_cast<std::size_t>(t)]))
                     return false;
             }
         return true;
@@ -660,8 +695,6 @@ Result<Script> resectionScript(const World& world, int pathology) {
                                                  pathologies[static_cast<std::size_t>(pathology)].id);
 
     Plan plan;
-    detail::TriangleBvh openTree;
-    openTree.build(*w.triangles, open);
     DeviceSample out = w.canalEntry(openTree);
     out.instrument = kInstrumentLoop;
     const double canalMm = distance(lm.externalOsMm, lm.internalOsMm);
