@@ -623,8 +623,9 @@ int main(int argc, char** argv) {
         (t.totalMs - t.tissueForcesMs - t.tissueSolvesMs - t.contactSolveMs - t.contactSearchMs - t.visibilityMs) *
             perStep);
     std::printf("| stability | inverted tets max %zu, min volume ratio %.3f, elastic energy max %.4f J, point speed "
-                "max %.0f mm/s |\n",
-                maxInverted, minRatio, maxEnergy, maxSpeed);
+                "max %.0f mm/s; %.1f %% of steps checked by the line search (a tet held at the volume bound) |\n",
+                maxInverted, minRatio, maxEnergy, maxSpeed,
+                t.steps > 0 ? 100.0 * static_cast<double>(t.searchedSteps) / static_cast<double>(t.steps) : 0.0);
     std::printf("| trial metrics | surface %.1f %%, contacts %d, peak force %.2f N, perforations %zu |\n",
                 m.cavitySurfaceVisualizedPercent, m.wallContacts, m.peakForceN, m.perforations.size());
     if (operative) {

@@ -1455,6 +1455,9 @@ void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector
     std::vector<double> rhs(3 * n), lambda, gap;
     std::vector<FemConstraint> rows;
     m_lastVolumeRows = 0;
+    // A tet held at the volume bound in the last iteration: the next chord step is checked by the line search.
+    bool atBound = m_lastBoundRows > 0;
+    m_lastBoundRows = 0;
     std::vector<std::pair<std::int32_t, Vec3>> change;
     std::vector<Vec3> response;
     std::vector<double> lastAlong; // off the surface: the last forces' motion along each row
@@ -1484,13 +1487,16 @@ void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector
         const double before = residual(x);
         solveWarped(rhs);
         increment = rhs;
-        // The chord step is the rest matrix's: where the tissue has stiffened beyond twice that it overshoots, so the
-        // step is shortened until the residual falls (a backtracking line search; the last length is tried first).
+        // The chord step is the rest matrix's: where the tissue has stiffened beyond twice that, or a tet is held at
+        // its volume bound, it overshoots, so the step is shortened until the residual falls (a backtracking line
+        // search; the last length is tried first).
+        const bool search = m_settings.lineSearch || (m_settings.lineSearchAtVolumeBound && atBound);
+        m_timings.searchedIterations += search ? 1 : 0;
         double length = std::min(1.0, 2.0 * m_stepLength);
         for (int tries = 0;; ++tries) {
             for (std::size_t i = 0; i < n; ++i)
                 trial[i] = x[i] + Vec3{increment[3 * i], increment[3 * i + 1], increment[3 * i + 2]} * length;
-            if (!m_settings.lineSearch || tries >= 12)
+            if (!search || tries >= 12)
                 break;
             const double after = residual(trial);
             if (std::isfinite(after) && after <= before * (1.0 + 1e-9) + 1e-12)
@@ -1542,6 +1548,10 @@ void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector
             gap[c] = g;
         }
         solveContacts(rows, contacts.size(), obstacle, gap, !surface, lambda);
+        m_lastBoundRows = 0;
+        for (std::size_t c = contacts.size(); c < rows.size(); ++c)
+            m_lastBoundRows += lambda[c] > 0.0 ? 1 : 0;
+        atBound = m_lastBoundRows > 0;
         // The correction: the new forces less the last, on the surface through the precomputed compliance (the
         // interior follows in the next step's free motion), or on every dof by a solve.
         std::vector<Vec3> next(n, Vec3{});

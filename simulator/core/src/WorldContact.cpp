@@ -212,6 +212,7 @@ void World::Impl::physics(const DeviceSample& device, double pressureKpa) {
     timings.contactSolveMs += tissue.lastTimings().contactsMs;
     timings.forwardContactSteps += tissue.lastTimings().forwardIterations > 0 ? 1 : 0;
     timings.volumeRowSteps += tissue.lastVolumeRows() > 0 ? 1 : 0;
+    timings.searchedSteps += tissue.lastTimings().searchedIterations > 0 ? 1 : 0;
     for (std::size_t i = 0; i < pointsMm.size(); ++i)
         pointsMm[i] = tissue.positionsM()[i] / kMm;
     bvh.refit(pointsMm);

@@ -39,10 +39,11 @@ struct FemMaterial {
 
 /// Where the last step's time went, ms (wall clock).
 struct FemStepTimings {
-    double forcesMs = 0.0;     ///< the corotated forces (and rotations)
-    double solveMs = 0.0;      ///< the factor's solves
-    double contactsMs = 0.0;   ///< the constraints' compliance and their complementarity problem
-    int forwardIterations = 0; ///< iterations whose constraints took forward solves (off the precomputed surface)
+    double forcesMs = 0.0;      ///< the corotated forces (and rotations)
+    double solveMs = 0.0;       ///< the factor's solves
+    double contactsMs = 0.0;    ///< the constraints' compliance and their complementarity problem
+    int forwardIterations = 0;  ///< iterations whose constraints took forward solves (off the precomputed surface)
+    int searchedIterations = 0; ///< iterations whose chord step the line search checked (a force evaluation or more)
 };
 
 struct FemSettings {
@@ -75,6 +76,12 @@ struct FemSettings {
     /// Shorten a step whose residual would grow (a backtracking line search; one more force evaluation per iteration).
     /// Needed with stiffening materials, whose tangent outgrows the rest matrix.
     bool lineSearch = true;
+    /// With lineSearch off, search anyway in an iteration that follows one with a tet held at the volume bound
+    /// (minVolumeRatio below; its row carrying a force): a tet squeezed to a fifth of its volume no longer follows the
+    /// warped rest matrix (its corotational forces leave that line), the cap on the stiffening no longer keeps a chord
+    /// step from overshooting, and unchecked the overshoot can grow step on step until the tissue explodes. Costs
+    /// nothing while no tet is at the bound.
+    bool lineSearchAtVolumeBound = true;
     /// Threads for the force evaluation (each tet's and each point's work is independent, and the sums run in a
     /// fixed order: every thread count gives the same bits).
     int threads = 2;
@@ -304,6 +311,8 @@ public:
     const std::vector<double>& lastContactCompliance() const { return m_lastW; }
     /// The volume rows (FemSettings::minVolumeRatio) the last step's last iteration solved.
     std::size_t lastVolumeRows() const { return m_lastVolumeRows; }
+    /// Those of them that carried a force (a tet held at the bound).
+    std::size_t lastBoundRows() const { return m_lastBoundRows; }
 
     /// Elastic energy of the corotated linear material (J), the smallest tet volume ratio (<= 0: inverted) with the
     /// count of inverted tets, the largest speed (m/s): the stability checks.
@@ -454,6 +463,7 @@ private:
     bool precomputedAt(std::size_t p) const;
     std::vector<double> m_lastW;
     std::size_t m_lastVolumeRows = 0;
+    std::size_t m_lastBoundRows = 0;
     double m_residualNorm = 0.0;
     double m_stepLength = 1.0; ///< the line search's last step length
     mutable FemStepTimings m_timings;

@@ -250,6 +250,8 @@ public:
         double cutMs = 0.0; ///< the loop: its cuts (topology, the contact surface), coagulation, the factor's rebuild
         std::uint64_t forwardContactSteps = 0; ///< steps whose contacts took forward solves (not the surface's block)
         std::uint64_t volumeRowSteps = 0; ///< steps with a tet at the volume bound among the rows (interior points)
+        /// Steps whose chord step the line search checked (a tet held at the volume bound).
+        std::uint64_t searchedSteps = 0;
     };
     const StepTimings& stepTimings() const;
 
