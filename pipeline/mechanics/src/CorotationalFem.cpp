@@ -1492,7 +1492,8 @@ void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector
         // search; the last length is tried first).
         const bool search = m_settings.lineSearch || (m_settings.lineSearchAtVolumeBound && atBound);
         m_timings.searchedIterations += search ? 1 : 0;
-        double length = std::min(1.0, 2.0 * m_stepLength);
+        // An unchecked step is taken whole: a length the search shortened is not carried into steps it does not check.
+        double length = search ? std::min(1.0, 2.0 * m_stepLength) : 1.0;
         for (int tries = 0;; ++tries) {
             for (std::size_t i = 0; i < n; ++i)
                 trial[i] = x[i] + Vec3{increment[3 * i], increment[3 * i + 1], increment[3 * i + 2]} * length;
