@@ -171,6 +171,9 @@ using Clock = std::chrono::steady_clock;
 constexpr std::size_t kColumnRowPoints = 24;
 /// The step's correction sums columns on at most this many points; more take one whole solve.
 constexpr std::size_t kColumnCorrectionPoints = 96;
+/// The shortest step the search at the volume bound takes (a secant that far back means a residual whose slope along
+/// the step jumps: a short step, not none, keeps the tissue moving).
+constexpr double kMinBoundStepLength = 0.0625;
 
 double msSince(Clock::time_point t) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
@@ -805,9 +808,18 @@ void CorotationalFem::solveWith(const Factor& f, const std::vector<std::array<bo
         for (int k = f.colStart[j]; k < f.colStart[j + 1]; ++k)
             y[static_cast<std::size_t>(f.row[static_cast<std::size_t>(k)])] -=
                 f.value[static_cast<std::size_t>(k)] * y[j];
-    // D, then L^T x = y: the separator first, then the halves side by side.
     for (std::size_t j = 0; j < dofs; ++j)
         y[j] /= f.diag[j];
+    backwardWith(f, team, y);
+    for (std::size_t i = 0; i < dofs; ++i)
+        b[i] = y[static_cast<std::size_t>(f.oldToNew[i])];
+}
+
+void CorotationalFem::backwardWith(const Factor& f, WorkerTeam& team, std::vector<double>& y) {
+    // L^T x = y: the separator first, then the halves side by side.
+    const std::size_t dofs = f.oldToNew.size(), sep = f.partEnd[1];
+    const std::array<std::size_t, 3> begin{0, f.partEnd[0], f.partEnd[1]};
+    const std::array<std::size_t, 3> end{f.partEnd[0], f.partEnd[1], dofs};
     for (std::size_t j = dofs; j-- > sep;)
         for (int k = f.colStart[j]; k < f.colStart[j + 1]; ++k)
             y[j] -=
@@ -818,8 +830,6 @@ void CorotationalFem::solveWith(const Factor& f, const std::vector<std::array<bo
                 y[j] -= f.value[static_cast<std::size_t>(k)] *
                         y[static_cast<std::size_t>(f.row[static_cast<std::size_t>(k)])];
     });
-    for (std::size_t i = 0; i < dofs; ++i)
-        b[i] = y[static_cast<std::size_t>(f.oldToNew[i])];
 }
 
 void CorotationalFem::solveInPlace(std::vector<double>& b) const {
@@ -857,6 +867,7 @@ void CorotationalFem::solveWarped(std::vector<double>& b) const {
 
 void CorotationalFem::precomputeCompliance(const std::vector<std::int32_t>& points) {
     m_rebuild.reset(); // it would bring back the surface it began with
+    m_volumeRowPointsAdded = 0;
     const std::size_t n = m_x.size();
     m_compliantIndex.assign(n, -1);
     std::vector<std::int32_t> list;
@@ -930,16 +941,23 @@ void CorotationalFem::refreshStaleSurface(int dofs) {
         m_refreshPoint = k;
         const auto p = static_cast<std::size_t>(m_compliantList[k]);
         const std::size_t d = m_refreshDof;
+        // H^-1 e: L^-1 e is the dof's column of L^-1, non-zero on its reach only (kept per factor), then D^-1 and
+        // the whole backward solve, in the factor's order.
+        const Factor& f = *m_factor;
         column.assign(3 * m_x.size(), 0.0);
-        column[3 * p + d] = 1.0;
-        solveWith(*m_factor, m_fixed, *m_team, column);
-        if (m_fixed[p][d])
-            std::fill(column.begin(), column.end(), 0.0);
+        if (!m_fixed[p][d]) {
+            const int dof = f.oldToNew[3 * p + d];
+            f.computeColumns({dof}, *m_team);
+            const Factor::Sparse& y = f.columnY[static_cast<std::size_t>(dof)];
+            for (std::size_t t = 0; t < y.index.size(); ++t)
+                column[static_cast<std::size_t>(y.index[t])] =
+                    y.value[t] / f.diag[static_cast<std::size_t>(y.index[t])];
+            backwardWith(f, *m_team, column);
+        }
         for (std::size_t j = 0; j < m; ++j)
             for (std::size_t e = 0; e < 3; ++e) {
-                const double c = m_fixed[static_cast<std::size_t>(m_compliantList[j])][e]
-                                     ? 0.0
-                                     : column[3 * static_cast<std::size_t>(m_compliantList[j]) + e];
+                const auto q = static_cast<std::size_t>(m_compliantList[j]);
+                const double c = m_fixed[q][e] ? 0.0 : column[static_cast<std::size_t>(f.oldToNew[3 * q + e])];
                 m_compliance[(3 * j + e) * m_complianceStride + 3 * k + d] = c;
                 m_compliance[(3 * k + d) * m_complianceStride + 3 * j + e] = c;
             }
@@ -1483,26 +1501,58 @@ void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector
     };
     std::vector<Vec3> trial(n);
     std::vector<double> increment(3 * n);
+    std::vector<double> negResidual; // -r(x) before the chord solve (the search at the bound's slope)
     for (int it = 0; it < m_settings.iterations; ++it) {
         const double before = residual(x);
+        const bool boundSearch = !m_settings.lineSearch && m_settings.lineSearchAtVolumeBound && atBound;
+        if (boundSearch)
+            negResidual = rhs;
         solveWarped(rhs);
         increment = rhs;
         // The chord step is the rest matrix's: where the tissue has stiffened beyond twice that, or a tet is held at
-        // its volume bound, it overshoots, so the step is shortened until the residual falls (a backtracking line
-        // search; the last length is tried first).
-        const bool search = m_settings.lineSearch || (m_settings.lineSearchAtVolumeBound && atBound);
+        // its volume bound, it overshoots, so the step is shortened.
+        const bool search = m_settings.lineSearch || boundSearch;
         m_timings.searchedIterations += search ? 1 : 0;
         // An unchecked step is taken whole: a length the search shortened is not carried into steps it does not check.
-        double length = search ? std::min(1.0, 2.0 * m_stepLength) : 1.0;
-        for (int tries = 0;; ++tries) {
+        double length = m_settings.lineSearch ? std::min(1.0, 2.0 * m_stepLength) : 1.0;
+        const auto takeStep = [&] {
             for (std::size_t i = 0; i < n; ++i)
                 trial[i] = x[i] + Vec3{increment[3 * i], increment[3 * i + 1], increment[3 * i + 2]} * length;
-            if (!search || tries >= 12)
-                break;
-            const double after = residual(trial);
-            if (std::isfinite(after) && after <= before * (1.0 + 1e-9) + 1e-12)
-                break;
-            length *= 0.5;
+        };
+        if (boundSearch) {
+            // At the bound: the residual's slope along the step, r(x + a d) . d, at a = 0 (negative: the rest matrix
+            // is positive definite) and at the whole step. Still negative there, the step is taken whole; positive,
+            // it overshot the residual's zero along the line, and the step goes to where the secant between the two
+            // puts it. One force evaluation, and it cannot stall: a backtracking search on the residual's norm found
+            // no shorter step that lowered it with a tet squeezed to the bound (its forces leave the warped rest
+            // matrix's line; the norm is no merit function there), froze the tissue with 0.25 N of imbalance in a
+            // 1.35 N push, and paid 13 force evaluations a step (docs/simulator.md, "The chord step at the bound").
+            const auto slope = [&](const std::vector<double>& negR) {
+                double sum = 0.0;
+                for (std::size_t i = 0; i < n; ++i)
+                    for (std::size_t d = 0; d < 3; ++d)
+                        if (!m_fixed[i][d])
+                            sum -= negR[3 * i + d] * increment[3 * i + d];
+                return sum;
+            };
+            const double atStart = slope(negResidual);
+            takeStep();
+            residual(trial);
+            const double atEnd = slope(rhs);
+            if (std::isfinite(atStart) && std::isfinite(atEnd) && atStart < 0.0 && atEnd > 0.0) {
+                length = std::max(kMinBoundStepLength, atStart / (atStart - atEnd));
+                takeStep();
+            }
+        } else {
+            for (int tries = 0;; ++tries) {
+                takeStep();
+                if (!search || tries >= 12)
+                    break;
+                const double after = residual(trial);
+                if (std::isfinite(after) && after <= before * (1.0 + 1e-9) + 1e-12)
+                    break;
+                length *= 0.5;
+            }
         }
         m_stepLength = length;
         x = trial;
@@ -1602,6 +1652,23 @@ void CorotationalFem::step(const std::vector<Vec3>& externalForcesN, std::vector
     }
     for (std::size_t c = 0; c < contacts.size(); ++c)
         contacts[c].force = c < lambda.size() ? lambda[c] : 0.0;
+    if (m_lastVolumeRows > 0 && m_compliantCount > 0 && m_volumeRowPointsAdded < m_settings.volumeRowSurfacePoints) {
+        // The volume rows' points off the precomputed surface join it (their columns follow by the refresh), as many
+        // as the setting leaves room for, row by row.
+        std::vector<std::int32_t> join;
+        for (std::size_t c = contacts.size(); c < rows.size(); ++c) {
+            std::vector<std::int32_t> rowPoints;
+            for (const std::int32_t p : rows[c].points)
+                if (m_compliantIndex[static_cast<std::size_t>(p)] < 0 && !held(static_cast<std::size_t>(p)) &&
+                    std::find(join.begin(), join.end(), p) == join.end())
+                    rowPoints.push_back(p);
+            if (m_volumeRowPointsAdded + join.size() + rowPoints.size() > m_settings.volumeRowSurfacePoints)
+                break;
+            join.insert(join.end(), rowPoints.begin(), rowPoints.end());
+        }
+        m_volumeRowPointsAdded += join.size();
+        extendPrecomputedSurface(join);
+    }
     bool finite = true;
     for (std::size_t i = 0; i < n && finite; ++i)
         finite = isFinite(x[i]);
@@ -2111,7 +2178,9 @@ void CorotationalFem::refactor() {
     assembleAndFactor();
     if (!m_compliantList.empty()) {
         const std::vector<std::int32_t> points = m_compliantList;
+        const std::size_t added = m_volumeRowPointsAdded; // the same surface, with the points volume rows brought
         precomputeCompliance(points);
+        m_volumeRowPointsAdded = added;
     }
     m_factorStale = false;
 }

@@ -328,7 +328,7 @@ const TrialMetrics& World::metrics() const {
 }
 
 std::string_view physicsEngine() {
-    return "corotational-fem/10";
+    return "corotational-fem/11";
 }
 
 Status checkReplay(const TrialHeader& trial, const WorldOptions& options) {

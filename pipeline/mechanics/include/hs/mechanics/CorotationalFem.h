@@ -106,6 +106,11 @@ struct FemSettings {
     /// L^-1 (a forward solve each, the first time a row meets the point after a change of the factor).
     double minVolumeRatio = 0.0;
     double volumeGuardBand = 0.25;
+    /// The points of volume rows join the precomputed surface (extendPrecomputedSurface), up to this many in all: a
+    /// tet held near the bound for a while (the stroma round a sheath in the canal) then costs its rows a sum on the
+    /// block instead of forward solves in every step, once the refresh has computed its points' columns
+    /// (surfaceRefreshDofs a step). 0: volume rows always take forward solves. Nothing without a precomputed surface.
+    std::size_t volumeRowSurfacePoints = 256;
 };
 
 /// A unilateral constraint, linear in the points: C(x) = offset + sum_k gradient[k] . x[points[k]] >= 0, with a
@@ -346,6 +351,8 @@ private:
     /// H^-1 b by the factor `f` (the held dofs of `fixed` zero).
     static void solveWith(const Factor& f, const std::vector<std::array<bool, 3>>& fixed, WorkerTeam& team,
                           std::vector<double>& b);
+    /// L^-T y in place, y in the factor's order (solveWith's second half).
+    static void backwardWith(const Factor& f, WorkerTeam& team, std::vector<double>& y);
     /// The dense compliance between the dofs of `list`'s points, and their columns of L^-1 (f.columnY).
     static void precomputeInto(Factor& f, const std::vector<std::int32_t>& list,
                                const std::vector<std::array<bool, 3>>& fixed, WorkerTeam& team,
@@ -462,6 +469,7 @@ private:
     /// the block stale, no removed tet within a tet of it.
     bool precomputedAt(std::size_t p) const;
     std::vector<double> m_lastW;
+    std::size_t m_volumeRowPointsAdded = 0; ///< points volume rows brought onto the precomputed surface
     std::size_t m_lastVolumeRows = 0;
     std::size_t m_lastBoundRows = 0;
     double m_residualNorm = 0.0;
