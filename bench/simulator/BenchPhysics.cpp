@@ -2,7 +2,8 @@
 // >= 200 Hz on 2 cores) and a long scripted trial's stability (no inverted tets, bounded energy). A table, not a test.
 //
 //   bench_physics PACKAGE [--seconds 60] [--iterations 6] [--trace] [--rough SEED] [--canal [--introitus MM]]
-//                 [--press [--wall PKG2] [--linear] [--from-plan] [--faces N]] [--demo polypectomy|myomectomy]
+//                 [--press [--wall PKG2] [--linear] [--from-plan] [--faces N]]
+//                 [--demo polypectomy|myomectomy [--steps FILE]]
 // --press: instead of a trial, presses of the device 0.5, 1, 2 and 3 mm into the cavity's wall and into each
 // pathology met head-on (pressScript), each on a fresh world, held 2 s. The depth is counted from the face where it
 // stands as the tip leaves its stand-off (the plan made again there, pressFaceOffsetMm); --from-plan: from the face as
@@ -30,7 +31,9 @@
 // the tip's place, and each inverted tet with its region and its distance from the tip) or an elastic energy above
 // 0.5 J, and every 50 ms with a contact above 2 N: to find which move of the script is at fault.
 // --demo polypectomy|myomectomy: instead of the exploration, that exercise's demonstration (demonstrationScript), once:
-// what it removed, the healthy tissue it took, and the physics step from the first cut on.
+// what it removed, the healthy tissue it took, and the physics step from the first cut on. --steps FILE: each of those
+// steps as a line of FILE (CSV: its ms; the forces', solves', contact problem's and loop's ms; whether it cut, had
+// the surface's compliance precomputed, took forward solves, had a volume row, touched).
 // PACKAGE: a scene package with a simulation mesh (hysteroscene-cli generate resources/cases/default.json -o DIR).
 
 #include "hs/core/TriangleGeometry.h"
@@ -95,7 +98,7 @@ int main(int argc, char** argv) {
             stderr,
             "usage: bench_physics PACKAGE [--seconds S] [--iterations N] [--trace] [--rough SEED] "
             "[--canal [--introitus MM]] [--press [--wall PACKAGE2] [--linear] [--from-plan] [--faces N]] [--demo "
-            "polypectomy|myomectomy]\n");
+            "polypectomy|myomectomy [--steps FILE]]\n");
         return 2;
     }
     const std::string package = argv[1];
@@ -107,7 +110,8 @@ int main(int argc, char** argv) {
     bool press = false;
     bool fromPlan = false; // --press: the depth counted from the face as planned, not as it stands
     std::string wallPackage;
-    int faces = 0; // --press --faces N: the wall's 3 mm press at its N most head-on faces
+    int faces = 0;         // --press --faces N: the wall's 3 mm press at its N most head-on faces
+    std::string stepsFile; // --demo --steps FILE: each step from the first cut on, a CSV line
     for (int i = 2; i < argc; ++i) {
         if (std::strcmp(argv[i], "--trace") == 0)
             trace = true;
@@ -121,6 +125,8 @@ int main(int argc, char** argv) {
             fromPlan = true;
         else if (std::strcmp(argv[i], "--faces") == 0 && i + 1 < argc)
             faces = std::atoi(argv[++i]);
+        else if (std::strcmp(argv[i], "--steps") == 0 && i + 1 < argc)
+            stepsFile = argv[++i];
         else if (std::strcmp(argv[i], "--wall") == 0 && i + 1 < argc)
             wallPackage = argv[++i];
         else if (std::strcmp(argv[i], "--seconds") == 0 && i + 1 < argc)
@@ -580,6 +586,24 @@ int main(int argc, char** argv) {
             maxSpeed = std::max(maxSpeed, h.maxSpeedMmPerS);
         }
     }
+    if (!stepsFile.empty()) {
+        // Written whole to a temporary name, then renamed: never half a file.
+        const std::string temporary = stepsFile + ".part";
+        FILE* f = std::fopen(temporary.c_str(), "w");
+        bool written = f != nullptr &&
+                       std::fprintf(f, "ms,forces_ms,solves_ms,contact_ms,loop_ms,cut,precomputed,forward,volume_row,"
+                                       "touching\n") > 0;
+        for (const StepCost& c : cuttingSteps)
+            written = written && std::fprintf(f, "%.3f,%.3f,%.3f,%.3f,%.3f,%d,%d,%d,%d,%d\n", c.ms, c.forcesMs,
+                                              c.solvesMs, c.contactMs, c.cutMs, c.cut ? 1 : 0, c.precomputed ? 1 : 0,
+                                              c.forwarded ? 1 : 0, c.volume ? 1 : 0, c.touching ? 1 : 0) > 0;
+        written = f != nullptr && std::fclose(f) == 0 && written;
+        if (!written || std::rename(temporary.c_str(), stepsFile.c_str()) != 0) {
+            std::remove(temporary.c_str());
+            std::fprintf(stderr, "bench_physics: cannot write %s\n", stepsFile.c_str());
+            return 5;
+        }
+    }
     double total = 0.0;
     for (double v : stepMs)
         total += v;
@@ -685,6 +709,26 @@ int main(int argc, char** argv) {
                         n, ms / n, forces / n, solves / n, contact / n, cutMs / n, 100.0 * cuts / n, 100.0 * stale / n,
                         100.0 * staleAll / all, 100.0 * forwarded / n, 100.0 * forwardedAll / all, 100.0 * volume / n,
                         100.0 * volumeAll / all, 100.0 * touching / n, 100.0 * touchingAll / all);
+        }
+        if (!cuttingSteps.empty()) {
+            // The steps over the bar's budget (150 Hz: 6.67 ms) and what they did.
+            constexpr double kBudgetMs = 1e3 / 150.0;
+            double over = 0, volume = 0, refreshing = 0, forwarded = 0, cuts = 0;
+            for (const StepCost& c : cuttingSteps) {
+                if (c.ms <= kBudgetMs)
+                    continue;
+                over += 1;
+                volume += c.volume ? 1 : 0;
+                refreshing += c.precomputed ? 0 : 1;
+                forwarded += c.forwarded ? 1 : 0;
+                cuts += c.cut ? 1 : 0;
+            }
+            const double d = std::max(1.0, over);
+            std::printf("| steps over 6.67 ms (150 Hz) from the first cut on | %.0f (%.2f %%): %.0f %% with a tet in "
+                        "the volume bound's band, %.0f %% with the surface's compliance being refreshed, %.0f %% with "
+                        "forward solves, %.0f %% with a cut |\n",
+                        over, 100.0 * over / static_cast<double>(cuttingSteps.size()), 100.0 * volume / d,
+                        100.0 * refreshing / d, 100.0 * forwarded / d, 100.0 * cuts / d);
         }
         std::printf("| fluid | %s, deficit %.0f mL in %.1f min (%.0f mL/min), intravasation %.0f mL, highest pressure "
                     "%.1f kPa |\n",
