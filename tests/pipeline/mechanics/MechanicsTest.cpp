@@ -1081,9 +1081,9 @@ TEST(Mechanics, AChordStepAfterATetHeldAtTheVolumeBoundIsCheckedByTheLineSearch)
 }
 
 TEST(Mechanics, AVolumeRowsPointsJoinThePrecomputedSurface) {
-    // A tet held near the bound for a while (the stroma round a resectoscope's sheath in the canal) made every step's
-    // rows take forward solves. Its points join the precomputed surface: once the refresh has computed their columns
-    // (one dof a step), its rows are sums on the block, and the push comes to the same state.
+    // A tet held near the bound for a while (the cervix's stroma under a scope's shaft levered in the canal) made every
+    // step's rows take forward solves. Its points join the precomputed surface: once the refresh has computed their
+    // columns (one dof a step), its rows are sums on the block, and the push comes to the same state.
     const Block block = makeBlock();
     const PointPush joined = pushPoint(block, 6.0, 0.2, true, 256);
     const PointPush forward = pushPoint(block, 6.0, 0.2, true, 0);

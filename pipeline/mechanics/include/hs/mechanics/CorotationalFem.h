@@ -107,8 +107,8 @@ struct FemSettings {
     double minVolumeRatio = 0.0;
     double volumeGuardBand = 0.25;
     /// The points of volume rows join the precomputed surface (extendPrecomputedSurface), up to this many in all: a
-    /// tet held near the bound for a while (the stroma round a sheath in the canal) then costs its rows a sum on the
-    /// block instead of forward solves in every step, once the refresh has computed its points' columns
+    /// tet held near the bound for a while (the cervix's stroma under a shaft levered in the canal) then costs its rows
+    /// a sum on the block instead of forward solves in every step, once the refresh has computed its points' columns
     /// (surfaceRefreshDofs a step). 0: volume rows always take forward solves. Nothing without a precomputed surface.
     std::size_t volumeRowSurfacePoints = 256;
 };
